@@ -1,0 +1,72 @@
+//! Regenerates the papers' figures and tables: `cargo run --release -p
+//! paper_figures -- list | all | <id>...`. Each figure writes its images
+//! (PNG/SVG) and a data JSON beside them into `paper_figures/out/` (or
+//! `--out DIR`), and records the checks it relied on.
+
+mod common;
+
+mod conv;
+mod gec;
+mod ode6;
+mod pde4;
+mod pde6;
+mod plate;
+
+use common::{Ctx, Figure};
+
+fn all_figures() -> Vec<Figure> {
+    let mut v = Vec::new();
+    v.extend(gec::figures());
+    v.extend(pde4::figures());
+    v.extend(plate::figures());
+    v.extend(pde6::figures());
+    v.extend(ode6::figures());
+    v.extend(conv::figures());
+    v
+}
+
+fn main() {
+    if let Err(e) = run() {
+        eprintln!("error: {e:#}");
+        std::process::exit(1);
+    }
+}
+
+fn run() -> anyhow::Result<()> {
+    let mut args: Vec<String> = std::env::args().skip(1).collect();
+    let mut out = std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/out"));
+    if let Some(i) = args.iter().position(|a| a == "--out") {
+        if i + 1 >= args.len() {
+            anyhow::bail!("--out needs a directory");
+        }
+        out = args.remove(i + 1).into();
+        args.remove(i);
+    }
+    let figures = all_figures();
+    let ctx = Ctx::new(out)?;
+    match args.first().map(String::as_str) {
+        None | Some("list") | Some("--help") | Some("-h") => {
+            println!("usage: paper_figures [--out DIR] list | all | <id>...");
+            for f in &figures {
+                println!("{:<24} paper {}  {}", f.id, f.paper, f.title);
+            }
+            Ok(())
+        }
+        Some("all") => {
+            for f in &figures {
+                ctx.run(f)?;
+            }
+            Ok(())
+        }
+        Some(_) => {
+            for id in &args {
+                let f = figures
+                    .iter()
+                    .find(|f| f.id == id)
+                    .ok_or_else(|| anyhow::anyhow!("unknown figure {id:?}; try 'list'"))?;
+                ctx.run(f)?;
+            }
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,19 @@
+//! Named tolerances. Tests and checks use these, never bare literals.
+
+/// Rounding level of a well-conditioned closed form evaluated in f64
+/// (relative to the magnitude of the quantities involved).
+pub const ROUNDING: f64 = 1e-12;
+/// Rounding level after a dense solve or a long sum (relative).
+pub const SOLVE: f64 = 1e-9;
+/// Adaptive quadrature against a closed form (relative).
+pub const QUADRATURE: f64 = 1e-10;
+/// Agreement with a tabulated value printed to four significant digits.
+pub const TABLE_4_DIGITS: f64 = 5e-4;
+/// Agreement with classical plate-theory coefficients demanded by the issues
+/// (0.5 %).
+pub const PLATE_THEORY: f64 = 5e-3;
+
+/// `tol * max(1, scale)`: tolerances grow with the magnitude of the data.
+pub fn scaled(tol: f64, scale: f64) -> f64 {
+    tol * scale.abs().max(1.0)
+}

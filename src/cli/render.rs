@@ -1,0 +1,69 @@
+//! `pdesculpt render MESH -o PNG [--view front|side|top|perspective]...`.
+
+use pdesculpt::mesh::io;
+use pdesculpt::render::{render, Image, RenderOptions, View};
+use std::path::PathBuf;
+
+/// Arguments of `pdesculpt render`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Input mesh (.obj, .stl, .ply).
+    pub mesh: PathBuf,
+    /// Output PNG.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Views, side by side (repeat or comma-separate).
+    #[arg(long, value_delimiter = ',', default_values_t = vec!["front".to_string()])]
+    pub view: Vec<String>,
+    /// Width and height of each view in pixels.
+    #[arg(long, default_value_t = 512)]
+    pub size: usize,
+}
+
+/// Renders the mesh.
+pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    if !(16..=8192).contains(&args.size) {
+        anyhow::bail!(
+            "--size must be between 16 and 8192 pixels, got {}",
+            args.size
+        );
+    }
+    let ext = args
+        .output
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if ext != "png" {
+        anyhow::bail!("{}: the output must be a .png file", args.output.display());
+    }
+    let views: Vec<View> = args
+        .view
+        .iter()
+        .map(|v| v.parse::<View>().map_err(anyhow::Error::msg))
+        .collect::<anyhow::Result<_>>()?;
+    let m = io::read(&args.mesh)?;
+    let images: Vec<Image> = views
+        .iter()
+        .map(|&view| {
+            render(
+                &m,
+                &RenderOptions {
+                    width: args.size,
+                    height: args.size,
+                    view,
+                    ..Default::default()
+                },
+            )
+        })
+        .collect();
+    let img = Image::hstack(&images, [255, 255, 255, 255]);
+    img.save_png(&args.output)?;
+    eprintln!("wrote {}", args.output.display());
+    if json {
+        super::print_json(&serde_json::json!({
+            "output": args.output, "width": img.width, "height": img.height,
+        }))?;
+    }
+    Ok(0)
+}

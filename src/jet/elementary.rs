@@ -1,0 +1,170 @@
+//! Elementary functions on jets through their univariate Taylor series.
+//!
+//! Each function computes the coefficients `a_k = f^(k)(x0) / k!` for
+//! `k = 0..=K` and composes them with the nilpotent part of the argument
+//! ([`Jet::compose_series`]). The closed forms of the coefficients are the
+//! textbook ones; `jet::check` verifies them against SymPy goldens.
+
+use super::{factorial, Jet};
+
+impl<const U: usize, const V: usize> Jet<U, V> {
+    fn series_len() -> usize {
+        Self::max_total_order() + 1
+    }
+
+    /// `1 / self`: `a_k = (-1)^k / x0^(k+1)`.
+    pub fn recip(&self) -> Self {
+        let x0 = self.value();
+        let n = Self::series_len();
+        let mut a = vec![0.0; n];
+        let inv = 1.0 / x0;
+        let mut p = inv;
+        for (k, ak) in a.iter_mut().enumerate() {
+            *ak = if k % 2 == 0 { p } else { -p };
+            p *= inv;
+        }
+        self.compose_series(&a)
+    }
+
+    /// `self^p` for real `p` (value part must be positive unless `p` is a
+    /// non-negative integer): `a_k = binom(p, k) x0^(p-k)`.
+    pub fn powf(&self, p: f64) -> Self {
+        if p >= 0.0 && p.fract() == 0.0 && p <= i32::MAX as f64 {
+            return self.powi(p as i32);
+        }
+        let x0 = self.value();
+        let n = Self::series_len();
+        let mut a = vec![0.0; n];
+        let mut binom = 1.0;
+        for (k, ak) in a.iter_mut().enumerate() {
+            if k > 0 {
+                binom *= (p - (k as f64 - 1.0)) / k as f64;
+            }
+            *ak = binom * x0.powf(p - k as f64);
+        }
+        self.compose_series(&a)
+    }
+
+    /// `self^n` for integer `n` (exact binomial expansion for `n >= 0`, also
+    /// at `x0 = 0`).
+    pub fn powi(&self, n: i32) -> Self {
+        if n < 0 {
+            return self.recip().powi(-n);
+        }
+        let x0 = self.value();
+        let len = Self::series_len();
+        let mut a = vec![0.0; len];
+        let mut binom = 1.0;
+        for (k, ak) in a.iter_mut().enumerate() {
+            if k as i64 > n as i64 {
+                break;
+            }
+            if k > 0 {
+                binom *= (n as f64 - (k as f64 - 1.0)) / k as f64;
+            }
+            *ak = binom * x0.powi(n - k as i32);
+        }
+        self.compose_series(&a)
+    }
+
+    /// Square root (`powf(0.5)`).
+    pub fn sqrt(&self) -> Self {
+        self.powf(0.5)
+    }
+
+    /// `exp`: `a_k = e^x0 / k!`.
+    pub fn exp(&self) -> Self {
+        let e = self.value().exp();
+        let a: Vec<f64> = (0..Self::series_len()).map(|k| e / factorial(k)).collect();
+        self.compose_series(&a)
+    }
+
+    /// Natural logarithm: `a_0 = ln x0`, `a_k = (-1)^(k+1) / (k x0^k)`.
+    pub fn ln(&self) -> Self {
+        let x0 = self.value();
+        let mut a = vec![0.0; Self::series_len()];
+        a[0] = x0.ln();
+        let mut p = 1.0;
+        for (k, ak) in a.iter_mut().enumerate().skip(1) {
+            p /= x0;
+            let s = if k % 2 == 1 { 1.0 } else { -1.0 };
+            *ak = s * p / k as f64;
+        }
+        self.compose_series(&a)
+    }
+
+    fn cyclic(&self, cycle: [f64; 4]) -> Self {
+        let a: Vec<f64> = (0..Self::series_len())
+            .map(|k| cycle[k % 4] / factorial(k))
+            .collect();
+        self.compose_series(&a)
+    }
+
+    /// Sine.
+    pub fn sin(&self) -> Self {
+        let (s, c) = self.value().sin_cos();
+        self.cyclic([s, c, -s, -c])
+    }
+
+    /// Cosine.
+    pub fn cos(&self) -> Self {
+        let (s, c) = self.value().sin_cos();
+        self.cyclic([c, -s, -c, s])
+    }
+
+    /// Tangent (`sin / cos`).
+    pub fn tan(&self) -> Self {
+        self.sin() / self.cos()
+    }
+
+    /// Hyperbolic sine.
+    pub fn sinh(&self) -> Self {
+        let (s, c) = (self.value().sinh(), self.value().cosh());
+        self.cyclic([s, c, s, c])
+    }
+
+    /// Hyperbolic cosine.
+    pub fn cosh(&self) -> Self {
+        let (s, c) = (self.value().sinh(), self.value().cosh());
+        self.cyclic([c, s, c, s])
+    }
+
+    /// Arc tangent: `atan(x0 + h) = atan(x0) + int_0^h dt / (1 + (x0 + t)^2)`,
+    /// the integrand expanded by the reciprocal recurrence of
+    /// `p(t) = (1 + x0^2) + 2 x0 t + t^2`.
+    pub fn atan(&self) -> Self {
+        let x0 = self.value();
+        let n = Self::series_len();
+        let (p0, p1, p2) = (1.0 + x0 * x0, 2.0 * x0, 1.0);
+        let mut r = vec![0.0; n];
+        r[0] = 1.0 / p0;
+        for k in 1..n {
+            let mut s = p1 * r[k - 1];
+            if k >= 2 {
+                s += p2 * r[k - 2];
+            }
+            r[k] = -s / p0;
+        }
+        let mut a = vec![0.0; n];
+        a[0] = x0.atan();
+        for k in 1..n {
+            a[k] = r[k - 1] / k as f64;
+        }
+        self.compose_series(&a)
+    }
+
+    /// Two-argument arc tangent `atan2(self, x)`, valid wherever
+    /// `(x0, y0) != (0, 0)`: the derivatives come from `atan(y/x)` or
+    /// `-atan(x/y)`, whichever quotient is bounded, and the value from
+    /// `f64::atan2`.
+    pub fn atan2(&self, x: &Self) -> Self {
+        let (y0, x0) = (self.value(), x.value());
+        let mut out = if x0.abs() >= y0.abs() {
+            (*self / *x).atan()
+        } else {
+            -(*x / *self).atan()
+        };
+        out.c[0][0] = y0.atan2(x0);
+        out
+    }
+}

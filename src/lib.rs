@@ -1,0 +1,37 @@
+//! # pdesculpt
+//!
+//! A verification-first research kit for modeling 3D characters with PDE and
+//! ODE surfaces. Each equation family lives in its own module with a
+//! `check.rs` that measures boundary conditions, residuals, continuity,
+//! thresholds and agreement with independent references; [`check::run`]
+//! gathers them all.
+//!
+//! | module | paper | holds |
+//! |---|---|---|
+//! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
+//! | [`check`] | all | verification reports and their registry |
+//! | [`surface`] | - | the parametric-surface trait, tessellation |
+//! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
+//! | [`render`] | - | CPU rasteriser for PNG previews |
+//! | [`makehuman`] | - | the bundled CC0 MakeHuman body and morph targets |
+//! | [`curve::gec`] | 000, 002 | generalized elliptic curves |
+//! | [`pde4`] | 000 | fourth-order sculpting deformations |
+//! | [`plate`] | 001 | C1 plate-bending deformation of mesh regions |
+//! | [`pde6`] | 002 | C2 sixth-order PDE patches |
+//! | [`ode6`] | 004 | C2 sixth-order ODE surfaces |
+//! | [`conv`] | 003 | convolution surfaces from silhouettes |
+//! | [`character`] | 000 | character documents and assembly |
+
+pub mod character;
+pub mod check;
+pub mod conv;
+pub mod curve;
+pub mod jet;
+pub mod makehuman;
+pub mod mesh;
+pub mod ode6;
+pub mod pde4;
+pub mod pde6;
+pub mod plate;
+pub mod render;
+pub mod surface;

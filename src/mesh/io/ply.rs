@@ -1,0 +1,215 @@
+//! PLY: binary little-endian write (positions, normals, triangles); ASCII
+//! and binary little-endian read of `vertex` x/y/z and `face` index lists.
+
+use crate::mesh::{Mesh, MeshError};
+
+/// Encodes binary little-endian PLY with vertex normals.
+pub fn encode_ply(m: &Mesh) -> Vec<u8> {
+    let header = format!(
+        "ply\nformat binary_little_endian 1.0\ncomment pdesculpt\nelement vertex {}\n\
+property float x\nproperty float y\nproperty float z\n\
+property float nx\nproperty float ny\nproperty float nz\n\
+element face {}\nproperty list uchar int vertex_indices\nend_header\n",
+        m.positions.len(),
+        m.triangles.len()
+    );
+    let mut out = header.into_bytes();
+    for (p, n) in m.positions.iter().zip(m.vertex_normals()) {
+        for x in p.iter().chain(n.iter()) {
+            out.extend_from_slice(&(*x as f32).to_le_bytes());
+        }
+    }
+    for t in &m.triangles {
+        out.push(3);
+        for &i in t {
+            out.extend_from_slice(&(i as i32).to_le_bytes());
+        }
+    }
+    out
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Ty {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Ty {
+    fn parse(s: &str) -> Option<Ty> {
+        Some(match s {
+            "char" | "int8" => Ty::I8,
+            "uchar" | "uint8" => Ty::U8,
+            "short" | "int16" => Ty::I16,
+            "ushort" | "uint16" => Ty::U16,
+            "int" | "int32" => Ty::I32,
+            "uint" | "uint32" => Ty::U32,
+            "float" | "float32" => Ty::F32,
+            "double" | "float64" => Ty::F64,
+            _ => return None,
+        })
+    }
+    fn size(self) -> usize {
+        match self {
+            Ty::I8 | Ty::U8 => 1,
+            Ty::I16 | Ty::U16 => 2,
+            Ty::I32 | Ty::U32 | Ty::F32 => 4,
+            Ty::F64 => 8,
+        }
+    }
+    fn read(self, b: &[u8]) -> f64 {
+        match self {
+            Ty::I8 => b[0] as i8 as f64,
+            Ty::U8 => b[0] as f64,
+            Ty::I16 => i16::from_le_bytes([b[0], b[1]]) as f64,
+            Ty::U16 => u16::from_le_bytes([b[0], b[1]]) as f64,
+            Ty::I32 => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Ty::U32 => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Ty::F32 => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Ty::F64 => f64::from_le_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]),
+        }
+    }
+}
+
+enum Prop {
+    Scalar(String, Ty),
+    List(String, Ty, Ty),
+}
+
+struct Element {
+    name: String,
+    count: usize,
+    props: Vec<Prop>,
+}
+
+/// Parses ASCII or binary little-endian PLY.
+pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
+    let err = |line: usize, message: String| MeshError::Parse {
+        path: path.to_string(),
+        line,
+        message,
+    };
+    let end = bytes
+        .windows(11)
+        .position(|w| w == b"end_header\n")
+        .ok_or_else(|| err(1, "no 'end_header' line".into()))?;
+    let header =
+        std::str::from_utf8(&bytes[..end]).map_err(|_| err(1, "header is not text".into()))?;
+    let body = &bytes[end + 11..];
+    let mut lines = header.lines().enumerate();
+    if lines.next().map(|l| l.1.trim()) != Some("ply") {
+        return Err(err(1, "missing 'ply' magic".into()));
+    }
+    let mut ascii = None;
+    let mut elements: Vec<Element> = Vec::new();
+    for (ln, line) in lines {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        match w.as_slice() {
+            ["format", "ascii", _] => ascii = Some(true),
+            ["format", "binary_little_endian", _] => ascii = Some(false),
+            ["format", f, ..] => return Err(err(ln + 1, format!("unsupported PLY format {f:?}"))),
+            ["element", name, count] => elements.push(Element {
+                name: name.to_string(),
+                count: count
+                    .parse()
+                    .map_err(|_| err(ln + 1, format!("bad element count {count:?}")))?,
+                props: Vec::new(),
+            }),
+            ["property", "list", c, t, name] => {
+                let (c, t) = (Ty::parse(c), Ty::parse(t));
+                let e = elements
+                    .last_mut()
+                    .ok_or_else(|| err(ln + 1, "property before element".into()))?;
+                match (c, t) {
+                    (Some(c), Some(t)) => e.props.push(Prop::List(name.to_string(), c, t)),
+                    _ => return Err(err(ln + 1, "unknown list property type".into())),
+                }
+            }
+            ["property", t, name] => {
+                let t = Ty::parse(t)
+                    .ok_or_else(|| err(ln + 1, format!("unknown property type {t:?}")))?;
+                let e = elements
+                    .last_mut()
+                    .ok_or_else(|| err(ln + 1, "property before element".into()))?;
+                e.props.push(Prop::Scalar(name.to_string(), t));
+            }
+            _ => {}
+        }
+    }
+    let ascii = ascii.ok_or_else(|| err(2, "missing 'format' line".into()))?;
+    let mut m = Mesh::new(Vec::new(), Vec::new());
+    let mut tokens = if ascii {
+        Some(
+            std::str::from_utf8(body)
+                .map_err(|_| err(0, "ASCII body is not text".into()))?
+                .split_whitespace(),
+        )
+    } else {
+        None
+    };
+    let mut pos = 0usize;
+    let mut next = |ty: Ty| -> Result<f64, MeshError> {
+        if let Some(t) = tokens.as_mut() {
+            let s = t
+                .next()
+                .ok_or_else(|| err(0, "unexpected end of PLY data".into()))?;
+            s.parse::<f64>()
+                .map_err(|_| err(0, format!("bad PLY value {s:?}")))
+        } else {
+            let n = ty.size();
+            let b = body
+                .get(pos..pos + n)
+                .ok_or_else(|| err(0, "unexpected end of PLY data".into()))?;
+            pos += n;
+            Ok(ty.read(b))
+        }
+    };
+    for e in &elements {
+        for _ in 0..e.count {
+            let mut p = [0.0; 3];
+            let mut face: Vec<u32> = Vec::new();
+            for prop in &e.props {
+                match prop {
+                    Prop::Scalar(name, ty) => {
+                        let x = next(*ty)?;
+                        match name.as_str() {
+                            "x" => p[0] = x,
+                            "y" => p[1] = x,
+                            "z" => p[2] = x,
+                            _ => {}
+                        }
+                    }
+                    Prop::List(name, cty, ity) => {
+                        let n = next(*cty)? as usize;
+                        for _ in 0..n {
+                            let i = next(*ity)?;
+                            if name == "vertex_indices" || name == "vertex_index" {
+                                if i < 0.0 {
+                                    return Err(err(0, format!("negative face index {i}")));
+                                }
+                                face.push(i as u32);
+                            }
+                        }
+                    }
+                }
+            }
+            if e.name == "vertex" {
+                m.positions.push(p);
+            } else if e.name == "face" {
+                if face.len() < 3 {
+                    return Err(err(0, format!("face with {} vertices", face.len())));
+                }
+                for k in 1..face.len() - 1 {
+                    m.triangles.push([face[0], face[k], face[k + 1]]);
+                    m.tri_group.push(0);
+                }
+            }
+        }
+    }
+    Ok(m)
+}

@@ -1,0 +1,50 @@
+//! Grid tessellation of any surface into a triangle mesh.
+
+use super::{Domain, Surface};
+use crate::mesh::Mesh;
+
+/// Sampling density of a tessellation.
+#[derive(Clone, Copy, Debug)]
+pub struct Tessellation {
+    /// Number of intervals in u (>= 1).
+    pub nu: usize,
+    /// Number of intervals in v (>= 1; >= 3 on a closed direction).
+    pub nv: usize,
+}
+
+/// Parameter samples along one direction: `n + 1` values on an open
+/// direction, `n` distinct values (the last one is the first) on a closed one.
+fn samples(range: (f64, f64), n: usize, closed: bool) -> Vec<f64> {
+    let count = if closed { n } else { n + 1 };
+    (0..count)
+        .map(|k| range.0 + (range.1 - range.0) * k as f64 / n as f64)
+        .collect()
+}
+
+/// Tessellates `s` on a regular parameter grid: two triangles per cell,
+/// oriented so that the triangle normal follows `S_u x S_v`. Closed
+/// directions share their seam vertices.
+pub fn tessellate<S: Surface + ?Sized>(s: &S, t: Tessellation) -> Mesh {
+    let d = s.domain();
+    let us = samples(d.u, t.nu.max(1), d.closed_u);
+    let vs = samples(d.v, t.nv.max(1), d.closed_v);
+    let pts = s.grid(&us, &vs);
+    tessellate_grid(pts, us.len(), vs.len(), d)
+}
+
+/// Triangulates a row-major grid of points (`nu_pts x nv_pts`, index
+/// `iu * nv_pts + iv`) with the closedness of `d`.
+pub fn tessellate_grid(pts: Vec<[f64; 3]>, nu_pts: usize, nv_pts: usize, d: Domain) -> Mesh {
+    let cells_u = if d.closed_u { nu_pts } else { nu_pts - 1 };
+    let cells_v = if d.closed_v { nv_pts } else { nv_pts - 1 };
+    let idx = |i: usize, j: usize| ((i % nu_pts) * nv_pts + (j % nv_pts)) as u32;
+    let mut tris = Vec::with_capacity(2 * cells_u * cells_v);
+    for i in 0..cells_u {
+        for j in 0..cells_v {
+            let (a, b, c, e) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+            tris.push([a, b, c]);
+            tris.push([a, c, e]);
+        }
+    }
+    Mesh::new(pts, tris)
+}

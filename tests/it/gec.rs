@@ -1,0 +1,1 @@
+//! Integration tests of the gec family (none yet).

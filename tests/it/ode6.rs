@@ -1,0 +1,1 @@
+//! Integration tests of the ode6 family (none yet).

@@ -1,0 +1,1 @@
+//! Integration tests of the pde4 family (none yet).

@@ -1,0 +1,1 @@
+//! Integration tests of the pde6 family (none yet).
