@@ -79,7 +79,7 @@ pub fn checks() -> Vec<Check> {
                 &format!("jet.sympy.{}", f.name),
                 Kind::Reference,
                 dev,
-                tol::SOLVE,
+                tol::ROUNDING,
             )
             .note("all d^(i+j)/du^i dv^j, i,j <= 6, against SymPy (verify/jet_golden.py)"),
         );

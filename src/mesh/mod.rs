@@ -8,7 +8,7 @@
 //! Submodules: [`io`] (OBJ, GLB, STL, PLY; atomic writes), [`metrics`]
 //! (point-to-triangle distance with a bounding-volume hierarchy, RMS and
 //! Hausdorff distances), [`topology`] (watertight, manifold, oriented),
-//! [`slice`] (plane cross sections as closed polylines).
+//! [`slice`](mod@slice) (plane cross sections as closed polylines).
 
 pub mod check;
 pub mod io;

@@ -1,1 +1,241 @@
-//! Infrastructure tests.
+//! Infrastructure: jets, meshes, files, MakeHuman data, rendering.
+
+use crate::strategies::{point3, tube_mesh};
+use pdesculpt::check::tol;
+use pdesculpt::jet::{Jet, Jet6x6, Real};
+use pdesculpt::makehuman;
+use pdesculpt::mesh::io::{self, parse_obj};
+use pdesculpt::mesh::{metrics, topology, Mesh, MeshError};
+use pdesculpt::render::{render, RenderOptions, View};
+use proptest::prelude::*;
+
+fn tmpdir(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("pdesculpt-it-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+#[test]
+fn jet_product_rule_holds_for_mixed_orders() {
+    // d^3/du^2 dv (u^3 v^2) = 12 u v
+    let (u, v) = (Jet6x6::var_u(1.5), Jet6x6::var_v(-0.5));
+    let f = u.powi(3) * v.powi(2);
+    assert!((f.deriv(2, 1) - 12.0 * 1.5 * -0.5).abs() < tol::ROUNDING * 10.0);
+    assert!((f.deriv(3, 2) - 12.0).abs() < tol::ROUNDING * 10.0);
+    assert_eq!(f.deriv(4, 0), 0.0);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn jet_quotient_times_divisor_is_identity(a in -3.0f64..3.0, b in 0.5f64..3.0) {
+        let x = Jet::<5, 5>::var_u(a) * Jet::var_v(b) + 1.0;
+        let y = Jet::<5, 5>::var_v(b).exp() + Jet::var_u(a).sin();
+        let back = (x / y) * y;
+        for i in 0..5 {
+            for j in 0..5 {
+                let want = x.deriv(i, j);
+                prop_assert!((back.deriv(i, j) - want).abs() <= tol::SOLVE * want.abs().max(1.0));
+            }
+        }
+    }
+
+    #[test]
+    fn real_f64_and_jet_values_agree(a in 0.1f64..3.0) {
+        let f = |x: Jet<3, 1>| x.sqrt().atan2(x.ln() + 2.0).cosh();
+        let g = |x: f64| x.sqrt().atan2(x.ln() + 2.0).cosh();
+        prop_assert!((f(Jet::var_u(a)).value() - g(a)).abs() <= tol::ROUNDING * g(a).abs().max(1.0));
+    }
+
+    #[test]
+    fn tessellated_tubes_are_oriented_manifolds(m in tube_mesh()) {
+        let r = topology::report(&m);
+        prop_assert!(r.manifold && r.oriented);
+        prop_assert!(m.validate().is_ok());
+    }
+
+    #[test]
+    fn bvh_matches_brute_force(m in tube_mesh(), p in point3(3.0)) {
+        let bvh = metrics::TriangleBvh::new(&m);
+        let fast = bvh.closest(p).map(|c| c.1).unwrap_or(f64::INFINITY);
+        let brute = (0..m.triangles.len())
+            .map(|t| {
+                let [a, b, c] = m.corners(t);
+                pdesculpt::mesh::dist(p, metrics::closest_point_on_triangle(p, a, b, c))
+            })
+            .fold(f64::INFINITY, f64::min);
+        prop_assert!((fast - brute).abs() <= tol::ROUNDING);
+    }
+
+    #[test]
+    fn obj_parser_never_panics(s in "[vfg0-9 ./#\\-\n]{0,200}") {
+        let _ = parse_obj(&s, "fuzz.obj");
+    }
+}
+
+#[test]
+fn malformed_obj_names_the_line() {
+    let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
+    match parse_obj(text, "bad.obj") {
+        Err(MeshError::Parse { line, .. }) => assert_eq!(line, 4),
+        other => panic!("expected a parse error, got {other:?}"),
+    }
+    let nan = "v 0 nan 0\n";
+    assert!(matches!(
+        parse_obj(nan, "nan.obj"),
+        Err(MeshError::Parse { line: 1, .. })
+    ));
+    let short = "v 0 0\n";
+    assert!(matches!(
+        parse_obj(short, "short.obj"),
+        Err(MeshError::Parse { line: 1, .. })
+    ));
+}
+
+#[test]
+fn obj_groups_and_negative_indices() {
+    let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\ng a\nf 1 2 3 4\ng b\nf -4 -2 -1\n";
+    let m = parse_obj(text, "g.obj").expect("parses");
+    assert_eq!(m.groups, vec!["a".to_string(), "b".to_string()]);
+    assert_eq!(m.triangles.len(), 3);
+    assert_eq!(m.tri_group, vec![0, 0, 1]);
+    assert_eq!(m.triangles[2], [0, 2, 3]);
+}
+
+#[test]
+fn writing_validates_and_never_leaves_partial_files() {
+    let d = tmpdir("atomic");
+    let good = Mesh::new(
+        vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        vec![[0, 1, 2]],
+    );
+    let path = d.join("m.obj");
+    io::write(&good, &path).expect("writes");
+    let before = std::fs::read(&path).expect("exists");
+    let mut bad = good.clone();
+    bad.positions[1][2] = f64::NAN;
+    assert!(matches!(
+        io::write(&bad, &path),
+        Err(MeshError::NonFinite { index: 1, .. })
+    ));
+    assert_eq!(
+        std::fs::read(&path).expect("still there"),
+        before,
+        "previous file kept"
+    );
+    let leftovers: Vec<_> = std::fs::read_dir(&d)
+        .expect("dir")
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".tmp-"))
+        .collect();
+    assert!(leftovers.is_empty());
+    assert!(matches!(
+        io::write(&good, &d.join("m.xyz")),
+        Err(MeshError::UnknownFormat { .. })
+    ));
+    std::fs::remove_dir_all(&d).ok();
+}
+
+#[test]
+fn glb_is_well_formed() {
+    let m = pdesculpt::surface::tessellate(
+        &pdesculpt::surface::Revolution { r0: 1.0, r1: 0.2 },
+        pdesculpt::surface::Tessellation { nu: 4, nv: 8 },
+    );
+    let b = io::encode(&m, io::Format::Glb).expect("encodes");
+    assert_eq!(&b[0..4], b"glTF");
+    let total = u32::from_le_bytes([b[8], b[9], b[10], b[11]]) as usize;
+    assert_eq!(total, b.len());
+    let json_len = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;
+    assert_eq!(&b[16..20], b"JSON");
+    assert_eq!(json_len % 4, 0);
+    let doc: serde_json::Value = serde_json::from_slice(&b[20..20 + json_len]).expect("json");
+    let bin_len =
+        u32::from_le_bytes(b[20 + json_len..24 + json_len].try_into().expect("4 bytes")) as usize;
+    assert_eq!(&b[24 + json_len..28 + json_len], b"BIN\0");
+    let declared = doc["buffers"][0]["byteLength"]
+        .as_u64()
+        .expect("byteLength") as usize;
+    assert!(
+        declared <= bin_len && bin_len - declared < 4,
+        "BIN chunk is the buffer plus padding"
+    );
+    for view in doc["bufferViews"].as_array().expect("views") {
+        let end =
+            view["byteOffset"].as_u64().unwrap_or(0) + view["byteLength"].as_u64().unwrap_or(0);
+        assert!(end as usize <= bin_len);
+    }
+    assert_eq!(
+        doc["accessors"][0]["count"].as_u64(),
+        Some(m.positions.len() as u64)
+    );
+}
+
+#[test]
+fn makehuman_body_loads_with_targets() {
+    let base = makehuman::base_body().expect("base body");
+    assert_eq!(base.mesh.groups, vec!["body".to_string()]);
+    assert_eq!(base.mesh.triangles.len(), 2 * 13_378);
+    let (lo, hi) = base.mesh.bbox();
+    let height = hi[1] - lo[1];
+    assert!((15.0..18.5).contains(&height), "height {height}");
+    let pregnant = makehuman::target("stomach-pregnant-incr").expect("target");
+    let morphed = makehuman::body(&[(pregnant, 1.0)]).expect("morphed");
+    let moved = base
+        .mesh
+        .positions
+        .iter()
+        .zip(&morphed.mesh.positions)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        moved > 100,
+        "the pregnancy target moves the belly ({moved} vertices)"
+    );
+    // the belly moves forward (+z)
+    let dz: f64 = base
+        .mesh
+        .positions
+        .iter()
+        .zip(&morphed.mesh.positions)
+        .map(|(a, b)| b[2] - a[2])
+        .fold(0.0, f64::max);
+    assert!(dz > 0.3, "max forward motion {dz}");
+    assert!(makehuman::target("no-such-target").is_err());
+}
+
+#[test]
+fn render_draws_the_mesh_inside_the_frame() {
+    let m = pdesculpt::surface::tessellate(
+        &pdesculpt::surface::Revolution { r0: 1.0, r1: 0.2 },
+        pdesculpt::surface::Tessellation { nu: 8, nv: 16 },
+    );
+    for view in [
+        View::Front,
+        View::Side,
+        View::Top,
+        View::Perspective {
+            yaw: 30.0,
+            pitch: 20.0,
+        },
+    ] {
+        let img = render(
+            &m,
+            &RenderOptions {
+                width: 64,
+                height: 64,
+                view,
+                ..Default::default()
+            },
+        );
+        let painted = (0..64 * 64)
+            .filter(|&i| img.rgba[4 * i..4 * i + 3] != [255, 255, 255])
+            .count();
+        assert!(painted > 200, "{view:?}: {painted} pixels");
+        // the border stays background (margin)
+        for x in 0..64 {
+            assert_eq!(img.get(x, 0), [255, 255, 255, 255]);
+        }
+    }
+}

@@ -3,6 +3,7 @@
 mod cli;
 mod infra;
 mod registry;
+mod strategies;
 
 mod conv;
 mod gec;
