@@ -5,7 +5,7 @@
 
 use pdesculpt::makehuman;
 use pdesculpt::mesh::io;
-use pdesculpt::render::{render, Image, RenderOptions, View};
+use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;
 
 /// Arguments of `pdesculpt demo`.
@@ -32,21 +32,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let png = args.out.join("demo.png");
     io::write(&body.mesh, &glb)?;
     io::write(&body.mesh, &obj)?;
-    let views: Vec<Image> = [View::Front, View::Side]
-        .into_iter()
-        .map(|view| {
-            render(
-                &body.mesh,
-                &RenderOptions {
-                    width: 400,
-                    height: 800,
-                    view,
-                    ..Default::default()
-                },
-            )
-        })
-        .collect();
-    Image::hstack(&views, [255, 255, 255, 255]).save_png(&png)?;
+    render_views(
+        &body.mesh,
+        &[View::Front, View::Side],
+        &RenderOptions {
+            width: 400,
+            height: 800,
+            ..Default::default()
+        },
+    )
+    .save_png(&png)?;
     for p in [&glb, &obj, &png] {
         eprintln!("wrote {}", p.display());
     }

@@ -1,7 +1,7 @@
 //! `pdesculpt render MESH -o PNG [--view front|side|top|perspective]...`.
 
 use pdesculpt::mesh::io;
-use pdesculpt::render::{render, Image, RenderOptions, View};
+use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;
 
 /// Arguments of `pdesculpt render`.
@@ -43,21 +43,15 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         .map(|v| v.parse::<View>().map_err(anyhow::Error::msg))
         .collect::<anyhow::Result<_>>()?;
     let m = io::read(&args.mesh)?;
-    let images: Vec<Image> = views
-        .iter()
-        .map(|&view| {
-            render(
-                &m,
-                &RenderOptions {
-                    width: args.size,
-                    height: args.size,
-                    view,
-                    ..Default::default()
-                },
-            )
-        })
-        .collect();
-    let img = Image::hstack(&images, [255, 255, 255, 255]);
+    let img = render_views(
+        &m,
+        &views,
+        &RenderOptions {
+            width: args.size,
+            height: args.size,
+            ..Default::default()
+        },
+    );
     img.save_png(&args.output)?;
     eprintln!("wrote {}", args.output.display());
     if json {

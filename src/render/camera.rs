@@ -124,6 +124,17 @@ impl Camera {
         cam
     }
 
+    /// Pixels per unit of an orthographic camera.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// The same camera with another orthographic scale (pixels per unit).
+    pub fn with_scale(mut self, scale: f64) -> Camera {
+        self.scale = scale;
+        self
+    }
+
     fn to_view(&self, p: [f64; 3]) -> [f64; 3] {
         let d = crate::mesh::sub(p, self.centre);
         [

@@ -138,6 +138,34 @@ pub fn render(m: &Mesh, o: &RenderOptions) -> Image {
     render_with_camera(m, o, &cam)
 }
 
+/// Renders several views side by side at one common scale (orthographic
+/// views share pixels per unit, so front and side compare directly).
+pub fn render_views(m: &Mesh, views: &[View], o: &RenderOptions) -> Image {
+    let cams: Vec<Camera> = views
+        .iter()
+        .map(|&v| Camera::fit(m, v, o.width, o.height, o.margin))
+        .collect();
+    let common = cams
+        .iter()
+        .zip(views)
+        .filter(|(_, v)| !matches!(v, View::Perspective { .. }))
+        .map(|(c, _)| c.scale())
+        .fold(f64::INFINITY, f64::min);
+    let images: Vec<Image> = cams
+        .into_iter()
+        .zip(views)
+        .map(|(c, v)| {
+            let c = if matches!(v, View::Perspective { .. }) {
+                c
+            } else {
+                c.with_scale(common)
+            };
+            render_with_camera(m, o, &c)
+        })
+        .collect();
+    Image::hstack(&images, o.background)
+}
+
 /// Renders with an explicit camera (for image series with a fixed frame).
 pub fn render_with_camera(m: &Mesh, o: &RenderOptions, cam: &Camera) -> Image {
     let (w, h) = (o.width, o.height);
@@ -161,27 +189,39 @@ pub fn render_with_camera(m: &Mesh, o: &RenderOptions, cam: &Camera) -> Image {
             }
         }
     };
+    // smooth (per-pixel interpolated vertex normals) where the mesh is
+    // smooth, flat across creases: a vertex normal is used only if it is
+    // within 45 degrees of the face normal
+    let vn: Vec<[f64; 3]> = m
+        .vertex_normals()
+        .iter()
+        .map(|&n| cam.to_view_dir(n))
+        .collect();
     for (t, tri) in m.triangles.iter().enumerate() {
-        let n = crate::surface::normalize(m.face_normal_area(t));
-        let nv = cam.to_view_dir(n);
-        // double-sided: flip towards the viewer
-        let nv = if nv[2] < 0.0 {
-            [-nv[0], -nv[1], -nv[2]]
-        } else {
-            nv
-        };
-        let diffuse = crate::mesh::dot(nv, light).max(0.0);
-        let half = crate::surface::normalize([light[0], light[1], light[2] + 1.0]);
-        let spec = crate::mesh::dot(nv, half).max(0.0).powi(32) * 0.25;
+        let fnorm = cam.to_view_dir(crate::surface::normalize(m.face_normal_area(t)));
+        let corner_normals = tri.map(|i| {
+            let n = vn[i as usize];
+            if crate::mesh::dot(n, fnorm) > std::f64::consts::FRAC_1_SQRT_2 {
+                n
+            } else {
+                fnorm
+            }
+        });
         let base = colour_of(m.tri_group[t] as usize);
-        let shade = |c: f64| ((c * (0.25 + 0.7 * diffuse) + spec).min(1.0) * 255.0) as u8;
-        let col = [shade(base[0]), shade(base[1]), shade(base[2]), 255];
         let p = [
             screen[tri[0] as usize],
             screen[tri[1] as usize],
             screen[tri[2] as usize],
         ];
-        raster_triangle(&mut img, &mut depth, p, col);
+        raster_triangle(&mut img, &mut depth, p, |w| {
+            let mut n = [0.0; 3];
+            for k in 0..3 {
+                n[k] = w[0] * corner_normals[0][k]
+                    + w[1] * corner_normals[1][k]
+                    + w[2] * corner_normals[2][k];
+            }
+            shade(base, crate::surface::normalize(n), light)
+        });
     }
     for ov in &o.overlays {
         let pts: Vec<[f64; 3]> = ov.points.iter().map(|&p| cam.project(p)).collect();
@@ -205,7 +245,24 @@ fn edge(a: [f64; 3], b: [f64; 3], x: f64, y: f64) -> f64 {
     (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])
 }
 
-fn raster_triangle(img: &mut Image, depth: &mut [f64], p: [[f64; 3]; 3], col: [u8; 4]) {
+/// Blinn-Phong shading of a double-sided surface lit from `light` (view
+/// space), with the viewer along +z.
+fn shade(base: [f64; 3], n: [f64; 3], light: [f64; 3]) -> [u8; 4] {
+    // double-sided: flip towards the viewer
+    let n = if n[2] < 0.0 { [-n[0], -n[1], -n[2]] } else { n };
+    let diffuse = crate::mesh::dot(n, light).max(0.0);
+    let half = crate::surface::normalize([light[0], light[1], light[2] + 1.0]);
+    let spec = crate::mesh::dot(n, half).max(0.0).powi(32) * 0.25;
+    let c = |x: f64| ((x * (0.25 + 0.7 * diffuse) + spec).min(1.0) * 255.0) as u8;
+    [c(base[0]), c(base[1]), c(base[2]), 255]
+}
+
+fn raster_triangle(
+    img: &mut Image,
+    depth: &mut [f64],
+    p: [[f64; 3]; 3],
+    colour: impl Fn([f64; 3]) -> [u8; 4],
+) {
     let area = edge(p[0], p[1], p[2][0], p[2][1]);
     if area.abs() < 1e-12 || !area.is_finite() {
         return;
@@ -250,7 +307,7 @@ fn raster_triangle(img: &mut Image, depth: &mut [f64], p: [[f64; 3]; 3], col: [u
             let o = y * img.width + x;
             if z < depth[o] {
                 depth[o] = z;
-                img.put(x as i64, y as i64, col);
+                img.put(x as i64, y as i64, colour([w0, w1, w2]));
             }
         }
     }
