@@ -11,7 +11,9 @@ use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::ode6::check::test_curve;
 use pdesculpt::ode6::surface::v_jumps;
-use pdesculpt::ode6::{Approach2, Basis, BoundaryCurves, Chain, Curve, DiffFormula, Ode6Surface, Params};
+use pdesculpt::ode6::{
+    Approach2, Basis, BoundaryCurves, Chain, Curve, DiffFormula, Ode6Surface, Params,
+};
 use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, tessellate_grid, Domain, Surface, Tessellation};
 use serde_json::json;
@@ -29,30 +31,67 @@ pub fn figures() -> Vec<Figure> {
 
 pub(crate) const NU: usize = 40;
 pub(crate) const NV: usize = 96;
-const VIEW: View = View::Perspective { yaw: 35.0, pitch: 25.0 };
+const VIEW: View = View::Perspective {
+    yaw: 35.0,
+    pitch: 25.0,
+};
 const GREY: [u8; 4] = [60, 60, 60, 255];
 const RED: [u8; 4] = [200, 30, 30, 255];
 
 /// Renders meshes side by side with one camera, overlays on each.
+/// The figures build patches along z; the renderer has y up: (x, y, z) -> (x, z, -y).
+fn y_up(p: [f64; 3]) -> [f64; 3] {
+    [p[0], p[2], -p[1]]
+}
+
 fn panels(meshes: &[Mesh], overlays: &[Overlay], view: View) -> Image {
+    let meshes: Vec<Mesh> = meshes
+        .iter()
+        .map(|m| {
+            let mut m = m.clone();
+            m.map_positions(y_up);
+            m
+        })
+        .collect();
+    let overlays: Vec<Overlay> = overlays
+        .iter()
+        .map(|o| Overlay {
+            points: o.points.iter().map(|p| y_up(*p)).collect(),
+            ..o.clone()
+        })
+        .collect();
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
-    for m in meshes {
+    for m in &meshes {
         let (a, b) = m.bbox();
         for k in 0..3 {
             lo[k] = lo[k].min(a[k]);
             hi[k] = hi[k].max(b[k]);
         }
     }
-    let o = RenderOptions { width: 360, height: 360, view, overlays: overlays.to_vec(), ..Default::default() };
+    let o = RenderOptions {
+        width: 360,
+        height: 360,
+        view,
+        overlays,
+        ..Default::default()
+    };
     let cam = Camera::fit_box(lo, hi, view, o.width, o.height, o.margin);
-    let imgs: Vec<Image> = meshes.iter().map(|m| render_with_camera(m, &o, &cam)).collect();
+    let imgs: Vec<Image> = meshes
+        .iter()
+        .map(|m| render_with_camera(m, &o, &cam))
+        .collect();
     Image::hstack(&imgs, [255, 255, 255, 255])
 }
 
 fn overlay(c: &Curve, colour: [u8; 4]) -> Overlay {
     let pts = (0..=120).map(|i| c.eval(i as f64 / 120.0)).collect();
-    Overlay { points: pts, closed: c.closed(), colour, depth_test: false }
+    Overlay {
+        points: pts,
+        closed: c.closed(),
+        colour,
+        depth_test: false,
+    }
 }
 
 /// Second derivatives of the natural cubic spline through `y` at knots `t`.
@@ -64,7 +103,8 @@ fn spline_m2(t: &[f64], y: &[f64]) -> Vec<f64> {
     }
     // Tridiagonal system for the interior second derivatives (Thomas).
     let k = n - 2;
-    let (mut sub, mut diag, mut sup, mut rhs) = (vec![0.0; k], vec![0.0; k], vec![0.0; k], vec![0.0; k]);
+    let (mut sub, mut diag, mut sup, mut rhs) =
+        (vec![0.0; k], vec![0.0; k], vec![0.0; k], vec![0.0; k]);
     for i in 1..n - 1 {
         let (h0, h1) = (t[i] - t[i - 1], t[i + 1] - t[i]);
         sub[i - 1] = h0 / 6.0;
@@ -99,7 +139,9 @@ fn spline_eval(t: &[f64], y: &[f64], m2: &[f64], u: f64) -> f64 {
 /// `knots` (two curves: the ruled surface), sampled on the figure grid.
 pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> Mesh {
     let closed = curves[0].closed();
-    let us: Vec<f64> = (0..=nu).map(|i| knots[0] + (knots[knots.len() - 1] - knots[0]) * i as f64 / nu as f64).collect();
+    let us: Vec<f64> = (0..=nu)
+        .map(|i| knots[0] + (knots[knots.len() - 1] - knots[0]) * i as f64 / nu as f64)
+        .collect();
     let nvp = if closed { nv } else { nv + 1 };
     let vs: Vec<f64> = (0..nvp).map(|j| j as f64 / nv as f64).collect();
     let mut pts = vec![[0.0; 3]; us.len() * nvp];
@@ -113,7 +155,12 @@ pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> Me
             }
         }
     }
-    let d = Domain { u: (knots[0], knots[knots.len() - 1]), v: (0.0, 1.0), closed_u: false, closed_v: closed };
+    let d = Domain {
+        u: (knots[0], knots[knots.len() - 1]),
+        v: (0.0, 1.0),
+        closed_u: false,
+        closed_v: closed,
+    };
     tessellate_grid(pts, us.len(), nvp, d)
 }
 
@@ -127,7 +174,11 @@ fn open_curve(scale: f64, z: f64, bend: f64) -> anyhow::Result<Curve> {
         .map(|i| {
             let s = i as f64 / 24.0;
             let a = std::f64::consts::PI * (0.1 + 0.8 * s);
-            [scale * a.cos(), bend * scale * a.sin(), z + 0.1 * (3.0 * a).sin()]
+            [
+                scale * a.cos(),
+                bend * scale * a.sin(),
+                z + 0.1 * (3.0 * a).sin(),
+            ]
         })
         .collect();
     Ok(Curve::from_polyline(&pts, false)?)
@@ -135,22 +186,39 @@ fn open_curve(scale: f64, z: f64, bend: f64) -> anyhow::Result<Curve> {
 
 /// Largest distance from points to a mesh's vertices' closest triangle.
 fn dist_to(points: &[[f64; 3]], m: &Mesh) -> f64 {
-    pdesculpt::mesh::metrics::point_distances(points, m).into_iter().fold(0.0, f64::max)
+    pdesculpt::mesh::metrics::point_distances(points, m)
+        .into_iter()
+        .fold(0.0, f64::max)
 }
 
 fn fig2_3(ctx: &Ctx) -> anyhow::Result<()> {
     let paper = Params::new(1.0, 3.0, 1.0);
-    let ws = [("w = 0", [0.0; 4]), ("w1 = 1, w3 = 10", [1.0, 0.0, 10.0, 0.0]), ("w2 = 1, w4 = 10", [0.0, 1.0, 0.0, 10.0])];
+    let ws = [
+        ("w = 0", [0.0; 4]),
+        ("w1 = 1, w3 = 10", [1.0, 0.0, 10.0, 0.0]),
+        ("w2 = 1, w4 = 10", [0.0, 1.0, 0.0, 10.0]),
+    ];
     let mut data = Vec::new();
     for (name, c1, c4) in [
-        ("fig2_closed", Curve::Fourier(test_curve(1.0, 0.0, 0.0)), Curve::Fourier(test_curve(0.6, 1.0, 1.0))),
-        ("fig3_open", open_curve(1.0, 0.0, 1.0)?, open_curve(0.8, 1.0, 0.5)?),
+        (
+            "fig2_closed",
+            Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
+            Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
+        ),
+        (
+            "fig3_open",
+            open_curve(1.0, 0.0, 1.0)?,
+            open_curve(0.8, 1.0, 0.5)?,
+        ),
     ] {
         let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV);
         let mut meshes = vec![lofted.clone()];
         let mut rows = Vec::new();
         for (wname, w) in ws {
-            let s = Ode6Surface::new(Basis::new(paper)?, BoundaryCurves::approach1(c1.clone(), c4.clone(), w)?);
+            let s = Ode6Surface::new(
+                Basis::new(paper)?,
+                BoundaryCurves::approach1(c1.clone(), c4.clone(), w)?,
+            );
             let m = tess(&s);
             // w = 0 keeps every point on the segment c1(v)-c4(v): on the loft.
             rows.push(json!({"w": w, "label": wname, "max_distance_to_loft": dist_to(&m.positions, &lofted), "vertices": m.positions.len()}));
@@ -166,13 +234,30 @@ fn fig2_3(ctx: &Ctx) -> anyhow::Result<()> {
 
 /// `c` scaled about its centre by `s`, moved to height `z`, turned by `a`.
 fn control_from(c: &Fourier3, s: f64, z: f64, a: f64) -> Curve {
-    let rot = |p: [f64; 3]| [p[0] * a.cos() - p[1] * a.sin(), p[0] * a.sin() + p[1] * a.cos(), p[2]];
-    let sc = |v: &Vec<[f64; 3]>| v.iter().map(|p| rot([p[0] * s, p[1] * s, p[2] * s])).collect();
-    Curve::Fourier(Fourier3 { c0: [c.c0[0], c.c0[1], z], cos: sc(&c.cos), sin: sc(&c.sin) })
+    let rot = |p: [f64; 3]| {
+        [
+            p[0] * a.cos() - p[1] * a.sin(),
+            p[0] * a.sin() + p[1] * a.cos(),
+            p[2],
+        ]
+    };
+    let sc = |v: &Vec<[f64; 3]>| {
+        v.iter()
+            .map(|p| rot([p[0] * s, p[1] * s, p[2] * s]))
+            .collect()
+    };
+    Curve::Fourier(Fourier3 {
+        c0: [c.c0[0], c.c0[1], z],
+        cos: sc(&c.cos),
+        sin: sc(&c.sin),
+    })
 }
 
 fn open_control(c: &Curve, s: f64, dz: f64) -> anyhow::Result<Curve> {
-    let pts: Vec<[f64; 3]> = (0..=24).map(|i| c.eval(i as f64 / 24.0)).map(|p| [p[0] * s, p[1] * s, p[2] + dz]).collect();
+    let pts: Vec<[f64; 3]> = (0..=24)
+        .map(|i| c.eval(i as f64 / 24.0))
+        .map(|p| [p[0] * s, p[1] * s, p[2] + dz])
+        .collect();
     Ok(Curve::from_polyline(&pts, false)?)
 }
 
@@ -181,12 +266,22 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
     let (fa, fb) = (test_curve(1.0, 0.0, 0.0), test_curve(0.6, 1.0, 1.0));
     let closed = {
         let (c1, c4) = (Curve::Fourier(fa.clone()), Curve::Fourier(fb.clone()));
-        let ctl = [control_from(&fa, 1.3, u2, 0.1), control_from(&fa, 1.2, u3, 0.2), control_from(&fb, 1.4, u5, -0.2), control_from(&fb, 1.2, u6, -0.1)];
+        let ctl = [
+            control_from(&fa, 1.3, u2, 0.1),
+            control_from(&fa, 1.2, u3, 0.2),
+            control_from(&fb, 1.4, u5, -0.2),
+            control_from(&fb, 1.2, u6, -0.1),
+        ];
         (c1, ctl, c4)
     };
     let open = {
         let (c1, c4) = (open_curve(1.0, 0.0, 1.0)?, open_curve(0.8, 1.0, 0.5)?);
-        let ctl = [open_control(&c1, 1.3, u2)?, open_control(&c1, 1.2, u3)?, open_control(&c4, 1.3, u5 - 1.0)?, open_control(&c4, 1.15, u6 - 1.0)?];
+        let ctl = [
+            open_control(&c1, 1.3, u2)?,
+            open_control(&c1, 1.2, u3)?,
+            open_control(&c4, 1.3, u5 - 1.0)?,
+            open_control(&c4, 1.15, u6 - 1.0)?,
+        ];
         (c1, ctl, c4)
     };
     let mut data = Vec::new();
@@ -201,12 +296,26 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
             (Params::new(1e-4, 3.0, 1e-4), DiffFormula::ThreePoint),
             (Params::new(1.0, 3.0, 1.0), DiffFormula::Printed),
         ] {
-            let a = Approach2 { u2, u3, u5, u6, formula };
-            let s = Ode6Surface::new(Basis::new(p)?, BoundaryCurves::approach2(c1.clone(), ctl.clone(), c4.clone(), &a)?);
+            let a = Approach2 {
+                u2,
+                u3,
+                u5,
+                u6,
+                formula,
+            };
+            let s = Ode6Surface::new(
+                Basis::new(p)?,
+                BoundaryCurves::approach2(c1.clone(), ctl.clone(), c4.clone(), &a)?,
+            );
             // Distance of each control curve to the surface's iso-line at its u.
             let ctl_dist: Vec<f64> = [(u2, &ctl[0]), (u3, &ctl[1]), (u5, &ctl[2]), (u6, &ctl[3])]
                 .iter()
-                .map(|(u, c)| (0..64).map(|j| j as f64 / 64.0).map(|v| pdesculpt::mesh::dist(s.point(*u, v), c.eval(v))).fold(0.0, f64::max))
+                .map(|(u, c)| {
+                    (0..64)
+                        .map(|j| j as f64 / 64.0)
+                        .map(|v| pdesculpt::mesh::dist(s.point(*u, v), c.eval(v)))
+                        .fold(0.0, f64::max)
+                })
                 .collect();
             let m = tess(&s);
             rows.push(json!({"params": p, "formula": format!("{formula:?}"), "case": s.basis.case.name(), "control_curve_distance_at_its_u": ctl_dist, "max_distance_to_loft": dist_to(&m.positions, &lofted)}));
@@ -223,7 +332,11 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
 
 fn lin(terms: &[(f64, &Fourier3)]) -> Fourier3 {
     let n = terms.iter().map(|t| t.1.harmonics()).max().unwrap_or(0);
-    let mut out = Fourier3 { c0: [0.0; 3], cos: vec![[0.0; 3]; n], sin: vec![[0.0; 3]; n] };
+    let mut out = Fourier3 {
+        c0: [0.0; 3],
+        cos: vec![[0.0; 3]; n],
+        sin: vec![[0.0; 3]; n],
+    };
     for (w, f) in terms {
         let f = f.with_harmonics(n);
         for k in 0..3 {
@@ -244,21 +357,58 @@ pub(crate) fn sections_from(p: &[Fourier3]) -> Vec<[Curve; 3]> {
     (0..n)
         .map(|i| {
             let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
-            let d1 = lin(&[(1.0 / (b - a) as f64, &p[b]), (-1.0 / (b - a) as f64, &p[a])]);
-            let (a2, m2, b2) = if i == 0 { (0, 1, 2) } else if i == n - 1 { (n - 3, n - 2, n - 1) } else { (i - 1, i, i + 1) };
+            let d1 = lin(&[
+                (1.0 / (b - a) as f64, &p[b]),
+                (-1.0 / (b - a) as f64, &p[a]),
+            ]);
+            let (a2, m2, b2) = if i == 0 {
+                (0, 1, 2)
+            } else if i == n - 1 {
+                (n - 3, n - 2, n - 1)
+            } else {
+                (i - 1, i, i + 1)
+            };
             let d2 = lin(&[(1.0, &p[a2]), (-2.0, &p[m2]), (1.0, &p[b2])]);
-            [Curve::Fourier(p[i].clone()), Curve::Fourier(d1), Curve::Fourier(d2)]
+            [
+                Curve::Fourier(p[i].clone()),
+                Curve::Fourier(d1),
+                Curve::Fourier(d2),
+            ]
         })
         .collect()
 }
 
 fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
-    let secs = [test_curve(1.0, 0.0, 0.0), test_curve(0.6, 1.0, 0.8), test_curve(1.1, 2.0, -0.5), test_curve(0.7, 3.0, 0.3)];
+    let secs = [
+        test_curve(1.0, 0.0, 0.0),
+        test_curve(0.6, 1.0, 0.8),
+        test_curve(1.1, 2.0, -0.5),
+        test_curve(0.7, 3.0, 0.3),
+    ];
     let sections = sections_from(&secs);
-    let c2 = Chain::from_sections(&sections, (0..3).map(|_| Basis::new(Params::new(1.0, 3.0, 1.0))).collect::<Result<_, _>>()?)?;
-    let c1 = Chain::from_sections(&sections, (0..3).map(|_| Basis::reduced(Params::new(0.0, 1.0, 0.0))).collect::<Result<_, _>>()?)?;
+    let c2 = Chain::from_sections(
+        &sections,
+        (0..3)
+            .map(|_| Basis::new(Params::new(1.0, 3.0, 1.0)))
+            .collect::<Result<_, _>>()?,
+    )?;
+    let c1 = Chain::from_sections(
+        &sections,
+        (0..3)
+            .map(|_| Basis::reduced(Params::new(0.0, 1.0, 0.0)))
+            .collect::<Result<_, _>>()?,
+    )?;
     let curves: Vec<Curve> = secs.iter().map(|f| Curve::Fourier(f.clone())).collect();
-    let lofted: Vec<Mesh> = (0..3).map(|i| loft(&[&curves[i], &curves[i + 1]], &[i as f64, i as f64 + 1.0], NU, NV)).collect();
+    let lofted: Vec<Mesh> = (0..3)
+        .map(|i| {
+            loft(
+                &[&curves[i], &curves[i + 1]],
+                &[i as f64, i as f64 + 1.0],
+                NU,
+                NV,
+            )
+        })
+        .collect();
     let mut loft_mesh = lofted[0].clone();
     loft_mesh.append(&lofted[1]);
     loft_mesh.append(&lofted[2]);
@@ -279,11 +429,18 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             .collect()
     };
     let (p2, p1) = (prof(&c2), prof(&c1));
-    plot_profiles(&ctx.path("004-fig6_curvature.png"), &[("C2: ODE6 rho = lambda = 1, eta = 3", &p2), ("C1: rho = 0 (positions + tangents only)", &p1)])?;
+    plot_profiles(
+        &ctx.path("004-fig6_curvature.png"),
+        &[
+            ("C2: ODE6 rho = lambda = 1, eta = 3", &p2),
+            ("C1: rho = 0 (positions + tangents only)", &p1),
+        ],
+    )?;
     let j2 = c2.u_jumps(32);
     let j1 = c1.u_jumps(32);
     // Fig 6b: v-split with the paper's parameters against equal ones.
-    let bc = BoundaryCurves::approach1(curves[0].clone(), curves[1].clone(), [1.0, 0.5, -1.0, 2.0])?;
+    let bc =
+        BoundaryCurves::approach1(curves[0].clone(), curves[1].clone(), [1.0, 0.5, -1.0, 2.0])?;
     let split = |pa: Params, pb: Params| -> anyhow::Result<[f64; 3]> {
         let a = Ode6Surface::new(Basis::new(pa)?, bc.clone()).with_v_range(0.0, 0.5)?;
         let b = Ode6Surface::new(Basis::new(pb)?, bc.clone()).with_v_range(0.5, 1.0)?;
@@ -303,18 +460,31 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn plot_profiles(path: &std::path::Path, series: &[(&str, &Vec<(f64, f64)>)]) -> anyhow::Result<()> {
+fn plot_profiles(
+    path: &std::path::Path,
+    series: &[(&str, &Vec<(f64, f64)>)],
+) -> anyhow::Result<()> {
     use plotters::prelude::*;
-    let ymax = series.iter().flat_map(|s| s.1.iter().map(|p| p.1)).fold(0.0, f64::max) * 1.1;
+    let ymax = series
+        .iter()
+        .flat_map(|s| s.1.iter().map(|p| p.1))
+        .fold(0.0, f64::max)
+        * 1.1;
     let root = BitMapBackend::new(path, (900, 420)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut ch = ChartBuilder::on(&root)
-        .caption("|S_uu| along u at v = 0.1 (joins at u = 1, 2)", ("sans-serif", 20))
+        .caption(
+            "|S_uu| along u at v = 0.1 (joins at u = 1, 2)",
+            ("sans-serif", 20),
+        )
         .margin(10)
         .x_label_area_size(35)
         .y_label_area_size(55)
         .build_cartesian_2d(0.0..3.0, 0.0..ymax)?;
-    ch.configure_mesh().x_desc("u (3 patches)").y_desc("|S_uu|").draw()?;
+    ch.configure_mesh()
+        .x_desc("u (3 patches)")
+        .y_desc("|S_uu|")
+        .draw()?;
     let colours = [RGBColor(30, 90, 200), RGBColor(200, 40, 40)];
     for (i, (name, pts)) in series.iter().enumerate() {
         let c = colours[i % 2];
@@ -322,25 +492,42 @@ fn plot_profiles(path: &std::path::Path, series: &[(&str, &Vec<(f64, f64)>)]) ->
             .label(*name)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
     }
-    ch.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).position(SeriesLabelPosition::UpperRight).draw()?;
+    ch.configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperRight)
+        .draw()?;
     root.present().context("writing plot")?;
     Ok(())
 }
 
 fn fig10(ctx: &Ctx) -> anyhow::Result<()> {
-    let (c1, c4) = (Curve::Fourier(test_curve(1.0, 0.0, 0.0)), Curve::Fourier(test_curve(0.6, 1.0, 1.0)));
+    let (c1, c4) = (
+        Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
+        Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
+    );
     let w = [1.0, 2.0, -1.0, 4.0];
     let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV);
-    let sets = [Params::new(1.0, 3.0, 1.0), Params::new(1.0, 1.0, 3.0), Params::new(1e-4, 3.0, 1e-4), Params::new(1.0, -20.0, 50.0), Params::new(1.0, 30.0, 200.0)];
+    let sets = [
+        Params::new(1.0, 3.0, 1.0),
+        Params::new(1.0, 1.0, 3.0),
+        Params::new(1e-4, 3.0, 1e-4),
+        Params::new(1.0, -20.0, 50.0),
+        Params::new(1.0, 30.0, 200.0),
+    ];
     let mut meshes = vec![lofted.clone()];
     let mut rows = Vec::new();
     for p in sets {
-        let s = Ode6Surface::new(Basis::new(p)?, BoundaryCurves::approach1(c1.clone(), c4.clone(), w)?);
+        let s = Ode6Surface::new(
+            Basis::new(p)?,
+            BoundaryCurves::approach1(c1.clone(), c4.clone(), w)?,
+        );
         let m = tess(&s);
         rows.push(json!({"params": p, "case": s.basis.case.name(), "boundary_error": s.basis.boundary_error(), "max_distance_to_loft": dist_to(&m.positions, &lofted)}));
         meshes.push(m);
     }
-    panels(&meshes, &[overlay(&c1, GREY), overlay(&c4, GREY)], VIEW).save_png(&ctx.path("004-fig10.png"))?;
+    panels(&meshes, &[overlay(&c1, GREY), overlay(&c4, GREY)], VIEW)
+        .save_png(&ctx.path("004-fig10.png"))?;
     ctx.write_json("004-fig10.json", &json!({"panels": ["loft", "rho=1 eta=3 lambda=1", "rho=1 eta=1 lambda=3 (complex roots)", "rho=lambda=1e-4 eta=3", "rho=1 eta=-20 lambda=50 (growing)", "rho=1 eta=30 lambda=200 (oscillatory)"], "w": w, "surfaces": rows}))?;
     Ok(())
 }

@@ -124,7 +124,12 @@ impl Particular {
                 let k2 = kappa * kappa;
                 let symbol = -rho * k2 * k2 * k2 + eta * k2 * k2 - lambda * k2;
                 let size = rho.abs() * k2 * k2 * k2 + eta.abs() * k2 * k2 + lambda.abs() * k2;
-                if !(symbol.abs() > RESONANCE * size) || size == 0.0 {
+                if !(symbol.is_finite() && size.is_finite()) {
+                    return Err(Ode6Error::BadData(format!(
+                        "sine force kappa = {kappa} overflows the symbol"
+                    )));
+                }
+                if symbol.abs() <= RESONANCE * size || size == 0.0 {
                     return Err(Ode6Error::Resonance { kappa2: k2, symbol });
                 }
                 Ok(Particular::Sine {

@@ -24,11 +24,15 @@ fn resample(loop_: &Polyline, m: usize) -> Vec<[f64; 3]> {
     let mut p = loop_.points.clone();
     // Orientation: signed area in the (z, x) plane.
     let n = p.len();
-    let area: f64 = (0..n).map(|i| p[i][2] * p[(i + 1) % n][0] - p[(i + 1) % n][2] * p[i][0]).sum();
+    let area: f64 = (0..n)
+        .map(|i| p[i][2] * p[(i + 1) % n][0] - p[(i + 1) % n][2] * p[i][0])
+        .sum();
     if area < 0.0 {
         p.reverse();
     }
-    let start = (0..n).max_by(|&a, &b| p[a][2].total_cmp(&p[b][2])).unwrap_or(0);
+    let start = (0..n)
+        .max_by(|&a, &b| p[a][2].total_cmp(&p[b][2]))
+        .unwrap_or(0);
     p.rotate_left(start);
     let len = loop_.length();
     let mut out = Vec::with_capacity(m);
@@ -43,7 +47,11 @@ fn resample(loop_: &Polyline, m: usize) -> Vec<[f64; 3]> {
         let (a, b) = (p[i % n], p[(i + 1) % n]);
         let seg = dist(a, b).max(f64::MIN_POSITIVE);
         let t = ((target - acc) / seg).clamp(0.0, 1.0);
-        out.push([a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])]);
+        out.push([
+            a[0] + t * (b[0] - a[0]),
+            a[1] + t * (b[1] - a[1]),
+            a[2] + t * (b[2] - a[2]),
+        ]);
     }
     out
 }
@@ -57,11 +65,19 @@ struct Region {
 
 fn left_leg(loops: &[Polyline]) -> Option<Polyline> {
     // The loop with centroid x > 0 nearest the body's midline (hands are further out).
-    loops.iter().filter(|l| l.closed && l.centroid()[0] > 0.0).min_by(|a, b| a.centroid()[0].total_cmp(&b.centroid()[0])).cloned()
+    loops
+        .iter()
+        .filter(|l| l.closed && l.centroid()[0] > 0.0)
+        .min_by(|a, b| a.centroid()[0].total_cmp(&b.centroid()[0]))
+        .cloned()
 }
 
 fn longest(loops: &[Polyline]) -> Option<Polyline> {
-    loops.iter().filter(|l| l.closed).max_by(|a, b| a.length().total_cmp(&b.length())).cloned()
+    loops
+        .iter()
+        .filter(|l| l.closed)
+        .max_by(|a, b| a.length().total_cmp(&b.length()))
+        .cloned()
 }
 
 pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
@@ -69,28 +85,47 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
     let (lo, hi) = body.bbox();
     let h = hi[1] - lo[1];
     let regions = [
-        Region { name: "left leg (knee to upper thigh and calf)", y: (lo[1] + 0.12 * h, lo[1] + 0.42 * h), pick: left_leg },
-        Region { name: "head (chin to crown, face and skull)", y: (lo[1] + 0.885 * h, lo[1] + 0.975 * h), pick: longest },
+        Region {
+            name: "left leg (knee to upper thigh and calf)",
+            y: (lo[1] + 0.12 * h, lo[1] + 0.42 * h),
+            pick: left_leg,
+        },
+        Region {
+            name: "head (chin to crown, face and skull)",
+            y: (lo[1] + 0.885 * h, lo[1] + 0.975 * h),
+            pick: longest,
+        },
     ];
     let mut rows = Vec::new();
     for r in &regions {
-        for (k, m) in [(8usize, 24usize), (12, 32), (16, 48)] {
-            let ys: Vec<f64> = (0..k).map(|i| r.y.0 + (r.y.1 - r.y.0) * i as f64 / (k - 1) as f64).collect();
+        for (k, m) in [(6usize, 16usize), (8, 24), (12, 32), (16, 48)] {
+            let ys: Vec<f64> = (0..k)
+                .map(|i| r.y.0 + (r.y.1 - r.y.0) * i as f64 / (k - 1) as f64)
+                .collect();
             let mut secs: Vec<Fourier3> = Vec::new();
             let mut centroids = Vec::new();
             let mut radius = 0.0f64;
             for &y in &ys {
                 let loops = slice(&body, [0.0, y, 0.0], [0.0, 1.0, 0.0]);
-                let l = (r.pick)(&loops).ok_or_else(|| anyhow::anyhow!("no loop at y = {y} for {}", r.name))?;
+                let l = (r.pick)(&loops)
+                    .ok_or_else(|| anyhow::anyhow!("no loop at y = {y} for {}", r.name))?;
                 let c = l.centroid();
                 radius = radius.max(l.points.iter().map(|p| dist(*p, c)).fold(0.0, f64::max));
                 centroids.push(c);
                 secs.push(trig_interpolate(&resample(&l, m)));
             }
             let sections = sections_from(&secs);
-            let bases = (0..k - 1).map(|_| Basis::new(Params::new(1.0, 3.0, 1.0))).collect::<Result<Vec<_>, _>>()?;
+            let bases = (0..k - 1)
+                .map(|_| Basis::new(Params::new(1.0, 3.0, 1.0)))
+                .collect::<Result<Vec<_>, _>>()?;
             let chain = Chain::from_sections(&sections, bases)?;
-            let rec = tessellate(&chain, Tessellation { nu: (k - 1) * NU / 4, nv: 2 * m });
+            let rec = tessellate(
+                &chain,
+                Tessellation {
+                    nu: (k - 1) * NU / 4,
+                    nv: 2 * m,
+                },
+            );
             // Polygon vertices of the region: within the y range, near the slice centroids.
             let region_vertices: Vec<[f64; 3]> = body
                 .positions
@@ -100,7 +135,8 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                     if p[1] < r.y.0 || p[1] > r.y.1 {
                         return false;
                     }
-                    let i = (((p[1] - r.y.0) / (r.y.1 - r.y.0) * (k - 1) as f64).round() as usize).min(k - 1);
+                    let i = (((p[1] - r.y.0) / (r.y.1 - r.y.0) * (k - 1) as f64).round() as usize)
+                        .min(k - 1);
                     let c = centroids[i];
                     ((p[0] - c[0]).powi(2) + (p[2] - c[2]).powi(2)).sqrt() < 1.5 * radius
                 })
@@ -127,11 +163,23 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                 both.map_positions(|p| [p[0], p[1], p[2]]);
                 let img = pdesculpt::render::render(
                     &both,
-                    &pdesculpt::render::RenderOptions { width: 360, height: 480, view: pdesculpt::render::View::Perspective { yaw: 30.0, pitch: 10.0 }, ..Default::default() },
+                    &pdesculpt::render::RenderOptions {
+                        width: 360,
+                        height: 480,
+                        view: pdesculpt::render::View::Perspective {
+                            yaw: 30.0,
+                            pitch: 10.0,
+                        },
+                        ..Default::default()
+                    },
                 );
                 let orig_part = Mesh::new(region_vertices.clone(), Vec::new());
                 let _ = orig_part;
-                let tag = if r.name.starts_with("left") { "leg" } else { "head" };
+                let tag = if r.name.starts_with("left") {
+                    "leg"
+                } else {
+                    "head"
+                };
                 img.save_png(&ctx.path(&format!("004-table1_{tag}.png")))?;
             }
         }
@@ -147,10 +195,18 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             r["curve_variables_paper_counting"],
             100.0 * r["data_size_paper_counting"].as_f64().unwrap_or(f64::NAN),
             100.0 * r["data_size_positions_only"].as_f64().unwrap_or(f64::NAN),
-            r["original_to_reconstruction"]["rms"].as_f64().unwrap_or(f64::NAN),
-            r["original_to_reconstruction"]["max"].as_f64().unwrap_or(f64::NAN),
-            r["reconstruction_to_original"]["rms"].as_f64().unwrap_or(f64::NAN),
-            r["reconstruction_to_original"]["max"].as_f64().unwrap_or(f64::NAN),
+            r["original_to_reconstruction"]["rms"]
+                .as_f64()
+                .unwrap_or(f64::NAN),
+            r["original_to_reconstruction"]["max"]
+                .as_f64()
+                .unwrap_or(f64::NAN),
+            r["reconstruction_to_original"]["rms"]
+                .as_f64()
+                .unwrap_or(f64::NAN),
+            r["reconstruction_to_original"]["max"]
+                .as_f64()
+                .unwrap_or(f64::NAN),
         );
     }
     ctx.write_bytes("004-table1.md", md.as_bytes())?;
