@@ -530,6 +530,27 @@ fn continuity_checks() -> Vec<Check> {
             &format!("jump of d^{i}S/du^{i} across the joins of a 3-patch chain with different shape parameters per patch (paper case, fig 4c case, fig 6b case)"),
         ));
     }
+    // A 3 x 2 grid: every patch of the chain split at v = 0.4; C2 across
+    // every v-join (equal parameters within a column of patches).
+    let grid_v = match &chain {
+        Ok(c) => c
+            .patches
+            .iter()
+            .map(|p| match (p.clone().with_v_range(0.0, 0.4), p.clone().with_v_range(0.4, 1.0)) {
+                (Ok(a), Ok(b)) => v_jumps(&a, &b, 12),
+                _ => [f64::NAN; 3],
+            })
+            .fold([0.0f64; 3], |acc, j| [acc[0].max(j[0]), acc[1].max(j[1]), acc[2].max(j[2])]),
+        Err(_) => [f64::NAN; 3],
+    };
+    out.push(ck(
+        "eqs 23-26",
+        "ode6.continuity_grid_3x2",
+        Kind::Continuity,
+        grid_v.iter().fold(0.0, |a: f64, b| if b.is_nan() { f64::NAN } else { a.max(*b) }),
+        tol::SOLVE,
+        "3 x 2 grid (the chain above split at v = 0.4): largest C0/C1/C2 jump in v across the three v-joins (the u-joins are the chain's)",
+    ));
     // v: split the same curves at v = 0.4.
     let curves = BoundaryCurves::approach1(
         Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
