@@ -41,6 +41,8 @@ pub const SEPARATION: f64 = 0.5;
 /// Smallest accepted reciprocal condition number of the column-equilibrated
 /// boundary matrix.
 pub const RCOND_MIN: f64 = 1e-11;
+/// Largest relative residual accepted by [`Basis::with_case`].
+pub const CASE_RESIDUAL_MAX: f64 = 1e-8;
 /// Terms of the Taylor series of the fundamental solutions.
 const N_SERIES: usize = 48;
 /// Terms of the series of `F2`, `F3` (|q| <= 1, u in [0, 1]).
@@ -225,9 +227,23 @@ impl Basis {
 
     /// The same basis with the case forced (cross-checks between the series
     /// and the closed forms).
+    /// A case that does not belong to `params` is refused (its functions
+    /// would not solve eq 8).
     pub fn with_case(params: Params, case: RootCase) -> Result<Basis, Ode6Error> {
         params.validate()?;
-        Basis::build(params, case, 6)
+        let b = Basis::build(params, case, 6)?;
+        let res = b.residual_error(4);
+        if res.is_finite() && res <= CASE_RESIDUAL_MAX {
+            Ok(b)
+        } else {
+            Err(Ode6Error::BadData(format!(
+                "case {} does not solve eq 8 for rho = {}, eta = {}, lambda = {} (relative residual {res:.2e})",
+                b.case.name(),
+                params.rho,
+                params.eta,
+                params.lambda
+            )))
+        }
     }
 
     /// `rho = 0`: the fourth-order (or, with `eta = 0`, second-order)

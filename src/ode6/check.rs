@@ -473,24 +473,56 @@ fn force_checks() -> Vec<Check> {
             }
         }
     }
-    let resonant = matches!(
-        Basis::new(Params::new(1.0, 3.0, 1.0))
-            .ok()
-            .and_then(|b| curves().ok().map(|c| Ode6Surface::new(b, c)))
-            .map(|s| {
-                let q = Params::new(1.0, 3.0, 1.0).q_roots()[0].0;
-                s.with_force(&Force::Sine {
-                    amp: [1.0, 0.0, 0.0],
-                    kappa: (-q).sqrt(),
-                    phase: 0.0,
-                })
-            }),
-        Some(Err(Ode6Error::Resonance { .. }))
-    );
+    // Simple resonance (kappa^2 = -q_1): u cos particular solution, residual
+    // of the full forced surface; double resonance (repeated root): named error.
+    let q1 = Params::new(1.0, 3.0, 1.0).q_roots()[0].0;
+    let resonant_res = match (Basis::new(Params::new(1.0, 3.0, 1.0)), curves()) {
+        (Ok(b), Ok(c)) => {
+            let f = Force::Sine {
+                amp: [1.0, -0.5, 0.2],
+                kappa: (-q1).sqrt(),
+                phase: 0.4,
+            };
+            match Ode6Surface::new(b, c).with_force(&f) {
+                Ok(s) => (0..=8)
+                    .map(|i| {
+                        let u = i as f64 / 8.0;
+                        let pt = s.eval(Jet::<7, 1>::var_u(u), Jet::<7, 1>::constant(0.3));
+                        let fu = f.eval(u);
+                        (0..3)
+                            .map(|k| {
+                                let (a, b, c) = (
+                                    pt[k].deriv(6, 0),
+                                    3.0 * pt[k].deriv(4, 0),
+                                    pt[k].deriv(2, 0),
+                                );
+                                (a + b + c - fu[k]).abs()
+                                    / (a.abs() + b.abs() + c.abs() + fu[k].abs()).max(1.0)
+                            })
+                            .fold(0.0, f64::max)
+                    })
+                    .fold(0.0, f64::max),
+                Err(_) => f64::NAN,
+            }
+        }
+        _ => f64::NAN,
+    };
+    let double = Basis::new(Params::new(1.0, 50.0, 625.0))
+        .ok()
+        .and_then(|b| curves().ok().map(|c| Ode6Surface::new(b, c)))
+        .map(|s| {
+            s.with_force(&Force::Sine {
+                amp: [1.0, 0.0, 0.0],
+                kappa: 5.0,
+                phase: 0.0,
+            })
+        });
+    let resonant = matches!(double, Some(Err(Ode6Error::Resonance { .. })));
     vec![
         ck("eq 2", "ode6.force_residual", Kind::Residual, res, tol::SOLVE, "rho S'''''' + eta S'''' + lambda S'' - F on forced surfaces (polynomial and sine F; 4 parameter sets incl. lambda = 0 and eta = lambda = 0), relative, jets"),
         ck("eq 1", "ode6.force_boundary", Kind::Boundary, bnd, tol::SOLVE, "forced surfaces still meet the six constraints (approach 1 curves)"),
-        ck("eq 2", "ode6.force_resonance_named_error", Kind::Residual, if resonant { 0.0 } else { 1.0 }, 0.0, "a sine force with kappa^2 = -q_1 gives Ode6Error::Resonance"),
+        ck("eq 2", "ode6.force_resonant_residual", Kind::Residual, resonant_res, tol::SOLVE, "sine force at the simple resonance kappa^2 = -q_1 (rho = lambda = 1, eta = 3): u cos particular solution, relative residual of eq 2 (jets)"),
+        ck("eq 2", "ode6.force_double_resonance_named_error", Kind::Residual, if resonant { 0.0 } else { 1.0 }, 0.0, "a sine force at the repeated root q = -25 (rho = 1, eta = 50, lambda = 625, kappa = 5) gives Ode6Error::Resonance"),
     ]
 }
 
@@ -536,11 +568,18 @@ fn continuity_checks() -> Vec<Check> {
         Ok(c) => c
             .patches
             .iter()
-            .map(|p| match (p.clone().with_v_range(0.0, 0.4), p.clone().with_v_range(0.4, 1.0)) {
-                (Ok(a), Ok(b)) => v_jumps(&a, &b, 12),
-                _ => [f64::NAN; 3],
+            .map(|p| {
+                match (
+                    p.clone().with_v_range(0.0, 0.4),
+                    p.clone().with_v_range(0.4, 1.0),
+                ) {
+                    (Ok(a), Ok(b)) => v_jumps(&a, &b, 12),
+                    _ => [f64::NAN; 3],
+                }
             })
-            .fold([0.0f64; 3], |acc, j| [acc[0].max(j[0]), acc[1].max(j[1]), acc[2].max(j[2])]),
+            .fold([0.0f64; 3], |acc, j| {
+                [acc[0].max(j[0]), acc[1].max(j[1]), acc[2].max(j[2])]
+            }),
         Err(_) => [f64::NAN; 3],
     };
     out.push(ck(

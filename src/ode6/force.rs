@@ -12,8 +12,13 @@
 //! **Sine** $F = \mathbf A \sin(\kappa u + \varphi)$: $S_p = \mathbf A
 //! \sin(\kappa u + \varphi) / \sigma(\kappa)$ with the symbol
 //! $\sigma(\kappa) = -\rho\kappa^6 + \eta\kappa^4 - \lambda\kappa^2$; the
-//! force resonates (no solution of that form) where $\sigma = 0$, i.e. where
-//! $-\kappa^2$ is a root $q$ of eq 13: a named error.
+//! force resonates where $\sigma = 0$, i.e. where $-\kappa^2$ is a root $q$
+//! of eq 13; then, since $L[u f] = u L[f] + L'(D) f$ with
+//! $L'(D) = 6\rho D^5 + 4\eta D^3 + 2\lambda D$,
+//! $S_p = \mathbf A\, u \cos(\kappa u + \varphi) / \sigma'(\kappa)$ with
+//! $\sigma'(\kappa) = -6\rho\kappa^5 + 4\eta\kappa^3 - 2\lambda\kappa$. A double
+//! resonance ($\sigma = \sigma' = 0$, a repeated root) and $\kappa = 0$ are
+//! named errors.
 //!
 //! The full solution is $S = S_p + \sum_j g_j (c_j - p_j)$ with $p_j$ the
 //! constraint values of $S_p$ ([`super::Ode6Surface::with_force`]).
@@ -67,6 +72,12 @@ pub enum Particular {
         coef: Vec<[f64; 3]>,
     },
     Sine {
+        amp: [f64; 3],
+        kappa: f64,
+        phase: f64,
+    },
+    /// `amp u cos(kappa u + phase)` (a sine force at a simple resonance).
+    ResonantSine {
         amp: [f64; 3],
         kappa: f64,
         phase: f64,
@@ -129,8 +140,23 @@ impl Particular {
                         "sine force kappa = {kappa} overflows the symbol"
                     )));
                 }
-                if symbol.abs() <= RESONANCE * size || size == 0.0 {
+                if size == 0.0 {
                     return Err(Ode6Error::Resonance { kappa2: k2, symbol });
+                }
+                if symbol.abs() <= RESONANCE * size {
+                    let k = *kappa;
+                    let dsym = -6.0 * rho * k2 * k2 * k + 4.0 * eta * k2 * k - 2.0 * lambda * k;
+                    let dsize = 6.0 * rho.abs() * k2 * k2 * k.abs()
+                        + 4.0 * eta.abs() * k2 * k.abs()
+                        + 2.0 * lambda.abs() * k.abs();
+                    if dsym.abs() <= RESONANCE * dsize {
+                        return Err(Ode6Error::Resonance { kappa2: k2, symbol });
+                    }
+                    return Ok(Particular::ResonantSine {
+                        amp: [amp[0] / dsym, amp[1] / dsym, amp[2] / dsym],
+                        kappa: k,
+                        phase: *phase,
+                    });
                 }
                 Ok(Particular::Sine {
                     amp: [amp[0] / symbol, amp[1] / symbol, amp[2] / symbol],
@@ -147,6 +173,10 @@ impl Particular {
             Particular::Polynomial { coef } => horner(coef, u),
             Particular::Sine { amp, kappa, phase } => {
                 let s = (u * *kappa + *phase).sin();
+                [s * amp[0], s * amp[1], s * amp[2]]
+            }
+            Particular::ResonantSine { amp, kappa, phase } => {
+                let s = (u * *kappa + *phase).cos() * u;
                 [s * amp[0], s * amp[1], s * amp[2]]
             }
         }

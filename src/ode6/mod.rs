@@ -63,7 +63,10 @@ pub enum Ode6Error {
         eta: f64,
         lambda: f64,
     },
-    #[error("sine force resonates: kappa^2 = {kappa2} is a root of rho q^2 - eta q + lambda = 0 (symbol {symbol:.3e})")]
+    #[error(
+        "sine force resonates: kappa^2 = {kappa2} is a double root of rho q^2 - eta q + lambda = 0, or kappa = 0 (symbol {symbol:.3e}); \
+         no particular solution of the form u cos(kappa u + phase)"
+    )]
     Resonance { kappa2: f64, symbol: f64 },
     #[error("bad boundary data: {0}")]
     BadData(String),

@@ -305,3 +305,18 @@ proptest! {
         }
     }
 }
+
+/// Forcing a case that does not belong to the parameters is refused.
+#[test]
+fn mismatched_case_is_refused() {
+    use pdesculpt::ode6::RootCase;
+    let p = Params::new(1.0, 3.0, 1.0);
+    let r = Basis::with_case(
+        p,
+        RootCase::Complex {
+            alpha: 0.5,
+            beta: 2.0,
+        },
+    );
+    assert!(matches!(r, Err(Ode6Error::BadData(_))));
+}
