@@ -25,7 +25,7 @@ pub fn figures() -> Vec<Figure> {
         Figure { id: "004-fig4-5", paper: "004", title: "Approach 2: four control curves, rho = lambda = 1 against 1e-4 (eta = 3), beside the loft", run: fig4_5 },
         Figure { id: "004-fig6", paper: "004", title: "C2 (ODE6) against C1 (rho = 0) and C0 (loft) joins of a chain of patches", run: fig6 },
         Figure { id: "004-fig10", paper: "004", title: "Shape parameters rho, eta, lambda on one patch, beside the loft", run: fig10 },
-        Figure { id: "004-table1", paper: "004", title: "Data size of ODE6 curve networks on MakeHuman regions (leg, head)", run: table::table1 },
+        Figure { id: "004-table1", paper: "004", title: "Data size of ODE6 curve networks on MakeHuman regions (leg, head, face)", run: table::table1 },
     ]
 }
 
@@ -350,14 +350,47 @@ fn lin(terms: &[(f64, &Fourier3)]) -> Fourier3 {
     out
 }
 
+/// A linear combination of curves of one kind (Fourier, or splines with
+/// equal vertex counts): both representations are linear in their data.
+fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
+    match terms[0].1 {
+        Curve::Fourier(_) => {
+            let fs: Vec<(f64, &Fourier3)> = terms
+                .iter()
+                .filter_map(|(w, c)| match c {
+                    Curve::Fourier(f) => Some((*w, f)),
+                    Curve::Spline { .. } => None,
+                })
+                .collect();
+            Curve::Fourier(lin(&fs))
+        }
+        Curve::Spline { points, .. } => {
+            let n = points.len();
+            let mut p = vec![[0.0; 3]; n];
+            let mut m = vec![[0.0; 3]; n];
+            for (w, c) in terms {
+                if let Curve::Spline { points, m2 } = c {
+                    for i in 0..n.min(points.len()) {
+                        for k in 0..3 {
+                            p[i][k] += w * points[i][k];
+                            m[i][k] += w * m2[i][k];
+                        }
+                    }
+                }
+            }
+            Curve::Spline { points: p, m2: m }
+        }
+    }
+}
+
 /// Sections with finite-difference first and second derivative curves (per
 /// unit of patch parameter).
-pub(crate) fn sections_from(p: &[Fourier3]) -> Vec<[Curve; 3]> {
+pub(crate) fn sections_from(p: &[Curve]) -> Vec<[Curve; 3]> {
     let n = p.len();
     (0..n)
         .map(|i| {
             let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
-            let d1 = lin(&[
+            let d1 = lin_curves(&[
                 (1.0 / (b - a) as f64, &p[b]),
                 (-1.0 / (b - a) as f64, &p[a]),
             ]);
@@ -368,12 +401,8 @@ pub(crate) fn sections_from(p: &[Fourier3]) -> Vec<[Curve; 3]> {
             } else {
                 (i - 1, i, i + 1)
             };
-            let d2 = lin(&[(1.0, &p[a2]), (-2.0, &p[m2]), (1.0, &p[b2])]);
-            [
-                Curve::Fourier(p[i].clone()),
-                Curve::Fourier(d1),
-                Curve::Fourier(d2),
-            ]
+            let d2 = lin_curves(&[(1.0, &p[a2]), (-2.0, &p[m2]), (1.0, &p[b2])]);
+            [p[i].clone(), d1, d2]
         })
         .collect()
 }
@@ -385,7 +414,12 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
         test_curve(1.1, 2.0, -0.5),
         test_curve(0.7, 3.0, 0.3),
     ];
-    let sections = sections_from(&secs);
+    let sections = sections_from(
+        &secs
+            .iter()
+            .map(|f| Curve::Fourier(f.clone()))
+            .collect::<Vec<_>>(),
+    );
     let c2 = Chain::from_sections(
         &sections,
         (0..3)

@@ -1,6 +1,7 @@
-//! Table 1 in the spirit of paper 004: the MakeHuman body's left leg and
-//! head cut into horizontal cross sections, each resampled to `m` points
-//! and interpolated trigonometrically, joined by a C2 chain of ODE6 patches
+//! Table 1 in the spirit of paper 004: the MakeHuman body's left leg, head
+//! and face (front half of the head) cut into horizontal cross sections, each
+//! resampled to `m` points and interpolated (closed: trigonometrically; face:
+//! open natural splines), joined by a C2 chain of ODE6 patches
 //! (derivative curves from finite differences of the sections), and compared
 //! with the polygon region: vertex counts (the paper's counting: positions,
 //! first and second derivatives per curve vertex) and the reconstruction
@@ -8,12 +9,11 @@
 
 use super::{sections_from, NU};
 use crate::common::Ctx;
-use pdesculpt::curve::Fourier3;
+use pdesculpt::mesh::dist;
 use pdesculpt::mesh::metrics::{point_distances, stats};
 use pdesculpt::mesh::slice::{slice, Polyline};
-use pdesculpt::mesh::{dist, Mesh};
 use pdesculpt::ode6::boundary::trig_interpolate;
-use pdesculpt::ode6::{Basis, Chain, Params};
+use pdesculpt::ode6::{Basis, Chain, Curve, Params};
 use pdesculpt::surface::{tessellate, Tessellation};
 use serde_json::json;
 
@@ -61,6 +61,47 @@ struct Region {
     y: (f64, f64),
     /// Picks the loop of the region among a slice's loops.
     pick: fn(&[Polyline]) -> Option<Polyline>,
+    /// Keep only the front half (z above the loop centroid): open curves.
+    front: bool,
+}
+
+/// The front arc (z above the centroid) of a loop, resampled to `m` points.
+fn front_arc(l: &Polyline, m: usize) -> Vec<[f64; 3]> {
+    let dense = resample(l, 8 * m);
+    let cz = l.centroid()[2];
+    let n = dense.len();
+    // Walk backwards and forwards from the front-most point (index 0).
+    let mut lo = 0usize;
+    while lo + 1 < n && dense[(n - lo - 1) % n][2] > cz {
+        lo += 1;
+    }
+    let mut hi = 0usize;
+    while hi + 1 < n && dense[(hi + 1) % n][2] > cz {
+        hi += 1;
+    }
+    let arc: Vec<[f64; 3]> = (0..=lo + hi).map(|k| dense[(n + k - lo) % n]).collect();
+    let poly = Polyline {
+        points: arc,
+        closed: false,
+    };
+    let len = poly.length();
+    let mut out = Vec::with_capacity(m);
+    let (mut acc, mut i) = (0.0, 0usize);
+    for k in 0..m {
+        let target = len * k as f64 / (m - 1) as f64;
+        while i + 2 < poly.points.len() && acc + dist(poly.points[i], poly.points[i + 1]) < target {
+            acc += dist(poly.points[i], poly.points[i + 1]);
+            i += 1;
+        }
+        let (a, b) = (poly.points[i], poly.points[i + 1]);
+        let t = ((target - acc) / dist(a, b).max(f64::MIN_POSITIVE)).clamp(0.0, 1.0);
+        out.push([
+            a[0] + t * (b[0] - a[0]),
+            a[1] + t * (b[1] - a[1]),
+            a[2] + t * (b[2] - a[2]),
+        ]);
+    }
+    out
 }
 
 fn left_leg(loops: &[Polyline]) -> Option<Polyline> {
@@ -89,11 +130,19 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             name: "left leg (knee to upper thigh and calf)",
             y: (lo[1] + 0.12 * h, lo[1] + 0.42 * h),
             pick: left_leg,
+            front: false,
         },
         Region {
             name: "head (chin to crown, face and skull)",
             y: (lo[1] + 0.885 * h, lo[1] + 0.975 * h),
             pick: longest,
+            front: false,
+        },
+        Region {
+            name: "face (front half of the head, open curves)",
+            y: (lo[1] + 0.885 * h, lo[1] + 0.965 * h),
+            pick: longest,
+            front: true,
         },
     ];
     let mut rows = Vec::new();
@@ -102,7 +151,7 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             let ys: Vec<f64> = (0..k)
                 .map(|i| r.y.0 + (r.y.1 - r.y.0) * i as f64 / (k - 1) as f64)
                 .collect();
-            let mut secs: Vec<Fourier3> = Vec::new();
+            let mut secs: Vec<Curve> = Vec::new();
             let mut centroids = Vec::new();
             let mut radius = 0.0f64;
             for &y in &ys {
@@ -112,7 +161,11 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                 let c = l.centroid();
                 radius = radius.max(l.points.iter().map(|p| dist(*p, c)).fold(0.0, f64::max));
                 centroids.push(c);
-                secs.push(trig_interpolate(&resample(&l, m)));
+                secs.push(if r.front {
+                    Curve::from_polyline(&front_arc(&l, m), false)?
+                } else {
+                    Curve::Fourier(trig_interpolate(&resample(&l, m)))
+                });
             }
             let sections = sections_from(&secs);
             let bases = (0..k - 1)
@@ -139,6 +192,7 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                         .min(k - 1);
                     let c = centroids[i];
                     ((p[0] - c[0]).powi(2) + (p[2] - c[2]).powi(2)).sqrt() < 1.5 * radius
+                        && (!r.front || p[2] > c[2])
                 })
                 .collect();
             let to_rec = stats(&point_distances(&region_vertices, &rec));
@@ -159,10 +213,8 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                 "body_height": h,
             }));
             if k == 12 {
-                let mut both = rec.clone();
-                both.map_positions(|p| [p[0], p[1], p[2]]);
                 let img = pdesculpt::render::render(
-                    &both,
+                    &rec,
                     &pdesculpt::render::RenderOptions {
                         width: 360,
                         height: 480,
@@ -173,12 +225,10 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                         ..Default::default()
                     },
                 );
-                let orig_part = Mesh::new(region_vertices.clone(), Vec::new());
-                let _ = orig_part;
-                let tag = if r.name.starts_with("left") {
-                    "leg"
-                } else {
-                    "head"
+                let tag = match r.name.split_whitespace().next() {
+                    Some("left") => "leg",
+                    Some(t) => t,
+                    None => "region",
                 };
                 img.save_png(&ctx.path(&format!("004-table1_{tag}.png")))?;
             }
