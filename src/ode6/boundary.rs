@@ -1,0 +1,370 @@
+//! Boundary curves and the two ways of making the six constraints of eq 1.
+//!
+//! Every constraint curve is a linear combination of a few *key* curves:
+//! $c_j(v) = \sum_m W_{jm} K_m(v)$. The surface of eq 19 is then
+//! $S = \sum_m h_m(u) K_m(v)$ with $h_m = \sum_j g_j W_{jm}$.
+//!
+//! **Approach 1** (section 3): keys $c_1, c_4$; $c_2 = w_1 c_1$,
+//! $c_3 = w_2 c_1$, $c_5 = w_3 c_4$, $c_6 = w_4 c_4$.
+//!
+//! **Approach 2** (eqs 3-7): keys $c_1, \bar c_2, \bar c_3, \bar c_5, \bar c_6,
+//! c_4$, the control curves at $0 < u_2 < u_3$ and $u_5 < u_6 < 1$. Printed
+//! (eqs 4-7): $c_2 = (\bar c_2 - c_1)/u_2$,
+//! $c_3 = [u_2 \bar c_3 - u_3 \bar c_2 + (u_3 - u_2) c_1]/[u_2^2 (u_3 - u_2)]$,
+//! $c_5 = (c_4 - \bar c_6)/(1 - u_6)$,
+//! $c_6 = [(u_6 - u_5) c_4 + (1 - u_6)\bar c_5 - (1 - u_5)\bar c_6]/[(1-u_6)^2 (u_6 - u_5)]$.
+//! The printed $c_3$ tends to $\tfrac{u_3}{2u_2} S_{uu}(0)$, not $S_{uu}(0)$
+//! (and $c_6$ to $\tfrac{1-u_5}{2(1-u_6)} S_{uu}(1)$): it is a second
+//! derivative only when $u_3 = 2u_2$. The default [`DiffFormula::ThreePoint`]
+//! differentiates the quadratic through the three curves at each end (exact
+//! for quadratics, first derivative $O(h^2)$, second $O(h)$).
+//!
+//! Curves: a [`Fourier3`] (closed, $\theta = 2\pi v$), a closed sampled
+//! polyline (trigonometric interpolation, exact at the vertices, converted to
+//! a [`Fourier3`]), or an open sampled polyline (natural cubic spline through
+//! the vertices at $v_i = i/(m-1)$, C2 in $v$).
+
+use super::Ode6Error;
+use crate::curve::Fourier3;
+use crate::jet::Real;
+use std::f64::consts::PI;
+
+/// A boundary or control curve of parameter `v in [0, 1]`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Curve {
+    /// Closed: `P(2 pi v)`.
+    Fourier(Fourier3),
+    /// Open: natural cubic spline through `points` at `v_i = i / (m - 1)`;
+    /// `m2` are its second derivatives at the knots.
+    Spline {
+        points: Vec<[f64; 3]>,
+        m2: Vec<[f64; 3]>,
+    },
+}
+
+impl Curve {
+    /// A sampled polyline: closed ones are interpolated trigonometrically,
+    /// open ones by a natural cubic spline.
+    pub fn from_polyline(points: &[[f64; 3]], closed: bool) -> Result<Curve, Ode6Error> {
+        let m = points.len();
+        if m < if closed { 3 } else { 2 } {
+            return Err(Ode6Error::BadData(format!(
+                "a {} polyline needs at least {} vertices (got {m})",
+                if closed { "closed" } else { "open" },
+                if closed { 3 } else { 2 }
+            )));
+        }
+        if points.iter().flatten().any(|x| !x.is_finite()) {
+            return Err(Ode6Error::BadData("polyline vertex is not finite".into()));
+        }
+        Ok(if closed {
+            Curve::Fourier(trig_interpolate(points))
+        } else {
+            Curve::Spline {
+                points: points.to_vec(),
+                m2: natural_spline_m2(points),
+            }
+        })
+    }
+
+    /// Whether the curve is closed in `v`.
+    pub fn closed(&self) -> bool {
+        matches!(self, Curve::Fourier(_))
+    }
+
+    /// The point at `v` (generic: jets give the derivatives in `v`).
+    pub fn eval<T: Real>(&self, v: T) -> [T; 3] {
+        match self {
+            Curve::Fourier(f) => f.eval(v * (2.0 * PI)),
+            Curve::Spline { points, m2 } => {
+                let n = points.len() - 1;
+                let h = 1.0 / n as f64;
+                let i = ((v.value() / h).floor().max(0.0) as usize).min(n - 1);
+                // Local cubic on [v_i, v_i+1].
+                let a = (T::cst((i + 1) as f64 * h) - v) / h;
+                let b = T::one() - a;
+                let mut p = [T::zero(); 3];
+                for k in 0..3 {
+                    p[k] = a * points[i][k]
+                        + b * points[i + 1][k]
+                        + ((a * a * a - a) * m2[i][k] + (b * b * b - b) * m2[i + 1][k])
+                            * (h * h / 6.0);
+                }
+                p
+            }
+        }
+    }
+
+    /// The curve multiplied by `s`.
+    pub fn scaled(&self, s: f64) -> Curve {
+        let sc = |v: &[[f64; 3]]| v.iter().map(|p| [p[0] * s, p[1] * s, p[2] * s]).collect();
+        match self {
+            Curve::Fourier(f) => Curve::Fourier(Fourier3 {
+                c0: [f.c0[0] * s, f.c0[1] * s, f.c0[2] * s],
+                cos: sc(&f.cos),
+                sin: sc(&f.sin),
+            }),
+            Curve::Spline { points, m2 } => Curve::Spline {
+                points: sc(points),
+                m2: sc(m2),
+            },
+        }
+    }
+
+    /// Number of stored scalars (for the data-size table).
+    pub fn scalars(&self) -> usize {
+        match self {
+            Curve::Fourier(f) => 3 * (1 + f.cos.len() + f.sin.len()),
+            Curve::Spline { points, .. } => 3 * points.len(),
+        }
+    }
+}
+
+/// Trigonometric interpolation of a closed polyline at `theta_k = 2 pi k/m`.
+pub fn trig_interpolate(points: &[[f64; 3]]) -> Fourier3 {
+    let m = points.len();
+    let nh = m / 2;
+    let mut c0 = [0.0; 3];
+    let mut cos = vec![[0.0; 3]; nh];
+    let mut sin = vec![[0.0; 3]; nh];
+    for (j, p) in points.iter().enumerate() {
+        for k in 0..3 {
+            c0[k] += p[k] / m as f64;
+        }
+        for n in 1..=nh {
+            let t = 2.0 * PI * (n * j % m) as f64 / m as f64;
+            // The Nyquist term of an even m is shared by +-n: half weight.
+            let w = if 2 * n == m { 1.0 } else { 2.0 } / m as f64;
+            for k in 0..3 {
+                cos[n - 1][k] += w * p[k] * t.cos();
+                if 2 * n != m {
+                    sin[n - 1][k] += w * p[k] * t.sin();
+                }
+            }
+        }
+    }
+    Fourier3 { c0, cos, sin }
+}
+
+/// Second derivatives of the natural cubic spline through `points` at
+/// uniform knots of spacing `1/(m-1)` (Thomas algorithm).
+fn natural_spline_m2(points: &[[f64; 3]]) -> Vec<[f64; 3]> {
+    let m = points.len();
+    let mut m2 = vec![[0.0; 3]; m];
+    if m < 3 {
+        return m2;
+    }
+    let h = 1.0 / (m - 1) as f64;
+    let n = m - 2; // interior unknowns: (h/6) M_{i-1} + (2h/3) M_i + (h/6) M_{i+1} = d_i
+    for k in 0..3 {
+        let d: Vec<f64> = (1..m - 1)
+            .map(|i| (points[i + 1][k] - 2.0 * points[i][k] + points[i - 1][k]) / h)
+            .collect();
+        let (a, b) = (h / 6.0, 2.0 * h / 3.0);
+        let mut cp = vec![0.0; n];
+        let mut dp = vec![0.0; n];
+        cp[0] = a / b;
+        dp[0] = d[0] / b;
+        for i in 1..n {
+            let den = b - a * cp[i - 1];
+            cp[i] = a / den;
+            dp[i] = (d[i] - a * dp[i - 1]) / den;
+        }
+        let mut x = vec![0.0; n];
+        x[n - 1] = dp[n - 1];
+        for i in (0..n - 1).rev() {
+            x[i] = dp[i] - cp[i] * x[i + 1];
+        }
+        for i in 0..n {
+            m2[i + 1][k] = x[i];
+        }
+    }
+    m2
+}
+
+/// The constraint curves of eq 1 as combinations of key curves.
+#[derive(Clone, Debug)]
+pub struct BoundaryCurves {
+    pub keys: Vec<Curve>,
+    /// `weights[m][j]`: weight of key `m` in constraint `c_{j+1}`.
+    pub weights: Vec<[f64; 6]>,
+}
+
+impl BoundaryCurves {
+    /// Six explicit curves `c_1..c_6`.
+    pub fn direct(c: [Curve; 6]) -> Result<BoundaryCurves, Ode6Error> {
+        let weights = (0..6)
+            .map(|m| {
+                let mut w = [0.0; 6];
+                w[m] = 1.0;
+                w
+            })
+            .collect();
+        BoundaryCurves::new(c.to_vec(), weights)
+    }
+
+    /// Approach 1: `c_2 = w1 c_1, c_3 = w2 c_1, c_5 = w3 c_4, c_6 = w4 c_4`.
+    pub fn approach1(c1: Curve, c4: Curve, w: [f64; 4]) -> Result<BoundaryCurves, Ode6Error> {
+        if w.iter().any(|x| !x.is_finite()) {
+            return Err(Ode6Error::BadData(format!(
+                "approach 1 coefficients not finite: {w:?}"
+            )));
+        }
+        BoundaryCurves::new(
+            vec![c1, c4],
+            vec![
+                [1.0, w[0], w[1], 0.0, 0.0, 0.0],
+                [0.0, 0.0, 0.0, 1.0, w[2], w[3]],
+            ],
+        )
+    }
+
+    /// Approach 2: boundary curves `c1`, `c4` and control curves
+    /// `[c̄2, c̄3, c̄5, c̄6]` at the positions of `a`.
+    pub fn approach2(
+        c1: Curve,
+        controls: [Curve; 4],
+        c4: Curve,
+        a: &Approach2,
+    ) -> Result<BoundaryCurves, Ode6Error> {
+        let w = a.weights()?;
+        let [k2, k3, k5, k6] = controls;
+        BoundaryCurves::new(vec![c1, k2, k3, k5, k6, c4], w.to_vec())
+    }
+
+    fn new(keys: Vec<Curve>, weights: Vec<[f64; 6]>) -> Result<BoundaryCurves, Ode6Error> {
+        if keys.is_empty() {
+            return Err(Ode6Error::BadData("no boundary curves".into()));
+        }
+        let closed = keys[0].closed();
+        if keys.iter().any(|k| k.closed() != closed) {
+            return Err(Ode6Error::BadData(
+                "boundary curves mix closed and open curves".into(),
+            ));
+        }
+        for k in &keys {
+            let finite = match k {
+                Curve::Fourier(f) => f.is_finite(),
+                Curve::Spline { points, m2 } => {
+                    points.iter().chain(m2).flatten().all(|x| x.is_finite())
+                }
+            };
+            if !finite {
+                return Err(Ode6Error::BadData(
+                    "boundary curve has non-finite coefficients".into(),
+                ));
+            }
+        }
+        Ok(BoundaryCurves { keys, weights })
+    }
+
+    /// Closed in `v` (all keys closed).
+    pub fn closed(&self) -> bool {
+        self.keys[0].closed()
+    }
+
+    /// The constraint curve `c_{j+1}(v)`.
+    pub fn c<T: Real>(&self, j: usize, v: T) -> [T; 3] {
+        let mut p = [T::zero(); 3];
+        for (key, w) in self.keys.iter().zip(&self.weights) {
+            if w[j] != 0.0 {
+                let k = key.eval(v);
+                for d in 0..3 {
+                    p[d] += k[d] * w[j];
+                }
+            }
+        }
+        p
+    }
+}
+
+/// Which difference formulas turn control curves into derivatives.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum DiffFormula {
+    /// Eqs 4-7 as printed (one-sided differences of differences).
+    Printed,
+    /// Derivatives of the quadratic through the three curves at each end.
+    ThreePoint,
+}
+
+/// Positions of the control curves of approach 2.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Approach2 {
+    pub u2: f64,
+    pub u3: f64,
+    pub u5: f64,
+    pub u6: f64,
+    pub formula: DiffFormula,
+}
+
+impl Approach2 {
+    /// Weights of the keys `[c1, c̄2, c̄3, c̄5, c̄6, c4]` in `c_1..c_6`.
+    pub fn weights(&self) -> Result<[[f64; 6]; 6], Ode6Error> {
+        let Approach2 {
+            u2,
+            u3,
+            u5,
+            u6,
+            formula,
+        } = *self;
+        let ok = [u2, u3, u5, u6].iter().all(|x| x.is_finite())
+            && 0.0 < u2
+            && u2 < u3
+            && u3 < 1.0
+            && 0.0 < u5
+            && u5 < u6
+            && u6 < 1.0;
+        if !ok {
+            return Err(Ode6Error::BadData(format!(
+                "control positions need 0 < u2 < u3 < 1 and 0 < u5 < u6 < 1 (got u2 = {u2}, u3 = {u3}, u5 = {u5}, u6 = {u6})"
+            )));
+        }
+        // (weight of c1, c̄2, c̄3) in c2, c3 and (c4, c̄6, c̄5) in c5, c6.
+        let (d1_0, d2_0, d1_1, d2_1) = match formula {
+            DiffFormula::Printed => {
+                let (h6, h56) = (1.0 - u6, u6 - u5);
+                (
+                    [-1.0 / u2, 1.0 / u2, 0.0],
+                    [
+                        (u3 - u2) / (u2 * u2 * (u3 - u2)),
+                        -u3 / (u2 * u2 * (u3 - u2)),
+                        u2 / (u2 * u2 * (u3 - u2)),
+                    ],
+                    [1.0 / h6, -1.0 / h6, 0.0],
+                    [
+                        h56 / (h6 * h6 * h56),
+                        -(1.0 - u5) / (h6 * h6 * h56),
+                        h6 / (h6 * h6 * h56),
+                    ],
+                )
+            }
+            DiffFormula::ThreePoint => {
+                let (a, b) = (u2, u3);
+                let first0 = [-(a + b) / (a * b), b / (a * (b - a)), -a / (b * (b - a))];
+                let second0 = [2.0 / (a * b), -2.0 / (a * (b - a)), 2.0 / (b * (b - a))];
+                // Mirror s = 1 - u: d/du = -d/ds; nodes s = 0, 1 - u6, 1 - u5.
+                let (a, b) = (1.0 - u6, 1.0 - u5);
+                let first1 = [(a + b) / (a * b), -b / (a * (b - a)), a / (b * (b - a))];
+                let second1 = [2.0 / (a * b), -2.0 / (a * (b - a)), 2.0 / (b * (b - a))];
+                (first0, second0, first1, second1)
+            }
+        };
+        // keys: 0 c1, 1 c̄2, 2 c̄3, 3 c̄5, 4 c̄6, 5 c4
+        let mut w = [[0.0; 6]; 6];
+        w[0] = [1.0, d1_0[0], d2_0[0], 0.0, 0.0, 0.0];
+        w[1] = [0.0, d1_0[1], d2_0[1], 0.0, 0.0, 0.0];
+        w[2] = [0.0, d1_0[2], d2_0[2], 0.0, 0.0, 0.0];
+        w[5] = [0.0, 0.0, 0.0, 1.0, d1_1[0], d2_1[0]];
+        w[4] = [0.0, 0.0, 0.0, 0.0, d1_1[1], d2_1[1]];
+        w[3] = [0.0, 0.0, 0.0, 0.0, d1_1[2], d2_1[2]];
+        Ok(w)
+    }
+
+    /// `(c2, c3, c5, c6)` for scalar samples `f(0), f(u2), f(u3), f(u5),
+    /// f(u6), f(1)` of one iso-parametric line.
+    pub fn derivatives(&self, f: [f64; 6]) -> Result<[f64; 4], Ode6Error> {
+        let w = self.weights()?;
+        let c = |j: usize| (0..6).map(|m| w[m][j] * f[m]).sum::<f64>();
+        Ok([c(1), c(2), c(4), c(5)])
+    }
+}

@@ -1,0 +1,259 @@
+//! ODE surface patches (eq 19), chains of patches in u (eqs 23-25) and
+//! splits in v (eq 26).
+//!
+//! A patch is $S(u,v) = S_p(u) + \sum_m h_m(u) K_m(v) - \sum_j g_j(u) p_j$
+//! with $h_m = \sum_j g_j W_{jm}$ (see [`super::boundary`]) and $p_j$ the
+//! constraint values of the particular solution ($S_p = 0$ without force).
+//! The grid evaluator precomputes $h_m(u_i)$ and $K_m(v_k)$ once: a grid costs
+//! $O(n_u n_v n_{keys})$ multiply-adds, no solve per iso-parametric line.
+//!
+//! A [`Chain`] joins patches end to end in $u$: patch $i$ takes the position,
+//! first and second derivative curves of section $i$ at $u=0$ and of section
+//! $i+1$ at $u=1$, so positions, tangents and curvatures agree across every
+//! join whatever the shape parameters of each patch (eqs 23-25). In $v$ two
+//! patches cut from the same C2 curves at $v^*$ join C2 only if their
+//! $g_j$ agree, i.e. if their shape parameters are equal (eq 26).
+
+use super::force::Particular;
+use super::{Basis, BoundaryCurves, Curve, Force, Ode6Error};
+use crate::jet::{Jet, Real};
+use crate::surface::{Domain, Surface};
+
+/// One ODE surface patch.
+#[derive(Clone, Debug)]
+pub struct Ode6Surface {
+    pub basis: Basis,
+    pub curves: BoundaryCurves,
+    pub particular: Option<Particular>,
+    /// The range of `v` the patch covers (a split of the curves).
+    pub v_range: (f64, f64),
+}
+
+impl Ode6Surface {
+    /// The complementary-solution patch of eq 19.
+    pub fn new(basis: Basis, curves: BoundaryCurves) -> Ode6Surface {
+        Ode6Surface {
+            basis,
+            curves,
+            particular: None,
+            v_range: (0.0, 1.0),
+        }
+    }
+
+    /// Adds a sculpting force (eq 2 with `F != 0`).
+    pub fn with_force(mut self, force: &Force) -> Result<Ode6Surface, Ode6Error> {
+        self.particular = Some(Particular::new(self.basis.params, force)?);
+        Ok(self)
+    }
+
+    /// The patch restricted to `v in [v0, v1]` (a split in `v`, eq 26).
+    pub fn with_v_range(mut self, v0: f64, v1: f64) -> Result<Ode6Surface, Ode6Error> {
+        if !(v0.is_finite() && v1.is_finite() && 0.0 <= v0 && v0 < v1 && v1 <= 1.0) {
+            return Err(Ode6Error::BadData(format!(
+                "v range must satisfy 0 <= v0 < v1 <= 1 (got {v0}, {v1})"
+            )));
+        }
+        self.v_range = (v0, v1);
+        Ok(self)
+    }
+
+    /// Constraint values `p_j` of the particular solution.
+    fn particular_constraints(&self) -> Option<[[f64; 3]; 6]> {
+        let p = self.particular.as_ref()?;
+        let a = p.eval(Jet::<3, 1>::var_u(0.0));
+        let b = p.eval(Jet::<3, 1>::var_u(1.0));
+        let mut out = [[0.0; 3]; 6];
+        for i in 0..3 {
+            for k in 0..3 {
+                out[i][k] = a[k].deriv(i, 0);
+                out[3 + i][k] = b[k].deriv(i, 0);
+            }
+        }
+        Some(out)
+    }
+
+    /// `h_m(u)` for every key.
+    fn h<T: Real>(&self, u: T) -> (Vec<T>, [T; 6]) {
+        let g = self.basis.g(u);
+        let h = self
+            .curves
+            .weights
+            .iter()
+            .map(|w| {
+                let mut acc = T::zero();
+                for j in 0..6 {
+                    if w[j] != 0.0 {
+                        acc += g[j] * w[j];
+                    }
+                }
+                acc
+            })
+            .collect();
+        (h, g)
+    }
+
+    /// Number of scalars stored by the representation (keys + 3 parameters).
+    pub fn scalars(&self) -> usize {
+        self.curves.keys.iter().map(Curve::scalars).sum::<usize>() + 3
+    }
+}
+
+impl Surface for Ode6Surface {
+    fn eval<T: Real>(&self, u: T, v: T) -> [T; 3] {
+        let (h, g) = self.h(u);
+        let mut p = [T::zero(); 3];
+        for (key, hm) in self.curves.keys.iter().zip(&h) {
+            let k = key.eval(v);
+            for d in 0..3 {
+                p[d] += *hm * k[d];
+            }
+        }
+        if let (Some(part), Some(pc)) = (&self.particular, self.particular_constraints()) {
+            let sp = part.eval(u);
+            for d in 0..3 {
+                p[d] += sp[d];
+                for j in 0..6 {
+                    p[d] -= g[j] * pc[j][d];
+                }
+            }
+        }
+        p
+    }
+
+    fn domain(&self) -> Domain {
+        Domain {
+            u: (0.0, 1.0),
+            v: self.v_range,
+            closed_u: false,
+            closed_v: self.curves.closed() && self.v_range == (0.0, 1.0),
+        }
+    }
+
+    fn grid(&self, us: &[f64], vs: &[f64]) -> Vec<[f64; 3]> {
+        let nk = self.curves.keys.len();
+        let kv: Vec<Vec<[f64; 3]>> = self
+            .curves
+            .keys
+            .iter()
+            .map(|k| vs.iter().map(|&v| k.eval(v)).collect())
+            .collect();
+        let pc = self.particular_constraints();
+        let mut out = Vec::with_capacity(us.len() * vs.len());
+        for &u in us {
+            let (h, g) = self.h(u);
+            let mut offset = [0.0; 3];
+            if let (Some(part), Some(pc)) = (&self.particular, pc) {
+                offset = part.eval(u);
+                for d in 0..3 {
+                    for j in 0..6 {
+                        offset[d] -= g[j] * pc[j][d];
+                    }
+                }
+            }
+            for iv in 0..vs.len() {
+                let mut p = offset;
+                for m in 0..nk {
+                    let k = kv[m][iv];
+                    p[0] += h[m] * k[0];
+                    p[1] += h[m] * k[1];
+                    p[2] += h[m] * k[2];
+                }
+                out.push(p);
+            }
+        }
+        out
+    }
+}
+
+/// Patches joined end to end in `u` over global `u in [0, n]`.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    pub patches: Vec<Ode6Surface>,
+}
+
+impl Chain {
+    /// `sections[i] = [position, first, second derivative]` curves; patch
+    /// `i` spans sections `i` and `i+1` with basis `bases[i]`.
+    pub fn from_sections(sections: &[[Curve; 3]], bases: Vec<Basis>) -> Result<Chain, Ode6Error> {
+        if sections.len() < 2 || bases.len() + 1 != sections.len() {
+            return Err(Ode6Error::BadData(format!(
+                "a chain of n patches needs n + 1 >= 2 sections (got {} sections, {} parameter sets)",
+                sections.len(),
+                bases.len()
+            )));
+        }
+        let patches = bases
+            .into_iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let [a0, a1, a2] = sections[i].clone();
+                let [b0, b1, b2] = sections[i + 1].clone();
+                Ok(Ode6Surface::new(
+                    b,
+                    BoundaryCurves::direct([a0, a1, a2, b0, b1, b2])?,
+                ))
+            })
+            .collect::<Result<Vec<_>, Ode6Error>>()?;
+        Ok(Chain { patches })
+    }
+
+    /// Jumps `[position, first, second]` of `d^i S/du^i` across every join,
+    /// maximised over `nv` samples of `v`.
+    pub fn u_jumps(&self, nv: usize) -> [f64; 3] {
+        let mut out = [0.0f64; 3];
+        for w in self.patches.windows(2) {
+            for iv in 0..nv {
+                let v = (iv as f64 + 0.5) / nv as f64;
+                for i in 0..3 {
+                    let a = w[0].derivative(1.0, v, i, 0);
+                    let b = w[1].derivative(0.0, v, i, 0);
+                    out[i] = out[i].max(crate::mesh::dist(a, b));
+                }
+            }
+        }
+        out
+    }
+}
+
+impl Surface for Chain {
+    fn eval<T: Real>(&self, u: T, v: T) -> [T; 3] {
+        let n = self.patches.len();
+        let i = (u.value().floor().max(0.0) as usize).min(n - 1);
+        self.patches[i].eval(u - i as f64, v)
+    }
+
+    fn domain(&self) -> Domain {
+        let d = self.patches[0].domain();
+        Domain {
+            u: (0.0, self.patches.len() as f64),
+            ..d
+        }
+    }
+
+    fn grid(&self, us: &[f64], vs: &[f64]) -> Vec<[f64; 3]> {
+        let n = self.patches.len();
+        let mut out = Vec::with_capacity(us.len() * vs.len());
+        for &u in us {
+            let i = (u.floor().max(0.0) as usize).min(n - 1);
+            out.extend(self.patches[i].grid(&[u - i as f64], vs));
+        }
+        out
+    }
+}
+
+/// Jumps `[position, first, second]` of `d^j S/dv^j` across the join of two
+/// patches adjacent in `v` (`a` ends at `v*`, `b` starts there), maximised
+/// over `nu` samples of `u`.
+pub fn v_jumps(a: &Ode6Surface, b: &Ode6Surface, nu: usize) -> [f64; 3] {
+    let v = a.v_range.1;
+    let mut out = [0.0f64; 3];
+    for iu in 0..=nu {
+        let u = iu as f64 / nu as f64;
+        for j in 0..3 {
+            let pa = a.derivative(u, v, 0, j);
+            let pb = b.derivative(u, b.v_range.0, 0, j);
+            out[j] = out[j].max(crate::mesh::dist(pa, pb));
+        }
+    }
+    out
+}
