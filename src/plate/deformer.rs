@@ -268,3 +268,44 @@ pub fn region_from_lasso(
     }
     Ok(out)
 }
+
+/// Parses a region file: JSON `{"vertices": [i, ...]}` or
+/// `{"lasso": {"view": [x, y, z], "polygon": [[x, y], ...]}}`, or plain text
+/// vertex indices separated by whitespace or commas (`#` starts a comment).
+pub fn parse_region(text: &str, mesh: &Mesh) -> Result<Vec<u32>, PlateError> {
+    let t = text.trim_start();
+    if t.starts_with('{') {
+        let v: serde_json::Value =
+            serde_json::from_str(t).map_err(|e| PlateError::RegionFile(e.to_string()))?;
+        if let Some(list) = v.get("vertices") {
+            let ids: Vec<u32> = serde_json::from_value(list.clone())
+                .map_err(|e| PlateError::RegionFile(format!("vertices: {e}")))?;
+            return Ok(ids);
+        }
+        if let Some(l) = v.get("lasso") {
+            let view: [f64; 3] = serde_json::from_value(l.get("view").cloned().unwrap_or_default())
+                .map_err(|e| PlateError::RegionFile(format!("lasso.view: {e}")))?;
+            let poly: Vec<[f64; 2]> =
+                serde_json::from_value(l.get("polygon").cloned().unwrap_or_default())
+                    .map_err(|e| PlateError::RegionFile(format!("lasso.polygon: {e}")))?;
+            return region_from_lasso(mesh, view, &poly);
+        }
+        return Err(PlateError::RegionFile(
+            "JSON region needs \"vertices\" or \"lasso\"".into(),
+        ));
+    }
+    let mut out = Vec::new();
+    for line in text.lines() {
+        let line = line.split('#').next().unwrap_or("");
+        for tok in line.split(|c: char| c.is_whitespace() || c == ',') {
+            if tok.is_empty() {
+                continue;
+            }
+            out.push(
+                tok.parse::<u32>()
+                    .map_err(|_| PlateError::RegionFile(format!("not a vertex index: {tok:?}")))?,
+            );
+        }
+    }
+    Ok(out)
+}

@@ -15,6 +15,9 @@
 use super::boundary::signed_area;
 use super::PlateError;
 
+/// Relative snapping of a ray's edge parameter at polygon vertices.
+const VERTEX_SNAP: f64 = 1e-9;
+
 /// Result of the mapping for one point.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DiskPoint {
@@ -108,7 +111,7 @@ impl DiskMapping {
         // all crossings of the ray C + t dir (t > 0) with the polygon edges
         let m = self.polygon.len();
         let mut best: Option<(f64, usize, f64)> = None; // (t, edge, s)
-        let mut crossings = 0;
+        let mut hits: Vec<f64> = Vec::new();
         for i in 0..m {
             let (a, b) = (self.polygon[i], self.polygon[(i + 1) % m]);
             let e = [b[0] - a[0], b[1] - a[1]];
@@ -119,16 +122,24 @@ impl DiskMapping {
             let ac = [a[0] - c[0], a[1] - c[1]];
             let t = (ac[0] * e[1] - ac[1] * e[0]) / den;
             let s = (ac[0] * dir[1] - ac[1] * dir[0]) / den;
-            if t > 0.0 && (0.0..1.0).contains(&s) {
-                crossings += 1;
+            // a ray through a polygon vertex must hit one of its two edges
+            // despite rounding
+            if t > 0.0 && (-VERTEX_SNAP..=1.0 + VERTEX_SNAP).contains(&s) {
+                hits.push(t);
                 // D_j: the first crossing at or beyond B (t >= 1)
-                let key = if t >= 1.0 - 1e-12 { t } else { f64::INFINITY };
+                let key = if t >= 1.0 - VERTEX_SNAP {
+                    t
+                } else {
+                    f64::INFINITY
+                };
                 if best.is_none_or(|(bt, _, _)| key < bt) {
-                    best = Some((key, i, s));
+                    best = Some((key, i, s.clamp(0.0, 1.0)));
                 }
             }
         }
-        if crossings > 1 {
+        hits.sort_by(f64::total_cmp);
+        hits.dedup_by(|a, b| (*a - *b).abs() <= VERTEX_SNAP * b.abs().max(1.0));
+        if hits.len() > 1 {
             self.non_star_rays += 1;
         }
         let Some((t, i, s)) = best.filter(|b| b.0.is_finite()) else {

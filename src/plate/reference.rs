@@ -68,7 +68,14 @@ pub fn solve_clamped(
         }
     }
     let ne = edges.len();
-    let mut fixed = vec![false; nv + ne];
+    // vertices in no triangle carry no stiffness: fix them (w = 0)
+    let mut fixed = vec![true; nv];
+    for t in triangles {
+        for &v in t {
+            fixed[v] = false;
+        }
+    }
+    fixed.resize(nv + ne, false);
     for (&(a, b), &(id, count)) in &edges {
         if count == 1 {
             fixed[a] = true;
