@@ -5,7 +5,7 @@ use pdesculpt::mesh::io;
 use pdesculpt::plate::baselines::{DeltaMushParams, LaplacianParams, Weights};
 use pdesculpt::plate::deformer::parse_region;
 use pdesculpt::plate::shapes::{compare, Shape};
-use pdesculpt::plate::{Direction, Material, PlateDeformer, RegionOptions};
+use pdesculpt::plate::{BoundaryMethod, Direction, Material, PlateDeformer, RegionOptions};
 use std::path::PathBuf;
 
 /// Arguments of `pdesculpt plate`.
@@ -33,7 +33,7 @@ pub struct DeformArgs {
     #[arg(long)]
     pub region: PathBuf,
     /// Cursor motion d = dx,dy,dz.
-    #[arg(long, value_delimiter = ',', num_args = 3, allow_hyphen_values = true)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub force: Vec<f64>,
     /// Sensitivity s (q = s d).
     #[arg(long, default_value_t = 70.0)]
@@ -44,8 +44,12 @@ pub struct DeformArgs {
     /// Alpha-shape threshold alpha_0 (eq 15).
     #[arg(long, default_value_t = pdesculpt::plate::boundary::ALPHA0_DEFAULT)]
     pub alpha0: f64,
+    /// Boundary from the region's mesh edges instead of the alpha shape
+    /// (for non-uniform meshes).
+    #[arg(long)]
+    pub mesh_boundary: bool,
     /// View direction x,y,z (default: the region normal).
-    #[arg(long, value_delimiter = ',', num_args = 3, allow_hyphen_values = true)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub view: Option<Vec<f64>>,
     /// Young's modulus E, Poisson's ratio mu, thickness h.
     #[arg(long, default_value_t = 1e6)]
@@ -114,6 +118,11 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
         },
         alpha0: a.alpha0,
         view,
+        boundary: if a.mesh_boundary {
+            BoundaryMethod::MeshEdges
+        } else {
+            BoundaryMethod::AlphaShape
+        },
     };
     let plate = PlateDeformer::new(&mesh, &region, &opts)?;
     let dir = if a.normal {

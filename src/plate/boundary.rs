@@ -58,6 +58,33 @@ pub fn signed_area(pts: &[[f64; 2]]) -> f64 {
         * 0.5
 }
 
+/// The boundary of the region's own mesh triangles (an alternative to the
+/// alpha shape that does not depend on uniform vertex spacing):
+/// `triangles` index `points`; each is oriented counter-clockwise in the
+/// plane and zero-area ones are dropped.
+pub fn mesh_edge_boundary(
+    points: &[[f64; 2]],
+    triangles: &[[usize; 3]],
+) -> Result<Boundary, PlateError> {
+    let mut tris = Vec::new();
+    for t in triangles {
+        let (a, b, c) = (points[t[0]], points[t[1]], points[t[2]]);
+        let s = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+        if s > 0.0 {
+            tris.push(*t);
+        } else if s < 0.0 {
+            tris.push([t[0], t[2], t[1]]);
+        }
+    }
+    if tris.is_empty() {
+        return Err(PlateError::BoundaryNotClosed {
+            alpha0: f64::NAN,
+            reason: "the region contains no mesh triangle".into(),
+        });
+    }
+    boundary_of_triangles(points, tris, f64::NAN, f64::NAN, f64::NAN)
+}
+
 /// Extracts the alpha-shape boundary of `points` (eq 15).
 pub fn alpha_shape(points: &[[f64; 2]], alpha0: f64) -> Result<Boundary, PlateError> {
     if !(alpha0.is_finite() && alpha0 > 0.5) {
@@ -126,8 +153,32 @@ pub fn alpha_shape(points: &[[f64; 2]], alpha0: f64) -> Result<Boundary, PlateEr
     if triangles.is_empty() {
         return Err(PlateError::BoundaryNotClosed {
             alpha0,
-            reason: "no triangle survives the 2 alpha edge test".into(),
+            reason: "no triangle survives the 2 alpha edge test (non-uniform vertex spacing? try the mesh-edge boundary)".into(),
         });
+    }
+    boundary_of_triangles(points, triangles, d_p, alpha, alpha0)
+}
+
+/// The outer boundary loop of a set of counter-clockwise triangles over
+/// `points` (the chaining step shared by the alpha shape and the mesh-edge
+/// boundary).
+pub fn boundary_of_triangles(
+    points: &[[f64; 2]],
+    triangles: Vec<[usize; 3]>,
+    d_p: f64,
+    alpha: f64,
+    alpha0: f64,
+) -> Result<Boundary, PlateError> {
+    let mut edge_count: HashMap<(usize, usize), (usize, [usize; 2])> = HashMap::new();
+    for v in &triangles {
+        for k in 0..3 {
+            let (a, b) = (v[k], v[(k + 1) % 3]);
+            let e = edge_count
+                .entry((a.min(b), a.max(b)))
+                .or_insert((0, [a, b]));
+            e.0 += 1;
+            e.1 = [a, b];
+        }
     }
     // directed boundary edges (spade faces are counter-clockwise)
     let mut next: HashMap<usize, usize> = HashMap::new();

@@ -4,7 +4,7 @@
 //! $\mathbf p_i = \mathbf p_i^0 + \mathbf q\, w_i$ with the precomputed
 //! weight $w_i = (u_i^2+v_i^2-1)^2/(64 D)$ (eq 12) and $\mathbf q = s\,\mathbf d$.
 
-use super::boundary::{alpha_shape, Boundary, ALPHA0_DEFAULT};
+use super::boundary::{alpha_shape, mesh_edge_boundary, Boundary, ALPHA0_DEFAULT};
 use super::mapping::{DiskMapping, DiskPoint};
 use super::projection::{project, LocalFrame, ViewPlane};
 use super::{disk_solution, Material, PlateError};
@@ -28,6 +28,20 @@ pub struct RegionOptions {
     pub alpha0: f64,
     /// View-plane normal; `None` uses the region's area-weighted normal.
     pub view: Option<[f64; 3]>,
+    /// Boundary extraction: the paper's alpha shape (default) or the
+    /// region's own mesh edges.
+    pub boundary: BoundaryMethod,
+}
+
+/// How the boundary curve is found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum BoundaryMethod {
+    /// Eq 15: alpha shape on the Delaunay triangulation of the projection.
+    #[default]
+    AlphaShape,
+    /// Boundary edges of the mesh triangles inside the region (robust to
+    /// non-uniform vertex spacing).
+    MeshEdges,
 }
 
 impl Default for RegionOptions {
@@ -36,6 +50,7 @@ impl Default for RegionOptions {
             material: Material::default(),
             alpha0: ALPHA0_DEFAULT,
             view: None,
+            boundary: BoundaryMethod::AlphaShape,
         }
     }
 }
@@ -56,6 +71,7 @@ pub struct PlateDeformer {
     pub frame: LocalFrame,
     /// Unit region normal (the frame's $z'$ axis, facing the view).
     pub normal: [f64; 3],
+    /// The alpha-shape boundary; its indices refer to [`Self::region`].
     pub boundary: Boundary,
     pub rigidity: f64,
     /// Rays from the centroid that cross the boundary more than once.
@@ -147,8 +163,35 @@ impl PlateDeformer {
         if plus.min(minus) > 0 {
             return Err(PlateError::OverlappingProjection(plus.min(minus)));
         }
-        let boundary = alpha_shape(&local, opts.alpha0)?;
-        let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| local[i]).collect();
+        // coincident projections (seam duplicates, poles) share one site
+        let mut rep = Vec::with_capacity(local.len());
+        let mut unique: Vec<[f64; 2]> = Vec::new();
+        let mut first: Vec<usize> = Vec::new();
+        let mut seen: HashMap<(u64, u64), usize> = HashMap::new();
+        for (i, p) in local.iter().enumerate() {
+            let key = ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits());
+            let u = *seen.entry(key).or_insert_with(|| {
+                unique.push(*p);
+                first.push(i);
+                unique.len() - 1
+            });
+            rep.push(u);
+        }
+        let boundary = match opts.boundary {
+            BoundaryMethod::AlphaShape => alpha_shape(&unique, opts.alpha0)?,
+            BoundaryMethod::MeshEdges => {
+                let tris: Vec<[usize; 3]> = mesh
+                    .triangles
+                    .iter()
+                    .filter_map(|t| {
+                        let (a, b, c) = (pos.get(&t[0])?, pos.get(&t[1])?, pos.get(&t[2])?);
+                        Some([rep[*a], rep[*b], rep[*c]])
+                    })
+                    .collect();
+                mesh_edge_boundary(&unique, &tris)?
+            }
+        };
+        let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| unique[i]).collect();
         let c2 = {
             let mut c = [0.0; 2];
             for p in &local {
@@ -164,11 +207,20 @@ impl PlateDeformer {
             .enumerate()
             .map(|(k, &i)| (i, k))
             .collect();
-        let disk: Vec<DiskPoint> = local
+        let unique_disk: Vec<DiskPoint> = unique
             .iter()
             .enumerate()
             .map(|(i, &p)| mapping.map_point(p, on_loop.get(&i).copied()))
             .collect();
+        let disk: Vec<DiskPoint> = rep.iter().map(|&u| unique_disk[u]).collect();
+        // boundary indices refer to region vertices (first of each site)
+        let mut boundary = boundary;
+        for i in boundary.loop_indices.iter_mut() {
+            *i = first[*i];
+        }
+        for t in boundary.triangles.iter_mut() {
+            *t = t.map(|i| first[i]);
+        }
         let weights = disk
             .iter()
             .map(|d| {
