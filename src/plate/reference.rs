@@ -21,6 +21,9 @@ use faer::Side;
 use nalgebra::{Matrix6, Vector6};
 use std::collections::HashMap;
 
+/// Planar points and triangles.
+pub type TriMesh2 = (Vec<[f64; 2]>, Vec<[usize; 3]>);
+
 /// A solved clamped plate.
 #[derive(Clone, Debug)]
 pub struct PlateSolution {
@@ -103,7 +106,7 @@ pub fn solve_clamped(
         let area = 0.5
             * ((q[1][0] - q[0][0]) * (q[2][1] - q[0][1])
                 - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]));
-        if !(area.abs() > 0.0) || !area.is_finite() {
+        if area == 0.0 || !area.is_finite() {
             return Err(PlateError::DegenerateProjection(format!(
                 "triangle {t:?} has zero area"
             )));
@@ -222,7 +225,7 @@ pub const TIMOSHENKO_TABLE35: [(f64, f64); 3] = [(1.0, 0.00126), (1.5, 0.00220),
 /// Structured mesh of the rectangle $[-a/2, a/2]\times[-b/2, b/2]$ with
 /// `nx` x `ny` cells, each cut along alternating diagonals (union-jack
 /// pattern, symmetric about both axes). Returns points and triangles.
-pub fn rectangle_mesh(a: f64, b: f64, nx: usize, ny: usize) -> (Vec<[f64; 2]>, Vec<[usize; 3]>) {
+pub fn rectangle_mesh(a: f64, b: f64, nx: usize, ny: usize) -> TriMesh2 {
     let mut pts = Vec::with_capacity((nx + 1) * (ny + 1));
     for j in 0..=ny {
         for i in 0..=nx {
@@ -251,11 +254,7 @@ pub fn rectangle_mesh(a: f64, b: f64, nx: usize, ny: usize) -> (Vec<[f64; 2]>, V
 
 /// Mesh of the ellipse with semi-axes a, b: `rings` concentric rings of
 /// $6k$ points (k = 1..rings) scaled to the ellipse, Delaunay-triangulated.
-pub fn ellipse_mesh(
-    a: f64,
-    b: f64,
-    rings: usize,
-) -> Result<(Vec<[f64; 2]>, Vec<[usize; 3]>), PlateError> {
+pub fn ellipse_mesh(a: f64, b: f64, rings: usize) -> Result<TriMesh2, PlateError> {
     let mut pts = vec![[0.0, 0.0]];
     for k in 1..=rings {
         let r = k as f64 / rings as f64;
