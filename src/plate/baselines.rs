@@ -115,6 +115,98 @@ fn check_region(mesh: &Mesh, region: &[u32]) -> Result<Vec<bool>, PlateError> {
     Ok(sel)
 }
 
+/// The prefactored Laplacian (bi-Laplacian normal-equation) system of a
+/// region: factor once, then each handle move is one sparse solve (the way
+/// a libigl-style deformer works).
+pub struct LaplacianSystem {
+    llt: faer::sparse::linalg::solvers::Llt<usize, f64>,
+    /// Mesh vertex of each unknown.
+    pub cols: Vec<usize>,
+    handle_cols: Vec<usize>,
+    wh2: f64,
+}
+
+impl LaplacianSystem {
+    /// Assembles and factors $L^\top L + w_h^2 S_h$ over the region.
+    pub fn new(
+        mesh: &Mesh,
+        region: &[u32],
+        handle: &[u32],
+        params: &LaplacianParams,
+    ) -> Result<Self, PlateError> {
+        if !(params.handle_weight.is_finite() && params.handle_weight > 0.0) {
+            return Err(PlateError::Parameter {
+                name: "handle_weight",
+                value: params.handle_weight,
+                range: "> 0",
+            });
+        }
+        let sel = check_region(mesh, region)?;
+        let mut col = vec![usize::MAX; mesh.positions.len()];
+        let mut cols = Vec::new();
+        for (i, &s) in sel.iter().enumerate() {
+            if s {
+                col[i] = cols.len();
+                cols.push(i);
+            }
+        }
+        let m = cols.len();
+        if m == 0 || handle.is_empty() {
+            return Err(PlateError::TooFewVertices(m.min(handle.len()), 1));
+        }
+        let adj = adjacency(mesh, params.weights);
+        let mut trip = Vec::new();
+        for &i in &cols {
+            let wsum: f64 = adj[i].iter().map(|e| e.1).sum();
+            let mut row: Vec<(usize, f64)> = vec![(col[i], -wsum)];
+            row.extend(
+                adj[i]
+                    .iter()
+                    .filter(|e| col[e.0] != usize::MAX)
+                    .map(|e| (col[e.0], e.1)),
+            );
+            for &(a, va) in &row {
+                for &(b, vb) in &row {
+                    trip.push(Triplet::new(a, b, va * vb));
+                }
+            }
+        }
+        let wh2 = params.handle_weight * params.handle_weight;
+        let mut handle_cols = Vec::with_capacity(handle.len());
+        for &h in handle {
+            let c = *col.get(h as usize).unwrap_or(&usize::MAX);
+            if c == usize::MAX {
+                return Err(PlateError::VertexOutOfBounds(h as usize, m));
+            }
+            trip.push(Triplet::new(c, c, wh2));
+            handle_cols.push(c);
+        }
+        let a = SparseColMat::<usize, f64>::try_new_from_triplets(m, m, &trip)
+            .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+        let llt = a
+            .sp_cholesky(Side::Lower)
+            .map_err(|e| PlateError::Solve(format!("Laplacian normal equations: {e:?}")))?;
+        Ok(LaplacianSystem {
+            llt,
+            cols,
+            handle_cols,
+            wh2,
+        })
+    }
+
+    /// Displacements of the region's vertices when the handle moves by `d`.
+    pub fn solve(&self, d: [f64; 3]) -> faer::Mat<f64> {
+        let mut rhs = faer::Mat::<f64>::zeros(self.cols.len(), 3);
+        for &c in &self.handle_cols {
+            for k in 0..3 {
+                rhs[(c, k)] += self.wh2 * d[k];
+            }
+        }
+        self.llt.solve_in_place(rhs.as_mut());
+        rhs
+    }
+}
+
 /// Laplacian deformer: displaces the region so that the handle vertices
 /// move by `d` (softly) and the anchors outside the region stay.
 pub fn laplacian_deform(
@@ -124,64 +216,11 @@ pub fn laplacian_deform(
     d: [f64; 3],
     params: &LaplacianParams,
 ) -> Result<Mesh, PlateError> {
-    if !(params.handle_weight.is_finite() && params.handle_weight > 0.0) {
-        return Err(PlateError::Parameter {
-            name: "handle_weight",
-            value: params.handle_weight,
-            range: "> 0",
-        });
-    }
-    let sel = check_region(mesh, region)?;
-    let mut col = vec![usize::MAX; mesh.positions.len()];
-    let mut cols = Vec::new();
-    for (i, &s) in sel.iter().enumerate() {
-        if s {
-            col[i] = cols.len();
-            cols.push(i);
-        }
-    }
-    let m = cols.len();
-    if m == 0 || handle.is_empty() {
-        return Err(PlateError::TooFewVertices(m.min(handle.len()), 1));
-    }
-    let adj = adjacency(mesh, params.weights);
-    let mut trip = Vec::new();
-    for &i in &cols {
-        let wsum: f64 = adj[i].iter().map(|e| e.1).sum();
-        let mut row: Vec<(usize, f64)> = vec![(col[i], -wsum)];
-        row.extend(
-            adj[i]
-                .iter()
-                .filter(|e| col[e.0] != usize::MAX)
-                .map(|e| (col[e.0], e.1)),
-        );
-        for &(a, va) in &row {
-            for &(b, vb) in &row {
-                trip.push(Triplet::new(a, b, va * vb));
-            }
-        }
-    }
-    let wh2 = params.handle_weight * params.handle_weight;
-    let mut rhs = faer::Mat::<f64>::zeros(m, 3);
-    for &h in handle {
-        let c = *col.get(h as usize).unwrap_or(&usize::MAX);
-        if c == usize::MAX {
-            return Err(PlateError::VertexOutOfBounds(h as usize, m));
-        }
-        trip.push(Triplet::new(c, c, wh2));
-        for k in 0..3 {
-            rhs[(c, k)] += wh2 * d[k];
-        }
-    }
-    let a = SparseColMat::<usize, f64>::try_new_from_triplets(m, m, &trip)
-        .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
-    let llt = a
-        .sp_cholesky(Side::Lower)
-        .map_err(|e| PlateError::Solve(format!("Laplacian normal equations: {e:?}")))?;
-    llt.solve_in_place(rhs.as_mut());
+    let sys = LaplacianSystem::new(mesh, region, handle, params)?;
+    let u = sys.solve(d);
     let mut out = mesh.clone();
-    for (c, &i) in cols.iter().enumerate() {
-        out.positions[i] = add(out.positions[i], [rhs[(c, 0)], rhs[(c, 1)], rhs[(c, 2)]]);
+    for (c, &i) in sys.cols.iter().enumerate() {
+        out.positions[i] = add(out.positions[i], [u[(c, 0)], u[(c, 1)], u[(c, 2)]]);
     }
     Ok(out)
 }
