@@ -5,7 +5,9 @@ use pdesculpt::mesh::io;
 use pdesculpt::plate::baselines::{DeltaMushParams, LaplacianParams, Weights};
 use pdesculpt::plate::deformer::parse_region;
 use pdesculpt::plate::shapes::{compare, Shape};
-use pdesculpt::plate::{BoundaryMethod, Direction, Material, PlateDeformer, RegionOptions};
+use pdesculpt::plate::{
+    BoundaryMethod, Direction, MappingMethod, Material, PlateDeformer, RegionOptions,
+};
 use std::path::PathBuf;
 
 /// Arguments of `pdesculpt plate`.
@@ -48,6 +50,10 @@ pub struct DeformArgs {
     /// (for non-uniform meshes).
     #[arg(long)]
     pub mesh_boundary: bool,
+    /// Harmonic (Tutte) disk mapping instead of the paper's eq 16 (works
+    /// for regions that are not star-shaped about their centroid).
+    #[arg(long)]
+    pub harmonic: bool,
     /// View direction x,y,z (default: the region normal).
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub view: Option<Vec<f64>>,
@@ -122,6 +128,11 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
             BoundaryMethod::MeshEdges
         } else {
             BoundaryMethod::AlphaShape
+        },
+        mapping: if a.harmonic {
+            MappingMethod::Harmonic
+        } else {
+            MappingMethod::LengthBased
         },
     };
     let plate = PlateDeformer::new(&mesh, &region, &opts)?;

@@ -5,7 +5,7 @@
 //! weight $w_i = (u_i^2+v_i^2-1)^2/(64 D)$ (eq 12) and $\mathbf q = s\,\mathbf d$.
 
 use super::boundary::{alpha_shape, mesh_edge_boundary, Boundary, ALPHA0_DEFAULT};
-use super::mapping::{DiskMapping, DiskPoint};
+use super::mapping::{harmonic_disk, DiskMapping, DiskPoint};
 use super::projection::{project, LocalFrame, ViewPlane};
 use super::{disk_solution, Material, PlateError};
 use crate::mesh::{norm, Mesh};
@@ -31,6 +31,21 @@ pub struct RegionOptions {
     /// Boundary extraction: the paper's alpha shape (default) or the
     /// region's own mesh edges.
     pub boundary: BoundaryMethod,
+    /// Disk mapping: the paper's length-based eq 16 (default) or the
+    /// harmonic (Tutte) mapping.
+    pub mapping: MappingMethod,
+}
+
+/// How region vertices are mapped onto the unit disk.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MappingMethod {
+    /// Eq 16: along rays from the centroid (needs a star-shaped region
+    /// whose centroid lies inside).
+    #[default]
+    LengthBased,
+    /// Harmonic (Tutte) embedding with the same boundary parametrisation:
+    /// one-to-one for any disk-like region, no centroid condition.
+    Harmonic,
 }
 
 /// How the boundary curve is found.
@@ -51,6 +66,7 @@ impl Default for RegionOptions {
             alpha0: ALPHA0_DEFAULT,
             view: None,
             boundary: BoundaryMethod::AlphaShape,
+            mapping: MappingMethod::LengthBased,
         }
     }
 }
@@ -192,26 +208,40 @@ impl PlateDeformer {
             }
         };
         let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| unique[i]).collect();
-        let c2 = {
-            let mut c = [0.0; 2];
-            for p in &local {
-                c[0] += p[0] / n;
-                c[1] += p[1] / n;
+        let (unique_disk, non_star_rays) = match opts.mapping {
+            MappingMethod::LengthBased => {
+                let c2 = {
+                    let mut c = [0.0; 2];
+                    for p in &local {
+                        c[0] += p[0] / n;
+                        c[1] += p[1] / n;
+                    }
+                    c
+                };
+                let mut mapping = DiskMapping::new(polygon, c2)?;
+                let on_loop: HashMap<usize, usize> = boundary
+                    .loop_indices
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &i)| (i, k))
+                    .collect();
+                let ud: Vec<DiskPoint> = unique
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &p)| mapping.map_point(p, on_loop.get(&i).copied()))
+                    .collect();
+                (ud, mapping.non_star_rays)
             }
-            c
+            MappingMethod::Harmonic => (
+                harmonic_disk(
+                    unique.len(),
+                    &boundary.triangles,
+                    &boundary.loop_indices,
+                    &unique,
+                )?,
+                0,
+            ),
         };
-        let mut mapping = DiskMapping::new(polygon, c2)?;
-        let on_loop: HashMap<usize, usize> = boundary
-            .loop_indices
-            .iter()
-            .enumerate()
-            .map(|(k, &i)| (i, k))
-            .collect();
-        let unique_disk: Vec<DiskPoint> = unique
-            .iter()
-            .enumerate()
-            .map(|(i, &p)| mapping.map_point(p, on_loop.get(&i).copied()))
-            .collect();
         let disk: Vec<DiskPoint> = rep.iter().map(|&u| unique_disk[u]).collect();
         // boundary indices refer to region vertices (first of each site)
         let mut boundary = boundary;
@@ -241,7 +271,7 @@ impl PlateDeformer {
             normal: frame.vz,
             boundary,
             rigidity,
-            non_star_rays: mapping.non_star_rays,
+            non_star_rays,
         })
     }
 

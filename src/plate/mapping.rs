@@ -170,3 +170,116 @@ pub fn eq16_paper_literal(b: [f64; 2], c: [f64; 2], d: [f64; 2], d_tilde: [f64; 
         d_tilde[1] * (b[1] - c[1]) / (d[1] - c[1]),
     ]
 }
+
+/// Beyond the paper: a harmonic (Tutte) disk mapping. The boundary loop
+/// goes to the unit circle by the same arc-length rule as eq 16; every
+/// other vertex is the average of its neighbours in `triangles` (uniform
+/// weights, one sparse Cholesky solve). By Tutte's theorem the map of a
+/// disk-like triangulation onto the convex disk is one-to-one, so it needs
+/// neither a star-shaped region nor a centroid inside it, and it has no
+/// creases along the rays through boundary corners that eq 16 produces.
+/// Vertices in no triangle connected to the boundary get $\rho = \infty$
+/// (no deformation).
+pub fn harmonic_disk(
+    n_points: usize,
+    triangles: &[[usize; 3]],
+    boundary_loop: &[usize],
+    points: &[[f64; 2]],
+) -> Result<Vec<DiskPoint>, PlateError> {
+    use faer::prelude::Solve;
+    use faer::sparse::{SparseColMat, Triplet};
+    let m = boundary_loop.len();
+    if m < 3 {
+        return Err(PlateError::BoundaryNotClosed {
+            alpha0: f64::NAN,
+            reason: "boundary loop has fewer than 3 vertices".into(),
+        });
+    }
+    let mut out = vec![
+        DiskPoint {
+            u: 0.0,
+            v: 0.0,
+            rho: f64::INFINITY
+        };
+        n_points
+    ];
+    // arc-length positions on the circle
+    let mut acc = vec![0.0; m];
+    let mut total = 0.0;
+    for k in 0..m {
+        acc[k] = total;
+        let (a, b) = (points[boundary_loop[k]], points[boundary_loop[(k + 1) % m]]);
+        total += (b[0] - a[0]).hypot(b[1] - a[1]);
+    }
+    let mut on_boundary = vec![false; n_points];
+    for k in 0..m {
+        let th = std::f64::consts::TAU * acc[k] / total;
+        out[boundary_loop[k]] = DiskPoint {
+            u: th.cos(),
+            v: th.sin(),
+            rho: 1.0,
+        };
+        on_boundary[boundary_loop[k]] = true;
+    }
+    let mut nbrs: Vec<Vec<usize>> = vec![Vec::new(); n_points];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if !nbrs[a].contains(&b) {
+                nbrs[a].push(b);
+                nbrs[b].push(a);
+            }
+        }
+    }
+    // interior vertices reachable from the boundary
+    let mut reach = on_boundary.clone();
+    let mut stack: Vec<usize> = boundary_loop.to_vec();
+    while let Some(v) = stack.pop() {
+        for &w in &nbrs[v] {
+            if !reach[w] {
+                reach[w] = true;
+                stack.push(w);
+            }
+        }
+    }
+    let mut col = vec![usize::MAX; n_points];
+    let mut unknown = Vec::new();
+    for v in 0..n_points {
+        if reach[v] && !on_boundary[v] {
+            col[v] = unknown.len();
+            unknown.push(v);
+        }
+    }
+    if unknown.is_empty() {
+        return Ok(out);
+    }
+    let n = unknown.len();
+    let mut trip = Vec::new();
+    let mut rhs = faer::Mat::<f64>::zeros(n, 2);
+    for (r, &v) in unknown.iter().enumerate() {
+        trip.push(Triplet::new(r, r, nbrs[v].len() as f64));
+        for &w in &nbrs[v] {
+            if on_boundary[w] {
+                rhs[(r, 0)] += out[w].u;
+                rhs[(r, 1)] += out[w].v;
+            } else {
+                trip.push(Triplet::new(r, col[w], -1.0));
+            }
+        }
+    }
+    let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip)
+        .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+    let llt = a
+        .sp_cholesky(faer::Side::Lower)
+        .map_err(|e| PlateError::Solve(format!("harmonic mapping: {e:?}")))?;
+    llt.solve_in_place(rhs.as_mut());
+    for (r, &v) in unknown.iter().enumerate() {
+        let (u, w) = (rhs[(r, 0)], rhs[(r, 1)]);
+        out[v] = DiskPoint {
+            u,
+            v: w,
+            rho: u.hypot(w),
+        };
+    }
+    Ok(out)
+}

@@ -31,7 +31,7 @@ pub mod shapes;
 
 use crate::jet::Real;
 
-pub use deformer::{BoundaryMethod, Direction, PlateDeformer, RegionOptions};
+pub use deformer::{BoundaryMethod, Direction, MappingMethod, PlateDeformer, RegionOptions};
 
 /// Errors of the plate family.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]

@@ -8,7 +8,7 @@
 //! method's absolute amplitude ratio to the ground truth is reported too.
 
 use super::baselines::{delta_mush, laplacian_deform, DeltaMushParams, LaplacianParams};
-use super::deformer::{Direction, PlateDeformer, RegionOptions};
+use super::deformer::{Direction, MappingMethod, PlateDeformer, RegionOptions};
 use super::mapping::inside;
 use super::reference::solve_clamped;
 use super::PlateError;
@@ -151,9 +151,11 @@ pub struct Comparison {
     pub region: Vec<u32>,
     /// Sheet positions of the region vertices.
     pub xy: Vec<[f64; 2]>,
-    /// Normalised (unit peak) deflections: truth, ours, Delta Mush, Laplacian.
+    /// Normalised (unit peak) deflections: truth, ours (eq 16 mapping),
+    /// ours with the harmonic mapping, Delta Mush, Laplacian.
     pub truth: Vec<f64>,
     pub ours: Vec<f64>,
+    pub ours_harmonic: Vec<f64>,
     pub delta_mush: Vec<f64>,
     pub laplacian: Vec<f64>,
     pub errors: Vec<MethodError>,
@@ -254,14 +256,25 @@ pub fn compare(
     if handle.is_empty() {
         handle.push(plate.region[0]);
     }
+    let harm = PlateDeformer::new(
+        &mesh,
+        &region,
+        &RegionOptions {
+            mapping: MappingMethod::Harmonic,
+            ..opts
+        },
+    )?;
+    let harm_mesh = harm.deform(&mesh, d, 1.0, Direction::Normal)?;
     let lap_mesh = laplacian_deform(&mesh, &plate.region, &handle, [0.0, 0.0, 1.0], lap)?;
     let dm_mesh = delta_mush(&mesh, &plate.region, &plate.region, [0.0, 0.0, 1.0], dm)?;
     let truth = normalise(&gt.w);
     let ours = normalise(&ours_raw);
+    let ours_harmonic = normalise(&z(&harm_mesh));
     let delta = normalise(&z(&dm_mesh));
     let lapz = normalise(&z(&lap_mesh));
     let errors = vec![
         errors("ours", &ours, &truth),
+        errors("ours_harmonic", &ours_harmonic, &truth),
         errors("delta_mush", &delta, &truth),
         errors("laplacian", &lapz, &truth),
     ];
@@ -272,6 +285,7 @@ pub fn compare(
         xy,
         truth,
         ours,
+        ours_harmonic,
         delta_mush: delta,
         laplacian: lapz,
         errors,

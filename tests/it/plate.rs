@@ -7,7 +7,7 @@ use pdesculpt::plate::baselines::{DeltaMushParams, LaplacianParams};
 use pdesculpt::plate::check::{checks, ellipse_centre, observed_order, rectangle_centre};
 use pdesculpt::plate::shapes::{compare, region_in_polygon, sheet, Shape};
 use pdesculpt::plate::{
-    BoundaryMethod, Direction, Material, PlateDeformer, PlateError, RegionOptions,
+    BoundaryMethod, Direction, MappingMethod, Material, PlateDeformer, PlateError, RegionOptions,
 };
 use proptest::prelude::*;
 
@@ -203,6 +203,17 @@ fn plate_stated_limits_and_bad_input_are_clear_errors() {
         PlateDeformer::new(&mesh, &c_shape, &top()),
         Err(PlateError::CentroidOutside)
     ));
+    // ... which the harmonic mapping handles
+    let harmonic = RegionOptions {
+        mapping: MappingMethod::Harmonic,
+        ..top()
+    };
+    let p = PlateDeformer::new(&mesh, &c_shape, &harmonic).unwrap();
+    assert!(p.weights.iter().all(|w| w.is_finite() && *w >= 0.0));
+    assert!(p.weights.iter().any(|w| *w > 0.0));
+    for &i in &p.boundary.loop_indices {
+        assert_eq!(p.weights[i], 0.0);
+    }
     // limit 1: an equatorial band of a sphere seen from the pole overlaps
     let s = uv_sphere(16);
     let band: Vec<u32> = (0..s.positions.len() as u32)
@@ -244,7 +255,7 @@ proptest! {
         a in 0.4f64..1.15, b in 0.4f64..1.15, rot in 0.0f64..3.2,
         s in 0.0f64..200.0, dx in -1.0f64..1.0, dy in -1.0f64..1.0, dz in -1.0f64..1.0,
         alpha0 in 0.75f64..1.5, young in 1e3f64..1e8, mu in 0.0f64..0.5, h in 0.01f64..1.0,
-        normal in any::<bool>(),
+        normal in any::<bool>(), harmonic in any::<bool>(),
     ) {
         let mesh = sheet(24);
         let region = region_in_polygon(&mesh, &ellipse_poly(a, b, rot));
@@ -252,6 +263,7 @@ proptest! {
             material: Material { young, poisson: mu, thickness: h },
             alpha0,
             view: Some([0.0, 0.0, 1.0]),
+            mapping: if harmonic { MappingMethod::Harmonic } else { MappingMethod::LengthBased },
             ..RegionOptions::default()
         };
         let p = PlateDeformer::new(&mesh, &region, &opts).unwrap();
@@ -317,6 +329,6 @@ fn plate_cli_deform_and_compare() {
         .unwrap();
     assert!(st.status.success());
     let v: serde_json::Value = serde_json::from_slice(&st.stdout).unwrap();
-    assert_eq!(v["errors"].as_array().unwrap().len(), 3);
+    assert_eq!(v["errors"].as_array().unwrap().len(), 4);
     let _ = std::fs::remove_dir_all(&dir);
 }

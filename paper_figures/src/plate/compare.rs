@@ -122,7 +122,7 @@ fn methods(c: &Comparison) -> [(&'static str, &Vec<f64>); 4] {
 pub fn table(ctx: &Ctx) -> anyhow::Result<()> {
     let mut rows = Vec::new();
     let mut md = String::from(
-        "| shape | vertices | ours rms | ours max | Delta Mush rms | Delta Mush max | Laplacian rms | Laplacian max | ours/truth peak |\n|---|---|---|---|---|---|---|---|---|\n",
+        "| shape | vertices | ours rms | ours max | ours (harmonic map) rms | ours (harmonic map) max | Delta Mush rms | Delta Mush max | Laplacian rms | Laplacian max | ours/truth peak |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for s in Shape::ALL {
         let c = run(s)?;
@@ -133,13 +133,20 @@ pub fn table(ctx: &Ctx) -> anyhow::Result<()> {
                 .map(|x| (x.rms, x.max))
                 .unwrap_or((f64::NAN, f64::NAN))
         };
-        let (o, d, l) = (e("ours"), e("delta_mush"), e("laplacian"));
+        let (o, hm, d, l) = (
+            e("ours"),
+            e("ours_harmonic"),
+            e("delta_mush"),
+            e("laplacian"),
+        );
         md.push_str(&format!(
-            "| {} | {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} |\n",
+            "| {} | {} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.4} | {:.3} |\n",
             s.name(),
             c.region.len(),
             o.0,
             o.1,
+            hm.0,
+            hm.1,
             d.0,
             d.1,
             l.0,
