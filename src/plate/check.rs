@@ -257,6 +257,22 @@ pub fn checks() -> Vec<Check> {
         )
         .note("B straight above C: printed u-ratio is 0/0 (NaN); the radial ratio is finite"),
     );
+    // eq 15: the alpha shape of a k x k grid is its perimeter (4 (k - 1)
+    // vertices), enclosing the full square
+    let k = 12usize;
+    let grid: Vec<[f64; 2]> = (0..k * k)
+        .map(|i| [(i % k) as f64 * 0.1, (i / k) as f64 * 0.1])
+        .collect();
+    let e15 = super::boundary::alpha_shape(&grid, super::boundary::ALPHA0_DEFAULT)
+        .map(|b| {
+            let poly: Vec<[f64; 2]> = b.loop_indices.iter().map(|&i| grid[i]).collect();
+            let side = 0.1 * (k - 1) as f64;
+            (b.loop_indices.len() as f64 - 4.0 * (k - 1) as f64).abs()
+                + (super::boundary::signed_area(&poly) - side * side).abs() / (side * side)
+        })
+        .unwrap_or(f64::NAN);
+    out.push(Check::new(F, P, "eq 15", "plate.eq15.alpha_shape_grid", Kind::Reference, e15, tol::ROUNDING)
+        .note("alpha shape (alpha_0 = 0.86) of a 12x12 grid: |#loop - 44| + relative area error of the loop"));
     // reference solver against plate theory
     let n = REFERENCE_CELLS;
     let ell_r = |a: f64, b: f64| {

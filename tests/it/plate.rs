@@ -332,3 +332,47 @@ fn plate_cli_deform_and_compare() {
     assert_eq!(v["errors"].as_array().unwrap().len(), 4);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn plate_on_the_makehuman_belly() {
+    let body = pdesculpt::makehuman::base_body().unwrap().mesh;
+    // a patch of the front of the torso (Y up, facing +z)
+    let (lo, hi) = body.bbox();
+    let height = hi[1] - lo[1];
+    let centre_y = lo[1] + 0.6 * height;
+    let normals = body.vertex_normals();
+    let front = |i: usize| {
+        let p = body.positions[i];
+        p[0].abs() < 0.08 * height && (p[1] - centre_y).abs() < 0.06 * height && normals[i][2] > 0.5
+    };
+    let region: Vec<u32> = (0..body.positions.len())
+        .filter(|&i| front(i))
+        .map(|i| i as u32)
+        .collect();
+    assert!(region.len() > 20, "{} region vertices", region.len());
+    let opts = RegionOptions {
+        view: Some([0.0, 0.0, 1.0]),
+        boundary: BoundaryMethod::MeshEdges,
+        ..RegionOptions::default()
+    };
+    let p = PlateDeformer::new(&body, &region, &opts).unwrap();
+    let s = 70.0;
+    let d = [0.0, 0.0, 1.0];
+    let m = p.deform(&body, d, s, Direction::Normal).unwrap();
+    assert!(m.positions.iter().flatten().all(|c| c.is_finite()));
+    let disp: Vec<f64> = m
+        .positions
+        .iter()
+        .zip(&body.positions)
+        .map(|(a, b)| pdesculpt::mesh::dist(*a, *b))
+        .collect();
+    let peak = disp.iter().fold(0.0f64, |a, b| a.max(*b));
+    let bound = s / (64.0 * p.rigidity);
+    assert!(
+        peak <= bound * (1.0 + tol::ROUNDING) && peak > 0.5 * bound,
+        "{peak} vs {bound}"
+    );
+    for &i in &p.boundary.loop_indices {
+        assert_eq!(disp[p.region[i] as usize], 0.0);
+    }
+}
