@@ -14,11 +14,30 @@
 //! with $\xi = \partial_u\xi = \partial_v\xi = 0$ on $u^2+v^2=1$ (C1), and the
 //! sculpting force $q_\xi = s\,d_\xi$ (sensitivity times cursor motion).
 //!
+//! Beyond the paper (options, the paper's choices stay the defaults):
+//! [`BoundaryMethod::MeshEdges`] takes the boundary from the region's mesh
+//! triangles (the rule $\alpha = 0.86\,d_P$ fails as soon as the vertex
+//! spacing is non-uniform, e.g. near a sphere's pole), and
+//! [`MappingMethod::Harmonic`] replaces eq 16 by a Tutte embedding that is
+//! one-to-one for any disk-like region (no star-shape or centroid
+//! condition, paper limit 2).
+//!
+//! Findings (measured in `shapes::compare`, the `001-table-errors` figure
+//! and the checks):
+//! * eq 12 lives on the unit disk, so the deflection does not grow with the
+//!   region's size: against the physical clamped plate $D\nabla^4 w = q$ on
+//!   the projected region the peak ratio is 1.15 (circle of radius 0.96)
+//!   to 37 (pentagram); only the shape is comparable.
+//! * eq 16 is continuous but not C1 inside the region: for a square of
+//!   half-side $a$ it gives $\rho = \max(|x|,|y|)/a$, so $w$ has slope jumps
+//!   along the diagonals (rays through boundary corners); C1 holds on the
+//!   boundary as the paper states.
+//!
 //! Submodules: [`projection`] (eqs 13-14), [`boundary`] (eq 15),
 //! [`mapping`] (eq 16), [`deformer`] (precomputed region, one pass per
 //! cursor move), [`reference`] (Morley finite-element clamped-plate solver,
 //! the ground truth), [`baselines`] (Laplacian deformer, Delta Mush),
-//! [`shapes`] (test regions and the paper's comparisons).
+//! [`shapes`] (test regions and the paper's comparisons), [`check`].
 
 pub mod baselines;
 pub mod boundary;

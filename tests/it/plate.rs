@@ -376,3 +376,39 @@ fn plate_on_the_makehuman_belly() {
         assert_eq!(disp[p.region[i] as usize], 0.0);
     }
 }
+
+#[test]
+fn plate_region_files_vertex_list_and_lasso() {
+    use pdesculpt::plate::deformer::parse_region;
+    let mesh = sheet(20);
+    assert_eq!(
+        parse_region("1, 2 3\n# comment\n4", &mesh).unwrap(),
+        vec![1, 2, 3, 4]
+    );
+    assert_eq!(
+        parse_region(r#"{"vertices": [5, 6]}"#, &mesh).unwrap(),
+        vec![5, 6]
+    );
+    // a lasso square seen from +z selects the same vertices as the polygon
+    let lasso = r#"{"lasso": {"view": [0, 0, 1], "polygon": [[-0.5,-0.5],[0.5,-0.5],[0.5,0.5],[-0.5,0.5]]}}"#;
+    let mut a = parse_region(lasso, &mesh).unwrap();
+    let sq = [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]];
+    let frame = pdesculpt::plate::projection::LocalFrame::new([0.0; 3], [0.0, 0.0, 1.0]).unwrap();
+    let mut b: Vec<u32> = (0..mesh.positions.len() as u32)
+        .filter(|&i| {
+            let l = frame.to_local(mesh.positions[i as usize]);
+            pdesculpt::plate::mapping::inside(&sq, [l[0], l[1]])
+        })
+        .collect();
+    a.sort_unstable();
+    b.sort_unstable();
+    assert!(!a.is_empty());
+    assert_eq!(a, b);
+    assert!(parse_region(r#"{"foo": 1}"#, &mesh).is_err());
+    assert!(parse_region(
+        r#"{"lasso": {"view": [0, 0, 1], "polygon": [[0, 0]]}}"#,
+        &mesh
+    )
+    .is_err());
+    assert!(parse_region("{not json", &mesh).is_err());
+}
