@@ -9,7 +9,7 @@
 //! The paper writes eq 16 componentwise,
 //! $u_{\tilde B} = u_{\tilde D}(x'_B - x'_C)/(x'_D - x'_C)$ (and $v$ with $y'$);
 //! both ratios equal $\rho_j$ because $B_j$ lies on segment $CD_j$, but each is
-//! $0/0$ when $B_j$ is straight above or beside $C$. [`map_point`] uses the
+//! $0/0$ when $B_j$ is straight above or beside $C$. [`DiskMapping::map_point`] uses the
 //! radial ratio; [`eq16_paper_literal`] keeps the printed form.
 
 use super::boundary::signed_area;

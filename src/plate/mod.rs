@@ -35,7 +35,7 @@
 //!
 //! Submodules: [`projection`] (eqs 13-14), [`boundary`] (eq 15),
 //! [`mapping`] (eq 16), [`deformer`] (precomputed region, one pass per
-//! cursor move), [`reference`] (Morley finite-element clamped-plate solver,
+//! cursor move), [`mod@reference`] (Morley finite-element clamped-plate solver,
 //! the ground truth), [`baselines`] (Laplacian deformer, Delta Mush),
 //! [`shapes`] (test regions and the paper's comparisons), [`check`].
 

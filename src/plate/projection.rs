@@ -6,7 +6,7 @@
 //! on the plane and $\mathbf p - \bar p_1 \parallel \mathbf n$). The corrected
 //! form is [`project`], the printed one [`project_paper_literal`].
 //! Eq 14 translates by the frame origin and rotates onto the unit vectors
-//! $\mathbf v_x, \mathbf v_y, \mathbf v_z$ (a row vector times $[T][R]$ gives
+//! $\mathbf v_x, \mathbf v_y, \mathbf v_z$ (a row vector times $\[T\]\[R\]$ gives
 //! $((\bar p - \bar o)\cdot \mathbf v_x, (\bar p - \bar o)\cdot \mathbf v_y,
 //! (\bar p - \bar o)\cdot \mathbf v_z)$); the $z'$ component is dropped.
 
@@ -85,14 +85,14 @@ impl LocalFrame {
         Ok(LocalFrame { origin, vx, vy, vz })
     }
 
-    /// Eq 14: $\bar p' = \bar p_2 [T][R]$, returning $(x', y', z')$.
+    /// Eq 14: $\bar p' = \bar p_2 \[T\]\[R\]$, returning $(x', y', z')$.
     pub fn to_local(&self, p: [f64; 3]) -> [f64; 3] {
         let d = sub(p, self.origin);
         [dot(d, self.vx), dot(d, self.vy), dot(d, self.vz)]
     }
 
     /// Eq 14 written literally as the 4x4 homogeneous product (row vector
-    /// times $[T]$ times $[R]$), for the check against [`Self::to_local`].
+    /// times $\[T\]$ times $\[R\]$), for the check against [`Self::to_local`].
     pub fn to_local_matrix(&self, p: [f64; 3]) -> [f64; 3] {
         let o = self.origin;
         let t = [
