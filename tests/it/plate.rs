@@ -412,3 +412,40 @@ fn plate_region_files_vertex_list_and_lasso() {
     .is_err());
     assert!(parse_region("{not json", &mesh).is_err());
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(12))]
+    #[test]
+    fn plate_compare_sweeps_baseline_parameters(
+        shape in 0usize..5, grid in 16usize..36, iterations in 1usize..60,
+        step in 0.05f64..1.0, handle_weight in 0.1f64..100.0, uniform in any::<bool>(),
+    ) {
+        use pdesculpt::plate::baselines::Weights;
+        let dm = DeltaMushParams { iterations, step };
+        let lap = LaplacianParams {
+            weights: if uniform { Weights::Uniform } else { Weights::Cotangent },
+            handle_weight,
+        };
+        let c = compare(Shape::ALL[shape], grid, &dm, &lap).unwrap();
+        for e in &c.errors {
+            prop_assert!(e.rms.is_finite() && e.max.is_finite() && e.rms <= e.max + tol::ROUNDING);
+        }
+        prop_assert!(c.amplitude_ratio.is_finite() && c.amplitude_ratio > 0.0);
+    }
+}
+
+#[test]
+fn plate_compare_rejects_bad_parameters() {
+    let lap = LaplacianParams::default();
+    let bad_step = DeltaMushParams {
+        iterations: 10,
+        step: 1.5,
+    };
+    assert!(compare(Shape::Square, 20, &bad_step, &lap).is_err());
+    let bad_w = LaplacianParams {
+        handle_weight: f64::NAN,
+        ..lap
+    };
+    assert!(compare(Shape::Square, 20, &DeltaMushParams::default(), &bad_w).is_err());
+    assert!(compare(Shape::Square, 4, &DeltaMushParams::default(), &lap).is_err());
+}
