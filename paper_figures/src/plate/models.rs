@@ -5,7 +5,7 @@ use super::render_row;
 use crate::common::Ctx;
 use pdesculpt::mesh::{dot, norm, sub, Mesh};
 use pdesculpt::plate::shapes::{region_in_polygon, sheet, Shape};
-use pdesculpt::plate::{BoundaryMethod, Direction, PlateDeformer, RegionOptions};
+use pdesculpt::plate::{BoundaryMethod, Direction, MappingMethod, PlateDeformer, RegionOptions};
 use pdesculpt::render::View;
 use std::collections::HashMap;
 
@@ -181,12 +181,24 @@ fn ball_region(m: &Mesh, c: [f64; 3], r: f64, dir: [f64; 3]) -> Vec<u32> {
 /// Prepares a region with the paper's alpha shape, falling back to the
 /// mesh-edge boundary where the alpha rule cannot close the boundary.
 fn prepare(m: &Mesh, region: &[u32]) -> anyhow::Result<(PlateDeformer, &'static str)> {
-    match PlateDeformer::new(m, region, &RegionOptions::default()) {
+    prepare_with(m, region, MappingMethod::LengthBased)
+}
+
+fn prepare_with(
+    m: &Mesh,
+    region: &[u32],
+    mapping: MappingMethod,
+) -> anyhow::Result<(PlateDeformer, &'static str)> {
+    let base = RegionOptions {
+        mapping,
+        ..RegionOptions::default()
+    };
+    match PlateDeformer::new(m, region, &base) {
         Ok(p) => Ok((p, "alpha_shape")),
         Err(_) => {
             let o = RegionOptions {
                 boundary: BoundaryMethod::MeshEdges,
-                ..RegionOptions::default()
+                ..base
             };
             Ok((PlateDeformer::new(m, region, &o)?, "mesh_edges"))
         }
@@ -315,13 +327,38 @@ pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
 /// on a flat sheet, applied one after the other.
 pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
     let t = teapot(16)?;
-    let region = ball_region(&t, [0.0, -2.0, 1.2], 0.9, [0.0, -1.0, 0.0]);
-    let (p, method) = prepare(&t, &region)?;
-    let d = outward(&p, [0.0, -1.0, 0.0], motion_for_peak(&p, 70.0, 0.5));
-    let out = p.deform(&t, d, 70.0, Direction::Normal)?;
-    let ol = outline(&p, &t);
+    // (centre, radius, outward direction, peak): body front pulled out,
+    // body back pushed in, lid rim pulled up
+    let edits: [([f64; 3], f64, [f64; 3], f64); 3] = [
+        ([0.0, -2.0, 1.2], 0.9, [0.0, -1.0, 0.0], 0.5),
+        ([0.0, 2.0, 1.2], 0.8, [0.0, 1.0, 0.0], -0.3),
+        ([0.0, 1.0, 2.5], 0.35, [0.0, 0.0, 1.0], 0.2),
+    ];
+    let mut out = t.clone();
+    let mut out_harmonic = t.clone();
+    let mut outlines = Vec::new();
+    let mut teapot_steps = Vec::new();
+    for (c, r, dir, peak) in edits {
+        let region = ball_region(&t, c, r, dir);
+        let (p, method) = prepare(&out, &region)?;
+        let d = outward(&p, dir, motion_for_peak(&p, 70.0, peak));
+        out = p.deform(&out, d, 70.0, Direction::Normal)?;
+        let (ph, _) = prepare_with(&out_harmonic, &region, MappingMethod::Harmonic)?;
+        let dh = outward(&ph, dir, motion_for_peak(&ph, 70.0, peak));
+        out_harmonic = ph.deform(&out_harmonic, dh, 70.0, Direction::Normal)?;
+        outlines.extend(outline(&p, &t));
+        teapot_steps.push(serde_json::json!({
+            "centre": c, "region_vertices": p.region.len(), "boundary": method,
+            "peak": peak, "non_star_rays": p.non_star_rays,
+        }));
+    }
+    let first: Vec<[f64; 3]> = {
+        let region = ball_region(&t, edits[0].0, edits[0].1, edits[0].2);
+        let (p, _) = prepare(&t, &region)?;
+        outline(&p, &t)
+    };
     let img = render_row(
-        &[(&t, ol.clone()), (&out, ol)],
+        &[(&t, first), (&out, Vec::new()), (&out_harmonic, Vec::new())],
         View::Perspective {
             yaw: 20.0,
             pitch: 15.0,
@@ -332,7 +369,6 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
     // (b) a sheet with three deformations
     let mut m = sheet(60);
     let rest = m.clone();
-    let mut outlines = Vec::new();
     let mut steps = Vec::new();
     let shapes = [
         (Shape::Pentagram, [-0.6, 0.55], 0.5, 0.3),
@@ -353,7 +389,6 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         let p = PlateDeformer::new(&m, &region, &o)?;
         let d = motion_for_peak(&p, 70.0, peak);
         m = p.deform(&m, [0.0, 0.0, d], 70.0, Direction::Cursor)?;
-        outlines.extend(outline(&p, &m));
         steps.push(serde_json::json!({ "shape": s.name(), "region_vertices": p.region.len(), "peak": peak }));
     }
     let img = render_row(&[(&m, Vec::new())], PERSP, 500);
@@ -361,9 +396,10 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
     ctx.write_json(
         "001-fig1.json",
         &serde_json::json!({
+            "teapot_panels": "rest with the first region, eq 16 mapping (paper), harmonic mapping (beyond the paper)",
             "teapot": { "source": "Newell's 32 Bezier patches / 306 control points, paper_figures/src/plate/teapot.txt",
                         "vertices": t.positions.len(), "triangles": t.triangles.len(),
-                        "region_vertices": p.region.len(), "boundary": method },
+                        "steps": teapot_steps },
             "sheet_steps": steps,
         }),
     )?;
