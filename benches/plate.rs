@@ -51,7 +51,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             k += 1e-3;
             let f = plate.force([0.0, 0.0, k], 70.0, Direction::Cursor);
-            plate.apply(&mut positions, f);
+            plate.apply(&mut positions, f).expect("buffer fits");
             black_box(&positions);
         })
     });

@@ -92,6 +92,8 @@ pub struct PlateDeformer {
     pub rigidity: f64,
     /// Rays from the centroid that cross the boundary more than once.
     pub non_star_rays: usize,
+    /// Largest region vertex index (buffer-size check of [`Self::apply`]).
+    max_index: usize,
 }
 
 /// Area-weighted normal of the triangles whose three vertices are in `sel`.
@@ -261,6 +263,7 @@ impl PlateDeformer {
                 }
             })
             .collect();
+        let max_index = order.iter().map(|&v| v as usize).max().unwrap_or(0);
         Ok(PlateDeformer {
             region: order,
             rest,
@@ -272,6 +275,7 @@ impl PlateDeformer {
             boundary,
             rigidity,
             non_star_rays,
+            max_index,
         })
     }
 
@@ -289,7 +293,13 @@ impl PlateDeformer {
 
     /// One cursor move: writes the deformed region into `positions`
     /// (the whole mesh's vertex buffer), one pass over the region.
-    pub fn apply(&self, positions: &mut [[f64; 3]], force: [f64; 3]) {
+    pub fn apply(&self, positions: &mut [[f64; 3]], force: [f64; 3]) -> Result<(), PlateError> {
+        if positions.len() <= self.max_index {
+            return Err(PlateError::VertexOutOfBounds(
+                self.max_index,
+                positions.len(),
+            ));
+        }
         for ((&v, p0), &w) in self.region.iter().zip(&self.rest).zip(&self.weights) {
             positions[v as usize] = [
                 p0[0] + force[0] * w,
@@ -297,6 +307,7 @@ impl PlateDeformer {
                 p0[2] + force[2] * w,
             ];
         }
+        Ok(())
     }
 
     /// Deformed copy of `mesh` for cursor motion `d`.
@@ -315,7 +326,7 @@ impl PlateDeformer {
             });
         }
         let mut out = mesh.clone();
-        self.apply(&mut out.positions, self.force(d, sensitivity, direction));
+        self.apply(&mut out.positions, self.force(d, sensitivity, direction))?;
         Ok(out)
     }
 }

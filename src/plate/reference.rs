@@ -54,8 +54,15 @@ pub fn solve_clamped(
             range: "> 0",
         });
     }
-    if triangles.is_empty() || load.len() != points.len() {
-        return Err(PlateError::TooFewVertices(triangles.len(), 1));
+    if triangles.is_empty() {
+        return Err(PlateError::TooFewVertices(0, 1));
+    }
+    if load.len() != points.len() || load.iter().any(|q| !q.is_finite()) {
+        return Err(PlateError::Solve(format!(
+            "load needs {} finite values, got {}",
+            points.len(),
+            load.len()
+        )));
     }
     let nv = points.len();
     // edges, their use counts and global orientation (low -> high index)

@@ -239,7 +239,7 @@ pub fn compare(
     let ours_raw = z(&ours_mesh);
     let gt_peak = gt.w.iter().fold(0.0f64, |m, x| m.max(*x));
     let ours_peak = ours_raw.iter().fold(0.0f64, |m, x| m.max(*x));
-    // handle: region vertices within 8 % of the region size of the centroid
+    // handle: region vertices within 1.5 d_P of the centroid
     let c = plate.boundary.d_p;
     let centre = {
         let n = xy.len() as f64;
