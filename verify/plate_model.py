@@ -65,6 +65,23 @@ out["eq13_case"] = {
     "printed_plane_residual": float(resid_printed.subs(case)),
 }
 
+# eq 14: the row vector [p 1] [T][R] gives the frame coordinates
+# ((p - o).vx, (p - o).vy, (p - o).vz) for any frame (R's columns are the axes)
+ox, oy, oz = sp.symbols("o_x o_y o_z", real=True)
+V = sp.Matrix(3, 3, sp.symbols("v0:9", real=True))  # rows: vx, vy, vz
+T = sp.Matrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [-ox, -oy, -oz, 1]])
+R = sp.zeros(4, 4)
+for i in range(3):
+    for j in range(3):
+        R[i, j] = V[j, i]
+R[3, 3] = 1
+row = sp.Matrix([[px, py, pz, 1]]) * T * R
+d = sp.Matrix([px - ox, py - oy, pz - oz])
+for j in range(3):
+    assert sp.expand(row[0, j] - (V[j, :] * d)[0]) == 0
+assert row[0, 3] == 1
+out["eq14_row_times_T_R_is_frame_coordinates"] = True
+
 # exact clamped circular plate of radius a: w = q (a^2 - r^2)^2 / (64 D)
 wc = q * (a**2 - x**2 - y**2) ** 2 / (64 * D)
 assert sp.simplify(D * bilap(wc, x, y) - q) == 0
