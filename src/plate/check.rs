@@ -273,6 +273,14 @@ pub fn checks() -> Vec<Check> {
         .unwrap_or(f64::NAN);
     out.push(Check::new(F, P, "eq 15", "plate.eq15.alpha_shape_grid", Kind::Reference, e15, tol::ROUNDING)
         .note("alpha shape (alpha_0 = 0.86) of a 12x12 grid: |#loop - 44| + relative area error of the loop"));
+    // eq 16 is only C0 inside: on the square of half-side a the map is
+    // rho = max(|x|, |y|)/a, so the normalised deflection (1 - rho^2)^2 has
+    // an x-slope jump 4 rho (1 - rho^2)/a across the diagonal
+    out.push(
+        Check::new(F, P, "eq 16", "plate.eq16.interior_slope_jump", Kind::Reference,
+            square_slope_jump().unwrap_or(f64::NAN), SLOPE_JUMP_TOL)
+        .note("finite-difference x-slope jump of (1-rho^2)^2 across the diagonal of a square at (0.3a, 0.3a) vs 4 rho (1-rho^2)/a: eq 16 creases the surface along rays through corners"),
+    );
     // reference solver against plate theory
     let n = REFERENCE_CELLS;
     let ell_r = |a: f64, b: f64| {
@@ -329,6 +337,29 @@ pub fn checks() -> Vec<Check> {
         .note("displacement of the alpha-shape boundary vertices after a cursor move"),
     );
     out
+}
+
+/// Relative tolerance of the finite-difference slope jump (step 1e-6).
+pub const SLOPE_JUMP_TOL: f64 = 1e-4;
+
+/// Relative difference between the measured and the predicted x-slope
+/// jump of the eq-16 deflection across the diagonal of a square.
+pub fn square_slope_jump() -> Result<f64, PlateError> {
+    use super::mapping::DiskMapping;
+    let a = 1.0;
+    let sq = vec![[-a, -a], [a, -a], [a, a], [-a, a]];
+    let mut m = DiskMapping::new(sq, [0.0, 0.0])?;
+    let mut w = |x: f64, y: f64| {
+        let d = m.map_point([x, y], None);
+        64.0 * disk_profile(d.rho)
+    };
+    let (t, h) = (0.3 * a, 1e-6);
+    // x-slope just right of the diagonal (|x| > |y|) and just left of it
+    let right = (w(t + 2.0 * h, t) - w(t + h, t)) / h;
+    let left = (w(t - h, t) - w(t - 2.0 * h, t)) / h;
+    let rho = t / a;
+    let predicted = 4.0 * rho * (1.0 - rho * rho) / a;
+    Ok(((left - right).abs() - predicted).abs() / predicted)
 }
 
 /// Max error of the normalised pipeline deflection against the exact
