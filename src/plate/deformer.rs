@@ -1,0 +1,404 @@
+//! The interactive deformer: everything that depends only on the region is
+//! computed once ([`PlateDeformer::new`]); a cursor move
+//! ([`PlateDeformer::apply`]) is one pass over the region's vertices,
+//! $\mathbf p_i = \mathbf p_i^0 + \mathbf q\, w_i$ with the precomputed
+//! weight $w_i = (u_i^2+v_i^2-1)^2/(64 D)$ (eq 12) and $\mathbf q = s\,\mathbf d$.
+
+use super::boundary::{alpha_shape, mesh_edge_boundary, Boundary, ALPHA0_DEFAULT};
+use super::mapping::{harmonic_disk, DiskMapping, DiskPoint};
+use super::projection::{project, LocalFrame, ViewPlane};
+use super::{disk_solution, Material, PlateError};
+use crate::mesh::{norm, Mesh};
+use std::collections::HashMap;
+
+/// Direction of the deformation (sec 4.4, option "Mouse Direction").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    /// Along the cursor motion: $q_\xi = s d_\xi$ for each component.
+    Cursor,
+    /// Along the region normal, with $q = s\,(\mathbf d\cdot\mathbf n)$.
+    Normal,
+}
+
+/// Options of the region preparation.
+#[derive(Clone, Copy, Debug)]
+pub struct RegionOptions {
+    pub material: Material,
+    /// $\alpha_0$ of eq 15.
+    pub alpha0: f64,
+    /// View-plane normal; `None` uses the region's area-weighted normal.
+    pub view: Option<[f64; 3]>,
+    /// Boundary extraction: the paper's alpha shape (default) or the
+    /// region's own mesh edges.
+    pub boundary: BoundaryMethod,
+    /// Disk mapping: the paper's length-based eq 16 (default) or the
+    /// harmonic (Tutte) mapping.
+    pub mapping: MappingMethod,
+}
+
+/// How region vertices are mapped onto the unit disk.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MappingMethod {
+    /// Eq 16: along rays from the centroid (needs a star-shaped region
+    /// whose centroid lies inside).
+    #[default]
+    LengthBased,
+    /// Harmonic (Tutte) embedding with the same boundary parametrisation:
+    /// one-to-one for any disk-like region, no centroid condition.
+    Harmonic,
+}
+
+/// How the boundary curve is found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum BoundaryMethod {
+    /// Eq 15: alpha shape on the Delaunay triangulation of the projection.
+    #[default]
+    AlphaShape,
+    /// Boundary edges of the mesh triangles inside the region (robust to
+    /// non-uniform vertex spacing).
+    MeshEdges,
+}
+
+impl Default for RegionOptions {
+    fn default() -> Self {
+        RegionOptions {
+            material: Material::default(),
+            alpha0: ALPHA0_DEFAULT,
+            view: None,
+            boundary: BoundaryMethod::AlphaShape,
+            mapping: MappingMethod::LengthBased,
+        }
+    }
+}
+
+/// A prepared region.
+#[derive(Clone, Debug)]
+pub struct PlateDeformer {
+    /// Region vertex indices into the mesh.
+    pub region: Vec<u32>,
+    /// Rest positions of the region vertices.
+    pub rest: Vec<[f64; 3]>,
+    /// Precomputed eq-12 weights $(u^2+v^2-1)^2/(64D)$ (zero outside the disk).
+    pub weights: Vec<f64>,
+    /// Disk coordinates of the region vertices.
+    pub disk: Vec<DiskPoint>,
+    /// Projected local coordinates (eq 14) of the region vertices.
+    pub local: Vec<[f64; 2]>,
+    pub frame: LocalFrame,
+    /// Unit region normal (the frame's $z'$ axis, facing the view).
+    pub normal: [f64; 3],
+    /// The alpha-shape boundary; its indices refer to [`Self::region`].
+    pub boundary: Boundary,
+    pub rigidity: f64,
+    /// Rays from the centroid that cross the boundary more than once.
+    pub non_star_rays: usize,
+    /// Largest region vertex index (buffer-size check of [`Self::apply`]).
+    max_index: usize,
+}
+
+/// Area-weighted normal of the triangles whose three vertices are in `sel`.
+pub fn region_normal(mesh: &Mesh, sel: &[bool]) -> [f64; 3] {
+    let mut n = [0.0; 3];
+    for (t, tri) in mesh.triangles.iter().enumerate() {
+        if tri.iter().all(|&v| sel[v as usize]) {
+            let a = mesh.face_normal_area(t);
+            for k in 0..3 {
+                n[k] += a[k];
+            }
+        }
+    }
+    n
+}
+
+impl PlateDeformer {
+    /// Prepares `region` (vertex indices of `mesh`): projection (eqs 13-14),
+    /// alpha-shape boundary (eq 15), disk mapping (eq 16), eq-12 weights.
+    /// Detects the paper's limits (overlapping projection, centroid outside).
+    pub fn new(mesh: &Mesh, region: &[u32], opts: &RegionOptions) -> Result<Self, PlateError> {
+        let rigidity = opts.material.rigidity()?;
+        let nv = mesh.positions.len();
+        if region.len() < 4 {
+            return Err(PlateError::TooFewVertices(region.len(), 4));
+        }
+        let mut sel = vec![false; nv];
+        let mut order: Vec<u32> = Vec::with_capacity(region.len());
+        for &v in region {
+            let vi = v as usize;
+            if vi >= nv {
+                return Err(PlateError::VertexOutOfBounds(vi, nv));
+            }
+            if !mesh.positions[vi].iter().all(|c| c.is_finite()) {
+                return Err(PlateError::NonFinite(vi));
+            }
+            if !sel[vi] {
+                sel[vi] = true;
+                order.push(v);
+            }
+        }
+        let rest: Vec<[f64; 3]> = order.iter().map(|&v| mesh.positions[v as usize]).collect();
+        let n = rest.len() as f64;
+        let mut centroid3 = [0.0; 3];
+        for p in &rest {
+            for k in 0..3 {
+                centroid3[k] += p[k] / n;
+            }
+        }
+        let rn = region_normal(mesh, &sel);
+        let view = match opts.view {
+            Some(v) => v,
+            None if norm(rn) > 0.0 => rn,
+            None => {
+                return Err(PlateError::DegenerateProjection(
+                    "region has no triangles to define a normal; give a view direction".into(),
+                ))
+            }
+        };
+        let plane = ViewPlane::through(centroid3, view)?;
+        let frame = LocalFrame::new(centroid3, view)?;
+        let local: Vec<[f64; 2]> = rest
+            .iter()
+            .map(|&p| {
+                let l = frame.to_local(project(&plane, p));
+                [l[0], l[1]]
+            })
+            .collect();
+        // limit 1: overlapping projection = region triangles flipping orientation
+        let pos: HashMap<u32, usize> = order.iter().enumerate().map(|(k, &v)| (v, k)).collect();
+        let (mut plus, mut minus) = (0usize, 0usize);
+        for tri in &mesh.triangles {
+            if let (Some(&a), Some(&b), Some(&c)) =
+                (pos.get(&tri[0]), pos.get(&tri[1]), pos.get(&tri[2]))
+            {
+                let (pa, pb, pc) = (local[a], local[b], local[c]);
+                let s = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pc[0] - pa[0]) * (pb[1] - pa[1]);
+                if s > 0.0 {
+                    plus += 1;
+                } else if s < 0.0 {
+                    minus += 1;
+                }
+            }
+        }
+        if plus.min(minus) > 0 {
+            return Err(PlateError::OverlappingProjection(plus.min(minus)));
+        }
+        // coincident projections (seam duplicates, poles) share one site
+        let mut rep = Vec::with_capacity(local.len());
+        let mut unique: Vec<[f64; 2]> = Vec::new();
+        let mut first: Vec<usize> = Vec::new();
+        let mut seen: HashMap<(u64, u64), usize> = HashMap::new();
+        for (i, p) in local.iter().enumerate() {
+            let key = ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits());
+            let u = *seen.entry(key).or_insert_with(|| {
+                unique.push(*p);
+                first.push(i);
+                unique.len() - 1
+            });
+            rep.push(u);
+        }
+        let boundary = match opts.boundary {
+            BoundaryMethod::AlphaShape => alpha_shape(&unique, opts.alpha0)?,
+            BoundaryMethod::MeshEdges => {
+                let tris: Vec<[usize; 3]> = mesh
+                    .triangles
+                    .iter()
+                    .filter_map(|t| {
+                        let (a, b, c) = (pos.get(&t[0])?, pos.get(&t[1])?, pos.get(&t[2])?);
+                        Some([rep[*a], rep[*b], rep[*c]])
+                    })
+                    .collect();
+                mesh_edge_boundary(&unique, &tris)?
+            }
+        };
+        let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| unique[i]).collect();
+        let (unique_disk, non_star_rays) = match opts.mapping {
+            MappingMethod::LengthBased => {
+                let c2 = {
+                    let mut c = [0.0; 2];
+                    for p in &local {
+                        c[0] += p[0] / n;
+                        c[1] += p[1] / n;
+                    }
+                    c
+                };
+                let mut mapping = DiskMapping::new(polygon, c2)?;
+                let on_loop: HashMap<usize, usize> = boundary
+                    .loop_indices
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &i)| (i, k))
+                    .collect();
+                let ud: Vec<DiskPoint> = unique
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &p)| mapping.map_point(p, on_loop.get(&i).copied()))
+                    .collect();
+                (ud, mapping.non_star_rays)
+            }
+            MappingMethod::Harmonic => (
+                harmonic_disk(
+                    unique.len(),
+                    &boundary.triangles,
+                    &boundary.loop_indices,
+                    &unique,
+                )?,
+                0,
+            ),
+        };
+        let disk: Vec<DiskPoint> = rep.iter().map(|&u| unique_disk[u]).collect();
+        // boundary indices refer to region vertices (first of each site)
+        let mut boundary = boundary;
+        for i in boundary.loop_indices.iter_mut() {
+            *i = first[*i];
+        }
+        for t in boundary.triangles.iter_mut() {
+            *t = t.map(|i| first[i]);
+        }
+        let weights = disk
+            .iter()
+            .map(|d| {
+                if d.rho >= 1.0 {
+                    0.0
+                } else {
+                    disk_solution(1.0, rigidity, d.u, d.v)
+                }
+            })
+            .collect();
+        let max_index = order.iter().map(|&v| v as usize).max().unwrap_or(0);
+        Ok(PlateDeformer {
+            region: order,
+            rest,
+            weights,
+            disk,
+            local,
+            frame,
+            normal: frame.vz,
+            boundary,
+            rigidity,
+            non_star_rays,
+            max_index,
+        })
+    }
+
+    /// The sculpting force vector for a cursor motion `d` with sensitivity
+    /// `s` ($q_\xi = s d_\xi$, or along the normal).
+    pub fn force(&self, d: [f64; 3], sensitivity: f64, direction: Direction) -> [f64; 3] {
+        match direction {
+            Direction::Cursor => [sensitivity * d[0], sensitivity * d[1], sensitivity * d[2]],
+            Direction::Normal => {
+                let q = sensitivity * crate::mesh::dot(d, self.normal);
+                [q * self.normal[0], q * self.normal[1], q * self.normal[2]]
+            }
+        }
+    }
+
+    /// One cursor move: writes the deformed region into `positions`
+    /// (the whole mesh's vertex buffer), one pass over the region.
+    pub fn apply(&self, positions: &mut [[f64; 3]], force: [f64; 3]) -> Result<(), PlateError> {
+        if positions.len() <= self.max_index {
+            return Err(PlateError::VertexOutOfBounds(
+                self.max_index,
+                positions.len(),
+            ));
+        }
+        for ((&v, p0), &w) in self.region.iter().zip(&self.rest).zip(&self.weights) {
+            positions[v as usize] = [
+                p0[0] + force[0] * w,
+                p0[1] + force[1] * w,
+                p0[2] + force[2] * w,
+            ];
+        }
+        Ok(())
+    }
+
+    /// Deformed copy of `mesh` for cursor motion `d`.
+    pub fn deform(
+        &self,
+        mesh: &Mesh,
+        d: [f64; 3],
+        sensitivity: f64,
+        direction: Direction,
+    ) -> Result<Mesh, PlateError> {
+        if !(sensitivity.is_finite() && d.iter().all(|c| c.is_finite())) {
+            return Err(PlateError::Parameter {
+                name: "force",
+                value: f64::NAN,
+                range: "finite cursor motion and sensitivity",
+            });
+        }
+        let mut out = mesh.clone();
+        self.apply(&mut out.positions, self.force(d, sensitivity, direction))?;
+        Ok(out)
+    }
+}
+
+/// Region from a lasso polygon drawn in the view: the vertices facing the
+/// view (`view` towards the viewer) whose projection in the frame
+/// `LocalFrame::new([0,0,0], view)` lies inside `polygon`.
+pub fn region_from_lasso(
+    mesh: &Mesh,
+    view: [f64; 3],
+    polygon: &[[f64; 2]],
+) -> Result<Vec<u32>, PlateError> {
+    if polygon.len() < 3
+        || polygon
+            .iter()
+            .any(|p| !(p[0].is_finite() && p[1].is_finite()))
+    {
+        return Err(PlateError::RegionFile(
+            "lasso needs at least 3 finite points".into(),
+        ));
+    }
+    let frame = LocalFrame::new([0.0; 3], view)?;
+    let normals = mesh.vertex_normals();
+    let mut out = Vec::new();
+    for (i, p) in mesh.positions.iter().enumerate() {
+        let l = frame.to_local(*p);
+        if crate::mesh::dot(normals[i], frame.vz) > 0.0
+            && super::mapping::inside(polygon, [l[0], l[1]])
+        {
+            out.push(i as u32);
+        }
+    }
+    Ok(out)
+}
+
+/// Parses a region file: JSON `{"vertices": [i, ...]}` or
+/// `{"lasso": {"view": [x, y, z], "polygon": [[x, y], ...]}}`, or plain text
+/// vertex indices separated by whitespace or commas (`#` starts a comment).
+pub fn parse_region(text: &str, mesh: &Mesh) -> Result<Vec<u32>, PlateError> {
+    let t = text.trim_start();
+    if t.starts_with('{') {
+        let v: serde_json::Value =
+            serde_json::from_str(t).map_err(|e| PlateError::RegionFile(e.to_string()))?;
+        if let Some(list) = v.get("vertices") {
+            let ids: Vec<u32> = serde_json::from_value(list.clone())
+                .map_err(|e| PlateError::RegionFile(format!("vertices: {e}")))?;
+            return Ok(ids);
+        }
+        if let Some(l) = v.get("lasso") {
+            let view: [f64; 3] = serde_json::from_value(l.get("view").cloned().unwrap_or_default())
+                .map_err(|e| PlateError::RegionFile(format!("lasso.view: {e}")))?;
+            let poly: Vec<[f64; 2]> =
+                serde_json::from_value(l.get("polygon").cloned().unwrap_or_default())
+                    .map_err(|e| PlateError::RegionFile(format!("lasso.polygon: {e}")))?;
+            return region_from_lasso(mesh, view, &poly);
+        }
+        return Err(PlateError::RegionFile(
+            "JSON region needs \"vertices\" or \"lasso\"".into(),
+        ));
+    }
+    let mut out = Vec::new();
+    for line in text.lines() {
+        let line = line.split('#').next().unwrap_or("");
+        for tok in line.split(|c: char| c.is_whitespace() || c == ',') {
+            if tok.is_empty() {
+                continue;
+            }
+            out.push(
+                tok.parse::<u32>()
+                    .map_err(|_| PlateError::RegionFile(format!("not a vertex index: {tok:?}")))?,
+            );
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,285 @@
+//! The length-based mapping onto the unit disk (eq 16, sec 4.3).
+//!
+//! With boundary vertices $A_1\dots A_M$ and the centroid $C$ of the region,
+//! an interior vertex $B_j$ is sent along the ray $C B_j$ to the boundary
+//! point $D_j$ on edge $A_iA_{i+1}$; $D_j$ goes to the unit-circle point at
+//! angle $2\pi L_{A_1D_j}/L_{sum}$ and $B_j$ to
+//! $\tilde B_j = \rho_j \tilde D_j$ with $\rho_j = |CB_j|/|CD_j|$.
+//!
+//! The paper writes eq 16 componentwise,
+//! $u_{\tilde B} = u_{\tilde D}(x'_B - x'_C)/(x'_D - x'_C)$ (and $v$ with $y'$);
+//! both ratios equal $\rho_j$ because $B_j$ lies on segment $CD_j$, but each is
+//! $0/0$ when $B_j$ is straight above or beside $C$. [`DiskMapping::map_point`] uses the
+//! radial ratio; [`eq16_paper_literal`] keeps the printed form.
+
+use super::boundary::signed_area;
+use super::PlateError;
+
+/// Relative snapping of a ray's edge parameter at polygon vertices.
+const VERTEX_SNAP: f64 = 1e-9;
+
+/// Result of the mapping for one point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DiskPoint {
+    pub u: f64,
+    pub v: f64,
+    /// $\rho = |CB|/|CD|$ (1 on the boundary, may exceed 1 for a point
+    /// outside the boundary curve).
+    pub rho: f64,
+}
+
+/// The boundary polygon with cumulative arc lengths and the centroid.
+#[derive(Clone, Debug)]
+pub struct DiskMapping {
+    pub polygon: Vec<[f64; 2]>,
+    /// $L_{A_1A_k}$ for k = 1..M (first is 0).
+    pub cumulative: Vec<f64>,
+    pub l_sum: f64,
+    pub centroid: [f64; 2],
+    /// Number of mapped points whose ray from C crossed the boundary more
+    /// than once (region not star-shaped about C: eq 16 is not one-to-one).
+    pub non_star_rays: usize,
+}
+
+/// Winding test: is `p` inside the closed polygon?
+pub fn inside(poly: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let n = poly.len();
+    let mut c = false;
+    let mut j = n - 1;
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[j]);
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
+        {
+            c = !c;
+        }
+        j = i;
+    }
+    c
+}
+
+impl DiskMapping {
+    /// Prepares the mapping for boundary `polygon` (counter-clockwise) and
+    /// the region centroid.
+    pub fn new(polygon: Vec<[f64; 2]>, centroid: [f64; 2]) -> Result<Self, PlateError> {
+        if polygon.len() < 3 || signed_area(&polygon).abs() <= 0.0 {
+            return Err(PlateError::DegenerateProjection(
+                "boundary polygon has no area".into(),
+            ));
+        }
+        if !inside(&polygon, centroid) {
+            return Err(PlateError::CentroidOutside);
+        }
+        let m = polygon.len();
+        let mut cumulative = Vec::with_capacity(m);
+        let mut acc = 0.0;
+        for i in 0..m {
+            cumulative.push(acc);
+            let (a, b) = (polygon[i], polygon[(i + 1) % m]);
+            acc += (b[0] - a[0]).hypot(b[1] - a[1]);
+        }
+        Ok(DiskMapping {
+            polygon,
+            cumulative,
+            l_sum: acc,
+            centroid,
+            non_star_rays: 0,
+        })
+    }
+
+    /// Maps one point (eq 16). Boundary vertex `k` may be given directly.
+    pub fn map_point(&mut self, p: [f64; 2], boundary_vertex: Option<usize>) -> DiskPoint {
+        let two_pi = std::f64::consts::TAU;
+        if let Some(k) = boundary_vertex {
+            let th = two_pi * self.cumulative[k] / self.l_sum;
+            return DiskPoint {
+                u: th.cos(),
+                v: th.sin(),
+                rho: 1.0,
+            };
+        }
+        let c = self.centroid;
+        let dir = [p[0] - c[0], p[1] - c[1]];
+        let len_b = dir[0].hypot(dir[1]);
+        if len_b <= f64::EPSILON * self.l_sum {
+            return DiskPoint {
+                u: 0.0,
+                v: 0.0,
+                rho: 0.0,
+            };
+        }
+        // all crossings of the ray C + t dir (t > 0) with the polygon edges
+        let m = self.polygon.len();
+        let mut best: Option<(f64, usize, f64)> = None; // (t, edge, s)
+        let mut hits: Vec<f64> = Vec::new();
+        for i in 0..m {
+            let (a, b) = (self.polygon[i], self.polygon[(i + 1) % m]);
+            let e = [b[0] - a[0], b[1] - a[1]];
+            let den = dir[0] * e[1] - dir[1] * e[0];
+            if den == 0.0 {
+                continue;
+            }
+            let ac = [a[0] - c[0], a[1] - c[1]];
+            let t = (ac[0] * e[1] - ac[1] * e[0]) / den;
+            let s = (ac[0] * dir[1] - ac[1] * dir[0]) / den;
+            // a ray through a polygon vertex must hit one of its two edges
+            // despite rounding
+            if t > 0.0 && (-VERTEX_SNAP..=1.0 + VERTEX_SNAP).contains(&s) {
+                hits.push(t);
+                // D_j: the first crossing at or beyond B (t >= 1)
+                let key = if t >= 1.0 - VERTEX_SNAP {
+                    t
+                } else {
+                    f64::INFINITY
+                };
+                if best.is_none_or(|(bt, _, _)| key < bt) {
+                    best = Some((key, i, s.clamp(0.0, 1.0)));
+                }
+            }
+        }
+        hits.sort_by(f64::total_cmp);
+        hits.dedup_by(|a, b| (*a - *b).abs() <= VERTEX_SNAP * b.abs().max(1.0));
+        if hits.len() > 1 {
+            self.non_star_rays += 1;
+        }
+        let Some((t, i, s)) = best.filter(|b| b.0.is_finite()) else {
+            // outside the boundary curve: no deformation
+            return DiskPoint {
+                u: 0.0,
+                v: 0.0,
+                rho: f64::INFINITY,
+            };
+        };
+        let (a, b) = (self.polygon[i], self.polygon[(i + 1) % m]);
+        let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let th = two_pi * (self.cumulative[i] + s * len_e) / self.l_sum;
+        let rho = 1.0 / t;
+        DiskPoint {
+            u: rho * th.cos(),
+            v: rho * th.sin(),
+            rho,
+        }
+    }
+}
+
+/// Eq 16 as printed: componentwise ratios (0/0 when $x'_B = x'_C$ or
+/// $y'_B = y'_C$).
+pub fn eq16_paper_literal(b: [f64; 2], c: [f64; 2], d: [f64; 2], d_tilde: [f64; 2]) -> [f64; 2] {
+    [
+        d_tilde[0] * (b[0] - c[0]) / (d[0] - c[0]),
+        d_tilde[1] * (b[1] - c[1]) / (d[1] - c[1]),
+    ]
+}
+
+/// Beyond the paper: a harmonic (Tutte) disk mapping. The boundary loop
+/// goes to the unit circle by the same arc-length rule as eq 16; every
+/// other vertex is the average of its neighbours in `triangles` (uniform
+/// weights, one sparse Cholesky solve). By Tutte's theorem the map of a
+/// disk-like triangulation onto the convex disk is one-to-one, so it needs
+/// neither a star-shaped region nor a centroid inside it, and it has no
+/// creases along the rays through boundary corners that eq 16 produces.
+/// Vertices in no triangle connected to the boundary get $\rho = \infty$
+/// (no deformation).
+pub fn harmonic_disk(
+    n_points: usize,
+    triangles: &[[usize; 3]],
+    boundary_loop: &[usize],
+    points: &[[f64; 2]],
+) -> Result<Vec<DiskPoint>, PlateError> {
+    use faer::prelude::Solve;
+    use faer::sparse::{SparseColMat, Triplet};
+    let m = boundary_loop.len();
+    if m < 3 {
+        return Err(PlateError::BoundaryNotClosed {
+            alpha0: f64::NAN,
+            reason: "boundary loop has fewer than 3 vertices".into(),
+        });
+    }
+    let mut out = vec![
+        DiskPoint {
+            u: 0.0,
+            v: 0.0,
+            rho: f64::INFINITY
+        };
+        n_points
+    ];
+    // arc-length positions on the circle
+    let mut acc = vec![0.0; m];
+    let mut total = 0.0;
+    for k in 0..m {
+        acc[k] = total;
+        let (a, b) = (points[boundary_loop[k]], points[boundary_loop[(k + 1) % m]]);
+        total += (b[0] - a[0]).hypot(b[1] - a[1]);
+    }
+    let mut on_boundary = vec![false; n_points];
+    for k in 0..m {
+        let th = std::f64::consts::TAU * acc[k] / total;
+        out[boundary_loop[k]] = DiskPoint {
+            u: th.cos(),
+            v: th.sin(),
+            rho: 1.0,
+        };
+        on_boundary[boundary_loop[k]] = true;
+    }
+    let mut nbrs: Vec<Vec<usize>> = vec![Vec::new(); n_points];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if !nbrs[a].contains(&b) {
+                nbrs[a].push(b);
+                nbrs[b].push(a);
+            }
+        }
+    }
+    // interior vertices reachable from the boundary
+    let mut reach = on_boundary.clone();
+    let mut stack: Vec<usize> = boundary_loop.to_vec();
+    while let Some(v) = stack.pop() {
+        for &w in &nbrs[v] {
+            if !reach[w] {
+                reach[w] = true;
+                stack.push(w);
+            }
+        }
+    }
+    let mut col = vec![usize::MAX; n_points];
+    let mut unknown = Vec::new();
+    for v in 0..n_points {
+        if reach[v] && !on_boundary[v] {
+            col[v] = unknown.len();
+            unknown.push(v);
+        }
+    }
+    if unknown.is_empty() {
+        return Ok(out);
+    }
+    let n = unknown.len();
+    let mut trip = Vec::new();
+    let mut rhs = faer::Mat::<f64>::zeros(n, 2);
+    for (r, &v) in unknown.iter().enumerate() {
+        trip.push(Triplet::new(r, r, nbrs[v].len() as f64));
+        for &w in &nbrs[v] {
+            if on_boundary[w] {
+                rhs[(r, 0)] += out[w].u;
+                rhs[(r, 1)] += out[w].v;
+            } else {
+                trip.push(Triplet::new(r, col[w], -1.0));
+            }
+        }
+    }
+    let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip)
+        .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+    let llt = a
+        .sp_cholesky(faer::Side::Lower)
+        .map_err(|e| PlateError::Solve(format!("harmonic mapping: {e:?}")))?;
+    llt.solve_in_place(rhs.as_mut());
+    for (r, &v) in unknown.iter().enumerate() {
+        let (u, w) = (rhs[(r, 0)], rhs[(r, 1)]);
+        out[v] = DiskPoint {
+            u,
+            v: w,
+            rho: u.hypot(w),
+        };
+    }
+    Ok(out)
+}
