@@ -46,8 +46,11 @@ pub struct Piece {
 pub enum Method {
     /// Shared sections (paper method 1): C0 at joins.
     SharedCurves,
-    /// Carried-over derivatives (paper method 2): C2 at joins.
+    /// Carried-over derivatives (paper method 2): C2 at joins, unstable
+    /// propagation (see [`super::spline`]).
     CarriedDerivatives,
+    /// Method-2 conditions solved globally with end curvatures: C2, stable.
+    GlobalC2,
 }
 
 /// A chain of patches, a surface on `[u_0, u_{M-1}] x [0, 2 pi)`.
@@ -67,7 +70,8 @@ fn scaled(f: &Fourier3, s: f64) -> Fourier3 {
     }
 }
 
-fn validate_sections(sections: &[Section]) -> Result<(), Pde6Error> {
+/// Checks finite increasing u, equal harmonics, and `M >= min`, `M = 3k + residue`.
+pub(crate) fn validate_sections(sections: &[Section], min: usize, residue: usize) -> Result<(), Pde6Error> {
     for (i, s) in sections.iter().enumerate() {
         if !s.u.is_finite() {
             return Err(Pde6Error::NotFinite(format!("u position of section {i}")));
@@ -82,9 +86,10 @@ fn validate_sections(sections: &[Section]) -> Result<(), Pde6Error> {
     }
     let curves: Vec<&Fourier3> = sections.iter().map(|s| &s.curve).collect();
     validate_curves(&curves)?;
-    if sections.len() < 6 || sections.len() % 3 != 0 {
+    if sections.len() < min || sections.len() % 3 != residue {
         return Err(Pde6Error::ChainLength {
             got: sections.len(),
+            rule: if residue == 0 { "6 + 3k" } else { "7 + 3k" },
         });
     }
     Ok(())
@@ -113,6 +118,12 @@ impl Piece {
         }
     }
 
+    /// The d-th global-u derivative (d <= 2) of the section at global `u`.
+    pub fn global_section(&self, u: f64, d: usize) -> Fourier3 {
+        let t = (u - self.origin) / self.length;
+        scaled(&self.patch.section(t, d), self.length.powi(-(d as i32)))
+    }
+
     /// Slope and curvature sections in the global u at global `u`.
     fn global_jet(&self, u: f64) -> (Fourier3, Fourier3) {
         let t = (u - self.origin) / self.length;
@@ -129,10 +140,21 @@ impl Piece {
 }
 
 impl Chain {
+    /// The six-point patch through exactly six sections, as a piece.
+    pub fn method1_window(a: f64, w: &[Section]) -> Result<Piece, Pde6Error> {
+        if w.len() != 6 {
+            return Err(Pde6Error::ChainLength { got: w.len(), rule: "6" });
+        }
+        let (origin, length) = (w[0].u, w[5].u - w[0].u);
+        let curves: [&Fourier3; 6] = std::array::from_fn(|i| &w[i].curve);
+        let patch = Patch::through_curves(a, curves, local(w, origin, length))?;
+        Ok(Piece::new(patch, origin, length, origin, w[5].u))
+    }
+
     /// Method 1: windows of six sections with stride 3 (sections 3k..3k+5
     /// give patch k, used from section 3k to 3k+3; the last one to its end).
     pub fn method1(a: f64, sections: &[Section]) -> Result<Chain, Pde6Error> {
-        validate_sections(sections)?;
+        validate_sections(sections, 6, 0)?;
         let k_count = (sections.len() - 3) / 3;
         let mut pieces = Vec::with_capacity(k_count);
         for k in 0..k_count {
@@ -155,7 +177,7 @@ impl Chain {
     /// the slope and curvature carried over (paper: the 12-curve example
     /// is `first = 3`).
     pub fn method2(a: f64, sections: &[Section], first: usize) -> Result<Chain, Pde6Error> {
-        validate_sections(sections)?;
+        validate_sections(sections, 6, 0)?;
         let m = sections.len();
         if first % 3 != 0 || first + 6 > m {
             return Err(Pde6Error::FirstPatch { first, sections: m });
@@ -169,7 +191,7 @@ impl Chain {
         let mut e = first + 5;
         while e + 3 < m {
             let w = &sections[e..e + 4];
-            let prev = pieces.last().ok_or(Pde6Error::ChainLength { got: m })?;
+            let prev = pieces.last().ok_or(Pde6Error::ChainLength { got: m, rule: "6 + 3k" })?;
             let (s1, s2) = prev.global_jet(w[0].u);
             let (origin, length) = (w[0].u, w[3].u - w[0].u);
             let patch = Patch::carried_over(

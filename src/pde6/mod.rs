@@ -33,6 +33,7 @@ pub mod chain;
 pub mod check;
 pub mod mode;
 pub mod patch;
+pub mod spline;
 
 pub use chain::{Chain, Method, Piece, Section};
 pub use mode::{Mode, ModeBasis, ModeSolver, Regime};
@@ -62,8 +63,8 @@ pub enum Pde6Error {
         previous: f64,
         next: f64,
     },
-    #[error("a chain needs 6 + 3k cross sections (6 for the first patch, 3 per neighbour), got {got}")]
-    ChainLength { got: usize },
+    #[error("this chain needs {rule} cross sections (k >= 0), got {got}")]
+    ChainLength { got: usize, rule: &'static str },
     #[error("the first patch must start at a multiple of 3 and fit: first = {first}, {sections} sections")]
     FirstPatch { first: usize, sections: usize },
     #[error("the 6x6 interpolation matrix is singular (q = {q})")]
