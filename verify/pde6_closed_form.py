@@ -155,6 +155,24 @@ def lebesgue(kind, qv, samples=101):
     return float(best)
 
 
+def method2_amplification():
+    """Method 2 as a recursion: a quintic patch with zero values at
+    0, 1/3, 2/3, 1 and slope s, curvature k at u = 0 has slope/curvature
+    T (s, k) at u = 1; the spectral radius of T is the growth per patch."""
+    c = sp.symbols("c0:6")
+    s, k = sp.symbols("s k")
+    A = sum(ci * u**i for i, ci in enumerate(c))
+    eqs = [A.subs(u, x) for x in (0, sp.Rational(1, 3), sp.Rational(2, 3), 1)]
+    eqs += [sp.diff(A, u).subs(u, 0) - s, sp.diff(A, u, 2).subs(u, 0) - k]
+    A1 = A.subs(sp.solve(eqs, c))
+    T = sp.Matrix([[sp.diff(sp.diff(A1, u, d).subs(u, 1), x) for x in (s, k)] for d in (1, 2)])
+    ev = list(T.eigenvals().keys())
+    rho = max(abs(sp.N(e, 30)) for e in ev)
+    return {"method2_T_quintic": [[str(x) for x in r] for r in T.tolist()],
+            "method2_eigenvalues_quintic": [str(e) for e in ev],
+            "method2_amplification_quintic": float(rho)}
+
+
 def main():
     pos_roots, neg_roots = roots()
     out = {
@@ -162,6 +180,7 @@ def main():
         "roots_neg_over_q": neg_roots,
         "ode_residuals": ode_residuals(),
         **paper_bases(),
+        **method2_amplification(),
     }
     values = ["0.3", "-1.2", "0.7", "2.0", "-0.4", "1.1"]
     at = ["0.1", "0.5", "0.93"]

@@ -40,6 +40,7 @@ struct Golden {
     cases: Vec<GoldenCase>,
     method2_d1: f64,
     method2_d2: f64,
+    method2_amplification_quintic: f64,
     lebesgue: Vec<GoldenLebesgue>,
 }
 
@@ -185,6 +186,27 @@ pub fn basis_ode_residual(b: &ModeBasis, sigma: f64, paper: bool) -> f64 {
     worst
 }
 
+/// Spectral radius of the 2x2 map (slope, curvature) at u = 0 -> at u = 1
+/// of a method-2 patch with zero values (harmonic n, parameter a).
+pub fn method2_amplification(a: f64, n: usize) -> Option<f64> {
+    let s = ModeSolver::new(ModeBasis::new(a, n), method2_conditions(0.0)).ok()?;
+    let b = s.basis.jet2(1.0);
+    let mut t = [[0.0; 2]; 2];
+    for (col, rhs) in [[0.0, 0.0, 0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]].iter().enumerate() {
+        let c = s.solve(*rhs);
+        for d in 0..2 {
+            t[d][col] = (0..6).map(|j| c[j] * b[d + 1][j]).sum();
+        }
+    }
+    let (tr, det) = (t[0][0] + t[1][1], t[0][0] * t[1][1] - t[0][1] * t[1][0]);
+    let disc = tr * tr / 4.0 - det;
+    Some(if disc >= 0.0 {
+        (tr / 2.0).abs() + disc.sqrt()
+    } else {
+        det.abs().sqrt()
+    })
+}
+
 /// Lebesgue constant of the six-point interpolation (101 samples).
 pub fn lebesgue(b: ModeBasis) -> Option<f64> {
     let s = ModeSolver::new(b, method1_conditions(NODES_METHOD1)).ok()?;
@@ -266,6 +288,13 @@ fn golden_checks(out: &mut Vec<Check>) {
     out.push(
         Check::new(FAMILY, PAPER, "eqs 21-23", "pde6.lebesgue_constants", Kind::Reference, el, LEBESGUE_TOL)
             .note("Lebesgue constants of the six-point interpolation for q in {1,5,10,20,40}, both signs, vs mpmath (intrinsic conditioning: <= 27 (a<0) / 102 (a>0) up to q = 20)"),
+    );
+    let amp = method2_amplification(0.0, 0).unwrap_or(f64::NAN);
+    out.push(
+        Check::new(FAMILY, PAPER, "eqs 24-27", "pde6.method2_amplification", Kind::Reference,
+            crate::check::rel_err(amp, g.method2_amplification_quintic), tol::scaled(tol::ROUNDING, 1e3))
+            .note(format!("spectral radius of the method-2 slope/curvature recursion per patch, quintic harmonic: {amp:.4} vs SymPy (13 + sqrt 165)/2; a = -0.5: n = 1 {:.2}, n = 5 {:.2}, n = 10 {:.2} (growth > 1: method 2 is unstable over long chains)",
+                method2_amplification(-0.5, 1).unwrap_or(f64::NAN), method2_amplification(-0.5, 5).unwrap_or(f64::NAN), method2_amplification(-0.5, 10).unwrap_or(f64::NAN))),
     );
     // paper eq 7 basis: the residual numbers SymPy gives at q = 1, u = 0.5
     let b = ModeBasis {
@@ -369,6 +398,42 @@ pub fn checks() -> Vec<Check> {
                 );
             }
             Err(e) => out.push(Check::new(FAMILY, PAPER, "eqs 24-27", &format!("pde6.method2_c2_{name}"), Kind::Continuity, f64::NAN, 0.0).note(format!("chain failed: {e}"))),
+        }
+    }
+
+    // the stable global C2 chain, every sign of a
+    let sec13 = synthetic_sections(13, 6);
+    for (name, a) in SIGNS {
+        match Chain::c2_global(a, &sec13) {
+            Ok(c) => {
+                let j = join_jumps(&c);
+                out.push(
+                    Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, j[0].max(j[1]).max(j[2]), SOLVE_TOL)
+                        .note(format!("13-section, 4-piece globally solved C2 chain, a = {a}: max relative jump of S, S_u, S_uu across the joins, jets")),
+                );
+                let e = sec13
+                    .iter()
+                    .map(|s| {
+                        let p = &c.pieces[c.piece_at(s.u).min(c.pieces.len() - 1)];
+                        (0..16)
+                            .map(|j| {
+                                let v = 2.0 * PI * j as f64 / 16.0;
+                                crate::mesh::dist(p.eval(s.u, v), s.curve.eval(v))
+                            })
+                            .fold(0.0, f64::max)
+                    })
+                    .fold(0.0, f64::max);
+                out.push(
+                    Check::new(FAMILY, PAPER, "eq 25 (global)", &format!("pde6.global_interpolates_{name}"), Kind::Boundary, e, SOLVE_TOL)
+                        .note("the global C2 chain passes through all 13 sections"),
+                );
+                out.push(
+                    Check::new(FAMILY, PAPER, "eq 2", &format!("pde6.global_residual_{name}"), Kind::Residual,
+                        c.pieces.iter().map(|p| pde_residual(&p.patch, a, (0.0, 1.0))).fold(0.0, f64::max), RESIDUAL_TOL)
+                        .note("PDE residual on every piece of the global C2 chain"),
+                );
+            }
+            Err(e) => out.push(Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, f64::NAN, 0.0).note(format!("chain failed: {e}"))),
         }
     }
 
