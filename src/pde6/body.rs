@@ -135,7 +135,10 @@ pub struct PartReport {
 fn dedupe(points: &[[f64; 3]], scale: f64) -> Vec<[f64; 3]> {
     let mut out: Vec<[f64; 3]> = Vec::with_capacity(points.len());
     for p in points {
-        if out.last().is_none_or(|q| crate::mesh::dist(*p, *q) > 1e-9 * scale) {
+        if out
+            .last()
+            .is_none_or(|q| crate::mesh::dist(*p, *q) > 1e-9 * scale)
+        {
             out.push(*p);
         }
     }
@@ -158,7 +161,11 @@ fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, Pde6Error> {
 }
 
 /// Reconstructs one part of `skin`.
-pub fn reconstruct_part(skin: &Mesh, spec: &PartSpec, opts: &BodyOptions) -> Result<Part, Pde6Error> {
+pub fn reconstruct_part(
+    skin: &Mesh,
+    spec: &PartSpec,
+    opts: &BodyOptions,
+) -> Result<Part, Pde6Error> {
     let m = spec.sections;
     let mut polylines = Vec::with_capacity(m);
     let mut sections = Vec::with_capacity(m);
@@ -172,18 +179,24 @@ pub fn reconstruct_part(skin: &Mesh, spec: &PartSpec, opts: &BodyOptions) -> Res
         let terms = opts.terms.min(pts.len().saturating_sub(1) / 2).max(1);
         let mut fo = FitOptions::new(terms);
         fo.frame = FrameChoice::Given(frame);
-        let r = fit(&pts, &fo).map_err(|e| Pde6Error::Body(format!("{} section {i}: {e}", spec.name)))?;
+        let r = fit(&pts, &fo)
+            .map_err(|e| Pde6Error::Body(format!("{} section {i}: {e}", spec.name)))?;
         fit_erm_rel = fit_erm_rel.max(r.errors.erm_rel);
         sections.push(Section {
             u: y,
             curve: r.gec.to_fourier3().with_harmonics(opts.terms),
         });
-        polylines.push(Polyline { points: pts, closed: true });
+        polylines.push(Polyline {
+            points: pts,
+            closed: true,
+        });
     }
     let chain = match opts.method {
         super::Method::GlobalC2 => Chain::c2_global(opts.a, &sections)?,
         super::Method::SharedCurves => Chain::method1(opts.a, &sections[..m - 1])?,
-        super::Method::CarriedDerivatives => Chain::method2(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?,
+        super::Method::CarriedDerivatives => {
+            Chain::method2(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
+        }
     };
     let mesh = tessellate(
         &chain,
@@ -205,7 +218,11 @@ pub fn reconstruct_part(skin: &Mesh, spec: &PartSpec, opts: &BodyOptions) -> Res
 }
 
 /// Reconstructs all `parts` of `skin` and measures the result.
-pub fn reconstruct(skin: &Mesh, parts: &[PartSpec], opts: &BodyOptions) -> Result<(Vec<Part>, Mesh, BodyReport), Pde6Error> {
+pub fn reconstruct(
+    skin: &Mesh,
+    parts: &[PartSpec],
+    opts: &BodyOptions,
+) -> Result<(Vec<Part>, Mesh, BodyReport), Pde6Error> {
     if skin.positions.is_empty() {
         return Err(Pde6Error::Body("empty mesh".into()));
     }
@@ -221,7 +238,10 @@ pub fn reconstruct(skin: &Mesh, parts: &[PartSpec], opts: &BodyOptions) -> Resul
             .positions
             .iter()
             .filter(|q| {
-                q[1] >= spec.y_range.0 && q[1] <= spec.y_range.1 && q[0] >= spec.x_range.0 && q[0] <= spec.x_range.1
+                q[1] >= spec.y_range.0
+                    && q[1] <= spec.y_range.1
+                    && q[0] >= spec.x_range.0
+                    && q[0] <= spec.x_range.1
             })
             .copied()
             .collect();
@@ -244,7 +264,10 @@ pub fn reconstruct(skin: &Mesh, parts: &[PartSpec], opts: &BodyOptions) -> Resul
         all.append(&p.mesh);
         out.push(p);
     }
-    let r2s = stats(&point_distances(&crate::mesh::metrics::sample_points(&all), skin));
+    let r2s = stats(&point_distances(
+        &crate::mesh::metrics::sample_points(&all),
+        skin,
+    ));
     let s2r = stats(&point_distances(&covered, &all));
     let n_sections: usize = out.iter().map(|p| p.sections.len()).sum();
     let per = 3 * (1 + 2 * opts.terms);

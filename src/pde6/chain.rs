@@ -71,7 +71,11 @@ fn scaled(f: &Fourier3, s: f64) -> Fourier3 {
 }
 
 /// Checks finite increasing u, equal harmonics, and `M >= min`, `M = 3k + residue`.
-pub(crate) fn validate_sections(sections: &[Section], min: usize, residue: usize) -> Result<(), Pde6Error> {
+pub(crate) fn validate_sections(
+    sections: &[Section],
+    min: usize,
+    residue: usize,
+) -> Result<(), Pde6Error> {
     for (i, s) in sections.iter().enumerate() {
         if !s.u.is_finite() {
             return Err(Pde6Error::NotFinite(format!("u position of section {i}")));
@@ -143,7 +147,10 @@ impl Chain {
     /// The six-point patch through exactly six sections, as a piece.
     pub fn method1_window(a: f64, w: &[Section]) -> Result<Piece, Pde6Error> {
         if w.len() != 6 {
-            return Err(Pde6Error::ChainLength { got: w.len(), rule: "6" });
+            return Err(Pde6Error::ChainLength {
+                got: w.len(),
+                rule: "6",
+            });
         }
         let (origin, length) = (w[0].u, w[5].u - w[0].u);
         let curves: [&Fourier3; 6] = std::array::from_fn(|i| &w[i].curve);
@@ -191,7 +198,10 @@ impl Chain {
         let mut e = first + 5;
         while e + 3 < m {
             let w = &sections[e..e + 4];
-            let prev = pieces.last().ok_or(Pde6Error::ChainLength { got: m, rule: "6 + 3k" })?;
+            let prev = pieces.last().ok_or(Pde6Error::ChainLength {
+                got: m,
+                rule: "6 + 3k",
+            })?;
             let (s1, s2) = prev.global_jet(w[0].u);
             let (origin, length) = (w[0].u, w[3].u - w[0].u);
             let patch = Patch::carried_over(
@@ -235,20 +245,23 @@ impl Chain {
 
     /// Index of the piece that owns global `u` (clamped to the ends).
     pub fn piece_at(&self, u: f64) -> usize {
-        self.pieces
-            .iter()
-            .rposition(|p| u >= p.start)
-            .unwrap_or(0)
+        self.pieces.iter().rposition(|p| u >= p.start).unwrap_or(0)
     }
 
     /// Stored coefficients (data size).
     pub fn coefficient_count(&self) -> usize {
-        self.pieces.iter().map(|p| p.patch.coefficient_count()).sum()
+        self.pieces
+            .iter()
+            .map(|p| p.patch.coefficient_count())
+            .sum()
     }
 
     /// Worst 1-norm condition number of any 6x6 solve in the chain.
     pub fn max_condition(&self) -> f64 {
-        self.pieces.iter().map(|p| p.patch.max_condition).fold(0.0, f64::max)
+        self.pieces
+            .iter()
+            .map(|p| p.patch.max_condition)
+            .fold(0.0, f64::max)
     }
 }
 

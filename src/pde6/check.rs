@@ -77,12 +77,20 @@ pub fn synthetic_sections(m: usize, n: usize) -> Vec<Section> {
             for h in 2..=n {
                 let s = 0.15 / (h * h) as f64;
                 cos[h - 1] = [s * (t + h as f64).cos(), s * (0.5 * t).sin(), 0.0];
-                sin[h - 1] = [s * (0.3 * t * h as f64).sin(), s * (t - h as f64).cos(), 0.0];
+                sin[h - 1] = [
+                    s * (0.3 * t * h as f64).sin(),
+                    s * (t - h as f64).cos(),
+                    0.0,
+                ];
             }
             Section {
                 u: t,
                 curve: Fourier3 {
-                    c0: [0.1 * (0.9 * t).sin(), 0.05 * t, 0.9 * t + 0.2 * (t * 1.7).sin()],
+                    c0: [
+                        0.1 * (0.9 * t).sin(),
+                        0.05 * t,
+                        0.9 * t + 0.2 * (t * 1.7).sin(),
+                    ],
                     cos,
                     sin,
                 },
@@ -192,7 +200,13 @@ pub fn method2_amplification(a: f64, n: usize) -> Option<f64> {
     let s = ModeSolver::new(ModeBasis::new(a, n), method2_conditions(0.0)).ok()?;
     let b = s.basis.jet2(1.0);
     let mut t = [[0.0; 2]; 2];
-    for (col, rhs) in [[0.0, 0.0, 0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 0.0, 0.0, 1.0]].iter().enumerate() {
+    for (col, rhs) in [
+        [0.0, 0.0, 0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+    ]
+    .iter()
+    .enumerate()
+    {
         let c = s.solve(*rhs);
         for d in 0..2 {
             t[d][col] = (0..6).map(|j| c[j] * b[d + 1][j]).sum();
@@ -234,8 +248,16 @@ fn golden_checks(out: &mut Vec<Check>) {
         Ok(g) => g,
         Err(e) => {
             out.push(
-                Check::new(FAMILY, PAPER, "golden", "pde6.golden_parse", Kind::Reference, f64::NAN, 0.0)
-                    .note(format!("golden JSON does not parse: {e}")),
+                Check::new(
+                    FAMILY,
+                    PAPER,
+                    "golden",
+                    "pde6.golden_parse",
+                    Kind::Reference,
+                    f64::NAN,
+                    0.0,
+                )
+                .note(format!("golden JSON does not parse: {e}")),
             );
             return;
         }
@@ -247,7 +269,14 @@ fn golden_checks(out: &mut Vec<Check>) {
         let m1 = Mode::interpolate(c.a, c.n, values);
         let s2 = ModeSolver::new(b, method2_conditions(1.0));
         let m2 = s2.map(|s| {
-            s.solve([values[0], values[1], values[2], values[3], g.method2_d1, g.method2_d2])
+            s.solve([
+                values[0],
+                values[1],
+                values[2],
+                values[3],
+                g.method2_d1,
+                g.method2_d2,
+            ])
         });
         for (i, &u) in c.at.iter().enumerate() {
             for d in 0..3 {
@@ -257,7 +286,12 @@ fn golden_checks(out: &mut Vec<Check>) {
                 });
                 e1 = if e.is_nan() { f64::NAN } else { e1.max(e) };
                 let e = m2.as_ref().map_or(f64::NAN, |coef| {
-                    let x = Mode { basis: b, coef: *coef }.eval(Jet::<3, 1>::var_u(u)).deriv(d, 0);
+                    let x = Mode {
+                        basis: b,
+                        coef: *coef,
+                    }
+                    .eval(Jet::<3, 1>::var_u(u))
+                    .deriv(d, 0);
                     (x - c.method2[i][d]).abs() / c.method2[i][d].abs().max(1.0)
                 });
                 e2 = if e.is_nan() { f64::NAN } else { e2.max(e) };
@@ -269,8 +303,16 @@ fn golden_checks(out: &mut Vec<Check>) {
             .note("six-point harmonic interpolants (value, slope, curvature) vs mpmath 40-digit solves, a in {-1,-0.5,0,1e-3,1,2}, n in {0,1,3,4,5,10,20}"),
     );
     out.push(
-        Check::new(FAMILY, PAPER, "eqs 24-25, A34-A36", "pde6.golden_method2_modes", Kind::Reference, e2, SOLVE_TOL)
-            .note("method-2 harmonic functions (four values + slope, curvature at u = 1) vs mpmath"),
+        Check::new(
+            FAMILY,
+            PAPER,
+            "eqs 24-25, A34-A36",
+            "pde6.golden_method2_modes",
+            Kind::Reference,
+            e2,
+            SOLVE_TOL,
+        )
+        .note("method-2 harmonic functions (four values + slope, curvature at u = 1) vs mpmath"),
     );
     let mut el = 0.0f64;
     for l in &g.lebesgue {
@@ -357,7 +399,18 @@ pub fn checks() -> Vec<Check> {
                         .note("max distance between the patch and its six sections at their u (16 v samples each)"),
                 );
             }
-            Err(e) => out.push(Check::new(FAMILY, PAPER, "eq 2", &format!("pde6.patch_residual_{name}"), Kind::Residual, f64::NAN, 0.0).note(format!("patch failed: {e}"))),
+            Err(e) => out.push(
+                Check::new(
+                    FAMILY,
+                    PAPER,
+                    "eq 2",
+                    &format!("pde6.patch_residual_{name}"),
+                    Kind::Residual,
+                    f64::NAN,
+                    0.0,
+                )
+                .note(format!("patch failed: {e}")),
+            ),
         }
         match Chain::method2(a, &sec, 3) {
             Ok(c) => {
@@ -388,16 +441,37 @@ pub fn checks() -> Vec<Check> {
                         .note("every piece of the method-2 chain passes through the sections in its range"),
                 );
                 out.push(
-                    Check::new(FAMILY, PAPER, "eq 2", &format!("pde6.method2_residual_{name}"), Kind::Residual,
-                        c.pieces.iter().map(|p| pde_residual(&p.patch, a, (0.0, 1.0))).fold(0.0, f64::max), RESIDUAL_TOL)
-                        .note("PDE residual on every piece of the method-2 chain"),
+                    Check::new(
+                        FAMILY,
+                        PAPER,
+                        "eq 2",
+                        &format!("pde6.method2_residual_{name}"),
+                        Kind::Residual,
+                        c.pieces
+                            .iter()
+                            .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
+                            .fold(0.0, f64::max),
+                        RESIDUAL_TOL,
+                    )
+                    .note("PDE residual on every piece of the method-2 chain"),
                 );
                 out.push(
                     Check::new(FAMILY, PAPER, "eqs 3-5", &format!("pde6.closed_v_{name}"), Kind::Continuity, closed_v_mismatch(&c), SOLVE_TOL)
                         .note("S and all derivatives up to order 2 agree at v = 0 and v = 2 pi along the chain"),
                 );
             }
-            Err(e) => out.push(Check::new(FAMILY, PAPER, "eqs 24-27", &format!("pde6.method2_c2_{name}"), Kind::Continuity, f64::NAN, 0.0).note(format!("chain failed: {e}"))),
+            Err(e) => out.push(
+                Check::new(
+                    FAMILY,
+                    PAPER,
+                    "eqs 24-27",
+                    &format!("pde6.method2_c2_{name}"),
+                    Kind::Continuity,
+                    f64::NAN,
+                    0.0,
+                )
+                .note(format!("chain failed: {e}")),
+            ),
         }
     }
 
@@ -424,16 +498,45 @@ pub fn checks() -> Vec<Check> {
                     })
                     .fold(0.0, f64::max);
                 out.push(
-                    Check::new(FAMILY, PAPER, "eq 25 (global)", &format!("pde6.global_interpolates_{name}"), Kind::Boundary, e, SOLVE_TOL)
-                        .note("the global C2 chain passes through all 13 sections"),
+                    Check::new(
+                        FAMILY,
+                        PAPER,
+                        "eq 25 (global)",
+                        &format!("pde6.global_interpolates_{name}"),
+                        Kind::Boundary,
+                        e,
+                        SOLVE_TOL,
+                    )
+                    .note("the global C2 chain passes through all 13 sections"),
                 );
                 out.push(
-                    Check::new(FAMILY, PAPER, "eq 2", &format!("pde6.global_residual_{name}"), Kind::Residual,
-                        c.pieces.iter().map(|p| pde_residual(&p.patch, a, (0.0, 1.0))).fold(0.0, f64::max), RESIDUAL_TOL)
-                        .note("PDE residual on every piece of the global C2 chain"),
+                    Check::new(
+                        FAMILY,
+                        PAPER,
+                        "eq 2",
+                        &format!("pde6.global_residual_{name}"),
+                        Kind::Residual,
+                        c.pieces
+                            .iter()
+                            .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
+                            .fold(0.0, f64::max),
+                        RESIDUAL_TOL,
+                    )
+                    .note("PDE residual on every piece of the global C2 chain"),
                 );
             }
-            Err(e) => out.push(Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, f64::NAN, 0.0).note(format!("chain failed: {e}"))),
+            Err(e) => out.push(
+                Check::new(
+                    FAMILY,
+                    PAPER,
+                    "eqs 24-25 (global)",
+                    &format!("pde6.global_c2_{name}"),
+                    Kind::Continuity,
+                    f64::NAN,
+                    0.0,
+                )
+                .note(format!("chain failed: {e}")),
+            ),
         }
     }
 
@@ -459,7 +562,11 @@ pub fn checks() -> Vec<Check> {
     let (mut worst, mut worst_paper) = (0.0f64, 0.0f64);
     for &a in &[-10.0, -1.0, -1e-2, -1e-6, 0.0, 1e-6, 1e-2, 1.0, 10.0] {
         for n in [0usize, 1, 5, 10, 15, 20] {
-            for conds in [method1_conditions(NODES_METHOD1), method2_conditions(0.0), method2_conditions(1.0)] {
+            for conds in [
+                method1_conditions(NODES_METHOD1),
+                method2_conditions(0.0),
+                method2_conditions(1.0),
+            ] {
                 let b = ModeBasis::new(a, n);
                 let c = ModeSolver::new(b, conds).map_or(f64::INFINITY, |s| s.condition_number);
                 worst = worst.max(c);
@@ -475,7 +582,9 @@ pub fn checks() -> Vec<Check> {
     // fast grid against the generic evaluation
     if let Ok(c) = Chain::method2(SIGNS[2].1, &sec, 0) {
         let d = c.domain();
-        let us: Vec<f64> = (0..=23).map(|i| d.u.0 + (d.u.1 - d.u.0) * i as f64 / 23.0).collect();
+        let us: Vec<f64> = (0..=23)
+            .map(|i| d.u.0 + (d.u.1 - d.u.0) * i as f64 / 23.0)
+            .collect();
         let vs: Vec<f64> = (0..17).map(|j| 2.0 * PI * j as f64 / 17.0).collect();
         let g = c.grid(&us, &vs);
         let mut e = 0.0f64;

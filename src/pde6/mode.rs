@@ -267,7 +267,9 @@ pub fn paper_basis_condition(basis: &ModeBasis, conditions: &[Condition; 6]) -> 
                 Condition::Slope(u) => (u, 1),
                 Condition::Curvature(u) => (u, 2),
             };
-            basis.eval_paper(Jet::<3, 1>::var_u(u)).map(|x| x.deriv(d, 0))
+            basis
+                .eval_paper(Jet::<3, 1>::var_u(u))
+                .map(|x| x.deriv(d, 0))
         },
         conditions,
     );

@@ -48,7 +48,11 @@ pub fn validate_curves(curves: &[&Fourier3]) -> Result<usize, Pde6Error> {
 impl Patch {
     /// The patch that meets `conditions[i]` with the data curve `data[i]`
     /// (a section, or a u-derivative of one, as a Fourier series in v).
-    pub fn solve(a: f64, conditions: [Condition; 6], data: [&Fourier3; 6]) -> Result<Patch, Pde6Error> {
+    pub fn solve(
+        a: f64,
+        conditions: [Condition; 6],
+        data: [&Fourier3; 6],
+    ) -> Result<Patch, Pde6Error> {
         super::validate_a(a)?;
         let big_n = validate_curves(&data)?;
         let mut basis = Vec::with_capacity(big_n + 1);
@@ -84,7 +88,11 @@ impl Patch {
 
     /// Method 1 (eqs 15-23): the patch through six curves at local
     /// parameters `nodes` (the paper: 0, 0.2, ..., 1).
-    pub fn through_curves(a: f64, curves: [&Fourier3; 6], nodes: [f64; 6]) -> Result<Patch, Pde6Error> {
+    pub fn through_curves(
+        a: f64,
+        curves: [&Fourier3; 6],
+        nodes: [f64; 6],
+    ) -> Result<Patch, Pde6Error> {
         check_nodes(&nodes)?;
         Patch::solve(a, nodes.map(Condition::Value), curves)
     }
@@ -155,7 +163,11 @@ impl Patch {
         // trig[iv][n] = (cos n v, sin n v)
         let trig: Vec<Vec<(f64, f64)>> = vs
             .iter()
-            .map(|&v| (0..=big_n).map(|n| ((n as f64 * v).cos(), (n as f64 * v).sin())).collect())
+            .map(|&v| {
+                (0..=big_n)
+                    .map(|n| ((n as f64 * v).cos(), (n as f64 * v).sin()))
+                    .collect()
+            })
             .collect();
         let mut out = Vec::with_capacity(us.len() * vs.len());
         let mut amp = vec![[[0.0; 2]; 3]; big_n + 1];
@@ -165,7 +177,12 @@ impl Patch {
                 for k in 0..3 {
                     for cs in 0..2 {
                         let c = &self.coef[n][k][cs];
-                        amp[n][k][cs] = c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3] + c[4] * b[4] + c[5] * b[5];
+                        amp[n][k][cs] = c[0] * b[0]
+                            + c[1] * b[1]
+                            + c[2] * b[2]
+                            + c[3] * b[3]
+                            + c[4] * b[4]
+                            + c[5] * b[5];
                     }
                 }
             }

@@ -67,7 +67,8 @@ impl Chain {
             let mut r = 0;
             for (p, (_, _, nodes)) in geo.iter().enumerate() {
                 for &x in nodes {
-                    mat.view_mut((r, 6 * p), (1, 6)).copy_from_slice(&row(Condition::Value(x)));
+                    mat.view_mut((r, 6 * p), (1, 6))
+                        .copy_from_slice(&row(Condition::Value(x)));
                     r += 1;
                 }
             }
