@@ -61,6 +61,10 @@ pub struct BodyOptions {
     pub nv: usize,
     /// How the chain is built.
     pub method: super::Method,
+    /// How the GEC fit gives the slice points their angle (phase alignment
+    /// across sections matters: the chain interpolates harmonic by harmonic).
+    #[serde(skip)]
+    pub param: crate::curve::gec::fit::Param,
 }
 
 impl Default for BodyOptions {
@@ -71,6 +75,7 @@ impl Default for BodyOptions {
             nu_per_piece: 12,
             nv: 72,
             method: super::Method::GlobalC2,
+            param: crate::curve::gec::fit::Param::ChordLength,
         }
     }
 }
@@ -179,6 +184,7 @@ pub fn reconstruct_part(
         let terms = opts.terms.min(pts.len().saturating_sub(1) / 2).max(1);
         let mut fo = FitOptions::new(terms);
         fo.frame = FrameChoice::Given(frame);
+        fo.param = opts.param;
         let r = fit(&pts, &fo)
             .map_err(|e| Pde6Error::Body(format!("{} section {i}: {e}", spec.name)))?;
         fit_erm_rel = fit_erm_rel.max(r.errors.erm_rel);
