@@ -80,7 +80,7 @@ pub(crate) fn validate_sections(
         if !s.u.is_finite() {
             return Err(Pde6Error::NotFinite(format!("u position of section {i}")));
         }
-        if i > 0 && !(s.u > sections[i - 1].u) {
+        if i > 0 && s.u.partial_cmp(&sections[i - 1].u) != Some(std::cmp::Ordering::Greater) {
             return Err(Pde6Error::NonIncreasing {
                 index: i,
                 previous: sections[i - 1].u,

@@ -203,7 +203,7 @@ impl Patch {
 
 fn check_nodes(nodes: &[f64]) -> Result<(), Pde6Error> {
     for (i, w) in nodes.windows(2).enumerate() {
-        if !(w[1] > w[0]) {
+        if w[1].partial_cmp(&w[0]) != Some(std::cmp::Ordering::Greater) {
             return Err(Pde6Error::NonIncreasing {
                 index: i + 1,
                 previous: w[0],
