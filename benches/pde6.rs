@@ -28,12 +28,18 @@ fn row(b: &ModeBasis, u: f64, d: usize) -> [f64; 6] {
 /// coordinate, as one dense system.
 fn dense_chain(s: &[Section]) -> Chain {
     let blocks: Vec<(usize, usize, usize)> = (0..=N)
-        .flat_map(|n| (0..3).flat_map(move |k| (0..if n == 0 { 1 } else { 2 }).map(move |cs| (n, k, cs))))
+        .flat_map(|n| {
+            (0..3).flat_map(move |k| (0..if n == 0 { 1 } else { 2 }).map(move |cs| (n, k, cs)))
+        })
         .collect();
     let size = 18 * blocks.len();
     let mut m = DMatrix::<f64>::zeros(size, size);
     let mut rhs = DVector::<f64>::zeros(size);
-    let geo = [(s[0].u, s[3].u - s[0].u, 0usize), (s[3].u, s[8].u - s[3].u, 3), (s[8].u, s[11].u - s[8].u, 8)];
+    let geo = [
+        (s[0].u, s[3].u - s[0].u, 0usize),
+        (s[3].u, s[8].u - s[3].u, 3),
+        (s[8].u, s[11].u - s[8].u, 8),
+    ];
     let pick = |f: &Fourier3, n: usize, k: usize, cs: usize| {
         let (x, y) = f.harmonic(n, k);
         if cs == 0 {
@@ -49,7 +55,8 @@ fn dense_chain(s: &[Section]) -> Chain {
         // patch 1 (middle, columns o+6..o+12): six values
         for i in 0..6 {
             let t = (s[3 + i].u - geo[1].0) / geo[1].1;
-            m.view_mut((r, o + 6), (1, 6)).copy_from_slice(&row(&b, t, 0));
+            m.view_mut((r, o + 6), (1, 6))
+                .copy_from_slice(&row(&b, t, 0));
             rhs[r] = pick(&s[3 + i].curve, n, k, cs);
             r += 1;
         }
@@ -57,7 +64,8 @@ fn dense_chain(s: &[Section]) -> Chain {
         for (p, first) in [(0usize, 0usize), (2, 8)] {
             for i in 0..4 {
                 let t = (s[first + i].u - geo[p].0) / geo[p].1;
-                m.view_mut((r, o + 6 * p), (1, 6)).copy_from_slice(&row(&b, t, 0));
+                m.view_mut((r, o + 6 * p), (1, 6))
+                    .copy_from_slice(&row(&b, t, 0));
                 rhs[r] = pick(&s[first + i].curve, n, k, cs);
                 r += 1;
             }
@@ -106,9 +114,16 @@ fn dense_chain(s: &[Section]) -> Chain {
 /// Tessellation with the generic point-by-point evaluation.
 fn tessellate_generic(c: &Chain) -> pdesculpt::mesh::Mesh {
     let d = c.domain();
-    let us: Vec<f64> = (0..=TESS.nu).map(|i| d.u.0 + (d.u.1 - d.u.0) * i as f64 / TESS.nu as f64).collect();
-    let vs: Vec<f64> = (0..TESS.nv).map(|j| d.v.1 * j as f64 / TESS.nv as f64).collect();
-    let pts: Vec<[f64; 3]> = us.iter().flat_map(|&u| vs.iter().map(move |&v| c.point(u, v))).collect();
+    let us: Vec<f64> = (0..=TESS.nu)
+        .map(|i| d.u.0 + (d.u.1 - d.u.0) * i as f64 / TESS.nu as f64)
+        .collect();
+    let vs: Vec<f64> = (0..TESS.nv)
+        .map(|j| d.v.1 * j as f64 / TESS.nv as f64)
+        .collect();
+    let pts: Vec<[f64; 3]> = us
+        .iter()
+        .flat_map(|&u| vs.iter().map(move |&v| c.point(u, v)))
+        .collect();
     tessellate_grid(pts, us.len(), vs.len(), d)
 }
 
@@ -139,8 +154,12 @@ fn bench(c: &mut Criterion) {
             black_box(tessellate_generic(&ch))
         })
     });
-    g.bench_function("solve_only_closed_form", |b| b.iter(|| black_box(Chain::method2(A, black_box(&s), 3))));
-    g.bench_function("solve_only_dense", |b| b.iter(|| black_box(dense_chain(black_box(&s)))));
+    g.bench_function("solve_only_closed_form", |b| {
+        b.iter(|| black_box(Chain::method2(A, black_box(&s), 3)))
+    });
+    g.bench_function("solve_only_dense", |b| {
+        b.iter(|| black_box(dense_chain(black_box(&s))))
+    });
     g.finish();
 }
 
