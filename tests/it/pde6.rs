@@ -214,6 +214,47 @@ fn cli_mode_patch_and_errors() {
         .output()
         .unwrap();
     assert!(!out.status.success());
+    // GEC input (paper 002 eq 1 placement: planes z = z_c)
+    use pdesculpt::curve::gec::{Frame, Gec};
+    let secs: Vec<serde_json::Value> = (0..7)
+        .map(|i| {
+            let z = 0.5 * i as f64 + 0.1 * (i as f64).sin();
+            let g = Gec::ellipse(Frame::z_plane(z), [0.1 * i as f64, 0.0], 1.0 + 0.1 * i as f64, 0.7);
+            serde_json::json!({"u": z, "gec": g})
+        })
+        .collect();
+    let gfile = dir.join("gecs.json");
+    std::fs::write(&gfile, serde_json::json!({ "sections": secs }).to_string()).unwrap();
+    let out = std::process::Command::new(exe)
+        .args(["--json", "pde6", "patch", "--a", "0.4"])
+        .arg(&gfile)
+        .arg("-o")
+        .arg(dir.join("gec.stl"))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["pieces"], 2);
+    // malformed file
+    std::fs::write(&gfile, "{\"sections\": [{\"u\": 0.0}]}").unwrap();
+    let out = std::process::Command::new(exe)
+        .args(["pde6", "patch"])
+        .arg(&gfile)
+        .arg("-o")
+        .arg(dir.join("bad.obj"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("exactly one of"));
+    // the body from one command
+    let out = std::process::Command::new(exe)
+        .args(["--json", "pde6", "body", "-o"])
+        .arg(dir.join("body.glb"))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["recon_to_skin_rms_rel"].as_f64().unwrap() < 0.003);
     let _ = std::fs::remove_dir_all(&dir);
 }
 
