@@ -51,8 +51,16 @@ impl MethodArg {
 #[derive(clap::Subcommand, Debug)]
 pub enum Command {
     /// A patch chain through the sections of a JSON file, tessellated.
+    ///
+    /// CURVES.json: {"sections": [{"u": 0.0, "gec": GEC}, {"u": 1.0, "fourier":
+    /// FOURIER3}, ...]}: u strictly increasing; GEC = {"frame": {"origin":
+    /// [x,y,z], "e1": [..], "e2": [..]}, "centre": [x0, y0], "x": [[a_x1, b_x1],
+    /// ..], "y": [[a_y1, b_y1], ..]} (paper 002 eq 1; the frame origin gives
+    /// the z position, e.g. origin [0, 0, z_c] with e1 = X, e2 = Y);
+    /// FOURIER3 = {"c0": [..], "cos": [[..], ..], "sin": [[..], ..]}. All
+    /// sections need the same J. Sections: global 7 + 3k, method1/method2 6 + 3k.
     Patch {
-        /// The sections (see `pdesculpt pde6 --help` module doc).
+        /// The sections JSON (format above).
         curves: PathBuf,
         /// PDE parameter a of eq 2 (|a| <= 10).
         #[arg(long, default_value_t = -0.5, allow_hyphen_values = true)]
