@@ -67,7 +67,7 @@ pub enum Command {
         a: f64,
         #[arg(long, value_enum, default_value_t = MethodArg::Global)]
         method: MethodArg,
-        /// Method 2: index of the first patch's first section (multiple of 3).
+        /// Method 1 and 2: index of the centre patch's first section (multiple of 3).
         #[arg(long, default_value_t = 0)]
         first: usize,
         /// Tessellation: intervals per piece in u, and around v.
@@ -143,7 +143,7 @@ fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
 fn build(a: f64, method: Method, sections: &[Section], first: usize) -> anyhow::Result<Chain> {
     Ok(match method {
         Method::GlobalC2 => Chain::c2_global(a, sections)?,
-        Method::SharedCurves => Chain::method1(a, sections)?,
+        Method::SharedCurves => Chain::method1(a, sections, first)?,
         Method::CarriedDerivatives => Chain::method2(a, sections, first)?,
     })
 }

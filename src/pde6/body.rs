@@ -199,7 +199,9 @@ pub fn reconstruct_part(
     }
     let chain = match opts.method {
         super::Method::GlobalC2 => Chain::c2_global(opts.a, &sections)?,
-        super::Method::SharedCurves => Chain::method1(opts.a, &sections[..m - 1])?,
+        super::Method::SharedCurves => {
+            Chain::method1(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
+        }
         super::Method::CarriedDerivatives => {
             Chain::method2(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
         }

@@ -9,7 +9,7 @@
 //!   carried derivatives are rescaled by $L_{new}/L_{old}$ and its square so
 //!   that the chain is C2 in the global u.
 //! * Method 1 ([`Chain::method1`], as printed): patches through windows of
-//!   six sections overlapping by three. The paper claims C2 at the joins;
+//!   six sections overlapping by three, each used from its join outwards. The paper claims C2 at the joins;
 //!   two different interpolants through the same three sections only share
 //!   the position there, so the chain is C0 and the slope jumps (measured by
 //!   `pde6.method1_c2_claim`, ERRATA).
@@ -158,20 +158,32 @@ impl Chain {
         Ok(Piece::new(patch, origin, length, origin, w[5].u))
     }
 
-    /// Method 1: windows of six sections with stride 3 (sections 3k..3k+5
-    /// give patch k, used from section 3k to 3k+3; the last one to its end).
-    pub fn method1(a: f64, sections: &[Section]) -> Result<Chain, Pde6Error> {
+    /// Method 1 as in Fig 4 (section 3.2.2): the centre patch through
+    /// `sections[first..first + 6]` used whole; each neighbour is the
+    /// six-point patch through the three sections it shares with the previous
+    /// patch (the join and the two beyond it) and three new ones, used from
+    /// the join outwards (paper: 12 sections, `first = 3`; patch 2 through
+    /// C1-C6 used on C1-C4, patch 3 through C7-C12 used on C9-C12).
+    pub fn method1(a: f64, sections: &[Section], first: usize) -> Result<Chain, Pde6Error> {
         validate_sections(sections, 6, 0)?;
-        let k_count = (sections.len() - 3) / 3;
-        let mut pieces = Vec::with_capacity(k_count);
-        for k in 0..k_count {
-            let w = &sections[3 * k..3 * k + 6];
-            let (origin, length) = (w[0].u, w[5].u - w[0].u);
-            let nodes: [f64; 6] = local(w, origin, length);
-            let curves: [&Fourier3; 6] = std::array::from_fn(|i| &w[i].curve);
-            let patch = Patch::through_curves(a, curves, nodes)?;
-            let end = if k + 1 == k_count { w[5].u } else { w[3].u };
-            pieces.push(Piece::new(patch, origin, length, origin, end));
+        let m = sections.len();
+        if first % 3 != 0 || first + 6 > m {
+            return Err(Pde6Error::FirstPatch { first, sections: m });
+        }
+        let mut pieces = vec![Chain::method1_window(a, &sections[first..first + 6])?];
+        let mut e = first + 5;
+        while e + 3 < m {
+            let mut p = Chain::method1_window(a, &sections[e - 2..e + 4])?;
+            p.start = sections[e].u;
+            pieces.push(p);
+            e += 3;
+        }
+        let mut s = first;
+        while s >= 3 {
+            let mut p = Chain::method1_window(a, &sections[s - 3..s + 3])?;
+            p.end = sections[s].u;
+            pieces.insert(0, p);
+            s -= 3;
         }
         Ok(Chain {
             method: Method::SharedCurves,

@@ -41,7 +41,7 @@ fn bad_input_gets_clear_errors() {
     ));
     // too few curves for method 1 / wrong counts
     assert!(matches!(
-        Chain::method1(-0.5, &s[..5]),
+        Chain::method1(-0.5, &s[..5], 0),
         Err(Pde6Error::ChainLength { got: 5, .. })
     ));
     assert!(matches!(
@@ -92,6 +92,11 @@ fn twelve_curve_example_method2_matches_fig4_layout() {
     assert_eq!(c.joins(), vec![s[3].u, s[8].u]);
     let j = join_jumps(&c);
     assert!(j.iter().all(|x| *x < SOLVE_TOL), "{j:?}");
+    // method 1 in the same layout: same joins, position continuous only
+    let c1 = Chain::method1(-0.5, &s, 3).unwrap();
+    assert_eq!(c1.joins(), vec![s[3].u, s[8].u]);
+    let j1 = join_jumps(&c1);
+    assert!(j1[0] < SOLVE_TOL && j1[1] > 1e-3, "{j1:?}");
     // patch through six curves at the paper's nodes
     let p = Patch::through_curves(0.8, curves6(&s[3..9]), [0.0, 0.2, 0.4, 0.6, 0.8, 1.0]).unwrap();
     for (i, sec) in s[3..9].iter().enumerate() {
@@ -219,7 +224,12 @@ fn cli_mode_patch_and_errors() {
     let secs: Vec<serde_json::Value> = (0..7)
         .map(|i| {
             let z = 0.5 * i as f64 + 0.1 * (i as f64).sin();
-            let g = Gec::ellipse(Frame::z_plane(z), [0.1 * i as f64, 0.0], 1.0 + 0.1 * i as f64, 0.7);
+            let g = Gec::ellipse(
+                Frame::z_plane(z),
+                [0.1 * i as f64, 0.0],
+                1.0 + 0.1 * i as f64,
+                0.7,
+            );
             serde_json::json!({"u": z, "gec": g})
         })
         .collect();
@@ -232,7 +242,11 @@ fn cli_mode_patch_and_errors() {
         .arg(dir.join("gec.stl"))
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["pieces"], 2);
     // malformed file
@@ -252,7 +266,11 @@ fn cli_mode_patch_and_errors() {
         .arg(dir.join("body.glb"))
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(v["recon_to_skin_rms_rel"].as_f64().unwrap() < 0.003);
     let _ = std::fs::remove_dir_all(&dir);
