@@ -1,10 +1,261 @@
-//! `pdesculpt pde6` (not implemented yet).
+//! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
+//!
+//! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
+//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...]`
+//! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
+//!
+//! CURVES.json: `{"sections": [{"u": 0.0, "gec": {...}}, {"u": 1.0,
+//! "fourier": {...}}, ...]}` — each section has its position `u` (strictly
+//! increasing) and either a `gec` (a `curve::gec::Gec`: frame, centre, x, y;
+//! its frame origin carries the z position) or a `fourier` (a
+//! `curve::Fourier3`: c0, cos, sin). All sections need the same number of
+//! terms J. Method 1 and 2 need 6 + 3k sections, the global C2 chain 7 + 3k.
+
+use anyhow::{bail, Context};
+use pdesculpt::curve::gec::Gec;
+use pdesculpt::curve::Fourier3;
+use pdesculpt::jet::Jet;
+use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
+use pdesculpt::pde6::{Chain, Method, Mode, ModeSolver, Section};
+use pdesculpt::surface::{tessellate, Tessellation};
+use std::path::PathBuf;
 
 /// Arguments of `pdesculpt pde6`.
 #[derive(clap::Args, Debug)]
-pub struct Args {}
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// How neighbouring patches are joined.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum MethodArg {
+    /// All patches solved together, C2, stable (default).
+    Global,
+    /// Paper method 1: windows of six sections sharing three (C0 only).
+    Method1,
+    /// Paper method 2: slope and curvature carried over (C2, unstable growth).
+    Method2,
+}
+
+impl MethodArg {
+    fn method(self) -> Method {
+        match self {
+            MethodArg::Global => Method::GlobalC2,
+            MethodArg::Method1 => Method::SharedCurves,
+            MethodArg::Method2 => Method::CarriedDerivatives,
+        }
+    }
+}
+
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// A patch chain through the sections of a JSON file, tessellated.
+    ///
+    /// CURVES.json: {"sections": [{"u": 0.0, "gec": GEC}, {"u": 1.0, "fourier":
+    /// FOURIER3}, ...]}: u strictly increasing; GEC = {"frame": {"origin":
+    /// [x,y,z], "e1": [..], "e2": [..]}, "centre": [x0, y0], "x": [[a_x1, b_x1],
+    /// ..], "y": [[a_y1, b_y1], ..]} (paper 002 eq 1; the frame origin gives
+    /// the z position, e.g. origin [0, 0, z_c] with e1 = X, e2 = Y);
+    /// FOURIER3 = {"c0": [..], "cos": [[..], ..], "sin": [[..], ..]}. All
+    /// sections need the same J. Sections: global 7 + 3k, method1/method2 6 + 3k.
+    Patch {
+        /// The sections JSON (format above).
+        curves: PathBuf,
+        /// PDE parameter a of eq 2 (|a| <= 10).
+        #[arg(long, default_value_t = -0.5, allow_hyphen_values = true)]
+        a: f64,
+        #[arg(long, value_enum, default_value_t = MethodArg::Global)]
+        method: MethodArg,
+        /// Method 1 and 2: index of the centre patch's first section (multiple of 3).
+        #[arg(long, default_value_t = 0)]
+        first: usize,
+        /// Tessellation: intervals per piece in u, and around v.
+        #[arg(long, default_value_t = 16)]
+        nu: usize,
+        #[arg(long, default_value_t = 64)]
+        nv: usize,
+        /// Output mesh (obj, glb, stl, ply).
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// Reconstructs the MakeHuman body from cross sections.
+    Body {
+        #[arg(long, default_value_t = 10)]
+        terms: usize,
+        #[arg(long, default_value_t = -0.5, allow_hyphen_values = true)]
+        a: f64,
+        #[arg(long, value_enum, default_value_t = MethodArg::Global)]
+        method: MethodArg,
+        /// Output mesh (obj, glb, stl, ply).
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// The single-harmonic function A_n(u) through six values at u = 0, 0.2, ..., 1.
+    Mode {
+        #[arg(long, allow_hyphen_values = true)]
+        a: f64,
+        #[arg(long)]
+        n: usize,
+        /// Six comma-separated values.
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        values: Vec<f64>,
+        #[arg(long, allow_hyphen_values = true)]
+        at: f64,
+    },
+}
+
+#[derive(serde::Deserialize)]
+struct SectionFile {
+    sections: Vec<SectionEntry>,
+}
+
+#[derive(serde::Deserialize)]
+struct SectionEntry {
+    u: f64,
+    gec: Option<Gec>,
+    fourier: Option<Fourier3>,
+}
+
+fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let f: SectionFile =
+        serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
+    f.sections
+        .into_iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let curve = match (s.gec, s.fourier) {
+                (Some(g), None) => {
+                    let g = Gec::new(g.frame, g.centre, g.x, g.y)
+                        .with_context(|| format!("section {i}"))?;
+                    g.to_fourier3()
+                }
+                (None, Some(f)) => f,
+                _ => bail!("section {i}: give exactly one of \"gec\" or \"fourier\""),
+            };
+            Ok(Section { u: s.u, curve })
+        })
+        .collect()
+}
+
+fn build(a: f64, method: Method, sections: &[Section], first: usize) -> anyhow::Result<Chain> {
+    Ok(match method {
+        Method::GlobalC2 => Chain::c2_global(a, sections)?,
+        Method::SharedCurves => Chain::method1(a, sections, first)?,
+        Method::CarriedDerivatives => Chain::method2(a, sections, first)?,
+    })
+}
 
 /// Runs `pdesculpt pde6`.
-pub fn run(_args: Args, _json: bool) -> anyhow::Result<i32> {
-    anyhow::bail!("'pdesculpt pde6' is not implemented yet")
+pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    match args.command {
+        Command::Patch {
+            curves,
+            a,
+            method,
+            first,
+            nu,
+            nv,
+            output,
+        } => {
+            if nu == 0 || nv < 3 {
+                bail!("tessellation needs --nu >= 1 and --nv >= 3");
+            }
+            let sections = read_sections(&curves)?;
+            let chain = build(a, method.method(), &sections, first)?;
+            let mesh = tessellate(
+                &chain,
+                Tessellation {
+                    nu: nu * chain.pieces.len(),
+                    nv,
+                },
+            );
+            if mesh.positions.iter().flatten().any(|x| !x.is_finite()) {
+                bail!("the surface has non-finite points");
+            }
+            pdesculpt::mesh::io::write(&mesh, &output)?;
+            let jumps = pdesculpt::pde6::check::join_jumps(&chain);
+            let summary = serde_json::json!({
+                "sections": sections.len(), "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
+                "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),
+                "join_jumps_c0_c1_c2": jumps, "vertices": mesh.positions.len(), "triangles": mesh.triangles.len(),
+                "output": output.display().to_string(),
+            });
+            if json {
+                super::print_json(&summary)?;
+            } else {
+                println!("{}", serde_json::to_string_pretty(&summary)?);
+            }
+            Ok(0)
+        }
+        Command::Body {
+            terms,
+            a,
+            method,
+            output,
+        } => {
+            if terms == 0 {
+                bail!("--terms must be at least 1");
+            }
+            let body = pdesculpt::makehuman::base_body()?;
+            eprintln!(
+                "pde6 body: slicing, fitting and solving {} parts",
+                makehuman_parts().len()
+            );
+            let opts = BodyOptions {
+                terms,
+                a,
+                method: method.method(),
+                ..BodyOptions::default()
+            };
+            let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), &opts)?;
+            pdesculpt::mesh::io::write(&mesh, &output)?;
+            if json {
+                super::print_json(&report)?;
+            } else {
+                println!("{}", serde_json::to_string_pretty(&report)?);
+            }
+            Ok(0)
+        }
+        Command::Mode { a, n, values, at } => {
+            if values.len() != 6 {
+                bail!(
+                    "--values needs six comma-separated numbers, got {}",
+                    values.len()
+                );
+            }
+            if !at.is_finite() {
+                bail!("--at must be finite");
+            }
+            let v: [f64; 6] = std::array::from_fn(|i| values[i]);
+            let m = Mode::interpolate(a, n, v)?;
+            let j = m.eval(Jet::<3, 1>::var_u(at));
+            let cond = ModeSolver::new(
+                m.basis,
+                pdesculpt::pde6::mode::method1_conditions(pdesculpt::pde6::mode::NODES_METHOD1),
+            )?
+            .condition_number;
+            let out = serde_json::json!({
+                "a": a, "n": n, "regime": format!("{:?}", m.basis.regime), "q": m.basis.q,
+                "at": at, "value": j.deriv(0, 0), "slope": j.deriv(1, 0), "curvature": j.deriv(2, 0),
+                "coefficients": m.coef, "condition_number": cond,
+            });
+            if json {
+                super::print_json(&out)?;
+            } else {
+                println!(
+                    "A_{n}({at}) = {:.15e}  A' = {:.6e}  A'' = {:.6e}  ({:?}, q = {:.6}, condition {:.3e})",
+                    j.deriv(0, 0),
+                    j.deriv(1, 0),
+                    j.deriv(2, 0),
+                    m.basis.regime,
+                    m.basis.q,
+                    cond
+                );
+            }
+            Ok(0)
+        }
+    }
 }

@@ -1,5 +1,509 @@
-//! Generalized elliptic curves (paper 000 eq 16, paper 002 eq 1).
+//! Generalized elliptic curves (GECs): paper 000 eq 16 and paper 002 eq 1.
 //!
-//! Not implemented yet: this module is a placeholder for its issue.
+//! # The two printed forms
+//!
+//! Paper 000 (eq 16), parameter $v \in [0, 1]$:
+//! $$ x = x_0 + \sum_{j=1}^{J} (x_{2j-1} \cos 2j\pi v + x_{2j} \sin 2j\pi v), \quad
+//!    y = y_0 + \sum_{j=1}^{J} (y_{2j-1} \sin 2j\pi v + y_{2j} \cos 2j\pi v), \quad z = z_c. $$
+//!
+//! Paper 002 (eq 1), parameter $v \in [0, 2\pi]$:
+//! $$ x = a_{x0} + \sum_{n=1}^{N} (a_{xn} \cos nv + b_{xn} \sin nv), \quad
+//!    y = a_{y0} + \sum_{n=1}^{N} (a_{yn} \sin nv + b_{yn} \cos nv), \quad z = z_c. $$
+//!
+//! They are one family: $\theta = 2\pi v_{000} = v_{002}$, $J = N$,
+//! $x_{2j-1} = a_{xj}$, $x_{2j} = b_{xj}$, $y_{2j-1} = a_{yj}$,
+//! $y_{2j} = b_{yj}$. Note the asymmetry: **x takes (cos, sin) pairs, y takes
+//! (sin, cos) pairs**. [`Gec`] stores exactly these pairs
+//! ([`Gec::x`]`[n-1] = (cos, sin)`, [`Gec::y`]`[n-1] = (sin, cos)`) against
+//! the angle $\theta \in [0, 2\pi)$.
+//!
+//! # Placement
+//!
+//! The papers place the curve in the plane $z = z_c$. Here a [`Frame`]
+//! (origin $\mathbf{o}$ and orthonormal in-plane axes $\mathbf{e}_1,
+//! \mathbf{e}_2$) places it in any plane, the extension paper 000 sec 4.1.3
+//! mentions: $\mathbf{P}(\theta) = \mathbf{o} + x(\theta)\mathbf{e}_1 +
+//! y(\theta)\mathbf{e}_2$; [`Frame::z_plane`] is the papers' case.
+//! [`Gec::to_fourier3`] turns a placed GEC into the [`Fourier3`] the surface
+//! families consume: $\mathbf{c}_0 = \mathbf{o} + x_0\mathbf{e}_1 + y_0
+//! \mathbf{e}_2$, $\mathbf{c}_n = a_{xn}\mathbf{e}_1 + b_{yn}\mathbf{e}_2$,
+//! $\mathbf{s}_n = b_{xn}\mathbf{e}_1 + a_{yn}\mathbf{e}_2$.
+//!
+//! # Geometry
+//!
+//! Area (Green's theorem, exact, derived in `verify/gec_golden.py`):
+//! $A = \pi \sum_n n\,(a_{xn} a_{yn} - b_{xn} b_{yn})$, positive for a
+//! counter-clockwise curve in its frame. Centroid and arc length use the
+//! periodic trapezoidal rule (exact for the trigonometric-polynomial
+//! integrands of the centroid once the sample count exceeds $3J$; spectrally
+//! accurate for the arc length).
+//!
+//! Submodules: [`fit`] (least squares, FFT, parameter choices, automatic
+//! $J$), [`metrics`] (ErM, ErA of paper 002 Table 1, defined precisely
+//! there), [`transform`] (coefficient-space manipulation, paper 000 sec 5.2),
+//! [`study`] (the MakeHuman cross-section study), [`check`].
 
 pub mod check;
+pub mod fit;
+pub mod metrics;
+
+pub use fit::{fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice, Param, Solver};
+pub use metrics::{errors, FitErrors};
+
+use crate::curve::Fourier3;
+use crate::jet::{Jet8, Real};
+use crate::mesh::{dot, norm, scale, sub};
+use crate::surface::cross;
+use std::f64::consts::PI;
+
+/// Errors of the gec family.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum GecError {
+    #[error("the number of terms J must be at least 1 (got 0)")]
+    ZeroTerms,
+    #[error("J = {terms} needs at least {needed} points (2J+1), got {got}")]
+    TooFewPoints {
+        terms: usize,
+        needed: usize,
+        got: usize,
+    },
+    #[error("point {index} is not finite: {point:?}")]
+    NonFinite { index: usize, point: [f64; 3] },
+    #[error("points {first} and {second} coincide (remove repeated points, including a closing copy of the first point)")]
+    RepeatedPoint { first: usize, second: usize },
+    #[error("the polyline is open; a closed cross section is needed")]
+    OpenPolyline,
+    #[error("the points are degenerate ({0})")]
+    Degenerate(String),
+    #[error("the points are not planar: largest distance from the best plane {deviation:.3e} exceeds {tolerance:.3e}")]
+    NotPlanar { deviation: f64, tolerance: f64 },
+    #[error("invalid frame: {0}")]
+    InvalidFrame(String),
+    #[error(
+        "the least-squares system is rank deficient (parameters too clustered for J = {terms})"
+    )]
+    RankDeficient { terms: usize },
+    #[error(
+        "tolerance {tol:.3e} not reached with J <= {max_terms} (best relative ErM {best:.3e})"
+    )]
+    ToleranceUnreachable {
+        tol: f64,
+        best: f64,
+        max_terms: usize,
+    },
+    #[error("invalid parameter: {0}")]
+    InvalidParameter(String),
+    #[error("coefficient arrays malformed: {0}")]
+    Malformed(String),
+}
+
+/// Where a GEC lives in space: origin and two orthonormal in-plane axes.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Frame {
+    pub origin: [f64; 3],
+    pub e1: [f64; 3],
+    pub e2: [f64; 3],
+}
+
+/// Orthonormality tolerance of [`Frame::new`].
+pub const FRAME_TOL: f64 = 1e-9;
+
+impl Frame {
+    /// The papers' placement: the plane $z = z_c$ with axes X and Y.
+    pub fn z_plane(z_c: f64) -> Frame {
+        Frame {
+            origin: [0.0, 0.0, z_c],
+            e1: [1.0, 0.0, 0.0],
+            e2: [0.0, 1.0, 0.0],
+        }
+    }
+
+    /// A frame from origin and axes (checked finite and orthonormal).
+    pub fn new(origin: [f64; 3], e1: [f64; 3], e2: [f64; 3]) -> Result<Frame, GecError> {
+        let all = origin.iter().chain(&e1).chain(&e2);
+        if !all.clone().all(|x| x.is_finite()) {
+            return Err(GecError::InvalidFrame("non-finite component".into()));
+        }
+        let err = (norm(e1) - 1.0)
+            .abs()
+            .max((norm(e2) - 1.0).abs())
+            .max(dot(e1, e2).abs());
+        if err > FRAME_TOL {
+            return Err(GecError::InvalidFrame(format!(
+                "axes not orthonormal (error {err:.3e})"
+            )));
+        }
+        Ok(Frame { origin, e1, e2 })
+    }
+
+    /// A frame in the plane through `origin` with normal `normal`; `e1` is the
+    /// projection of `hint` (or of a coordinate axis if `hint` is nearly
+    /// parallel to the normal), `e2 = normal x e1`.
+    pub fn from_normal(
+        origin: [f64; 3],
+        normal: [f64; 3],
+        hint: [f64; 3],
+    ) -> Result<Frame, GecError> {
+        let nn = norm(normal);
+        if !(nn.is_finite() && nn > 0.0) {
+            return Err(GecError::InvalidFrame("zero or non-finite normal".into()));
+        }
+        let n = scale(normal, 1.0 / nn);
+        let candidates = [hint, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]];
+        for h in candidates {
+            let p = sub(h, scale(n, dot(h, n)));
+            let pn = norm(p);
+            if pn.is_finite() && pn > 0.3 * norm(h).max(f64::MIN_POSITIVE) {
+                let e1 = scale(p, 1.0 / pn);
+                let e2 = cross(n, e1);
+                return Frame::new(origin, e1, e2);
+            }
+        }
+        Err(GecError::InvalidFrame("no in-plane axis found".into()))
+    }
+
+    /// Unit normal `e1 x e2`.
+    pub fn normal(&self) -> [f64; 3] {
+        cross(self.e1, self.e2)
+    }
+
+    /// Space point of in-plane coordinates `(x, y)` (generic).
+    pub fn place<T: Real>(&self, x: T, y: T) -> [T; 3] {
+        let mut p = [T::cst(0.0); 3];
+        for k in 0..3 {
+            p[k] = x * self.e1[k] + y * self.e2[k] + self.origin[k];
+        }
+        p
+    }
+
+    /// In-plane coordinates of a space point (orthogonal projection) and its
+    /// signed distance from the plane.
+    pub fn project(&self, p: [f64; 3]) -> ([f64; 2], f64) {
+        let d = sub(p, self.origin);
+        ([dot(d, self.e1), dot(d, self.e2)], dot(d, self.normal()))
+    }
+}
+
+/// A generalized elliptic curve placed in space.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Gec {
+    /// Placement (the papers' $z = z_c$ plane is [`Frame::z_plane`]).
+    pub frame: Frame,
+    /// In-plane centre $(x_0, y_0)$ = $(a_{x0}, a_{y0})$.
+    pub centre: [f64; 2],
+    /// `x[n-1] = (a_xn, b_xn)`: coefficients of `(cos n theta, sin n theta)`.
+    pub x: Vec<[f64; 2]>,
+    /// `y[n-1] = (a_yn, b_yn)`: coefficients of `(sin n theta, cos n theta)`.
+    pub y: Vec<[f64; 2]>,
+}
+
+impl Gec {
+    /// A GEC from its parts (the arrays must have equal length J >= 1 and
+    /// finite entries).
+    pub fn new(
+        frame: Frame,
+        centre: [f64; 2],
+        x: Vec<[f64; 2]>,
+        y: Vec<[f64; 2]>,
+    ) -> Result<Gec, GecError> {
+        if x.len() != y.len() {
+            return Err(GecError::Malformed(format!(
+                "x has {} pairs, y has {}",
+                x.len(),
+                y.len()
+            )));
+        }
+        if x.is_empty() {
+            return Err(GecError::ZeroTerms);
+        }
+        let g = Gec {
+            frame: Frame::new(frame.origin, frame.e1, frame.e2)?,
+            centre,
+            x,
+            y,
+        };
+        if !g.is_finite() {
+            return Err(GecError::Malformed("non-finite coefficient".into()));
+        }
+        Ok(g)
+    }
+
+    /// The standard ellipse `(a cos theta, b sin theta)` about `centre`.
+    pub fn ellipse(frame: Frame, centre: [f64; 2], a: f64, b: f64) -> Gec {
+        Gec {
+            frame,
+            centre,
+            x: vec![[a, 0.0]],
+            y: vec![[b, 0.0]],
+        }
+    }
+
+    /// Number of terms J.
+    pub fn terms(&self) -> usize {
+        self.x.len()
+    }
+
+    /// All coefficients and the frame finite.
+    pub fn is_finite(&self) -> bool {
+        let f = &self.frame;
+        f.origin
+            .iter()
+            .chain(&f.e1)
+            .chain(&f.e2)
+            .chain(&self.centre)
+            .chain(self.x.iter().flatten())
+            .chain(self.y.iter().flatten())
+            .all(|v| v.is_finite())
+    }
+
+    /// In-plane point at angle `theta` (generic: jets give derivatives).
+    pub fn eval_plane<T: Real>(&self, theta: T) -> [T; 2] {
+        let mut x = T::cst(self.centre[0]);
+        let mut y = T::cst(self.centre[1]);
+        for (i, (cx, cy)) in self.x.iter().zip(&self.y).enumerate() {
+            let a = theta * (i + 1) as f64;
+            let (c, s) = (a.cos(), a.sin());
+            x += c * cx[0] + s * cx[1];
+            y += s * cy[0] + c * cy[1];
+        }
+        [x, y]
+    }
+
+    /// Space point at angle `theta` in `[0, 2 pi)` (paper 002's `v`).
+    pub fn eval<T: Real>(&self, theta: T) -> [T; 3] {
+        let [x, y] = self.eval_plane(theta);
+        self.frame.place(x, y)
+    }
+
+    /// Space point at paper 000's parameter `v` in `[0, 1]`.
+    pub fn eval_v<T: Real>(&self, v: T) -> [T; 3] {
+        self.eval(v * (2.0 * PI))
+    }
+
+    /// `d^k P / d theta^k` at `theta` (k <= 8, exact via jets).
+    pub fn derivative(&self, theta: f64, k: usize) -> [f64; 3] {
+        let p = self.eval(Jet8::var_u(theta));
+        [p[0].deriv(k, 0), p[1].deriv(k, 0), p[2].deriv(k, 0)]
+    }
+
+    /// In-plane first derivative (plain f64 fast path).
+    pub fn tangent_plane(&self, theta: f64) -> [f64; 2] {
+        let (mut dx, mut dy) = (0.0, 0.0);
+        for (i, (cx, cy)) in self.x.iter().zip(&self.y).enumerate() {
+            let n = (i + 1) as f64;
+            let (s, c) = (n * theta).sin_cos();
+            dx += n * (-s * cx[0] + c * cx[1]);
+            dy += n * (c * cy[0] - s * cy[1]);
+        }
+        [dx, dy]
+    }
+
+    /// `m` space points at `theta = 2 pi k / m` (a closed polyline).
+    pub fn sample(&self, m: usize) -> Vec<[f64; 3]> {
+        (0..m)
+            .map(|k| self.eval(2.0 * PI * k as f64 / m as f64))
+            .collect()
+    }
+
+    /// `m` in-plane points at `theta = 2 pi k / m`.
+    pub fn sample_plane(&self, m: usize) -> Vec<[f64; 2]> {
+        (0..m)
+            .map(|k| self.eval_plane(2.0 * PI * k as f64 / m as f64))
+            .collect()
+    }
+
+    /// Signed enclosed area in the frame (exact closed form).
+    pub fn area(&self) -> f64 {
+        PI * self
+            .x
+            .iter()
+            .zip(&self.y)
+            .enumerate()
+            .map(|(i, (cx, cy))| (i + 1) as f64 * (cx[0] * cy[0] - cx[1] * cy[1]))
+            .sum::<f64>()
+    }
+
+    /// Arc length by the periodic trapezoidal rule with `m` nodes.
+    pub fn arc_length_with(&self, m: usize) -> f64 {
+        let m = m.max(1);
+        let h = 2.0 * PI / m as f64;
+        (0..m)
+            .map(|k| {
+                let [dx, dy] = self.tangent_plane(h * k as f64);
+                dx.hypot(dy)
+            })
+            .sum::<f64>()
+            * h
+    }
+
+    /// Arc length (trapezoidal rule with `max(256, 64 J)` nodes).
+    pub fn arc_length(&self) -> f64 {
+        self.arc_length_with((64 * self.terms()).max(256))
+    }
+
+    /// Area centroid in space (Green's theorem, trapezoidal rule exact for
+    /// these trigonometric polynomials). Falls back to the centre `(x0, y0)`
+    /// when the area vanishes.
+    pub fn centroid(&self) -> [f64; 3] {
+        let a = self.area();
+        if a.abs() <= f64::EPSILON * self.scale().powi(2) {
+            return self.frame.place(self.centre[0], self.centre[1]);
+        }
+        let m = 4 * self.terms() + 4;
+        let h = 2.0 * PI / m as f64;
+        let (mut mx, mut my) = (0.0, 0.0);
+        for k in 0..m {
+            let t = h * k as f64;
+            let [x, y] = self.eval_plane(t);
+            let [dx, dy] = self.tangent_plane(t);
+            // Cx = (1/A) oint x^2/2 dy, Cy = -(1/A) oint y^2/2 dx
+            mx += 0.5 * x * x * dy;
+            my -= 0.5 * y * y * dx;
+        }
+        self.frame.place(mx * h / a, my * h / a)
+    }
+
+    /// A length scale: `|centre| + sum of |coefficients|` (bounds the curve's
+    /// extent from the frame origin).
+    pub fn scale(&self) -> f64 {
+        self.centre[0].abs()
+            + self.centre[1].abs()
+            + self
+                .x
+                .iter()
+                .chain(&self.y)
+                .flatten()
+                .map(|v| v.abs())
+                .sum::<f64>()
+    }
+
+    /// The closed space curve as a [`Fourier3`] in the same angle `theta`.
+    pub fn to_fourier3(&self) -> Fourier3 {
+        let f = &self.frame;
+        let c0 = f.place(self.centre[0], self.centre[1]);
+        let comb = |a: f64, b: f64| -> [f64; 3] {
+            let mut v = [0.0; 3];
+            for k in 0..3 {
+                v[k] = a * f.e1[k] + b * f.e2[k];
+            }
+            v
+        };
+        Fourier3 {
+            c0,
+            cos: self
+                .x
+                .iter()
+                .zip(&self.y)
+                .map(|(cx, cy)| comb(cx[0], cy[1]))
+                .collect(),
+            sin: self
+                .x
+                .iter()
+                .zip(&self.y)
+                .map(|(cx, cy)| comb(cx[1], cy[0]))
+                .collect(),
+        }
+    }
+
+    /// Paper 000 eq 16 ordering: `(x_k, y_k)` for `k = 0..=2J`.
+    pub fn to_paper_000(&self) -> (Vec<f64>, Vec<f64>) {
+        let mut xs = vec![self.centre[0]];
+        let mut ys = vec![self.centre[1]];
+        for (cx, cy) in self.x.iter().zip(&self.y) {
+            xs.extend_from_slice(cx);
+            ys.extend_from_slice(cy);
+        }
+        (xs, ys)
+    }
+
+    /// From paper 000 eq 16 ordering: `xs = [x_0, x_1, .., x_2J]`, same for
+    /// `ys`, placed by `frame` (`Frame::z_plane(z_c)` for the paper).
+    pub fn from_paper_000(frame: Frame, xs: &[f64], ys: &[f64]) -> Result<Gec, GecError> {
+        if xs.len() != ys.len() || xs.len() < 3 || xs.len() % 2 == 0 {
+            return Err(GecError::Malformed(format!(
+                "paper 000 needs 2J+1 >= 3 x and y coefficients, got {} and {}",
+                xs.len(),
+                ys.len()
+            )));
+        }
+        let pairs = |c: &[f64]| c[1..].chunks(2).map(|p| [p[0], p[1]]).collect();
+        Gec::new(frame, [xs[0], ys[0]], pairs(xs), pairs(ys))
+    }
+
+    /// Paper 002 eq 1 ordering: `(a_x, b_x, a_y, b_y)` with `a_x = [a_x0..a_xN]`,
+    /// `b_x = [b_x1..b_xN]` (and the same for y).
+    pub fn to_paper_002(&self) -> [Vec<f64>; 4] {
+        let mut ax = vec![self.centre[0]];
+        let mut ay = vec![self.centre[1]];
+        ax.extend(self.x.iter().map(|c| c[0]));
+        ay.extend(self.y.iter().map(|c| c[0]));
+        let bx = self.x.iter().map(|c| c[1]).collect();
+        let by = self.y.iter().map(|c| c[1]).collect();
+        [ax, bx, ay, by]
+    }
+
+    /// From paper 002 eq 1 ordering (see [`Gec::to_paper_002`]).
+    pub fn from_paper_002(
+        frame: Frame,
+        ax: &[f64],
+        bx: &[f64],
+        ay: &[f64],
+        by: &[f64],
+    ) -> Result<Gec, GecError> {
+        let n = bx.len();
+        if ax.len() != n + 1 || ay.len() != n + 1 || by.len() != n || n == 0 {
+            return Err(GecError::Malformed(format!(
+                "paper 002 needs N+1, N, N+1, N coefficients with N >= 1, got {}, {}, {}, {}",
+                ax.len(),
+                bx.len(),
+                ay.len(),
+                by.len()
+            )));
+        }
+        let x = (0..n).map(|i| [ax[i + 1], bx[i]]).collect();
+        let y = (0..n).map(|i| [ay[i + 1], by[i]]).collect();
+        Gec::new(frame, [ax[0], ay[0]], x, y)
+    }
+
+    /// The same curve with `j` terms (zero-padded or truncated).
+    pub fn with_terms(&self, j: usize) -> Gec {
+        let mut g = self.clone();
+        g.x.resize(j, [0.0; 2]);
+        g.y.resize(j, [0.0; 2]);
+        g
+    }
+}
+
+/// Paper 000 eq 16 evaluated literally as printed (coefficient arrays
+/// `x_0..x_2J`, `y_0..y_2J`, parameter `v` in `[0, 1]`, plane `z = z_c`).
+pub fn paper_000_literal(xs: &[f64], ys: &[f64], z_c: f64, v: f64) -> [f64; 3] {
+    let jmax = (xs.len().min(ys.len()).saturating_sub(1)) / 2;
+    let mut x = xs.first().copied().unwrap_or(0.0);
+    let mut y = ys.first().copied().unwrap_or(0.0);
+    for j in 1..=jmax {
+        let a = 2.0 * j as f64 * PI * v;
+        x += xs[2 * j - 1] * a.cos() + xs[2 * j] * a.sin();
+        y += ys[2 * j - 1] * a.sin() + ys[2 * j] * a.cos();
+    }
+    [x, y, z_c]
+}
+
+/// Paper 002 eq 1 evaluated literally as printed (`v` in `[0, 2 pi]`).
+pub fn paper_002_literal(
+    ax: &[f64],
+    bx: &[f64],
+    ay: &[f64],
+    by: &[f64],
+    z_c: f64,
+    v: f64,
+) -> [f64; 3] {
+    let n_max = bx.len().min(by.len()).min(ax.len().saturating_sub(1));
+    let mut x = ax.first().copied().unwrap_or(0.0);
+    let mut y = ay.first().copied().unwrap_or(0.0);
+    for n in 1..=n_max {
+        let a = n as f64 * v;
+        x += ax[n] * a.cos() + bx[n - 1] * a.sin();
+        y += ay[n] * a.sin() + by[n - 1] * a.cos();
+    }
+    [x, y, z_c]
+}

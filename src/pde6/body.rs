@@ -1,0 +1,299 @@
+//! Reconstruction of a real body from cross sections (paper 002 section 4,
+//! Figs 5-6): the MakeHuman skin is cut by horizontal planes into the parts
+//! torso, shoulders and neck, head, arms and legs; each cross section is
+//! fitted by a GEC (`curve::gec::fit`, placed in a common frame per part so the
+//! harmonics are phase-aligned), and each part becomes a C2 method-2
+//! [`Chain`] with u = the height of the section. The result is measured against
+//! the original mesh: distances from the reconstruction to the skin, from the
+//! skin inside the covered height ranges to the reconstruction (relative to
+//! the body height), and the data size.
+//!
+//! Not reconstructed (as in the paper, these need transition surfaces or
+//! other parts): hands, feet, the crotch, the armpits (y between the torso and
+//! shoulder parts) and the chin.
+
+use super::{Chain, Pde6Error, Section};
+use crate::curve::gec::fit::{fit, FitOptions, FrameChoice};
+use crate::curve::gec::Frame;
+use crate::mesh::metrics::{point_distances, stats, DistanceStats};
+use crate::mesh::slice::{slice, Polyline};
+use crate::mesh::Mesh;
+use crate::surface::{tessellate, Tessellation};
+
+/// One body part: a height range cut into `sections` horizontal sections
+/// (7 + 3k for the global C2 chain; method 1 and 2 drop the last), keeping the longest closed loop with centroid x in `x_range`.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct PartSpec {
+    pub name: &'static str,
+    pub y_range: (f64, f64),
+    pub x_range: (f64, f64),
+    pub sections: usize,
+}
+
+/// The parts of the MakeHuman base body (Y up, 16.66 units tall, A-pose).
+pub fn makehuman_parts() -> Vec<PartSpec> {
+    let p = |name, y0, y1, x0, x1, sections| PartSpec {
+        name,
+        y_range: (y0, y1),
+        x_range: (x0, x1),
+        sections,
+    };
+    vec![
+        p("leg_left", -7.05, -0.75, -3.0, -0.3, 16),
+        p("leg_right", -7.05, -0.75, 0.3, 3.0, 16),
+        p("torso", -0.2, 4.35, -1.0, 1.0, 16),
+        p("arm_left", 2.5, 4.35, -4.5, -1.5, 10),
+        p("arm_right", 2.5, 4.35, 1.5, 4.5, 10),
+        p("shoulders_neck", 4.75, 6.3, -1.0, 1.0, 13),
+        p("head", 6.45, 8.35, -1.0, 1.0, 13),
+    ]
+}
+
+/// Options of the reconstruction.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct BodyOptions {
+    /// GEC terms J per section.
+    pub terms: usize,
+    /// PDE parameter a.
+    pub a: f64,
+    /// Tessellation intervals per piece in u, and around v.
+    pub nu_per_piece: usize,
+    pub nv: usize,
+    /// How the chain is built.
+    pub method: super::Method,
+    /// How the GEC fit gives the slice points their angle (phase alignment
+    /// across sections matters: the chain interpolates harmonic by harmonic).
+    #[serde(skip)]
+    pub param: crate::curve::gec::fit::Param,
+}
+
+impl Default for BodyOptions {
+    fn default() -> Self {
+        BodyOptions {
+            terms: 10,
+            a: -0.5,
+            nu_per_piece: 12,
+            nv: 72,
+            method: super::Method::GlobalC2,
+            param: crate::curve::gec::fit::Param::ChordLength,
+        }
+    }
+}
+
+/// A reconstructed part.
+#[derive(Clone, Debug)]
+pub struct Part {
+    pub spec: PartSpec,
+    /// The sliced polylines (the "ground truth" sections).
+    pub polylines: Vec<Polyline>,
+    pub sections: Vec<Section>,
+    pub chain: Chain,
+    pub mesh: Mesh,
+    /// Largest relative GEC fit error (ErM / diagonal) of its sections.
+    pub fit_erm_rel: f64,
+}
+
+/// Errors and data size of a reconstruction.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct BodyReport {
+    pub body_height: f64,
+    /// Reconstruction (vertices and triangle centroids) to the skin.
+    pub recon_to_skin: DistanceStats,
+    /// Skin vertices in the covered parts to the reconstruction.
+    pub skin_to_recon: DistanceStats,
+    pub recon_to_skin_rms_rel: f64,
+    pub recon_to_skin_max_rel: f64,
+    pub skin_to_recon_rms_rel: f64,
+    pub skin_to_recon_max_rel: f64,
+    /// Per part: name, sections, pieces, worst 6x6 condition, worst fit ErM
+    /// (relative), skin-to-recon RMS / max relative to the body height.
+    pub parts: Vec<PartReport>,
+    /// Numbers stored by the sections (u + Fourier3 coefficients).
+    pub section_numbers: usize,
+    /// Numbers of the GEC form: the height, the centre and 2 x 2 coefficients
+    /// per term (3 + 4J per section; the frame is the common horizontal one).
+    pub gec_numbers: usize,
+    /// Patch coefficients (6 per coordinate per Fourier term per patch).
+    pub patch_coefficients: usize,
+    /// Skin vertices covered by the parts, and their coordinates (3 each).
+    pub covered_vertices: usize,
+    pub covered_vertex_numbers: usize,
+    pub recon_triangles: usize,
+}
+
+/// Per-part numbers.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct PartReport {
+    pub name: String,
+    pub sections: usize,
+    pub pieces: usize,
+    pub max_condition: f64,
+    pub fit_erm_rel: f64,
+    pub skin_to_recon_rms_rel: f64,
+    pub skin_to_recon_max_rel: f64,
+    pub c2_jump: f64,
+    /// Reconstruction of this part to the skin, relative to the body height.
+    pub recon_to_skin_rms_rel: f64,
+    pub recon_to_skin_max_rel: f64,
+}
+
+fn dedupe(points: &[[f64; 3]], scale: f64) -> Vec<[f64; 3]> {
+    let mut out: Vec<[f64; 3]> = Vec::with_capacity(points.len());
+    for p in points {
+        if out
+            .last()
+            .is_none_or(|q| crate::mesh::dist(*p, *q) > 1e-9 * scale)
+        {
+            out.push(*p);
+        }
+    }
+    while out.len() > 1 && crate::mesh::dist(out[0], out[out.len() - 1]) <= 1e-9 * scale {
+        out.pop();
+    }
+    out
+}
+
+fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, Pde6Error> {
+    slice(m, [0.0, y, 0.0], [0.0, 1.0, 0.0])
+        .into_iter()
+        .filter(|l| l.closed && l.points.len() >= 8)
+        .filter(|l| {
+            let c = l.centroid();
+            c[0] >= spec.x_range.0 && c[0] <= spec.x_range.1
+        })
+        .max_by(|a, b| a.length().total_cmp(&b.length()))
+        .ok_or_else(|| Pde6Error::Body(format!("{}: no closed section at y = {y:.3}", spec.name)))
+}
+
+/// Reconstructs one part of `skin`.
+pub fn reconstruct_part(
+    skin: &Mesh,
+    spec: &PartSpec,
+    opts: &BodyOptions,
+) -> Result<Part, Pde6Error> {
+    let m = spec.sections;
+    let mut polylines = Vec::with_capacity(m);
+    let mut sections = Vec::with_capacity(m);
+    let mut fit_erm_rel: f64 = 0.0;
+    for i in 0..m {
+        let y = spec.y_range.0 + (spec.y_range.1 - spec.y_range.0) * i as f64 / (m - 1) as f64;
+        let l = pick_loop(skin, y, spec)?;
+        let pts = dedupe(&l.points, l.length());
+        let frame = Frame::new([0.0, y, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0])
+            .map_err(|e| Pde6Error::Body(e.to_string()))?;
+        let terms = opts.terms.min(pts.len().saturating_sub(1) / 2).max(1);
+        let mut fo = FitOptions::new(terms);
+        fo.frame = FrameChoice::Given(frame);
+        fo.param = opts.param;
+        let r = fit(&pts, &fo)
+            .map_err(|e| Pde6Error::Body(format!("{} section {i}: {e}", spec.name)))?;
+        fit_erm_rel = fit_erm_rel.max(r.errors.erm_rel);
+        sections.push(Section {
+            u: y,
+            curve: r.gec.to_fourier3().with_harmonics(opts.terms),
+        });
+        polylines.push(Polyline {
+            points: pts,
+            closed: true,
+        });
+    }
+    let chain = match opts.method {
+        super::Method::GlobalC2 => Chain::c2_global(opts.a, &sections)?,
+        super::Method::SharedCurves => {
+            Chain::method1(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
+        }
+        super::Method::CarriedDerivatives => {
+            Chain::method2(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
+        }
+    };
+    let mesh = tessellate(
+        &chain,
+        Tessellation {
+            nu: opts.nu_per_piece * chain.pieces.len(),
+            nv: opts.nv,
+        },
+    );
+    let mut mesh = mesh;
+    mesh.set_single_group(spec.name);
+    Ok(Part {
+        spec: spec.clone(),
+        polylines,
+        sections,
+        chain,
+        mesh,
+        fit_erm_rel,
+    })
+}
+
+/// Reconstructs all `parts` of `skin` and measures the result.
+pub fn reconstruct(
+    skin: &Mesh,
+    parts: &[PartSpec],
+    opts: &BodyOptions,
+) -> Result<(Vec<Part>, Mesh, BodyReport), Pde6Error> {
+    if skin.positions.is_empty() {
+        return Err(Pde6Error::Body("empty mesh".into()));
+    }
+    let (lo, hi) = skin.bbox();
+    let height = hi[1] - lo[1];
+    let mut out = Vec::new();
+    let mut all = Mesh::default();
+    let mut part_reports = Vec::new();
+    let mut covered: Vec<[f64; 3]> = Vec::new();
+    for spec in parts {
+        let p = reconstruct_part(skin, spec, opts)?;
+        let own: Vec<[f64; 3]> = skin
+            .positions
+            .iter()
+            .filter(|q| {
+                q[1] >= spec.y_range.0
+                    && q[1] <= spec.y_range.1
+                    && q[0] >= spec.x_range.0
+                    && q[0] <= spec.x_range.1
+            })
+            .copied()
+            .collect();
+        let d = stats(&point_distances(&own, &p.mesh));
+        let j = super::check::join_jumps(&p.chain);
+        let r = stats(&point_distances(&p.mesh.positions, skin));
+        part_reports.push(PartReport {
+            name: spec.name.into(),
+            sections: p.sections.len(),
+            pieces: p.chain.pieces.len(),
+            max_condition: p.chain.max_condition(),
+            fit_erm_rel: p.fit_erm_rel,
+            skin_to_recon_rms_rel: d.rms / height,
+            skin_to_recon_max_rel: d.max / height,
+            c2_jump: j[0].max(j[1]).max(j[2]),
+            recon_to_skin_rms_rel: r.rms / height,
+            recon_to_skin_max_rel: r.max / height,
+        });
+        covered.extend(own);
+        all.append(&p.mesh);
+        out.push(p);
+    }
+    let r2s = stats(&point_distances(
+        &crate::mesh::metrics::sample_points(&all),
+        skin,
+    ));
+    let s2r = stats(&point_distances(&covered, &all));
+    let n_sections: usize = out.iter().map(|p| p.sections.len()).sum();
+    let per = 3 * (1 + 2 * opts.terms);
+    let report = BodyReport {
+        body_height: height,
+        recon_to_skin: r2s,
+        skin_to_recon: s2r,
+        recon_to_skin_rms_rel: r2s.rms / height,
+        recon_to_skin_max_rel: r2s.max / height,
+        skin_to_recon_rms_rel: s2r.rms / height,
+        skin_to_recon_max_rel: s2r.max / height,
+        parts: part_reports,
+        section_numbers: n_sections * (1 + per),
+        gec_numbers: n_sections * (3 + 4 * opts.terms),
+        patch_coefficients: out.iter().map(|p| p.chain.coefficient_count()).sum(),
+        covered_vertices: covered.len(),
+        covered_vertex_numbers: 3 * covered.len(),
+        recon_triangles: all.triangles.len(),
+    };
+    Ok((out, all, report))
+}

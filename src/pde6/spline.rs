@@ -1,0 +1,172 @@
+//! A stable C2 chain: the conditions of method 2 solved globally as a
+//! two-point problem (pdesculpt's construction, not the paper's).
+//!
+//! Method 2 (eqs 24-27) propagates the slope and curvature patch by patch.
+//! Per harmonic that is a linear recursion $(A', A'')_{j+1} = T (A', A'')_j +
+//! b_j$ whose matrix has eigenvalues $\lambda, 1/\lambda$; for the quintic
+//! $\lambda = -(13 + \sqrt{165})/2 \approx -12.92$ (`verify/pde6_closed_form.py`,
+//! check `pde6.method2_amplification`): every patch multiplies the growing
+//! mode by ~13, so a chain of more than two or three patches through real
+//! data oscillates wildly (the cubic-spline recursion has the same structure
+//! with $2 + \sqrt3$). As for cubic splines the cure is to impose one
+//! condition at each end and solve all patches together:
+//!
+//! * $M = 3P + 1$ sections, piece $p$ through sections $3p, \dots, 3p+3$;
+//! * C1 and C2 (in the global u) at the $P - 1$ interior joins;
+//! * at each end the u-curvature of the six-point (method 1) patch through the
+//!   six end sections.
+//!
+//! That is $4P + 2(P-1) + 2 = 6P$ conditions for $6P$ coefficients per
+//! harmonic; the matrix is the same for every coefficient of a harmonic, so it
+//! is factorised once per harmonic.
+
+use super::chain::{validate_sections, Method, Piece, Section};
+use super::mode::{Condition, ModeBasis};
+use super::patch::{HarmonicCoef, Patch};
+use super::{Chain, Pde6Error};
+use crate::curve::Fourier3;
+use nalgebra::{DMatrix, DVector};
+
+/// Largest 1-norm condition number accepted for the global system.
+pub const MAX_GLOBAL_CONDITION: f64 = 1e12;
+
+impl Chain {
+    /// The globally solved C2 chain through `sections` (M = 3P + 1 >= 7).
+    pub fn c2_global(a: f64, sections: &[Section]) -> Result<Chain, Pde6Error> {
+        validate_sections(sections, 7, 1)?;
+        let m = sections.len();
+        let p_count = (m - 1) / 3;
+        let big_n = sections[0].curve.harmonics();
+        // end curvatures (global u) from six-point patches at both ends
+        let head = Chain::method1_window(a, &sections[..6])?;
+        let tail = Chain::method1_window(a, &sections[m - 6..])?;
+        let k_start = head.global_section(sections[0].u, 2);
+        let k_end = tail.global_section(sections[m - 1].u, 2);
+        let geo: Vec<(f64, f64, [f64; 4])> = (0..p_count)
+            .map(|p| {
+                let w = &sections[3 * p..3 * p + 4];
+                let (o, l) = (w[0].u, w[3].u - w[0].u);
+                (o, l, [0.0, (w[1].u - o) / l, (w[2].u - o) / l, 1.0])
+            })
+            .collect();
+        let size = 6 * p_count;
+        let mut coefs: Vec<Vec<HarmonicCoef>> = vec![Vec::with_capacity(big_n + 1); p_count];
+        let mut bases = Vec::with_capacity(big_n + 1);
+        let mut worst_condition: f64 = 0.0;
+        for n in 0..=big_n {
+            let b = ModeBasis::new(a, n);
+            let row = |c: Condition| -> [f64; 6] {
+                let (u, d) = match c {
+                    Condition::Value(u) => (u, 0),
+                    Condition::Slope(u) => (u, 1),
+                    Condition::Curvature(u) => (u, 2),
+                };
+                b.jet2(u)[d]
+            };
+            let mut mat = DMatrix::<f64>::zeros(size, size);
+            let mut r = 0;
+            for (p, (_, _, nodes)) in geo.iter().enumerate() {
+                for &x in nodes {
+                    mat.view_mut((r, 6 * p), (1, 6))
+                        .copy_from_slice(&row(Condition::Value(x)));
+                    r += 1;
+                }
+            }
+            for p in 0..p_count - 1 {
+                let (l0, l1) = (geo[p].1, geo[p + 1].1);
+                for d in 1..=2 {
+                    let (ca, cb) = if d == 1 {
+                        (Condition::Slope(1.0), Condition::Slope(0.0))
+                    } else {
+                        (Condition::Curvature(1.0), Condition::Curvature(0.0))
+                    };
+                    let (ra, rb) = (row(ca), row(cb));
+                    for j in 0..6 {
+                        mat[(r, 6 * p + j)] = ra[j] / l0.powi(d);
+                        mat[(r, 6 * (p + 1) + j)] = -rb[j] / l1.powi(d);
+                    }
+                    r += 1;
+                }
+            }
+            let rs = row(Condition::Curvature(0.0));
+            let re = row(Condition::Curvature(1.0));
+            let (l_first, l_last) = (geo[0].1, geo[p_count - 1].1);
+            for j in 0..6 {
+                mat[(r, j)] = rs[j] / (l_first * l_first);
+                mat[(r + 1, 6 * (p_count - 1) + j)] = re[j] / (l_last * l_last);
+            }
+            let lu = mat.clone().full_piv_lu();
+            let inv = lu.try_inverse().ok_or(Pde6Error::Singular { q: b.q })?;
+            let condition = norm1(&mat) * norm1(&inv);
+            if !condition.is_finite() || condition > MAX_GLOBAL_CONDITION {
+                return Err(Pde6Error::IllConditioned { q: b.q, condition });
+            }
+            worst_condition = worst_condition.max(condition);
+            let mut hc: Vec<HarmonicCoef> = vec![[[[0.0; 6]; 2]; 3]; p_count];
+            for k in 0..3 {
+                for cs in 0..2 {
+                    if n == 0 && cs == 1 {
+                        continue;
+                    }
+                    let pick = |f: &Fourier3| -> f64 {
+                        let (x, y) = f.harmonic(n, k);
+                        if cs == 0 {
+                            x
+                        } else {
+                            y
+                        }
+                    };
+                    let mut rhs = DVector::<f64>::zeros(size);
+                    let mut r = 0;
+                    for p in 0..p_count {
+                        for i in 0..4 {
+                            rhs[r] = pick(&sections[3 * p + i].curve);
+                            r += 1;
+                        }
+                    }
+                    r += 2 * (p_count - 1);
+                    rhs[r] = pick(&k_start);
+                    rhs[r + 1] = pick(&k_end);
+                    let mut x = &inv * &rhs;
+                    let res = &rhs - &mat * &x;
+                    x += &inv * res;
+                    for (p, hp) in hc.iter_mut().enumerate() {
+                        for j in 0..6 {
+                            hp[k][cs][j] = x[6 * p + j];
+                        }
+                    }
+                }
+            }
+            for (p, hp) in hc.into_iter().enumerate() {
+                coefs[p].push(hp);
+            }
+            bases.push(b);
+        }
+        let pieces = coefs
+            .into_iter()
+            .zip(&geo)
+            .map(|(coef, &(o, l, _))| Piece {
+                patch: Patch {
+                    a,
+                    basis: bases.clone(),
+                    coef,
+                    max_condition: worst_condition,
+                },
+                origin: o,
+                length: l,
+                start: o,
+                end: o + l,
+            })
+            .collect();
+        Ok(Chain {
+            method: Method::GlobalC2,
+            pieces,
+        })
+    }
+}
+
+fn norm1(m: &DMatrix<f64>) -> f64 {
+    m.column_iter()
+        .map(|c| c.iter().map(|x| x.abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}
