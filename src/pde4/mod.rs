@@ -26,6 +26,7 @@ pub mod check;
 pub mod force;
 pub mod four_sided;
 pub mod quad;
+pub mod spec;
 pub mod two_sided;
 
 pub use force::{Force, ForceKind};
