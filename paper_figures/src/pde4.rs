@@ -5,8 +5,9 @@
 //! * `000-fig2`: 4-sided deformations of the MakeHuman body in regions drawn
 //!   as closed curves: small (nose), narrow band (arm), irregular (chest).
 //! * `000-fig8`: a torso from boundary curves and tangents with a sculpting
-//!   force: shape parameters 1.0 and 0.3, changed boundary curve, changed
-//!   tangents.
+//!   force: shape parameter a = 1.0 and 0.3 (read as the smoothing parameter
+//!   of $a_1 = 1$, $a_2 = 2a^2$, $a_3 = a^4$: scaling all three alike only
+//!   rescales the force response), changed boundary curve, changed tangents.
 //! * `000-fig14`: one curve and one drag make a chest deformation.
 //! * `000-pde4-plate`: printed eqs 14-15 vs the Galerkin solution vs classical
 //!   clamped-plate values, with the Galerkin convergence.
@@ -20,7 +21,7 @@ use pdesculpt::pde4::check::{self as pc, plate_centre};
 use pdesculpt::pde4::four_sided::{self, FourSided};
 use pdesculpt::pde4::two_sided::{self, Boundary, TwoSided};
 use pdesculpt::pde4::{Force, ForceKind, ShapeParams};
-use pdesculpt::render::{render, Image, Overlay, RenderOptions, View};
+use pdesculpt::render::{render, render_with_camera, Camera, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, Revolution, Tessellation};
 use plotters::prelude::*;
 use std::f64::consts::PI;
@@ -82,7 +83,7 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         kind: ForceKind::Concentrated { u0: 0.5, v0: 0.2 },
         p: {
             let d = up(0.2);
-            [0.6 * d[0], 0.0, 0.6 * d[2]]
+            [30.0 * d[0], 0.0, 30.0 * d[2]]
         },
     };
     let line = Force {
@@ -93,7 +94,7 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         },
         p: {
             let d = up(0.6);
-            [1.2 * d[0], 0.0, 1.2 * d[2]]
+            [90.0 * d[0], 0.0, 90.0 * d[2]]
         },
     };
     let area = Force {
@@ -105,7 +106,7 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         },
         p: {
             let d = up(0.875);
-            [60.0 * d[0], 0.0, 60.0 * d[2]]
+            [1500.0 * d[0], 0.0, 1500.0 * d[2]]
         },
     };
     let t = Tessellation { nu: 80, nv: 96 };
@@ -190,9 +191,36 @@ fn region_panel(
     };
     let moved = r.region.len();
     Ok((
-        render(&r.mesh, &o),
+        render_with_camera(&r.mesh, &o, &torso_camera(&o)),
         serde_json::json!({"moved_vertices": moved, "magnitude": r.magnitude, "drag": drag}),
     ))
+}
+
+/// Camera framing the upper body.
+fn torso_camera(o: &RenderOptions) -> Camera {
+    Camera::fit_box(
+        [-1.5, 1.5, -1.0],
+        [3.5, 8.0, 2.0],
+        o.view,
+        o.width,
+        o.height,
+        0.02,
+    )
+}
+
+/// Ellipse in the plane `z = c[2]` with its long axis along `dir` (unit, in x-y).
+fn band(c: [f64; 3], dir: [f64; 2], long: f64, short: f64, k: usize) -> Vec<[f64; 3]> {
+    (0..k)
+        .map(|i| {
+            let a = 2.0 * PI * i as f64 / k as f64;
+            let (p, q) = (long * a.cos(), short * a.sin());
+            [
+                c[0] + p * dir[0] - q * dir[1],
+                c[1] + p * dir[1] + q * dir[0],
+                c[2],
+            ]
+        })
+        .collect()
 }
 
 fn body() -> anyhow::Result<Mesh> {
@@ -202,13 +230,13 @@ fn body() -> anyhow::Result<Mesh> {
 }
 
 fn chest_curve() -> Vec<[f64; 3]> {
-    ellipse([0.75, 3.1, 1.6], 0.7, 0.75, 40, 0.12)
+    ellipse([0.75, 3.75, 1.6], 0.6, 0.7, 40, 0.12)
 }
 
 fn fig2(ctx: &Ctx) -> anyhow::Result<()> {
     let b = body()?;
     let nose = ellipse([0.0, 7.0, 1.7], 0.18, 0.3, 24, 0.0);
-    let arm = ellipse([3.0, 3.0, 0.3], 0.35, 0.12, 24, 0.0);
+    let arm = band([2.65, 4.05, 0.6], [0.62, -0.78], 0.75, 0.14, 40);
     let (a, ja) = region_panel(
         &b,
         &nose,
@@ -277,7 +305,7 @@ fn fig14(ctx: &Ctx) -> anyhow::Result<()> {
         }],
         ..Default::default()
     };
-    let before = render(&b, &o);
+    let before = render_with_camera(&b, &o, &torso_camera(&o));
     let (after, j) = region_panel(
         &b,
         &curve,
@@ -309,8 +337,8 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     let base = Boundary {
         curve0: ring(1.0, 0.0, 0.8),
         curve1: ring(1.0, 3.0, 0.8),
-        tangent0: ring(0.0, 3.0, 0.8),
-        tangent1: ring(0.0, 3.0, 0.8),
+        tangent0: ring(2.5, 3.0, 0.8),
+        tangent1: ring(-2.5, 3.0, 0.8),
     };
     let force = Force {
         kind: ForceKind::Area {
@@ -319,25 +347,25 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
             v0: 0.15,
             v1: 0.35,
         },
-        p: [0.0, 0.0, 40.0],
+        p: [0.0, 0.0, 300.0],
     };
     let mut curves = base.clone();
     curves.curve1 = ring(0.6, 3.0, 1.0);
     let mut tangents = base.clone();
-    tangents.tangent0 = ring(2.5, 3.0, 0.8);
-    tangents.tangent1 = ring(-2.5, 3.0, 0.8);
+    tangents.tangent0 = ring(6.0, 3.0, 0.8);
+    tangents.tangent1 = ring(-6.0, 3.0, 0.8);
     let cases: Vec<(&str, f64, &Boundary, Vec<Force>)> = vec![
-        ("a: boundary curves only", 1.0, &base, vec![]),
+        ("a: boundary curves only", 0.3, &base, vec![]),
         ("b: shape parameters 1.0", 1.0, &base, vec![force]),
         ("c: shape parameters 0.3", 0.3, &base, vec![force]),
-        ("d: changed boundary curve", 1.0, &curves, vec![force]),
-        ("e: changed tangents", 1.0, &tangents, vec![force]),
+        ("d: changed boundary curve", 0.3, &curves, vec![force]),
+        ("e: changed tangents", 0.3, &tangents, vec![force]),
     ];
     let mut panels = Vec::new();
     let mut data = Vec::new();
     for (name, a, b, fs) in cases {
         let s = TwoSided::new(
-            [ShapeParams::uniform(a); 3],
+            [ShapeParams::plate_ratio(a); 3],
             &fs,
             24,
             8,
@@ -364,7 +392,7 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     Image::hstack(&panels, WHITE).save_png(&ctx.path("000-fig8.png"))?;
     ctx.write_json(
         "000-fig8.json",
-        &serde_json::json!({"terms": [24, 8], "panels": data}),
+        &serde_json::json!({"terms": [24, 8], "shape": "a1 = 1, a2 = 2 a^2, a3 = a^4", "panels": data}),
     )?;
     Ok(())
 }

@@ -118,7 +118,10 @@ pub struct RegionDeformation {
 }
 
 /// Local frame of the curve: origin, `e1`, `e2`, normal.
-fn curve_frame(curve: &[[f64; 3]]) -> Result<([f64; 3], [f64; 3], [f64; 3], [f64; 3]), Pde4Error> {
+/// Origin, `e1`, `e2`, normal.
+type Frame = ([f64; 3], [f64; 3], [f64; 3], [f64; 3]);
+
+fn curve_frame(curve: &[[f64; 3]]) -> Result<Frame, Pde4Error> {
     use crate::mesh::{add, dot, norm, scale, sub};
     let n = curve.len() as f64;
     let c = scale(curve.iter().fold([0.0; 3], |a, p| add(a, *p)), 1.0 / n);
@@ -129,7 +132,7 @@ fn curve_frame(curve: &[[f64; 3]]) -> Result<([f64; 3], [f64; 3], [f64; 3], [f64
         nn = add(nn, crate::surface::cross(a, b));
     }
     let ln = norm(nn);
-    if !(ln > 0.0) {
+    if ln.is_nan() || ln <= 0.0 {
         return Err(Pde4Error::Degenerate(
             "the drawn curve encloses no area".into(),
         ));
@@ -209,7 +212,7 @@ pub fn deform_region<D: Surface>(
     let dir = match direction {
         Direction::Vector(d) => {
             let l = norm(d);
-            if !(l > 0.0) || !l.is_finite() {
+            if l.is_nan() || l <= 0.0 || !l.is_finite() {
                 return Err(Pde4Error::Degenerate(
                     "direction vector is zero or not finite".into(),
                 ));
@@ -243,7 +246,7 @@ pub fn deform_region<D: Surface>(
         .map(|(_, uv)| deformation.point(uv[0], uv[1])[0])
         .collect();
     let wmax = w.iter().fold(0.0f64, |a, b| a.max(b.abs()));
-    if !(wmax > 0.0) || !wmax.is_finite() {
+    if wmax.is_nan() || wmax <= 0.0 || !wmax.is_finite() {
         return Err(Pde4Error::Degenerate(
             "the deformation vanishes on the region".into(),
         ));

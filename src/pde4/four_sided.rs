@@ -154,8 +154,8 @@ impl FourSided {
                 d
             }),
             Method::Galerkin => {
-                let au = gram(m, |i, x| basis_b(i, x));
-                let av = gram(n, |i, x| basis_psi(i, x));
+                let au = gram(m, basis_b);
+                let av = gram(n, basis_psi);
                 let loads: Vec<(Vec<f64>, Vec<f64>)> =
                     forces.iter().map(|f| load_vectors(f, m, n)).collect();
                 let mut out: Vec<Vec<f64>> = Vec::with_capacity(3);

@@ -117,7 +117,7 @@ fn ecs<T: Real>(a: f64, sigma: f64, x: T) -> (T, T) {
             if k > 0 {
                 fact_even *= ((2 * k - 1) * (2 * k)) as f64;
                 fact_odd *= ((2 * k) * (2 * k + 1)) as f64;
-                pw = pw * x2;
+                pw *= x2;
                 sk *= sigma;
             }
             c += pw * (sk / fact_even);
