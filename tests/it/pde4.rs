@@ -220,3 +220,152 @@ proptest! {
         prop_assert!(s.point(0.0, 0.4).iter().chain(s.point(0.6, 1.0).iter()).all(|x| x.abs() < tol::ROUNDING));
     }
 }
+
+#[test]
+fn deformed_surface_is_c1_across_the_window() {
+    use pdesculpt::pde4::apply::Deformed;
+    use pdesculpt::surface::Revolution;
+    let part = Revolution { r0: 1.0, r1: 0.2 };
+    let d = TwoSided::new(
+        [ShapeParams::PLATE; 3],
+        &sample_forces(),
+        12,
+        6,
+        two_sided::Method::Exact,
+        None,
+    )
+    .unwrap();
+    let g = Deformed::new(part, d, (0.2, 0.8), (0.0, 1.0), 50.0).unwrap();
+    // inside the window the surface moves, at its edges position and u-derivative match the base
+    let moved = (0..8)
+        .map(|i| {
+            pdesculpt::mesh::dist(
+                g.point(0.5, i as f64 / 8.0),
+                part.point(0.5, i as f64 / 8.0),
+            )
+        })
+        .fold(0.0, f64::max);
+    assert!(moved > tol::SOLVE);
+    for i in 0..8 {
+        let v = i as f64 / 8.0;
+        for u in [0.2, 0.8] {
+            let (a, b) = (g.derivative(u, v, 1, 0), part.derivative(u, v, 1, 0));
+            let (pa, pb) = (g.point(u, v), part.point(u, v));
+            for k in 0..3 {
+                assert!((a[k] - b[k]).abs() < tol::SOLVE && (pa[k] - pb[k]).abs() < tol::SOLVE);
+            }
+        }
+    }
+    assert!(Deformed::new(part, g.deformation.clone(), (0.8, 0.2), (0.0, 1.0), 1.0).is_err());
+    assert!(Deformed::new(part, g.deformation.clone(), (0.2, 1.2), (0.0, 1.0), 1.0).is_err());
+}
+
+#[test]
+fn region_deformation_moves_only_enclosed_vertices_by_the_drag() {
+    use pdesculpt::mesh::Mesh;
+    use pdesculpt::pde4::apply::{deform_region, Direction};
+    // a flat 41 x 41 grid in z = 0, a closed curve: circle of radius 0.3 about (0.5, 0.5)
+    let n = 41;
+    let mut pos = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            pos.push([i as f64 / (n - 1) as f64, j as f64 / (n - 1) as f64, 0.0]);
+        }
+    }
+    let mut tri = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            let a = (i * n + j) as u32;
+            tri.push([a, a + n as u32, a + 1]);
+            tri.push([a + 1, a + n as u32, a + n as u32 + 1]);
+        }
+    }
+    let mesh = Mesh::new(pos, tri);
+    let curve: Vec<[f64; 3]> = (0..48)
+        .map(|k| {
+            let t = 2.0 * std::f64::consts::PI * k as f64 / 48.0;
+            [0.5 + 0.3 * t.cos(), 0.5 + 0.3 * t.sin(), 0.0]
+        })
+        .collect();
+    let d = FourSided::new(
+        [ShapeParams::PLATE; 3],
+        &[Force {
+            kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+            p: [1.0; 3],
+        }],
+        8,
+        8,
+        four_sided::Method::Galerkin,
+    )
+    .unwrap();
+    let drag = 0.1;
+    let r = deform_region(
+        &mesh,
+        &curve,
+        &d,
+        Direction::Vector([0.0, 0.0, 2.0]),
+        drag,
+        0.5,
+    )
+    .unwrap();
+    let mut zmax = 0.0f64;
+    for (i, (a, b)) in r.mesh.positions.iter().zip(&mesh.positions).enumerate() {
+        let inside = ((b[0] - 0.5).powi(2) + (b[1] - 0.5).powi(2)).sqrt() < 0.3;
+        if !inside {
+            assert_eq!(a, b, "vertex {i} outside the curve moved");
+        }
+        assert_eq!((a[0], a[1]), (b[0], b[1]));
+        zmax = zmax.max(a[2].abs());
+    }
+    assert!((zmax - drag).abs() < tol::ROUNDING);
+    // degenerate inputs
+    assert!(deform_region(&mesh, &curve[..2], &d, Direction::Normal, drag, 0.5).is_err());
+    assert!(deform_region(&mesh, &curve, &d, Direction::Vector([0.0; 3]), drag, 0.5).is_err());
+    assert!(deform_region(&mesh, &curve, &d, Direction::Normal, f64::NAN, 0.5).is_err());
+}
+
+#[test]
+fn cli_eval_matches_library_and_rejects_bad_specs() {
+    let dir = std::env::temp_dir().join(format!("pde4_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = dir.join("s.json");
+    std::fs::write(&spec, r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+        .args(["--json", "pde4", "eval"])
+        .arg(&spec)
+        .args(["--at", "0.5,0.5"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let got = v["points"][0]["t"][0].as_f64().unwrap();
+    let want = plate_centre(
+        ShapeParams::PLATE,
+        ForceKind::Uniform,
+        8,
+        four_sided::Method::Galerkin,
+    );
+    assert!((got - want).abs() <= tol::ROUNDING * want.abs());
+    for bad in [
+        r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":0,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[0,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"line","u0":0.7,"u1":0.2,"v0":0.1,"p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided""#,
+    ] {
+        std::fs::write(&spec, bad).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+            .args(["pde4", "eval"])
+            .arg(&spec)
+            .args(["--at", "0.5,0.5"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{bad}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("error"));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
