@@ -9,6 +9,8 @@
 //!   of $a_1 = 1$, $a_2 = 2a^2$, $a_3 = a^4$: scaling all three alike only
 //!   rescales the force response), changed boundary curve, changed tangents.
 //! * `000-fig14`: one curve and one drag make a chest deformation.
+//! * `000-pde4-twosided`: one Fourier mode of a 2-sided patch, printed eqs 7-9
+//!   vs residual-minimising coefficients vs the exact solution.
 //! * `000-pde4-plate`: printed eqs 14-15 vs the Galerkin solution vs classical
 //!   clamped-plate values, with the Galerkin convergence.
 
@@ -58,6 +60,12 @@ pub fn figures() -> Vec<Figure> {
             paper: "000",
             title: "printed vs Galerkin vs clamped-plate theory",
             run: fig_plate,
+        },
+        Figure {
+            id: "000-pde4-twosided",
+            paper: "000",
+            title: "2-sided mode: printed eqs 7-9 vs least squares vs exact",
+            run: fig_two_sided,
         },
     ]
 }
@@ -525,3 +533,101 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
 }
 
 const WHITE_RGB: RGBColor = RGBColor(255, 255, 255);
+
+fn fig_two_sided(ctx: &Ctx) -> anyhow::Result<()> {
+    let force = [Force {
+        kind: ForceKind::Line {
+            u0: 0.2,
+            u1: 0.7,
+            v0: 0.0,
+        },
+        p: [1.0, 0.0, 0.0],
+    }];
+    let us: Vec<f64> = (0..=100).map(|i| i as f64 / 100.0).collect();
+    let mut data = Vec::new();
+    let mut curves = Vec::new();
+    for (label, p) in [
+        ("a = (1, 2, 1)", ShapeParams::PLATE),
+        ("a = 0.3", ShapeParams::uniform(0.3)),
+    ] {
+        let mut row = serde_json::Map::new();
+        for (name, meth) in [
+            ("exact", two_sided::Method::Exact),
+            ("printed", two_sided::Method::Paper),
+            ("least-squares", two_sided::Method::LeastSquares),
+        ] {
+            let s = TwoSided::new([p; 3], &force, 16, 2, meth, None)?;
+            // mode n = 1 (cos 2 pi v) of component x
+            let w: Vec<f64> = us.iter().map(|&u| s.comps[0].mode(1).eval(u)).collect();
+            row.insert(name.into(), serde_json::json!(w));
+            curves.push((format!("{name}, {label}"), w));
+        }
+        let ex = row["exact"]
+            .as_array()
+            .map(|a| a.iter().filter_map(|x| x.as_f64()).collect::<Vec<_>>())
+            .unwrap_or_default();
+        let sc = ex.iter().fold(0.0f64, |a, b| a.max(b.abs()));
+        for name in ["printed", "least-squares"] {
+            let w: Vec<f64> = row[name]
+                .as_array()
+                .map(|a| a.iter().filter_map(|x| x.as_f64()).collect())
+                .unwrap_or_default();
+            row.insert(
+                format!("{name}_max_rel_diff_vs_exact"),
+                serde_json::json!(pdesculpt::check::max_abs_diff(&w, &ex) / sc),
+            );
+        }
+        row.insert("params".into(), serde_json::json!(label));
+        data.push(serde_json::Value::Object(row));
+    }
+    ctx.write_json("000-pde4-twosided.json", &serde_json::json!({"force": "line u in [0.2, 0.7], v0 = 0, p = 1", "mode": "cos 2 pi v", "terms": [16, 2], "u": us, "cases": data}))?;
+    let path = ctx.path("000-pde4-twosided.png");
+    let lo = curves
+        .iter()
+        .flat_map(|c| c.1.iter())
+        .fold(0.0f64, |a, b| a.min(*b));
+    let hi = curves
+        .iter()
+        .flat_map(|c| c.1.iter())
+        .fold(0.0f64, |a, b| a.max(*b));
+    let root = BitMapBackend::new(&path, (900, 520)).into_drawing_area();
+    root.fill(&WHITE_RGB)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "2-sided patch, Fourier mode cos 2πv of a line force",
+            ("sans-serif", 20),
+        )
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(0.0f64..1.0, (lo * 1.1)..(hi * 1.1))?;
+    chart
+        .configure_mesh()
+        .x_desc("u")
+        .y_desc("mode amplitude")
+        .label_style(("sans-serif", 14))
+        .draw()?;
+    let colours = [BLACK, RED, BLUE, BLACK, RED, BLUE];
+    for (i, (name, w)) in curves.iter().enumerate() {
+        let c = colours[i];
+        let width = if i < 3 { 2 } else { 1 };
+        chart
+            .draw_series(LineSeries::new(
+                us.iter().copied().zip(w.iter().copied()),
+                c.stroke_width(width),
+            ))?
+            .label(name.clone())
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(width))
+            });
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE_RGB.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 12))
+        .position(SeriesLabelPosition::LowerLeft)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
