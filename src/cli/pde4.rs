@@ -51,6 +51,7 @@ enum Cmd {
     },
     /// Deform the mesh region enclosed by a closed curve (four-sided spec).
     Apply {
+        /// The JSON spec (must be four-sided; its x component is the profile).
         spec: PathBuf,
         /// JSON list of `[x, y, z]` points of the closed curve.
         #[arg(long)]
