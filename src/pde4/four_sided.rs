@@ -159,21 +159,11 @@ impl FourSided {
                 let loads: Vec<(Vec<f64>, Vec<f64>)> =
                     forces.iter().map(|f| load_vectors(f, m, n)).collect();
                 let mut out: Vec<Vec<f64>> = Vec::with_capacity(3);
+                // factorisations reused between components with equal parameters
+                let mut factors: Vec<(ShapeParams, nalgebra::Cholesky<f64, nalgebra::Dyn>)> =
+                    Vec::new();
                 for k in 0..3 {
                     let p = &params[k];
-                    let mut kmat = DMatrix::zeros(m * n, m * n);
-                    for i in 0..m {
-                        for j in 0..n {
-                            for a in 0..m {
-                                for b in 0..n {
-                                    kmat[(i * n + j, a * n + b)] =
-                                        p.a1 * au[2][(i, a)] * av[0][(j, b)]
-                                            + p.a2 * au[1][(i, a)] * av[1][(j, b)]
-                                            + p.a3 * au[0][(i, a)] * av[2][(j, b)];
-                                }
-                            }
-                        }
-                    }
                     let mut rhs = DVector::zeros(m * n);
                     for (f, (lu, lv)) in forces.iter().zip(&loads) {
                         if f.p[k] == 0.0 {
@@ -185,11 +175,36 @@ impl FourSided {
                             }
                         }
                     }
-                    let chol = kmat.cholesky().ok_or_else(|| {
-                        Pde4Error::Degenerate(format!(
-                            "Galerkin stiffness matrix not positive definite (M = {m}, N = {n})"
-                        ))
-                    })?;
+                    if rhs.iter().all(|x| *x == 0.0) {
+                        out.push(vec![0.0; m * n]);
+                        continue;
+                    }
+                    if !factors.iter().any(|(q, _)| q == p) {
+                        let mut kmat = DMatrix::zeros(m * n, m * n);
+                        for i in 0..m {
+                            for j in 0..n {
+                                for a in 0..m {
+                                    for b in 0..n {
+                                        kmat[(i * n + j, a * n + b)] =
+                                            p.a1 * au[2][(i, a)] * av[0][(j, b)]
+                                                + p.a2 * au[1][(i, a)] * av[1][(j, b)]
+                                                + p.a3 * au[0][(i, a)] * av[2][(j, b)];
+                                    }
+                                }
+                            }
+                        }
+                        let chol = kmat.cholesky().ok_or_else(|| {
+                            Pde4Error::Degenerate(format!(
+                                "Galerkin stiffness matrix not positive definite (M = {m}, N = {n})"
+                            ))
+                        })?;
+                        factors.push((*p, chol));
+                    }
+                    let chol = factors
+                        .iter()
+                        .find(|(q, _)| q == p)
+                        .map(|(_, c)| c)
+                        .ok_or_else(|| Pde4Error::Degenerate("missing factorisation".into()))?;
                     out.push(chol.solve(&rhs).iter().copied().collect());
                 }
                 let mut it = out.into_iter();
