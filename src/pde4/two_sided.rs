@@ -173,6 +173,16 @@ impl Mode {
         acc
     }
 
+    /// `w(u)` in f64 from a table `sines[m-1] = sin(m pi u)` (fast grids).
+    pub fn eval_table(&self, u: f64, sines: &[f64]) -> f64 {
+        let mut acc: f64 = self.sines.iter().zip(sines).map(|(c, s)| c * s).sum();
+        let b = self.hom.basis(u);
+        for j in 0..4 {
+            acc += b[j] * self.h[j];
+        }
+        acc
+    }
+
     /// Exact clamped mode: `a1 w'''' - a2 w^2 w'' + a3 w^4 w = sum f_m sin m pi u`,
     /// `(w(0), w(1), w'(0), w'(1)) = bc`.
     pub fn exact(p: &ShapeParams, omega: f64, f: &[f64], bc: [f64; 4]) -> Result<Mode, Pde4Error> {
@@ -470,10 +480,14 @@ impl Surface for TwoSided {
         }
         let mut out = vec![[0.0; 3]; us.len() * vs.len()];
         let mut w = vec![0.0; nm];
+        let mut sines = vec![0.0; self.m];
         for (iu, &u) in us.iter().enumerate() {
+            for (i, s) in sines.iter_mut().enumerate() {
+                *s = (PI * (i + 1) as f64 * u).sin();
+            }
             for k in 0..3 {
                 for j in 0..nm {
-                    w[j] = self.comps[k].modes[j].eval(u);
+                    w[j] = self.comps[k].modes[j].eval_table(u, &sines);
                 }
                 for iv in 0..vs.len() {
                     let t = &trig[iv * nm..(iv + 1) * nm];
