@@ -20,6 +20,13 @@
 //!   Ritz-Galerkin solution in the same basis, validated against classical
 //!   clamped-plate values.
 //! * [`apply`]: deforming surfaces and mesh regions.
+//! * [`spec`]: the JSON spec of `pdesculpt pde4`.
+//!
+//! Documented parameter ranges (swept by the property tests): $a_1, a_3 \in
+//! [0.05, 5]$, $a_2 = \tau\,2\sqrt{a_1a_3}$ with $\tau \in (-0.95, 4)$; force
+//! positions and ranges anywhere in $[0, 1]$ with widths $\ge 0.02$;
+//! $1 \le M, N \le$ [`MAX_TERMS`] (the exact 2-sided solver is checked to
+//! rounding for every such case; the Galerkin solve is dense, $(MN)^3/3$ flops).
 
 pub mod apply;
 pub mod check;
