@@ -1,10 +1,176 @@
-//! `pdesculpt pde4` (not implemented yet).
+//! `pdesculpt pde4`: fourth-order sculpting deformations (paper 000 sec 3.1).
+//!
+//! ## The JSON spec
+//! ```json
+//! {
+//!   "patch": "two-sided",            // or "four-sided"
+//!   "method": "exact",               // two-sided: exact | paper | least-squares; four-sided: galerkin | paper
+//!   "shape": {"a1": 1.0, "a2": 2.0, "a3": 1.0},   // or a list of three, one per x, y, z
+//!   "terms": [16, 8],                // [M, N], 1..=256 (N may be 0 for two-sided)
+//!   "forces": [
+//!     {"type": "concentrated", "u0": 0.5, "v0": 0.25, "p": [0, 0, 1]},
+//!     {"type": "line", "u0": 0.2, "u1": 0.7, "v0": 0.5, "p": [0, 1, 0]},
+//!     {"type": "area", "u0": 0.2, "u1": 0.7, "v0": 0.1, "v1": 0.4, "p": [1, 0, 0]},
+//!     {"type": "uniform", "p": [0, 0, 1]}
+//!   ],
+//!   "boundary": null                 // two-sided exact only: {"curve0", "curve1", "tangent0", "tangent1"},
+//!                                    // each {"c0": [x,y,z], "cos": [[..]..], "sin": [[..]..]} in theta = 2 pi v
+//! }
+//! ```
+//! Parameters are patch-local in `[0, 1]`; the output is the displacement
+//! `(x, y, z)(u, v)` of PDE (1).
+//!
+//! `eval SPEC --at u,v ...` prints displacements. `apply SPEC --curve
+//! CURVE.json (--mesh IN | --makehuman) --out OUT --drag D` deforms the mesh
+//! region enclosed by a closed curve (a JSON list of `[x, y, z]`) with the
+//! first component of a four-sided spec, re-parameterised onto the unit square
+//! (000 Fig 14).
+
+use anyhow::{bail, Context};
+use pdesculpt::pde4::apply::{deform_region, Direction};
+use pdesculpt::pde4::spec::{Patch, PatchKind, Spec};
+use pdesculpt::surface::Surface;
+use std::path::PathBuf;
 
 /// Arguments of `pdesculpt pde4`.
 #[derive(clap::Args, Debug)]
-pub struct Args {}
+pub struct Args {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(clap::Subcommand, Debug)]
+enum Cmd {
+    /// Evaluate a deformation spec at parameter points.
+    Eval {
+        /// The JSON spec (see `pdesculpt pde4 --help` and src/cli/pde4.rs).
+        spec: PathBuf,
+        /// A parameter point `u,v` (repeatable).
+        #[arg(long = "at", required = true)]
+        at: Vec<String>,
+    },
+    /// Deform the mesh region enclosed by a closed curve (four-sided spec).
+    Apply {
+        /// The JSON spec (must be four-sided; its x component is the profile).
+        spec: PathBuf,
+        /// JSON list of `[x, y, z]` points of the closed curve.
+        #[arg(long)]
+        curve: PathBuf,
+        /// Input mesh (OBJ/STL/PLY).
+        #[arg(long, conflicts_with = "makehuman")]
+        mesh: Option<PathBuf>,
+        /// Use the MakeHuman base body.
+        #[arg(long)]
+        makehuman: bool,
+        /// Output mesh (format from the extension).
+        #[arg(long)]
+        out: PathBuf,
+        /// Largest displacement (the drag distance).
+        #[arg(long)]
+        drag: f64,
+        /// Move only vertices within this distance of the curve plane.
+        #[arg(long, default_value_t = 1.0)]
+        depth: f64,
+        /// Direction `x,y,z`; default the vertex normals.
+        #[arg(long)]
+        direction: Option<String>,
+    },
+}
+
+fn parse_list(s: &str, n: usize, what: &str) -> anyhow::Result<Vec<f64>> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|t| t.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .with_context(|| format!("{what} '{s}' is not a comma-separated list of numbers"))?;
+    if v.len() != n || v.iter().any(|x| !x.is_finite()) {
+        bail!("{what} '{s}' needs {n} finite numbers");
+    }
+    Ok(v)
+}
+
+fn load_spec(path: &PathBuf) -> anyhow::Result<Spec> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    serde_json::from_str(&text).with_context(|| format!("parsing spec {}", path.display()))
+}
 
 /// Runs `pdesculpt pde4`.
-pub fn run(_args: Args, _json: bool) -> anyhow::Result<i32> {
-    anyhow::bail!("'pdesculpt pde4' is not implemented yet")
+pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    match args.cmd {
+        Cmd::Eval { spec, at } => {
+            let sp = load_spec(&spec)?;
+            let patch = sp.solve()?;
+            let mut rows = Vec::new();
+            for a in &at {
+                let uv = parse_list(a, 2, "--at")?;
+                if !(0.0..=1.0).contains(&uv[0]) || !(0.0..=1.0).contains(&uv[1]) {
+                    bail!("--at {a}: u and v must lie in [0, 1]");
+                }
+                let p = patch.point(uv[0], uv[1]);
+                if p.iter().any(|x| !x.is_finite()) {
+                    bail!("non-finite displacement at {a} (printed coefficients singular for these parameters?)");
+                }
+                rows.push(serde_json::json!({"u": uv[0], "v": uv[1], "t": p}));
+                if !json {
+                    println!(
+                        "u={} v={}  t=({:.9e}, {:.9e}, {:.9e})",
+                        uv[0], uv[1], p[0], p[1], p[2]
+                    );
+                }
+            }
+            if json {
+                super::print_json(&serde_json::json!({"spec": sp, "points": rows}))?;
+            }
+            Ok(0)
+        }
+        Cmd::Apply {
+            spec,
+            curve,
+            mesh,
+            makehuman,
+            out,
+            drag,
+            depth,
+            direction,
+        } => {
+            let sp = load_spec(&spec)?;
+            if sp.patch != PatchKind::FourSided {
+                bail!("'apply' needs a four-sided spec (the region is re-parameterised onto the unit square)");
+            }
+            let patch: Patch = sp.solve()?;
+            let text = std::fs::read_to_string(&curve)
+                .with_context(|| format!("reading {}", curve.display()))?;
+            let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
+                format!("parsing curve {} (a list of [x, y, z])", curve.display())
+            })?;
+            let base = match (mesh, makehuman) {
+                (Some(p), false) => pdesculpt::mesh::io::read(&p)
+                    .with_context(|| format!("reading {}", p.display()))?,
+                (None, true) => pdesculpt::makehuman::base_body()?.mesh,
+                _ => bail!("give --mesh PATH or --makehuman"),
+            };
+            let dir = match direction {
+                Some(d) => {
+                    let v = parse_list(&d, 3, "--direction")?;
+                    Direction::Vector([v[0], v[1], v[2]])
+                }
+                None => Direction::Normal,
+            };
+            let r = deform_region(&base, &pts, &patch, dir, drag, depth)?;
+            pdesculpt::mesh::io::write(&r.mesh, &out)
+                .with_context(|| format!("writing {}", out.display()))?;
+            eprintln!(
+                "moved {} vertices, magnitude {:.6e}",
+                r.region.len(),
+                r.magnitude
+            );
+            if json {
+                super::print_json(
+                    &serde_json::json!({"moved": r.region.len(), "magnitude": r.magnitude, "out": out}),
+                )?;
+            }
+            Ok(0)
+        }
+    }
 }

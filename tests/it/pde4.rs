@@ -1,1 +1,371 @@
-//! Integration tests of the pde4 family (none yet).
+//! Integration tests of the pde4 family.
+
+use pdesculpt::check::tol;
+use pdesculpt::pde4::check::{
+    checks, plate_centre, rel, sample_boundary, sample_forces, two_sided_boundary,
+    two_sided_residual, PLATE_SQUARE_UNIFORM_PRECISE,
+};
+use pdesculpt::pde4::four_sided::{self, FourSided};
+use pdesculpt::pde4::two_sided::{self, TwoSided};
+use pdesculpt::pde4::{Force, ForceKind, Pde4Error, ShapeParams};
+use pdesculpt::surface::Surface;
+use proptest::prelude::*;
+
+/// Lowest acceptable observed convergence order of the Galerkin centre deflection.
+const MIN_ORDER: f64 = 2.5;
+
+#[test]
+fn pde4_checks_pass() {
+    let cs = checks();
+    assert!(cs.len() >= 20);
+    for c in &cs {
+        assert!(
+            c.passed,
+            "{} measured {:e} tol {:e}: {}",
+            c.name, c.measured, c.tolerance, c.note
+        );
+    }
+}
+
+#[test]
+fn galerkin_convergence_order() {
+    // uniformly loaded clamped square: error vs 0.00126532 at M = N = 8, 12, 16
+    let errs: Vec<(f64, f64)> = [8usize, 12, 16]
+        .iter()
+        .map(|&t| {
+            let w = plate_centre(
+                ShapeParams::PLATE,
+                ForceKind::Uniform,
+                t,
+                four_sided::Method::Galerkin,
+            );
+            (t as f64, rel(w, PLATE_SQUARE_UNIFORM_PRECISE))
+        })
+        .collect();
+    for w in errs.windows(2) {
+        let order = (w[0].1 / w[1].1).ln() / (w[1].0 / w[0].0).ln();
+        eprintln!("order between M = {} and {}: {order:.2}", w[0].0, w[1].0);
+        assert!(order > MIN_ORDER, "order {order}");
+    }
+    assert!(errs[2].1 < tol::TABLE_4_DIGITS);
+}
+
+#[test]
+fn bad_input_is_rejected() {
+    let f = [Force {
+        kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+        p: [1.0; 3],
+    }];
+    let ok = [ShapeParams::PLATE; 3];
+    let e = |p: [ShapeParams; 3], f: &[Force], m, n| {
+        TwoSided::new(p, f, m, n, two_sided::Method::Exact, None).err()
+    };
+    assert!(matches!(
+        e(
+            [ShapeParams {
+                a1: 0.0,
+                a2: 1.0,
+                a3: 1.0
+            }; 3],
+            &f,
+            4,
+            4
+        ),
+        Some(Pde4Error::NonPositiveA1(_))
+    ));
+    assert!(matches!(
+        e(
+            [ShapeParams {
+                a1: 1.0,
+                a2: -3.0,
+                a3: 1.0
+            }; 3],
+            &f,
+            4,
+            4
+        ),
+        Some(Pde4Error::NotElliptic { .. })
+    ));
+    assert!(matches!(
+        e(
+            [ShapeParams {
+                a1: 1.0,
+                a2: 1.0,
+                a3: 0.0
+            }; 3],
+            &f,
+            4,
+            4
+        ),
+        Some(Pde4Error::NotElliptic { .. })
+    ));
+    assert!(matches!(
+        e(
+            [ShapeParams {
+                a1: f64::NAN,
+                a2: 1.0,
+                a3: 1.0
+            }; 3],
+            &f,
+            4,
+            4
+        ),
+        Some(Pde4Error::NonFinite { .. })
+    ));
+    assert!(matches!(e(ok, &f, 0, 4), Some(Pde4Error::Terms { .. })));
+    assert!(matches!(e(ok, &[], 4, 4), Some(Pde4Error::NoForces)));
+    let line = [Force {
+        kind: ForceKind::Line {
+            u0: 0.6,
+            u1: 0.4,
+            v0: 0.5,
+        },
+        p: [1.0; 3],
+    }];
+    assert!(matches!(
+        e(ok, &line, 4, 4),
+        Some(Pde4Error::EmptyRange { .. })
+    ));
+    let out = [Force {
+        kind: ForceKind::Concentrated { u0: 1.5, v0: 0.5 },
+        p: [1.0; 3],
+    }];
+    assert!(matches!(
+        e(ok, &out, 4, 4),
+        Some(Pde4Error::OutsidePatch { .. })
+    ));
+    let nan = [Force {
+        kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+        p: [f64::NAN, 0.0, 0.0],
+    }];
+    assert!(matches!(
+        e(ok, &nan, 4, 4),
+        Some(Pde4Error::NonFinite { .. })
+    ));
+    assert!(FourSided::new(ok, &f, 4, 0, four_sided::Method::Galerkin).is_err());
+    assert!(FourSided::new(ok, &out, 4, 4, four_sided::Method::Galerkin).is_err());
+}
+
+fn params() -> impl Strategy<Value = ShapeParams> {
+    (0.05f64..5.0, 0.05f64..5.0, -0.95f64..4.0).prop_map(|(a1, a3, t)| ShapeParams {
+        a1,
+        a2: t * 2.0 * (a1 * a3).sqrt(),
+        a3,
+    })
+}
+
+fn force() -> impl Strategy<Value = Force> {
+    (
+        0usize..3,
+        0.0f64..1.0,
+        0.0f64..1.0,
+        0.02f64..1.0,
+        0.02f64..1.0,
+        -2.0f64..2.0,
+    )
+        .prop_map(|(k, a, b, la, lb, p)| {
+            let (u0, v0) = (a * (1.0 - la), b * (1.0 - lb));
+            let kind = match k {
+                0 => ForceKind::Concentrated { u0: a, v0: b },
+                1 => ForceKind::Line {
+                    u0,
+                    u1: u0 + la,
+                    v0: b,
+                },
+                _ => ForceKind::Area {
+                    u0,
+                    u1: u0 + la,
+                    v0,
+                    v1: v0 + lb,
+                },
+            };
+            Force {
+                kind,
+                p: [p, 0.5 * p, -p],
+            }
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(32))]
+
+    #[test]
+    fn two_sided_exact_holds(p in params(), fs in prop::collection::vec(force(), 1..4), m in 1usize..10, n in 0usize..6) {
+        let t = TwoSided::new([p; 3], &fs, m, n, two_sided::Method::Exact, None).unwrap();
+        prop_assert!(two_sided_residual(&t, 6) < tol::SOLVE);
+        let scale = t.grid(&[0.25, 0.5], &[0.0, 0.5]).iter().flatten().fold(1.0f64, |a, b| a.max(b.abs()));
+        prop_assert!(two_sided_boundary(&t, None, 8) < tol::scaled(tol::SOLVE, scale));
+        for q in t.grid(&[0.0, 0.3, 0.7, 1.0], &[0.1, 0.9]) {
+            prop_assert!(q.iter().all(|x| x.is_finite()));
+        }
+        for meth in [two_sided::Method::Paper, two_sided::Method::LeastSquares] {
+            if let Ok(s) = TwoSided::new([p; 3], &fs, m, n, meth, None) {
+                prop_assert!(s.point(0.4, 0.3).iter().all(|x| x.is_finite()));
+            }
+        }
+    }
+
+    #[test]
+    fn two_sided_boundary_curves_hold(p in params(), m in 1usize..8) {
+        let b = sample_boundary();
+        let t = TwoSided::new([p; 3], &sample_forces(), m, 3, two_sided::Method::Exact, Some(&b)).unwrap();
+        prop_assert!(two_sided_boundary(&t, Some(&b), 8) < tol::SOLVE);
+    }
+
+    #[test]
+    fn four_sided_galerkin_is_finite_and_clamped(p in params(), fs in prop::collection::vec(force(), 1..3), m in 1usize..7, n in 1usize..7) {
+        let s = FourSided::new([p; 3], &fs, m, n, four_sided::Method::Galerkin).unwrap();
+        let g = s.grid(&[0.0, 0.3, 0.5, 1.0], &[0.0, 0.2, 0.5, 1.0]);
+        prop_assert!(g.iter().flatten().all(|x| x.is_finite()));
+        prop_assert!(s.point(0.0, 0.4).iter().chain(s.point(0.6, 1.0).iter()).all(|x| x.abs() < tol::ROUNDING));
+    }
+}
+
+#[test]
+fn deformed_surface_is_c1_across_the_window() {
+    use pdesculpt::pde4::apply::Deformed;
+    use pdesculpt::surface::Revolution;
+    let part = Revolution { r0: 1.0, r1: 0.2 };
+    let d = TwoSided::new(
+        [ShapeParams::PLATE; 3],
+        &sample_forces(),
+        12,
+        6,
+        two_sided::Method::Exact,
+        None,
+    )
+    .unwrap();
+    let g = Deformed::new(part, d, (0.2, 0.8), (0.0, 1.0), 50.0).unwrap();
+    // inside the window the surface moves, at its edges position and u-derivative match the base
+    let moved = (0..8)
+        .map(|i| {
+            pdesculpt::mesh::dist(
+                g.point(0.5, i as f64 / 8.0),
+                part.point(0.5, i as f64 / 8.0),
+            )
+        })
+        .fold(0.0, f64::max);
+    assert!(moved > tol::SOLVE);
+    for i in 0..8 {
+        let v = i as f64 / 8.0;
+        for u in [0.2, 0.8] {
+            let (a, b) = (g.derivative(u, v, 1, 0), part.derivative(u, v, 1, 0));
+            let (pa, pb) = (g.point(u, v), part.point(u, v));
+            for k in 0..3 {
+                assert!((a[k] - b[k]).abs() < tol::SOLVE && (pa[k] - pb[k]).abs() < tol::SOLVE);
+            }
+        }
+    }
+    assert!(Deformed::new(part, g.deformation.clone(), (0.8, 0.2), (0.0, 1.0), 1.0).is_err());
+    assert!(Deformed::new(part, g.deformation.clone(), (0.2, 1.2), (0.0, 1.0), 1.0).is_err());
+}
+
+#[test]
+fn region_deformation_moves_only_enclosed_vertices_by_the_drag() {
+    use pdesculpt::mesh::Mesh;
+    use pdesculpt::pde4::apply::{deform_region, Direction};
+    // a flat 41 x 41 grid in z = 0, a closed curve: circle of radius 0.3 about (0.5, 0.5)
+    let n = 41;
+    let mut pos = Vec::new();
+    for i in 0..n {
+        for j in 0..n {
+            pos.push([i as f64 / (n - 1) as f64, j as f64 / (n - 1) as f64, 0.0]);
+        }
+    }
+    let mut tri = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            let a = (i * n + j) as u32;
+            tri.push([a, a + n as u32, a + 1]);
+            tri.push([a + 1, a + n as u32, a + n as u32 + 1]);
+        }
+    }
+    let mesh = Mesh::new(pos, tri);
+    let curve: Vec<[f64; 3]> = (0..48)
+        .map(|k| {
+            let t = 2.0 * std::f64::consts::PI * k as f64 / 48.0;
+            [0.5 + 0.3 * t.cos(), 0.5 + 0.3 * t.sin(), 0.0]
+        })
+        .collect();
+    let d = FourSided::new(
+        [ShapeParams::PLATE; 3],
+        &[Force {
+            kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+            p: [1.0; 3],
+        }],
+        8,
+        8,
+        four_sided::Method::Galerkin,
+    )
+    .unwrap();
+    let drag = 0.1;
+    let r = deform_region(
+        &mesh,
+        &curve,
+        &d,
+        Direction::Vector([0.0, 0.0, 2.0]),
+        drag,
+        0.5,
+    )
+    .unwrap();
+    let mut zmax = 0.0f64;
+    for (i, (a, b)) in r.mesh.positions.iter().zip(&mesh.positions).enumerate() {
+        let inside = ((b[0] - 0.5).powi(2) + (b[1] - 0.5).powi(2)).sqrt() < 0.3;
+        if !inside {
+            assert_eq!(a, b, "vertex {i} outside the curve moved");
+        }
+        assert_eq!((a[0], a[1]), (b[0], b[1]));
+        zmax = zmax.max(a[2].abs());
+    }
+    assert!((zmax - drag).abs() < tol::ROUNDING);
+    // degenerate inputs
+    assert!(deform_region(&mesh, &curve[..2], &d, Direction::Normal, drag, 0.5).is_err());
+    assert!(deform_region(&mesh, &curve, &d, Direction::Vector([0.0; 3]), drag, 0.5).is_err());
+    assert!(deform_region(&mesh, &curve, &d, Direction::Normal, f64::NAN, 0.5).is_err());
+}
+
+#[test]
+fn cli_eval_matches_library_and_rejects_bad_specs() {
+    let dir = std::env::temp_dir().join(format!("pde4_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let spec = dir.join("s.json");
+    std::fs::write(&spec, r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+        .args(["--json", "pde4", "eval"])
+        .arg(&spec)
+        .args(["--at", "0.5,0.5"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let got = v["points"][0]["t"][0].as_f64().unwrap();
+    let want = plate_centre(
+        ShapeParams::PLATE,
+        ForceKind::Uniform,
+        8,
+        four_sided::Method::Galerkin,
+    );
+    assert!((got - want).abs() <= tol::ROUNDING * want.abs());
+    for bad in [
+        r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":0,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[0,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"line","u0":0.7,"u1":0.2,"v0":0.1,"p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
+        r#"{"patch":"two-sided""#,
+    ] {
+        std::fs::write(&spec, bad).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+            .args(["pde4", "eval"])
+            .arg(&spec)
+            .args(["--at", "0.5,0.5"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{bad}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("error"));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
