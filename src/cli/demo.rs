@@ -1,9 +1,14 @@
 //! `pdesculpt demo`: the main job on bundled data.
 //!
-//! For now: the MakeHuman body (a young male, morph targets applied) as
-//! GLB, OBJ and a front/side PNG in `out/`.
+//! The MakeHuman base body as template, a chest sculpt (paper 000: one
+//! curve, one drag, fourth-order PDE), a pregnancy belly (paper 001: C1
+//! plate bending, compared with MakeHuman's own pregnancy morph), and the C2 sixth-order PDE reconstruction of the result from its
+//! cross sections (paper 002). Writes into `out/`:
+//! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body, front and side),
+//! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
+//! part) and `demo.json` (what every step measured).
 
-use pdesculpt::makehuman;
+use pdesculpt::character::demo;
 use pdesculpt::mesh::io;
 use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;
@@ -18,38 +23,68 @@ pub struct Args {
 
 /// Builds the demo outputs.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
-    eprintln!("loading the MakeHuman body with targets caucasian-male-young + universal-male-young-averagemuscle-averageweight");
-    let targets = vec![
-        (makehuman::target("caucasian-male-young")?, 1.0),
-        (
-            makehuman::target("universal-male-young-averagemuscle-averageweight")?,
-            1.0,
-        ),
+    eprintln!("template: the MakeHuman base body");
+    eprintln!(
+        "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches)..."
+    );
+    let d = demo::build()?;
+    let views = |m| {
+        render_views(
+            m,
+            &[View::Front, View::Side],
+            &RenderOptions {
+                width: 400,
+                height: 800,
+                ..Default::default()
+            },
+        )
+    };
+    let files = [
+        args.out.join("demo.glb"),
+        args.out.join("demo.obj"),
+        args.out.join("demo.png"),
+        args.out.join("demo-pde6.glb"),
+        args.out.join("demo-pde6.png"),
+        args.out.join("demo.json"),
     ];
-    let body = makehuman::body(&targets)?;
-    let glb = args.out.join("demo.glb");
-    let obj = args.out.join("demo.obj");
-    let png = args.out.join("demo.png");
-    io::write(&body.mesh, &glb)?;
-    io::write(&body.mesh, &obj)?;
-    render_views(
-        &body.mesh,
-        &[View::Front, View::Side],
-        &RenderOptions {
-            width: 400,
-            height: 800,
-            ..Default::default()
-        },
-    )
-    .save_png(&png)?;
-    for p in [&glb, &obj, &png] {
+    io::write(&d.sculpted, &files[0])?;
+    io::write(&d.sculpted, &files[1])?;
+    views(&d.sculpted).save_png(&files[2])?;
+    io::write(&d.reconstruction, &files[3])?;
+    views(&d.reconstruction).save_png(&files[4])?;
+    io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
+    for e in &d.report.edits {
+        eprintln!(
+            "  {} (paper {}): {} vertices moved, max {:.3} dm, first ring inside the clamped edge {:.3} dm",
+            e.name, e.paper, e.moved_vertices, e.max_displacement, e.max_first_ring_displacement
+        );
+    }
+    let b = &d.report.belly_vs_morph;
+    eprintln!(
+        "  plate belly vs MakeHuman's pregnancy morph ({} vertices, peak {:.2} dm): RMS {:.1} % / max {:.1} % of the peak",
+        b.region_vertices,
+        b.peak,
+        100.0 * b.rms_rel,
+        100.0 * b.max_rel
+    );
+    let r = &d.report.reconstruction;
+    eprintln!(
+        "  reconstruction (paper 002): {} parts, RMS {:.2} % / max {:.2} % of body height, {} GEC numbers for {} vertex coordinates",
+        r.parts.len(),
+        100.0 * r.recon_to_skin_rms_rel,
+        100.0 * r.recon_to_skin_max_rel,
+        r.gec_numbers,
+        r.covered_vertex_numbers
+    );
+    for p in &files {
         eprintln!("wrote {}", p.display());
     }
     if json {
         super::print_json(&serde_json::json!({
-            "outputs": [glb, obj, png],
-            "vertices": body.mesh.positions.len(),
-            "triangles": body.mesh.triangles.len(),
+            "outputs": files,
+            "vertices": d.sculpted.positions.len(),
+            "triangles": d.sculpted.triangles.len(),
+            "report": d.report,
         }))?;
     }
     Ok(0)

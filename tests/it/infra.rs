@@ -239,3 +239,31 @@ fn render_draws_the_mesh_inside_the_frame() {
         }
     }
 }
+
+#[test]
+fn demo_pipeline_measures_each_step() {
+    let d = pdesculpt::character::demo::build().expect("demo builds");
+    assert_eq!(d.report.edits.len(), 2);
+    for e in &d.report.edits {
+        assert!(
+            e.moved_vertices > 50,
+            "{}: {} vertices",
+            e.name,
+            e.moved_vertices
+        );
+        assert!(e.max_first_ring_displacement < e.max_displacement);
+    }
+    // the chest drag is 0.15 dm; the plate edit is scaled to the morph's peak
+    assert!((d.report.edits[0].max_displacement - 0.15).abs() < 1e-9);
+    let b = &d.report.belly_vs_morph;
+    assert!((d.report.edits[1].max_displacement - b.peak).abs() < 1e-9 * b.peak);
+    assert!(b.rms_rel < 0.5, "plate vs morph RMS {}", b.rms_rel);
+    let r = &d.report.reconstruction;
+    assert!(
+        r.recon_to_skin_rms_rel < 5e-3,
+        "reconstruction RMS {}",
+        r.recon_to_skin_rms_rel
+    );
+    assert!(d.sculpted.validate().is_ok() && d.reconstruction.validate().is_ok());
+    assert!(d.reconstruction.groups.len() >= 7);
+}

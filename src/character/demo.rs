@@ -1,0 +1,273 @@
+//! The demo character: template, two local sculpting edits, C2 PDE
+//! reconstruction, each step measured.
+
+use crate::makehuman;
+use crate::mesh::Mesh;
+use crate::pde4::apply::{deform_region, Direction as Pde4Direction};
+use crate::pde4::force::{Force, ForceKind};
+use crate::pde4::four_sided::{self, FourSided};
+use crate::pde4::ShapeParams;
+use crate::pde6::body::{makehuman_parts, reconstruct, BodyOptions, BodyReport};
+use crate::plate::deformer::{
+    BoundaryMethod, Direction as PlateDirection, PlateDeformer, RegionOptions,
+};
+use serde::Serialize;
+use std::f64::consts::PI;
+use thiserror::Error;
+
+/// A failure of one demo step.
+#[derive(Debug, Error)]
+pub enum DemoError {
+    #[error("template")]
+    Template(#[from] crate::mesh::MeshError),
+    #[error("pde4 chest sculpt")]
+    Pde4(#[from] crate::pde4::Pde4Error),
+    #[error("plate belly push")]
+    Plate(#[from] crate::plate::PlateError),
+    #[error("pde6 reconstruction")]
+    Pde6(#[from] crate::pde6::Pde6Error),
+    #[error("{0}")]
+    Step(String),
+}
+
+/// What one local edit did.
+#[derive(Clone, Debug, Serialize)]
+pub struct EditReport {
+    pub name: &'static str,
+    pub paper: &'static str,
+    pub moved_vertices: usize,
+    /// Largest displacement (decimetres).
+    pub max_displacement: f64,
+    /// Largest displacement among the moved vertices that share a triangle
+    /// with an unmoved one (the first ring inside the clamped edge). A C1
+    /// clamped edit makes it O(h^2) in the edge spacing h, so on the coarse
+    /// MakeHuman mesh it is a visible fraction of the peak.
+    pub max_first_ring_displacement: f64,
+}
+
+/// The demo's outputs and measurements.
+#[derive(Clone, Debug)]
+pub struct Demo {
+    /// The sculpted template.
+    pub sculpted: Mesh,
+    /// Its C2 sixth-order PDE reconstruction (one group per part).
+    pub reconstruction: Mesh,
+    pub report: DemoReport,
+}
+
+/// Everything the demo measured.
+#[derive(Clone, Debug, Serialize)]
+pub struct DemoReport {
+    pub template: &'static str,
+    pub template_vertices: usize,
+    pub edits: Vec<EditReport>,
+    /// The plate edit against MakeHuman's pregnancy morph.
+    pub belly_vs_morph: BellyComparison,
+    pub reconstruction: BodyReport,
+}
+
+/// A closed curve on one side of the chest (`side` = +1 or -1), drawn in
+/// the front view (paper 000 Fig 14).
+fn chest_curve(side: f64) -> Vec<[f64; 3]> {
+    (0..40)
+        .map(|i| {
+            let a = 2.0 * PI * i as f64 / 40.0;
+            [side * 0.75 + 0.6 * a.cos(), 3.75 + 0.7 * a.sin(), 1.6]
+        })
+        .collect()
+}
+
+/// Largest displacement between two vertex buffers over the vertices in
+/// `which` (all when `None`).
+fn max_move(a: &Mesh, b: &Mesh, which: Option<&[bool]>) -> f64 {
+    a.positions
+        .iter()
+        .zip(&b.positions)
+        .enumerate()
+        .filter(|(i, _)| which.is_none_or(|w| w[*i]))
+        .map(|(_, (p, q))| crate::mesh::dist(*p, *q))
+        .fold(0.0, f64::max)
+}
+
+/// Vertices moved by more than rounding, and those of them on the boundary
+/// of the moved set (sharing a triangle with an unmoved vertex).
+fn moved_sets(a: &Mesh, b: &Mesh) -> (Vec<bool>, Vec<bool>) {
+    let moved: Vec<bool> = a
+        .positions
+        .iter()
+        .zip(&b.positions)
+        .map(|(p, q)| crate::mesh::dist(*p, *q) > 1e-12)
+        .collect();
+    let mut edge = vec![false; moved.len()];
+    for t in &b.triangles {
+        let m = t.map(|i| moved[i as usize]);
+        if m.iter().any(|&x| x) && m.iter().any(|&x| !x) {
+            for (k, &i) in t.iter().enumerate() {
+                if m[k] {
+                    edge[i as usize] = true;
+                }
+            }
+        }
+    }
+    (moved, edge)
+}
+
+fn edit_report(name: &'static str, paper: &'static str, before: &Mesh, after: &Mesh) -> EditReport {
+    let (moved, edge) = moved_sets(before, after);
+    EditReport {
+        name,
+        paper,
+        moved_vertices: moved.iter().filter(|&&m| m).count(),
+        max_displacement: max_move(before, after, None),
+        max_first_ring_displacement: max_move(before, after, Some(&edge)),
+    }
+}
+
+/// Paper 000 sec 5.1 / Fig 14: one closed curve and one drag (0.15 dm along
+/// the surface normal) per side make a chest deformation, a clamped 4-sided
+/// fourth-order PDE patch with a concentrated sculpting force (Galerkin).
+pub fn chest_sculpt(body: &Mesh) -> Result<Mesh, DemoError> {
+    let d = FourSided::new(
+        [ShapeParams::uniform(1.0); 3],
+        &[Force {
+            kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+            p: [1.0; 3],
+        }],
+        10,
+        10,
+        four_sided::Method::Galerkin,
+    )?;
+    let mut m = body.clone();
+    for side in [1.0, -1.0] {
+        m = deform_region(&m, &chest_curve(side), &d, Pde4Direction::Normal, 0.15, 0.8)?.mesh;
+    }
+    Ok(m)
+}
+
+/// Result of the pregnancy edit and its comparison with the artist's morph.
+#[derive(Clone, Debug, Serialize)]
+pub struct BellyComparison {
+    /// Region size (vertices the MakeHuman morph moves by more than
+    /// `REGION_FRACTION` of its peak).
+    pub region_vertices: usize,
+    /// Peak displacement of the morph (and of the plate edit, by scaling).
+    pub peak: f64,
+    /// RMS and max distance between the plate edit and the morph over the
+    /// region, relative to the peak.
+    pub rms_rel: f64,
+    pub max_rel: f64,
+}
+
+/// Vertices the morph moves by more than this fraction of its peak form
+/// the plate region: the artist's region, frontal enough to project.
+pub const REGION_FRACTION: f64 = 0.2;
+
+/// Paper 001 against MakeHuman's own pregnancy morph (the "female into
+/// pregnant woman" template experiment): the region the artist's morph
+/// moves is bent as a clamped plate by a forward cursor force, scaled to the
+/// morph's peak; the two are compared vertex by vertex.
+pub fn belly_push(
+    body: &Mesh,
+    original_index: &[u32],
+) -> Result<(Mesh, BellyComparison), DemoError> {
+    let morph = makehuman::target("stomach-pregnant-incr")?;
+    let mut offset = vec![[0.0; 3]; body.positions.len()];
+    let mut to_body = std::collections::HashMap::new();
+    for (i, &o) in original_index.iter().enumerate() {
+        to_body.insert(o, i);
+    }
+    for &(o, d) in &morph.offsets {
+        if let Some(&i) = to_body.get(&o) {
+            offset[i] = d;
+        }
+    }
+    let peak = offset
+        .iter()
+        .map(|d| crate::mesh::norm(*d))
+        .fold(0.0, f64::max);
+    if peak.is_nan() || peak <= 0.0 {
+        return Err(DemoError::Step(
+            "the pregnancy morph moves no body vertex".into(),
+        ));
+    }
+    let region: Vec<u32> = (0..body.positions.len())
+        .filter(|&i| crate::mesh::norm(offset[i]) > REGION_FRACTION * peak)
+        .map(|i| i as u32)
+        .collect();
+    let opts = RegionOptions {
+        // MakeHuman's vertex spacing is not uniform: the paper's alpha rule
+        // (eq 15) leaves gaps there, so the region's own mesh edges bound it
+        boundary: BoundaryMethod::MeshEdges,
+        view: Some([0.0, 0.0, 1.0]),
+        ..RegionOptions::default()
+    };
+    let plate = PlateDeformer::new(body, &region, &opts)?;
+    let unit = plate.deform(body, [0.0, 0.0, 1.0], 1.0, PlateDirection::Cursor)?;
+    let unit_peak = max_move(body, &unit, None);
+    if !(unit_peak.is_finite() && unit_peak > 0.0) {
+        return Err(DemoError::Step(format!(
+            "the plate region did not move (peak {unit_peak})"
+        )));
+    }
+    let edited = plate.deform(
+        body,
+        [0.0, 0.0, 1.0],
+        peak / unit_peak,
+        PlateDirection::Cursor,
+    )?;
+    let diffs: Vec<f64> = region
+        .iter()
+        .map(|&i| {
+            let i = i as usize;
+            let target = crate::mesh::add(body.positions[i], offset[i]);
+            crate::mesh::dist(edited.positions[i], target) / peak
+        })
+        .collect();
+    let s = crate::mesh::metrics::stats(&diffs);
+    Ok((
+        edited,
+        BellyComparison {
+            region_vertices: region.len(),
+            peak,
+            rms_rel: s.rms,
+            max_rel: s.max,
+        },
+    ))
+}
+
+/// Runs the whole demo pipeline.
+pub fn build() -> Result<Demo, DemoError> {
+    // the base body: the reconstruction's part layout (pde6::body) is
+    // fitted to its proportions
+    let base = makehuman::base_body()?;
+    let template = base.mesh;
+    let chest = chest_sculpt(&template)?;
+    let (belly, belly_vs_morph) = belly_push(&chest, &base.original_index)?;
+    let edits = vec![
+        edit_report(
+            "chest: curve + drag, 4-sided PDE (Galerkin)",
+            "000",
+            &template,
+            &chest,
+        ),
+        edit_report(
+            "belly: morph region + cursor force, C1 plate bending",
+            "001",
+            &chest,
+            &belly,
+        ),
+    ];
+    let (_, reconstruction, body_report) =
+        reconstruct(&belly, &makehuman_parts(), &BodyOptions::default())?;
+    Ok(Demo {
+        report: DemoReport {
+            template: "MakeHuman hm08 base body (skin group)",
+            template_vertices: template.positions.len(),
+            edits,
+            belly_vs_morph,
+            reconstruction: body_report,
+        },
+        sculpted: belly,
+        reconstruction,
+    })
+}
