@@ -153,7 +153,7 @@ pub fn plane(mesh: &Mesh, loc: Locator) -> Result<([f64; 3], [f64; 3]), GecError
             }
             let axis = sub(centroid(&hi), centroid(&lo));
             let n = norm(axis);
-            if !(n > 0.0) {
+            if n.is_nan() || n <= 0.0 {
                 return Err(GecError::Degenerate("limb axis has zero length".into()));
             }
             Ok((centroid(&inside), scale(axis, 1.0 / n)))
