@@ -37,6 +37,9 @@ pub const PLANARITY_TOL: f64 = 1e-6;
 /// Ratio of smallest to largest |R_ii| below which QR reports rank deficiency.
 pub const RANK_TOL: f64 = 1e-12;
 
+/// `(centre, x pairs, y pairs)` of a fitted GEC.
+pub type Coefficients = ([f64; 2], Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 /// How data points get their angle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 pub enum Param {
@@ -339,7 +342,7 @@ pub fn solve(
     thetas: &[f64],
     terms: usize,
     solver: Solver,
-) -> Result<([f64; 2], Vec<[f64; 2]>, Vec<[f64; 2]>), GecError> {
+) -> Result<Coefficients, GecError> {
     check_counts(points.len(), terms)?;
     let a = design_matrix(thetas, terms);
     let b = DMatrix::from_fn(points.len(), 2, |r, c| points[r][c]);
@@ -431,7 +434,7 @@ pub fn dft_coefficients(
     points: &[[f64; 2]],
     theta0: f64,
     terms: usize,
-) -> Result<([f64; 2], Vec<[f64; 2]>, Vec<[f64; 2]>), GecError> {
+) -> Result<Coefficients, GecError> {
     let m = points.len();
     check_counts(m, terms)?;
     let mut buf: Vec<Complex<f64>> = points.iter().map(|p| Complex::new(p[0], p[1])).collect();

@@ -85,7 +85,7 @@ impl<'a> Sampled<'a> {
                 best_d = dist;
                 best_t = t;
             }
-            if !(hss > 0.0) {
+            if hss.is_nan() || hss <= 0.0 {
                 break;
             }
             let step = (g / hss).clamp(-h, h);

@@ -46,6 +46,8 @@
 pub mod check;
 pub mod fit;
 pub mod metrics;
+pub mod study;
+pub mod transform;
 
 pub use fit::{fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice, Param, Solver};
 pub use metrics::{errors, FitErrors};
