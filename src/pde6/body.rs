@@ -55,7 +55,8 @@ pub fn makehuman_parts() -> Vec<PartSpec> {
         p("torso", -0.2, 4.35, -1.0, 1.0, 16),
         p("arm_left", 2.5, 4.35, -4.5, -1.5, 10),
         p("arm_right", 2.5, 4.35, 1.5, 4.5, 10),
-        p("shoulders_neck", 4.75, 6.3, -1.0, 1.0, 13),
+        // the chin joins the neck loop at y ~ 6.18 (spike): stop below it
+        p("shoulders_neck", 4.75, 6.15, -1.0, 1.0, 13),
         p("head", 6.45, 8.35, -1.0, 1.0, 13),
     ]
 }
