@@ -97,6 +97,10 @@ pub enum Command {
         /// Anchored sampling: number of rays.
         #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_ANCHORS)]
         anchors: usize,
+        /// Anchored sampling: how hard the rays pin theta (0 = arc length from
+        /// the +z ray, 1 = ray k at exactly 2 pi k / K).
+        #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_PULL)]
+        pull: f64,
         /// Output mesh (obj, glb, stl, ply).
         #[arg(short, long)]
         output: PathBuf,
@@ -217,6 +221,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             method,
             sampling,
             anchors,
+            pull,
             output,
         } => {
             if terms == 0 {
@@ -229,6 +234,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 Sampling::Anchored {
                     anchors,
                     samples: pdesculpt::pde6::body::DEFAULT_SAMPLES,
+                    pull,
                 }
             } else {
                 Sampling::Gec(sampling.parse().with_context(|| {

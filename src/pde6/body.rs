@@ -3,8 +3,8 @@
 //! torso, shoulders and neck, head, arms and legs; each cross section is
 //! fitted by a GEC in the common horizontal frame, with its angle given by the
 //! anchored rule of [`super::sampling`] (theta = 0 on the ray in +z from the
-//! centroid, 16 rays, arc length between them: consistent from section to
-//! section), and each part becomes a C2 method-2 [`Chain`] with u = the
+//! centroid, 16 rays pulling theta towards fixed directions, arc length
+//! between them: consistent from section to section), and each part becomes a C2 method-2 [`Chain`] with u = the
 //! height of the section and a = [`BODY_A`].
 //!
 //! Smoothness (diagnosed from diagonal ripples on torso and head): the
@@ -83,6 +83,7 @@ pub fn legacy_options() -> BodyOptions {
 /// per section.
 pub const DEFAULT_ANCHORS: usize = 16;
 pub const DEFAULT_SAMPLES: usize = 256;
+pub const DEFAULT_PULL: f64 = 0.75;
 
 /// Options of the reconstruction.
 #[derive(Clone, Copy, Debug, serde::Serialize)]
@@ -114,6 +115,7 @@ impl Default for BodyOptions {
             sampling: Sampling::Anchored {
                 anchors: DEFAULT_ANCHORS,
                 samples: DEFAULT_SAMPLES,
+                pull: DEFAULT_PULL,
             },
         }
     }
@@ -264,10 +266,14 @@ pub fn reconstruct_part(
                 let r = fit(&pts, &fo).map_err(|e| here(&e))?;
                 (r.gec, r.errors.erm_rel)
             }
-            Sampling::Anchored { anchors, samples } => {
+            Sampling::Anchored {
+                anchors,
+                samples,
+                pull,
+            } => {
                 let plane: Vec<[f64; 2]> = pts.iter().map(|p| frame.project(*p).0).collect();
-                let g =
-                    fit_anchored(&plane, frame, terms, anchors, samples).map_err(|e| here(&e))?;
+                let g = fit_anchored(&plane, frame, terms, anchors, samples, pull)
+                    .map_err(|e| here(&e))?;
                 let e = crate::curve::gec::errors(&g, &plane);
                 (g, e.erm_rel)
             }

@@ -175,9 +175,6 @@ fn anchored_sampling_does_not_depend_on_the_start_vertex() {
         |p: &[[f64; 2]]| -> Vec<[f64; 3]> { p.iter().map(|q| frame.place(q[0], q[1])).collect() };
     let (m, terms) = (120, 10);
     let base = bumpy_section(m, 0);
-    let a0 = fit_anchored(&base, frame, terms, 16, 256)
-        .unwrap()
-        .to_fourier3();
     let chord = |p: &[[f64; 2]]| {
         let mut fo = FitOptions::new(terms);
         fo.frame = FrameChoice::Given(frame);
@@ -185,39 +182,46 @@ fn anchored_sampling_does_not_depend_on_the_start_vertex() {
         fit(&to3(p), &fo).unwrap().gec.to_fourier3()
     };
     let c0 = chord(&base);
-    let (mut worst_anchored, mut worst_chord) = (0.0f64, 0.0f64);
+    let mut worst_chord = 0.0f64;
     for shift in [7, 23, 41, 77] {
-        let p = bumpy_section(m, shift);
-        // the same vertex set, the loop starts elsewhere
-        let a = fit_anchored(&p, frame, terms, 16, 256)
-            .unwrap()
-            .to_fourier3();
-        worst_anchored = worst_anchored.max(angular_slip(&a0, &a, 180));
-        worst_chord = worst_chord.max(angular_slip(&c0, &chord(&p), 180));
+        worst_chord = worst_chord.max(angular_slip(&c0, &chord(&bumpy_section(m, shift)), 180));
     }
-    // measured: anchored 0.0011 deg (resampling), chord-length rule 17.6 deg
-    assert!(
-        worst_anchored.to_degrees() < 0.05,
-        "{}",
-        worst_anchored.to_degrees()
-    );
+    // measured: chord-length rule from the first vertex 17.6 deg
     assert!(
         worst_chord.to_degrees() > 0.5,
         "{}",
         worst_chord.to_degrees()
     );
-    // reversed orientation gives the same curve too
-    let mut rev = base.clone();
-    rev.reverse();
-    let r = fit_anchored(&rev, frame, terms, 16, 256)
-        .unwrap()
-        .to_fourier3();
-    assert!(angular_slip(&a0, &r, 180).to_degrees() < 0.05);
+    for pull in [1.0, 0.75, 0.0] {
+        let anchored = |p: &[[f64; 2]]| {
+            fit_anchored(p, frame, terms, 16, 256, pull)
+                .unwrap()
+                .to_fourier3()
+        };
+        let a0 = anchored(&base);
+        let mut worst = 0.0f64;
+        for shift in [7, 23, 41, 77] {
+            // the same vertex set, the loop starts elsewhere
+            worst = worst.max(angular_slip(&a0, &anchored(&bumpy_section(m, shift)), 180));
+        }
+        // reversed orientation gives the same curve too
+        let mut rev = base.clone();
+        rev.reverse();
+        worst = worst.max(angular_slip(&a0, &anchored(&rev), 180));
+        // measured: ~0.001 deg (resampling)
+        assert!(
+            worst.to_degrees() < 0.05,
+            "pull {pull}: {}",
+            worst.to_degrees()
+        );
+    }
     // bad input is refused
-    assert!(fit_anchored(&base[..2], frame, terms, 16, 256).is_err());
-    assert!(fit_anchored(&base, frame, terms, 0, 256).is_err());
+    assert!(fit_anchored(&base[..2], frame, terms, 16, 256, 1.0).is_err());
+    assert!(fit_anchored(&base, frame, terms, 0, 256, 1.0).is_err());
+    assert!(fit_anchored(&base, frame, terms, 16, 256, 1.5).is_err());
+    assert!(fit_anchored(&base, frame, terms, 16, 256, f64::NAN).is_err());
     let flat: Vec<[f64; 2]> = (0..10).map(|k| [k as f64, 0.0]).collect();
-    assert!(fit_anchored(&flat, frame, 3, 16, 256).is_err());
+    assert!(fit_anchored(&flat, frame, 3, 16, 256, 1.0).is_err());
 }
 
 #[test]
@@ -235,7 +239,7 @@ fn body_ripples_are_removed_without_losing_accuracy() {
         let new = reconstruct_part(&body.mesh, spec, &BodyOptions::default()).unwrap();
         let (ro, so, _) = part_smoothness(&old);
         let (rn, sn, _) = part_smoothness(&new);
-        // measured u-roughness: torso 0.078 -> 0.014, shoulders 0.235 -> 0.076, head 0.245 -> 0.045
+        // measured u-roughness: torso 0.078 -> 0.014, shoulders 0.235 -> 0.071, head 0.245 -> 0.040
         assert!(rn.u < 0.5 * ro.u, "{}: {} vs {}", spec.name, rn.u, ro.u);
         assert!(rn.v < ro.v, "{}: {} vs {}", spec.name, rn.v, ro.v);
         assert!(sn < so, "{}: slip {sn} vs {so}", spec.name);
