@@ -1,21 +1,25 @@
 //! Reconstruction of a real body from cross sections (paper 002 section 4,
 //! Figs 5-6): the MakeHuman skin is cut by horizontal planes into the parts
 //! torso, shoulders and neck, head, arms and legs; each cross section is
-//! fitted by a GEC in the common horizontal frame, with its angle given by the
+//! fitted by a GEC in the common horizontal frame, its angle given by the
 //! anchored rule of [`super::sampling`] (theta = 0 on the ray in +z from the
-//! centroid, 16 rays pulling theta towards fixed directions, arc length
-//! between them: consistent from section to section), and each part becomes a C2 method-2 [`Chain`] with u = the
-//! height of the section and a = [`BODY_A`].
+//! centroid, 16 rays pulling theta towards fixed directions, arc length in
+//! between: consistent from section to section), and each part becomes a C2
+//! [`Chain`] with u = the height of the section and a = [`BODY_A`]. The result
+//! is measured against the original mesh: distances from the reconstruction
+//! to the skin, from the skin inside the covered height ranges to the
+//! reconstruction (relative to the body height), and the data size.
 //!
-//! Smoothness (diagnosed from diagonal ripples on torso and head): the
-//! ripples came mostly from a = -0.5 (the top harmonics oscillate in u
-//! between sections, see [`BODY_A`]) and partly from the v-parameterisation
-//! (the chord-length rule started at the first sliced vertex, so theta = 0
-//! slipped by up to 43 degrees between head sections). [`legacy_options`]
-//! keeps the old settings; `PartReport::roughness` / `slip_deg` measure both. The result is measured against
-//! the original mesh: distances from the reconstruction to the skin, from the
-//! skin inside the covered height ranges to the reconstruction (relative to
-//! the body height), and the data size.
+//! Smoothness. The paper gives neither a nor how section points get their
+//! angle. With a = -0.5 and the GEC fit's chord-length rule started at the
+//! first sliced vertex the torso and head showed diagonal ripples although
+//! the RMS error was 0.1 % of the height. Cause, measured (`PartReport::
+//! roughness`, the mean second difference of the unit normal): mostly a (the
+//! top harmonics oscillate in u between sections, see [`BODY_A`]; torso
+//! u-roughness 0.056 at a = -0.5, 0.016 at -0.1, 0.014 at -0.01 and at 0,
+//! sections fixed), partly the parameterisation (theta = 0 slipped by up
+//! to 43 degrees between head sections; mean slip 12 -> 2 degrees).
+//! [`legacy_options`] keeps the old settings; check `pde6.body_smoothness`.
 //!
 //! Not reconstructed (as in the paper, these need transition surfaces or
 //! other parts): hands, feet, the crotch, the armpits (y between the torso and
