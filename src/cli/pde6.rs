@@ -1,7 +1,10 @@
 //! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
 //!
 //! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
-//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...]`
+//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...] [--sampling anchored|chord|...] [--anchors K] [--pull P]`
+//!
+//! Without the global `--json` a short summary goes to stderr and nothing to
+//! stdout; with it, the report (JSON) goes to stdout.
 //! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
 //!
 //! CURVES.json: `{"sections": [{"u": 0.0, "gec": {...}}, {"u": 1.0,

@@ -276,8 +276,12 @@ pub fn reconstruct_part(
                 pull,
             } => {
                 let plane: Vec<[f64; 2]> = pts.iter().map(|p| frame.project(*p).0).collect();
-                let g = fit_anchored(&plane, frame, terms, anchors, samples, pull)
-                    .map_err(|e| here(&e))?;
+                let g = fit_anchored(&plane, frame, terms, anchors, samples, pull).map_err(
+                    |e| match e {
+                        Pde6Error::Body(m) => here(&m),
+                        other => other,
+                    },
+                )?;
                 let e = crate::curve::gec::errors(&g, &plane);
                 (g, e.erm_rel)
             }

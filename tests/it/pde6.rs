@@ -408,6 +408,14 @@ fn cli_mode_patch_and_errors() {
         .unwrap();
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("--sampling spiral"));
+    let out = std::process::Command::new(exe)
+        .args(["pde6", "body", "--pull", "2", "-o"])
+        .arg(dir.join("bad.obj"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("pull 2 outside [0, 1]"));
+    assert!(!dir.join("bad.obj").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
