@@ -11,6 +11,8 @@ use pdesculpt::render::{render, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::f64::consts::PI;
 
+mod ripples;
+
 /// The figures of the pde6 family.
 pub fn figures() -> Vec<Figure> {
     vec![
@@ -37,6 +39,12 @@ pub fn figures() -> Vec<Figure> {
             paper: "002",
             title: "A vase from an analytic profile: global C2 PDE6 chain and its convergence",
             run: fig7a,
+        },
+        Figure {
+            id: "002-body-ripples",
+            paper: "002",
+            title: "Diagonal ripples of the body: legacy, anchored parameter only, a = -0.01 only, both",
+            run: ripples::body_ripples,
         },
     ]
 }
@@ -185,7 +193,8 @@ struct Convergence {
 }
 
 fn fig7a(ctx: &Ctx) -> anyhow::Result<()> {
-    let a = BodyOptions::default().a;
+    // the vase study keeps the family's usual a = -0.5 (the body uses BODY_A)
+    let a = -0.5;
     let mut conv: Vec<Convergence> = Vec::new();
     let mut conv_a0: Vec<Convergence> = Vec::new();
     for (av, conv) in [(a, &mut conv), (0.0, &mut conv_a0)] {

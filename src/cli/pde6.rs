@@ -1,7 +1,10 @@
 //! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
 //!
 //! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
-//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...]`
+//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...] [--sampling anchored|chord|...] [--anchors K] [--pull P]`
+//!
+//! Without the global `--json` a short summary goes to stderr and nothing to
+//! stdout; with it, the report (JSON) goes to stdout.
 //! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
 //!
 //! CURVES.json: `{"sections": [{"u": 0.0, "gec": {...}}, {"u": 1.0,
@@ -16,6 +19,7 @@ use pdesculpt::curve::gec::Gec;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::jet::Jet;
 use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
+use pdesculpt::pde6::sampling::Sampling;
 use pdesculpt::pde6::{Chain, Method, Mode, ModeSolver, Section};
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
@@ -83,10 +87,23 @@ pub enum Command {
     Body {
         #[arg(long, default_value_t = 10)]
         terms: usize,
-        #[arg(long, default_value_t = -0.5, allow_hyphen_values = true)]
+        /// PDE parameter a (small |a| keeps the top harmonics from rippling between sections).
+        #[arg(long, default_value_t = pdesculpt::pde6::body::BODY_A, allow_hyphen_values = true)]
         a: f64,
         #[arg(long, value_enum, default_value_t = MethodArg::Global)]
         method: MethodArg,
+        /// How section points get their angle: anchored (rays from the
+        /// centroid, arc length between them; default) or a GEC fit rule
+        /// (chord, centripetal, uniform, polar; start at the first sliced vertex).
+        #[arg(long, default_value = "anchored")]
+        sampling: String,
+        /// Anchored sampling: number of rays.
+        #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_ANCHORS)]
+        anchors: usize,
+        /// Anchored sampling: how hard the rays pin theta (0 = arc length from
+        /// the +z ray, 1 = ray k at exactly 2 pi k / K).
+        #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_PULL)]
+        pull: f64,
         /// Output mesh (obj, glb, stl, ply).
         #[arg(short, long)]
         output: PathBuf,
@@ -186,7 +203,18 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if json {
                 super::print_json(&summary)?;
             } else {
-                println!("{}", serde_json::to_string_pretty(&summary)?);
+                eprintln!(
+                    "wrote {} ({} sections, {} pieces, {:?}, a = {a}): {} triangles, worst condition {:.3e}, join jumps C0/C1/C2 {:.2e} {:.2e} {:.2e}",
+                    output.display(),
+                    sections.len(),
+                    chain.pieces.len(),
+                    chain.method,
+                    mesh.triangles.len(),
+                    chain.max_condition(),
+                    jumps[0],
+                    jumps[1],
+                    jumps[2]
+                );
             }
             Ok(0)
         }
@@ -194,11 +222,28 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             terms,
             a,
             method,
+            sampling,
+            anchors,
+            pull,
             output,
         } => {
             if terms == 0 {
                 bail!("--terms must be at least 1");
             }
+            let sampling = if sampling == "anchored" {
+                if anchors == 0 {
+                    bail!("--anchors must be at least 1");
+                }
+                Sampling::Anchored {
+                    anchors,
+                    samples: pdesculpt::pde6::body::DEFAULT_SAMPLES,
+                    pull,
+                }
+            } else {
+                Sampling::Gec(sampling.parse().with_context(|| {
+                    format!("--sampling {sampling}: expected anchored, chord, centripetal, uniform or polar")
+                })?)
+            };
             let body = pdesculpt::makehuman::base_body()?;
             eprintln!(
                 "pde6 body: slicing, fitting and solving {} parts",
@@ -208,6 +253,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 terms,
                 a,
                 method: method.method(),
+                sampling,
                 ..BodyOptions::default()
             };
             let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), &opts)?;
@@ -215,7 +261,28 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if json {
                 super::print_json(&report)?;
             } else {
-                println!("{}", serde_json::to_string_pretty(&report)?);
+                let h = 100.0;
+                eprintln!(
+                    "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %",
+                    output.display(),
+                    report.recon_triangles,
+                    report.body_height,
+                    h * report.recon_to_skin_rms_rel,
+                    h * report.recon_to_skin_max_rel,
+                    h * report.skin_to_recon_rms_rel,
+                    h * report.skin_to_recon_max_rel
+                );
+                for p in &report.parts {
+                    eprintln!(
+                        "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg",
+                        p.name,
+                        h * p.recon_to_skin_rms_rel,
+                        h * p.recon_to_skin_max_rel,
+                        p.roughness.u,
+                        p.roughness.v,
+                        p.slip_deg
+                    );
+                }
             }
             Ok(0)
         }

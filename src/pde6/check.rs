@@ -648,5 +648,6 @@ pub fn checks() -> Vec<Check> {
                 .note("fast tensor-product grid vs the generic jet-capable evaluation on a 24 x 17 grid of a method-2 chain"),
         );
     }
+    super::check_body::body_smoothness_checks(&mut out);
     out
 }

@@ -130,7 +130,8 @@ fn body_reconstruction_is_accurate_and_c2() {
     .unwrap();
     assert_eq!(parts.len(), 7);
     mesh.validate().unwrap();
-    // measured: rms 0.10 %, max 1.6 % of the height (reconstruction to skin)
+    // measured: rms 0.063 %, max 1.6 % of the height (reconstruction to skin;
+    // legacy a = -0.5 + chord parameter: 0.104 %, 1.62 %)
     assert!(
         r.recon_to_skin_rms_rel < 0.003,
         "{}",
@@ -150,6 +151,114 @@ fn body_reconstruction_is_accurate_and_c2() {
         assert!(p.c2_jump < SOLVE_TOL, "{} {}", p.name, p.c2_jump);
     }
     assert!(r.gec_numbers < r.covered_vertex_numbers);
+}
+
+/// An irregular star-shaped section (2:1, with bumps), `m` vertices
+/// starting at vertex `shift` of the loop.
+fn bumpy_section(m: usize, shift: usize) -> Vec<[f64; 2]> {
+    (0..m)
+        .map(|k| {
+            let t = 2.0 * PI * ((k + shift) % m) as f64 / m as f64
+                + 0.3 * (3.0 * PI * k as f64 / m as f64).sin().powi(2) / m as f64;
+            let r = 1.0 + 0.15 * (3.0 * t).cos() + 0.05 * (7.0 * t).sin();
+            [2.0 * r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+#[test]
+fn anchored_sampling_does_not_depend_on_the_start_vertex() {
+    use pdesculpt::curve::gec::fit::{fit, FitOptions, FrameChoice, Param};
+    use pdesculpt::pde6::sampling::{angular_slip, fit_anchored, section_frame};
+    let frame = section_frame(0.0).unwrap();
+    let to3 =
+        |p: &[[f64; 2]]| -> Vec<[f64; 3]> { p.iter().map(|q| frame.place(q[0], q[1])).collect() };
+    let (m, terms) = (120, 10);
+    let base = bumpy_section(m, 0);
+    let chord = |p: &[[f64; 2]]| {
+        let mut fo = FitOptions::new(terms);
+        fo.frame = FrameChoice::Given(frame);
+        fo.param = Param::ChordLength;
+        fit(&to3(p), &fo).unwrap().gec.to_fourier3()
+    };
+    let c0 = chord(&base);
+    let mut worst_chord = 0.0f64;
+    for shift in [7, 23, 41, 77] {
+        worst_chord = worst_chord.max(angular_slip(&c0, &chord(&bumpy_section(m, shift)), 180));
+    }
+    // measured: chord-length rule from the first vertex 17.6 deg
+    assert!(
+        worst_chord.to_degrees() > 0.5,
+        "{}",
+        worst_chord.to_degrees()
+    );
+    for pull in [1.0, 0.75, 0.0] {
+        let anchored = |p: &[[f64; 2]]| {
+            fit_anchored(p, frame, terms, 16, 256, pull)
+                .unwrap()
+                .to_fourier3()
+        };
+        let a0 = anchored(&base);
+        let mut worst = 0.0f64;
+        for shift in [7, 23, 41, 77] {
+            // the same vertex set, the loop starts elsewhere
+            worst = worst.max(angular_slip(&a0, &anchored(&bumpy_section(m, shift)), 180));
+        }
+        // reversed orientation gives the same curve too
+        let mut rev = base.clone();
+        rev.reverse();
+        worst = worst.max(angular_slip(&a0, &anchored(&rev), 180));
+        // measured: ~0.001 deg (resampling)
+        assert!(
+            worst.to_degrees() < 0.05,
+            "pull {pull}: {}",
+            worst.to_degrees()
+        );
+    }
+    // bad input is refused
+    assert!(fit_anchored(&base[..2], frame, terms, 16, 256, 1.0).is_err());
+    assert!(fit_anchored(&base, frame, terms, 0, 256, 1.0).is_err());
+    assert!(fit_anchored(&base, frame, terms, 16, 256, 1.5).is_err());
+    assert!(fit_anchored(&base, frame, terms, 16, 256, f64::NAN).is_err());
+    let flat: Vec<[f64; 2]> = (0..10).map(|k| [k as f64, 0.0]).collect();
+    assert!(fit_anchored(&flat, frame, 3, 16, 256, 1.0).is_err());
+}
+
+#[test]
+fn body_ripples_are_removed_without_losing_accuracy() {
+    use pdesculpt::pde6::body::{
+        legacy_options, makehuman_parts, part_smoothness, reconstruct_part, BodyOptions,
+    };
+    let body = pdesculpt::makehuman::base_body().unwrap();
+    let height = 16.659;
+    for spec in makehuman_parts()
+        .iter()
+        .filter(|p| ["torso", "head", "shoulders_neck"].contains(&p.name))
+    {
+        let old = reconstruct_part(&body.mesh, spec, &legacy_options()).unwrap();
+        let new = reconstruct_part(&body.mesh, spec, &BodyOptions::default()).unwrap();
+        let (ro, so, _) = part_smoothness(&old);
+        let (rn, sn, _) = part_smoothness(&new);
+        // measured u-roughness: torso 0.078 -> 0.014, shoulders 0.235 -> 0.071, head 0.245 -> 0.040
+        assert!(rn.u < 0.5 * ro.u, "{}: {} vs {}", spec.name, rn.u, ro.u);
+        assert!(rn.v < ro.v, "{}: {} vs {}", spec.name, rn.v, ro.v);
+        assert!(sn < so, "{}: slip {sn} vs {so}", spec.name);
+        // accuracy: the new surface is no further from the skin
+        let d = |p: &pdesculpt::pde6::body::Part| {
+            pdesculpt::mesh::metrics::stats(&pdesculpt::mesh::metrics::point_distances(
+                &p.mesh.positions,
+                &body.mesh,
+            ))
+        };
+        let (dold, dnew) = (d(&old), d(&new));
+        assert!(
+            dnew.rms <= dold.rms,
+            "{}: rms {} vs {}",
+            spec.name,
+            dnew.rms / height,
+            dold.rms / height
+        );
+    }
 }
 
 #[test]
@@ -273,6 +382,40 @@ fn cli_mode_patch_and_errors() {
     );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(v["recon_to_skin_rms_rel"].as_f64().unwrap() < 0.003);
+    // without --json: nothing on stdout, a short summary on stderr
+    for args in [
+        vec!["pde6", "body", "--sampling", "chord", "--a", "-0.5", "-o"],
+        vec!["pde6", "patch", "--a", "0.4", "-o"],
+    ] {
+        let mut cmd = std::process::Command::new(exe);
+        cmd.args(&args).arg(dir.join("quiet.obj"));
+        if args[1] == "patch" {
+            cmd.arg(&file);
+        }
+        let out = cmd.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out.stdout.is_empty(), "{args:?} printed on stdout");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("wrote"));
+    }
+    let out = std::process::Command::new(exe)
+        .args(["pde6", "body", "--sampling", "spiral", "-o"])
+        .arg(dir.join("bad.obj"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--sampling spiral"));
+    let out = std::process::Command::new(exe)
+        .args(["pde6", "body", "--pull", "2", "-o"])
+        .arg(dir.join("bad.obj"))
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("pull 2 outside [0, 1]"));
+    assert!(!dir.join("bad.obj").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
