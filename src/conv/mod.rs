@@ -20,6 +20,8 @@ pub mod check;
 pub mod fit;
 pub mod kernel;
 pub mod model;
+pub mod shapes;
+pub mod silhouette;
 pub mod sketch;
 pub mod skeleton;
 pub mod stroke;

@@ -58,6 +58,9 @@ pub struct SkeletonTriangle {
 pub struct SkeletonOptions {
     /// $\beta$ of the pruning criterion; 0 disables pruning.
     pub overlap: f64,
+    /// A terminal circle smaller than `tiny` times the next circle is pruned
+    /// too (ears of three nearly collinear stroke points; our addition).
+    pub tiny: f64,
     /// Sample count per circle for the intersection area of sleeve circles.
     pub area_samples: usize,
 }
@@ -66,6 +69,7 @@ impl Default for SkeletonOptions {
     fn default() -> Self {
         SkeletonOptions {
             overlap: 0.5,
+            tiny: 0.2,
             area_samples: 12,
         }
     }
@@ -166,7 +170,7 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
         cdt.add_constraint(handles[i], handles[(i + 1) % n]);
     }
     let is_external = |a: usize, b: usize| (a + 1) % n == b || (b + 1) % n == a;
-    let mut tris: Vec<[usize; 3]> = Vec::new();
+    let mut all: Vec<[usize; 3]> = Vec::new();
     for f in cdt.inner_faces() {
         let vs = f.vertices();
         let mut idx = [0usize; 3];
@@ -175,14 +179,9 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
                 ConvError::Triangulation("the triangulation added a vertex".into())
             })?;
         }
-        let c = [
-            (poly[idx[0]][0] + poly[idx[1]][0] + poly[idx[2]][0]) / 3.0,
-            (poly[idx[0]][1] + poly[idx[1]][1] + poly[idx[2]][1]) / 3.0,
-        ];
-        if inside_polygon(c, poly) {
-            tris.push(idx);
-        }
+        all.push(idx);
     }
+    let tris = inside_triangles(&all, poly);
     if tris.is_empty() {
         return Err(ConvError::Triangulation("no triangle inside the stroke".into()));
     }
@@ -246,6 +245,63 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
     Ok(prune_and_link(triangles, opts))
 }
 
+/// The triangles inside the counter-clockwise polygon: a triangle with a
+/// polygon edge $i \to i+1$ is inside when its third vertex is on the left;
+/// the others inherit the side of their neighbours across non-polygon
+/// edges (robust for slivers along straight runs of the stroke, where a
+/// centroid test is not).
+fn inside_triangles(all: &[[usize; 3]], poly: &[[f64; 2]]) -> Vec<[usize; 3]> {
+    let n = poly.len();
+    let mut state: Vec<Option<bool>> = vec![None; all.len()];
+    let mut edge_faces: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+    for (t, v) in all.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (v[k], v[(k + 1) % 3]);
+            edge_faces.entry((a.min(b), a.max(b))).or_default().push(t);
+            let third = poly[v[(k + 2) % 3]];
+            let (i, j) = if (a + 1) % n == b {
+                (a, b)
+            } else if (b + 1) % n == a {
+                (b, a)
+            } else {
+                continue;
+            };
+            let (p, q) = (poly[i], poly[j]);
+            let o = (q[0] - p[0]) * (third[1] - p[1]) - (q[1] - p[1]) * (third[0] - p[0]);
+            state[t] = Some(o > 0.0);
+        }
+    }
+    let mut queue: Vec<usize> = (0..all.len()).filter(|&t| state[t].is_some()).collect();
+    while let Some(t) = queue.pop() {
+        let v = all[t];
+        for k in 0..3 {
+            let (a, b) = (v[k], v[(k + 1) % 3]);
+            if (a + 1) % n == b || (b + 1) % n == a {
+                continue;
+            }
+            for &o in &edge_faces[&(a.min(b), a.max(b))] {
+                if state[o].is_none() {
+                    state[o] = state[t];
+                    queue.push(o);
+                }
+            }
+        }
+    }
+    all.iter()
+        .enumerate()
+        .filter(|&(t, v)| {
+            state[t].unwrap_or_else(|| {
+                let c = [
+                    (poly[v[0]][0] + poly[v[1]][0] + poly[v[2]][0]) / 3.0,
+                    (poly[v[0]][1] + poly[v[1]][1] + poly[v[2]][1]) / 3.0,
+                ];
+                inside_polygon(c, poly)
+            })
+        })
+        .map(|(_, v)| *v)
+        .collect()
+}
+
 fn mostly_inside(a: ([f64; 2], f64), b: ([f64; 2], f64), beta: f64) -> bool {
     beta > 0.0 && super::stroke::dist2(a.0, b.0) + beta * a.1 <= b.1
 }
@@ -280,22 +336,33 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
             }
         }
         let last = *chain.last().unwrap_or(&start);
-        // walk: prune chain[i] if mostly inside the next kept circle
-        let mut i = 0;
-        while i + 1 < chain.len() {
+        // walk from the terminal: the current end circle (and every circle
+        // it already absorbed) is pruned when mostly inside the next one,
+        // so tapering runs are not pruned away in a cascade
+        let mut cluster: Vec<usize> = vec![chain[0]];
+        for i in 0..chain.len().saturating_sub(1) {
             let t = chain[i];
             let next = chain[i + 1];
-            let a = (triangles[t].centre, triangles[t].radius);
             let b = (triangles[next].centre, triangles[next].radius);
             let kept = chain.iter().filter(|&&c| !pruned[c]).count();
+            let ends_in_junction = triangles[last].kind == TriangleKind::Junction;
+            let absorbed = cluster.iter().all(|&k| {
+                let a = (triangles[k].centre, triangles[k].radius);
+                mostly_inside(a, b, opts.overlap)
+                    || (triangles[k].kind == TriangleKind::Terminal
+                        && a.1 < opts.tiny * b.1
+                        && super::stroke::dist2(a.0, b.0) <= b.1)
+            });
             if triangles[t].kind != TriangleKind::Junction
                 && t != last
-                && kept > 2
-                && mostly_inside(a, b, opts.overlap)
+                && (ends_in_junction || kept > 2)
+                && absorbed
             {
                 pruned[t] = true;
+                cluster.push(next);
+            } else {
+                cluster = vec![next];
             }
-            i += 1;
         }
     }
     // nodes

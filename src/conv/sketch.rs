@@ -80,8 +80,8 @@ pub struct Sketch {
     pub fit: FitReport,
 }
 
-/// Node merge distance as a fraction of the mean radius.
-const MERGE_FRACTION: f64 = 1e-3;
+/// Nodes closer than this fraction of the smaller of their radii merge.
+const MERGE_FRACTION: f64 = 0.1;
 /// Half-length of the stand-in segment of a one-node skeleton, relative to
 /// its radius.
 const POINT_SEGMENT_HALF: f64 = 0.05;
@@ -89,12 +89,12 @@ const POINT_SEGMENT_HALF: f64 = 0.05;
 /// Raw segments of a skeleton: coincident nodes merged, radii scaled.
 pub fn raw_segments(sk: &Skeleton, radius_factor: f64) -> Vec<RawSegment> {
     let n = sk.nodes.len();
-    let mean_r = sk.radii.iter().sum::<f64>() / n.max(1) as f64;
     // merge coincident nodes
     let mut rep: Vec<usize> = (0..n).collect();
     for i in 0..n {
         for j in 0..i {
-            if rep[j] == j && stroke::dist2(sk.nodes[i], sk.nodes[j]) <= MERGE_FRACTION * mean_r {
+            let near = MERGE_FRACTION * sk.radii[i].min(sk.radii[j]);
+            if rep[j] == j && stroke::dist2(sk.nodes[i], sk.nodes[j]) <= near {
                 rep[i] = j;
                 break;
             }
