@@ -22,8 +22,8 @@ pub mod kernel;
 pub mod model;
 pub mod shapes;
 pub mod silhouette;
-pub mod sketch;
 pub mod skeleton;
+pub mod sketch;
 pub mod stroke;
 
 use thiserror::Error;

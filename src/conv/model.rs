@@ -10,7 +10,7 @@
 //! with the components already built; a miss puts the plane at depth 0
 //! ("in the air"). Then the optional rotation (about the component's
 //! skeleton centroid) and translation apply. `copy_of` reuses another
-//! component's stroke, view and depth.
+//! (earlier) component's stroke, view and plane depth.
 //!
 //! Operations: `merge` sums the two components' fields (their skeletons
 //! become one); `carve` negates the tool's $\lambda_i$ and merges it into the
@@ -207,7 +207,12 @@ impl Model {
             let sk = sketch::build(&src.stroke, &self.options)
                 .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
             let frame = src.view.frame();
-            let depth = match src.depth {
+            let copied_depth = c
+                .copy_of
+                .as_ref()
+                .and_then(|name| built.iter().find(|b| &b.name == name))
+                .map(|b| b.depth);
+            let depth = match copied_depth.or(src.depth) {
                 Some(d) if d.is_finite() => d,
                 Some(d) => {
                     return Err(ConvError::Model(format!(
@@ -221,9 +226,8 @@ impl Model {
                 }
             };
             let to_world = |p: [f64; 3]| {
-                [0, 1, 2].map(|k| {
-                    frame[0][k] * p[0] + frame[1][k] * p[1] + frame[2][k] * (p[2] + depth)
-                })
+                [0, 1, 2]
+                    .map(|k| frame[0][k] * p[0] + frame[1][k] * p[1] + frame[2][k] * (p[2] + depth))
             };
             let mut segs: Vec<Segment> = sk
                 .segments
@@ -249,7 +253,11 @@ impl Model {
                     }
                 }
                 let rot_pt = |p: [f64; 3]| {
-                    let v = rotate([p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]], rot.axis, rot.degrees);
+                    let v = rotate(
+                        [p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]],
+                        rot.axis,
+                        rot.degrees,
+                    );
                     [v[0] + cen[0], v[1] + cen[1], v[2] + cen[2]]
                 };
                 for s in &mut segs {
@@ -355,8 +363,10 @@ pub const MAX_RESOLUTION: usize = 512;
 impl BuiltModel {
     /// The field of group `g` at `r`.
     pub fn group_field(&self, g: usize, r: [f64; 3]) -> f64 {
-        let comps: Vec<&BuiltComponent> =
-            self.groups[g].iter().map(|&i| &self.components[i]).collect();
+        let comps: Vec<&BuiltComponent> = self.groups[g]
+            .iter()
+            .map(|&i| &self.components[i])
+            .collect();
         components_field(&comps, r)
     }
 
@@ -377,7 +387,10 @@ impl BuiltModel {
         for (g, members) in self.groups.iter().enumerate() {
             let comps: Vec<&BuiltComponent> =
                 members.iter().map(|&i| &self.components[i]).collect();
-            if comps.iter().all(|c| c.segments.iter().all(|s| s.lambda <= 0.0)) {
+            if comps
+                .iter()
+                .all(|c| c.segments.iter().all(|s| s.lambda <= 0.0))
+            {
                 continue;
             }
             let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);

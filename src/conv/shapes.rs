@@ -66,11 +66,11 @@ pub fn folding(r_mid: f64, half_width: f64, sweep: f64, n: usize) -> Vec<[f64; 2
 pub fn figure(n: usize) -> Vec<[f64; 2]> {
     // lobes: (angle, width, extra radius)
     let lobes = [
-        (0.25 * TAU, 0.35, 0.55),  // head
-        (0.05 * TAU, 0.22, 0.75),  // right arm
-        (0.45 * TAU, 0.22, 0.75),  // left arm
-        (0.68 * TAU, 0.25, 0.95),  // left leg
-        (0.82 * TAU, 0.25, 0.95),  // right leg
+        (0.25 * TAU, 0.35, 0.55), // head
+        (0.05 * TAU, 0.22, 0.75), // right arm
+        (0.45 * TAU, 0.22, 0.75), // left arm
+        (0.68 * TAU, 0.25, 0.95), // left leg
+        (0.82 * TAU, 0.25, 0.95), // right leg
     ];
     (0..n)
         .map(|i| {

@@ -183,7 +183,9 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
     }
     let tris = inside_triangles(&all, poly);
     if tris.is_empty() {
-        return Err(ConvError::Triangulation("no triangle inside the stroke".into()));
+        return Err(ConvError::Triangulation(
+            "no triangle inside the stroke".into(),
+        ));
     }
     // adjacency across internal edges
     let mut edge_faces: HashMap<(usize, usize), Vec<usize>> = HashMap::new();

@@ -180,11 +180,7 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let diag = if raw.is_empty() {
-        0.0
-    } else {
-        dist2(lo, hi)
-    };
+    let diag = if raw.is_empty() { 0.0 } else { dist2(lo, hi) };
     // drop consecutive duplicates (and a closing repeat of the first point)
     let mut pts: Vec<[f64; 2]> = Vec::with_capacity(raw.len());
     for &p in raw {
@@ -243,7 +239,10 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
         });
     }
     if let Some((i, j)) = self_intersection(&out) {
-        return Err(ConvError::SelfIntersecting { edge_a: i, edge_b: j });
+        return Err(ConvError::SelfIntersecting {
+            edge_a: i,
+            edge_b: j,
+        });
     }
     if signed_area2(&out) < 0.0 {
         out.reverse();

@@ -251,9 +251,8 @@ pub fn marching_tetrahedra(grid: &ScalarGrid, iso: f64) -> Mesh {
     for k in 0..d[2] - 1 {
         for j in 0..d[1] - 1 {
             for i in 0..d[0] - 1 {
-                let node = |c: usize| {
-                    grid.index(i + CORNER[c][0], j + CORNER[c][1], k + CORNER[c][2])
-                };
+                let node =
+                    |c: usize| grid.index(i + CORNER[c][0], j + CORNER[c][1], k + CORNER[c][2]);
                 let inside: Vec<bool> = (0..8).map(|c| vals[node(c)] > iso).collect();
                 if inside.iter().all(|&b| b) || inside.iter().all(|&b| !b) {
                     continue;
@@ -347,9 +346,8 @@ pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
     for k in 0..d[2] - 1 {
         for j in 0..d[1] - 1 {
             for i in 0..d[0] - 1 {
-                let node = |c: usize| {
-                    grid.index(i + CORNER[c][0], j + CORNER[c][1], k + CORNER[c][2])
-                };
+                let node =
+                    |c: usize| grid.index(i + CORNER[c][0], j + CORNER[c][1], k + CORNER[c][2]);
                 let mut sum = [0.0; 3];
                 let mut cnt = 0;
                 for e in EDGES {
@@ -449,7 +447,10 @@ pub fn triangle_quality(m: &Mesh) -> TriangleQuality {
             let nu = super::norm(u);
             let nv = super::norm(v);
             let ang = if nu > 0.0 && nv > 0.0 {
-                (super::dot(u, v) / (nu * nv)).clamp(-1.0, 1.0).acos().to_degrees()
+                (super::dot(u, v) / (nu * nv))
+                    .clamp(-1.0, 1.0)
+                    .acos()
+                    .to_degrees()
             } else {
                 0.0
             };
