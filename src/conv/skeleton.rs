@@ -13,10 +13,16 @@
 //!    edge's line (centre halfway between the two sides of the sleeve).
 //! 4. Centres linked by triangle adjacency.
 //! 5. Pruning: along each chain from a terminal triangle to the next
-//!    junction or terminal, a centre is removed when its circle lies mostly
+//!    junction (or to the middle of a chain that ends in another terminal),
+//!    a centre is removed when its circle lies mostly
 //!    inside the next kept circle: $|c_i - c_j| + \beta r_i \le r_j$ with
 //!    $\beta$ = [`SkeletonOptions::overlap`] (0.5: the centre plus half the
-//!    radius inside). Junction centres are never pruned.
+//!    radius inside). Junction centres are never pruned. A run of pruned
+//!    circles must lie mostly inside the next kept one as a whole, so a
+//!    tapering run is not pruned away in a cascade; a terminal incircle
+//!    smaller than [`SkeletonOptions::tiny`] times the next circle with its
+//!    centre inside that circle is pruned too (our addition: ears of nearly
+//!    collinear stroke points).
 
 use super::stroke::{distance_to_polygon, inside_polygon};
 use super::ConvError;
@@ -341,13 +347,19 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
         // walk from the terminal: the current end circle (and every circle
         // it already absorbed) is pruned when mostly inside the next one,
         // so tapering runs are not pruned away in a cascade
+        // a terminal-to-terminal chain is walked from each end to its middle
+        let ends_in_junction = triangles[last].kind == TriangleKind::Junction;
+        let walk = if ends_in_junction {
+            chain.len().saturating_sub(1)
+        } else {
+            chain.len() / 2
+        };
         let mut cluster: Vec<usize> = vec![chain[0]];
-        for i in 0..chain.len().saturating_sub(1) {
+        for i in 0..walk {
             let t = chain[i];
             let next = chain[i + 1];
             let b = (triangles[next].centre, triangles[next].radius);
             let kept = chain.iter().filter(|&&c| !pruned[c]).count();
-            let ends_in_junction = triangles[last].kind == TriangleKind::Junction;
             let absorbed = cluster.iter().all(|&k| {
                 let a = (triangles[k].centre, triangles[k].radius);
                 mostly_inside(a, b, opts.overlap)
