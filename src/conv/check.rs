@@ -49,7 +49,7 @@ struct GoldenCase {
 /// Deterministic pseudo-random numbers in [0, 1) (no dependency).
 pub struct Lcg(pub u64);
 impl Lcg {
-    pub fn next(&mut self) -> f64 {
+    pub fn next_f64(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
@@ -57,7 +57,7 @@ impl Lcg {
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     pub fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
+        a + (b - a) * self.next_f64()
     }
 }
 

@@ -7,10 +7,10 @@
 //! to the line) and $p^2 = 1 + s^2 q$. With $k(u) = 1/(p^2 + s^2 u^2)^2$ and
 //! $u = t - h$,
 //! $$F_1 = \int_0^l \frac{dt}{(1+s^2 r^2(t))^2}
-//!   = \frac{1}{2p^2}\Big[\frac{h}{s^2h^2+p^2} + \frac{l-h}{s^2(l-h)^2+p^2}\Big]
-//!   + \frac{1}{2sp^3}\Big[\arctan\frac{sh}{p} + \arctan\frac{s(l-h)}{p}\Big],$$
-//! $$F_t = \int_0^l \frac{t\,dt}{(1+s^2 r^2(t))^2}
-//!   = \frac{1}{2s^2}\Big[\frac{1}{s^2h^2+p^2} - \frac{1}{s^2(l-h)^2+p^2}\Big] + h F_1,$$
+//!   = \frac{1}{2p^2}\Big[\frac{h}{s^2h^2+p^2} + \frac{l-h}{s^2(l-h)^2+p^2}\Big] +
+//!   \frac{1}{2sp^3}\Big[\arctan\frac{sh}{p} + \arctan\frac{s(l-h)}{p}\Big],$$
+//! $$F_t = \int_0^l \frac{t\,dt}{(1+s^2 r^2(t))^2} =
+//!   \frac{1}{2s^2}\Big[\frac{1}{s^2h^2+p^2} - \frac{1}{s^2(l-h)^2+p^2}\Big] + h F_1,$$
 //! both as printed (re-derived in `verify/conv_kernel.py`). With the weight
 //! $w(t) = w_0 + (w_1-w_0)t/l$ the field is
 //! $F = w_0 F_1 + \frac{w_1-w_0}{l} F_t = w_0 (F_1 - F_t/l) + w_1 F_t/l$.
