@@ -37,7 +37,13 @@ fn bad_strokes_are_rejected() {
     // a figure eight with unequal lobes (equal lobes have zero signed area)
     let eight: Vec<[f64; 2]> = shapes::figure_eight(200)
         .into_iter()
-        .map(|p| if p[0] > 0.0 { [2.0 * p[0], 2.0 * p[1]] } else { p })
+        .map(|p| {
+            if p[0] > 0.0 {
+                [2.0 * p[0], 2.0 * p[1]]
+            } else {
+                p
+            }
+        })
         .collect();
     assert!(matches!(
         stroke::filter_stroke(&eight, &o),
