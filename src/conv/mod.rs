@@ -1,5 +1,52 @@
-//! SketchCo convolution surfaces from sketched silhouettes (paper 003).
+//! SketchCo: convolution surfaces from sketched silhouette curves
+//! (paper 003, Kúkelová, secs 3-4, Figs 2-8).
 //!
-//! Not implemented yet: this module is a placeholder for its issue.
+//! Pipeline: a closed stroke is filtered ([`stroke`]: Douglas-Peucker plus
+//! re-inserted points, self-intersection rejection), triangulated and
+//! skeletonised ([`skeleton`]: CDT, terminal / sleeve / junction triangles,
+//! circles, pruning), every skeletal line segment gets linear weights from
+//! the threshold at the radius above its endpoints ([`fit`]), and a global
+//! non-negative least-squares fit of the control scales $\lambda_i$ makes
+//! the field equal the threshold $T$ at the silhouette points. The field is
+//! the sum of closed-form line-segment fields of the Cauchy kernel
+//! $h(r) = 1/(1+s^2r^2)^2$ ([`kernel`]):
+//! $$F(r) = \sum_i \lambda_i \Big(w_{0,i} F_1(r; L_i) + \frac{w_{1,i}-w_{0,i}}{l_i} F_t(r; L_i)\Big),$$
+//! and the surface is $F = T$, polygonised by
+//! [`crate::mesh::isosurface`] (marching tetrahedra, as in the paper, or
+//! surface nets). [`model`] places components on planes at depths, merges
+//! and carves them, and reads / writes the compact JSON model file.
 
 pub mod check;
+pub mod fit;
+pub mod kernel;
+pub mod model;
+pub mod shapes;
+pub mod silhouette;
+pub mod skeleton;
+pub mod sketch;
+pub mod stroke;
+
+use thiserror::Error;
+
+/// Errors of the conv family.
+#[derive(Debug, Error)]
+pub enum ConvError {
+    #[error("stroke point {index} is not finite")]
+    NonFinite { index: usize },
+    #[error("stroke too short: {points} distinct points, at least {needed} needed")]
+    TooShort { points: usize, needed: usize },
+    #[error("stroke encloses (almost) no area: {area:e}")]
+    ZeroArea { area: f64 },
+    #[error("the filtered stroke intersects itself (edges {edge_a} and {edge_b}); sketch a curve without self-intersections")]
+    SelfIntersecting { edge_a: usize, edge_b: usize },
+    #[error("triangulation failed: {0}")]
+    Triangulation(String),
+    #[error("invalid parameter: {0}")]
+    Parameter(String),
+    #[error("numerical failure: {0}")]
+    Numerical(String),
+    #[error("model file: {0}")]
+    Model(String),
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
+}

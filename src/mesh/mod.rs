@@ -12,6 +12,7 @@
 
 pub mod check;
 pub mod io;
+pub mod isosurface;
 pub mod metrics;
 pub mod slice;
 pub mod topology;

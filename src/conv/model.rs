@@ -1,0 +1,457 @@
+//! Models of several sketched components and the compact model file
+//! (paper 003, sec 4: planes at depths, merge, carve, translate / rotate /
+//! copy, the `.sc` script file — here JSON).
+//!
+//! A component's stroke lies in a view plane: `front` (screen $x, y$ =
+//! world $x, y$, plane normal $+z$), `side` (screen $x$ = world $-z$,
+//! normal $+x$) or `top` (screen $y$ = world $-z$, normal $+y$), at a
+//! `depth` along the normal. Without a depth, the depth comes from the first
+//! stroke point (paper): the ray through it along the normal is intersected
+//! with the components already built; a miss puts the plane at depth 0
+//! ("in the air"). Then the optional rotation (about the component's
+//! skeleton centroid) and translation apply. `copy_of` reuses another
+//! (earlier) component's stroke, view and plane depth.
+//!
+//! Operations: `merge` sums the two components' fields (their skeletons
+//! become one); `carve` negates the tool's $\lambda_i$ and merges it into the
+//! target. Components not merged stay separate surfaces (separate mesh
+//! groups). The file stores only strokes, planes, transforms and operations,
+//! so it rebuilds at any resolution.
+
+use super::kernel::Segment;
+use super::sketch::{self, ConvOptions, Sketch};
+use super::ConvError;
+use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid};
+use crate::mesh::Mesh;
+use serde::{Deserialize, Serialize};
+
+/// View plane of a stroke.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum View {
+    #[default]
+    Front,
+    Side,
+    Top,
+}
+
+impl View {
+    /// (screen x axis, screen y axis, normal) in world coordinates.
+    pub fn frame(self) -> [[f64; 3]; 3] {
+        match self {
+            View::Front => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            View::Side => [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+            View::Top => [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+        }
+    }
+}
+
+/// A rotation by `degrees` about `axis` (through the component's centroid).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Rotation {
+    pub axis: [f64; 3],
+    pub degrees: f64,
+}
+
+/// One sketched component.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default)]
+pub struct Component {
+    pub name: String,
+    /// Closed stroke in screen coordinates of its view plane.
+    pub stroke: Vec<[f64; 2]>,
+    pub view: View,
+    /// Plane depth along the view normal; `None`: from the first point.
+    pub depth: Option<f64>,
+    pub rotate: Option<Rotation>,
+    pub translate: [f64; 3],
+    /// Name of a component whose stroke, view and depth this one copies.
+    pub copy_of: Option<String>,
+}
+
+/// A modeling operation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "op", rename_all = "lowercase")]
+pub enum Operation {
+    Merge { a: String, b: String },
+    Carve { target: String, tool: String },
+}
+
+/// Polygoniser choice.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Polygonizer {
+    #[default]
+    MarchingTetrahedra,
+    SurfaceNets,
+}
+
+/// The model file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[serde(default)]
+pub struct Model {
+    pub name: String,
+    pub options: ConvOptions,
+    pub components: Vec<Component>,
+    pub operations: Vec<Operation>,
+}
+
+/// A built component: its sketch and world-space segments.
+#[derive(Clone, Debug)]
+pub struct BuiltComponent {
+    pub name: String,
+    pub sketch: Sketch,
+    pub frame: [[f64; 3]; 3],
+    pub depth: f64,
+    /// World-space segments (lambda negated for carving tools).
+    pub segments: Vec<Segment>,
+    pub group: usize,
+    /// Largest skeleton radius (world units).
+    pub max_radius: f64,
+}
+
+/// A built model: components and their merge groups.
+#[derive(Clone, Debug)]
+pub struct BuiltModel {
+    pub components: Vec<BuiltComponent>,
+    /// Component indices per group (the first names the group).
+    pub groups: Vec<Vec<usize>>,
+}
+
+fn rotate(v: [f64; 3], axis: [f64; 3], deg: f64) -> [f64; 3] {
+    let n = crate::mesh::norm(axis);
+    let k = [axis[0] / n, axis[1] / n, axis[2] / n];
+    let (s, c) = deg.to_radians().sin_cos();
+    let kv = crate::mesh::dot(k, v);
+    let x = [
+        k[1] * v[2] - k[2] * v[1],
+        k[2] * v[0] - k[0] * v[2],
+        k[0] * v[1] - k[1] * v[0],
+    ];
+    [0, 1, 2].map(|i| v[i] * c + x[i] * s + k[i] * kv * (1.0 - c))
+}
+
+/// Field of a set of components at `r`.
+pub fn components_field(comps: &[&BuiltComponent], r: [f64; 3]) -> f64 {
+    comps
+        .iter()
+        .map(|c| super::kernel::total_field(&c.segments, r, c.sketch.s))
+        .sum()
+}
+
+impl Model {
+    /// Parses and validates a model file.
+    pub fn from_json(text: &str) -> Result<Model, ConvError> {
+        let m: Model = serde_json::from_str(text).map_err(|e| ConvError::Model(e.to_string()))?;
+        m.options.validate()?;
+        if m.components.is_empty() {
+            return Err(ConvError::Model("no components".into()));
+        }
+        Ok(m)
+    }
+
+    /// Serialises the model (pretty JSON).
+    pub fn to_json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    fn index(&self, name: &str) -> Result<usize, ConvError> {
+        self.components
+            .iter()
+            .position(|c| c.name == name)
+            .ok_or_else(|| ConvError::Model(format!("unknown component {name:?}")))
+    }
+
+    /// Reconstructs every component and resolves the operations.
+    pub fn build(&self) -> Result<BuiltModel, ConvError> {
+        let n = self.components.len();
+        let mut parent: Vec<usize> = (0..n).collect();
+        fn find(p: &mut [usize], i: usize) -> usize {
+            let mut r = i;
+            while p[r] != r {
+                r = p[r];
+            }
+            p[i] = r;
+            r
+        }
+        let mut carving = vec![false; n];
+        for op in &self.operations {
+            let (a, b) = match op {
+                Operation::Merge { a, b } => (self.index(a)?, self.index(b)?),
+                Operation::Carve { target, tool } => {
+                    let (t, u) = (self.index(target)?, self.index(tool)?);
+                    carving[u] = true;
+                    (t, u)
+                }
+            };
+            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+            if ra != rb {
+                parent[rb.max(ra)] = ra.min(rb);
+            }
+        }
+        let mut built: Vec<BuiltComponent> = Vec::with_capacity(n);
+        for (ci, c) in self.components.iter().enumerate() {
+            let src = match &c.copy_of {
+                Some(name) => {
+                    let i = self.index(name)?;
+                    if self.components[i].copy_of.is_some() {
+                        return Err(ConvError::Model(format!(
+                            "{:?} copies {name:?}, itself a copy",
+                            c.name
+                        )));
+                    }
+                    &self.components[i]
+                }
+                None => c,
+            };
+            let sk = sketch::build(&src.stroke, &self.options)
+                .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
+            let frame = src.view.frame();
+            let copied_depth = c
+                .copy_of
+                .as_ref()
+                .and_then(|name| built.iter().find(|b| &b.name == name))
+                .map(|b| b.depth);
+            let depth = match copied_depth.or(src.depth) {
+                Some(d) if d.is_finite() => d,
+                Some(d) => {
+                    return Err(ConvError::Model(format!(
+                        "component {:?}: depth {d} is not finite",
+                        c.name
+                    )))
+                }
+                None => {
+                    let prev: Vec<&BuiltComponent> = built.iter().collect();
+                    depth_from_surface(&prev, frame, sk.polygon[0], self.options.threshold)
+                }
+            };
+            let to_world = |p: [f64; 3]| {
+                [0, 1, 2]
+                    .map(|k| frame[0][k] * p[0] + frame[1][k] * p[1] + frame[2][k] * (p[2] + depth))
+            };
+            let mut segs: Vec<Segment> = sk
+                .segments
+                .iter()
+                .map(|s| Segment {
+                    p: to_world(s.p),
+                    q: to_world(s.q),
+                    ..*s
+                })
+                .collect();
+            if let Some(rot) = c.rotate {
+                if !(rot.degrees.is_finite() && crate::mesh::norm(rot.axis) > 0.0) {
+                    return Err(ConvError::Model(format!(
+                        "component {:?}: bad rotation {rot:?}",
+                        c.name
+                    )));
+                }
+                let m = segs.len() as f64;
+                let mut cen = [0.0; 3];
+                for s in &segs {
+                    for k in 0..3 {
+                        cen[k] += 0.5 * (s.p[k] + s.q[k]) / m;
+                    }
+                }
+                let rot_pt = |p: [f64; 3]| {
+                    let v = rotate(
+                        [p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]],
+                        rot.axis,
+                        rot.degrees,
+                    );
+                    [v[0] + cen[0], v[1] + cen[1], v[2] + cen[2]]
+                };
+                for s in &mut segs {
+                    s.p = rot_pt(s.p);
+                    s.q = rot_pt(s.q);
+                }
+            }
+            if c.translate.iter().any(|v| !v.is_finite()) {
+                return Err(ConvError::Model(format!(
+                    "component {:?}: translation is not finite",
+                    c.name
+                )));
+            }
+            for s in &mut segs {
+                for k in 0..3 {
+                    s.p[k] += c.translate[k];
+                    s.q[k] += c.translate[k];
+                }
+                if carving[ci] {
+                    s.lambda = -s.lambda;
+                }
+            }
+            let max_radius = sk.skeleton.radii.iter().copied().fold(0.0, f64::max);
+            built.push(BuiltComponent {
+                name: c.name.clone(),
+                sketch: sk,
+                frame,
+                depth,
+                segments: segs,
+                group: 0,
+                max_radius,
+            });
+        }
+        let mut roots: Vec<usize> = Vec::new();
+        let mut groups: Vec<Vec<usize>> = Vec::new();
+        for i in 0..n {
+            let r = find(&mut parent, i);
+            let g = match roots.iter().position(|&x| x == r) {
+                Some(g) => g,
+                None => {
+                    roots.push(r);
+                    groups.push(Vec::new());
+                    roots.len() - 1
+                }
+            };
+            groups[g].push(i);
+            built[i].group = g;
+        }
+        Ok(BuiltModel {
+            components: built,
+            groups,
+        })
+    }
+}
+
+/// Depth of the first surface hit along the view normal through `pt`
+/// (coming from the viewer), or 0 when the ray misses.
+fn depth_from_surface(prev: &[&BuiltComponent], frame: [[f64; 3]; 3], pt: [f64; 2], t: f64) -> f64 {
+    if prev.is_empty() {
+        return 0.0;
+    }
+    let n = frame[2];
+    let base = [0, 1, 2].map(|k| frame[0][k] * pt[0] + frame[1][k] * pt[1]);
+    let mut reach: f64 = 0.0;
+    for c in prev {
+        for s in &c.segments {
+            for p in [s.p, s.q] {
+                reach = reach.max(crate::mesh::dot(p, n).abs() + 2.0 * c.max_radius);
+            }
+        }
+    }
+    let steps = 400;
+    let at = |d: f64| {
+        let r = [0, 1, 2].map(|k| base[k] + d * n[k]);
+        components_field(prev, r) - t
+    };
+    let mut d0 = reach;
+    let mut f0 = at(d0);
+    for i in 1..=steps {
+        let d1 = reach - 2.0 * reach * i as f64 / steps as f64;
+        let f1 = at(d1);
+        if f0 < 0.0 && f1 >= 0.0 {
+            let (mut a, mut b) = (d0, d1);
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if at(m) >= 0.0 {
+                    b = m;
+                } else {
+                    a = m;
+                }
+            }
+            return 0.5 * (a + b);
+        }
+        d0 = d1;
+        f0 = f1;
+    }
+    0.0
+}
+
+/// Largest allowed resolution (cells along the longest axis).
+pub const MAX_RESOLUTION: usize = 512;
+
+impl BuiltModel {
+    /// The field of group `g` at `r`.
+    pub fn group_field(&self, g: usize, r: [f64; 3]) -> f64 {
+        let comps: Vec<&BuiltComponent> = self.groups[g]
+            .iter()
+            .map(|&i| &self.components[i])
+            .collect();
+        components_field(&comps, r)
+    }
+
+    /// Polygonises every group with `resolution` cells along the longest
+    /// side of its box and returns one mesh (a group per merged component).
+    pub fn polygonize(
+        &self,
+        resolution: usize,
+        threshold: f64,
+        method: Polygonizer,
+    ) -> Result<Mesh, ConvError> {
+        if !(4..=MAX_RESOLUTION).contains(&resolution) {
+            return Err(ConvError::Parameter(format!(
+                "resolution {resolution} outside 4..={MAX_RESOLUTION}"
+            )));
+        }
+        let mut out: Option<Mesh> = None;
+        for (g, members) in self.groups.iter().enumerate() {
+            let comps: Vec<&BuiltComponent> =
+                members.iter().map(|&i| &self.components[i]).collect();
+            if comps
+                .iter()
+                .all(|c| c.segments.iter().all(|s| s.lambda <= 0.0))
+            {
+                continue;
+            }
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            let mut rmax: f64 = 0.0;
+            for c in &comps {
+                rmax = rmax.max(c.max_radius);
+                for s in &c.segments {
+                    for p in [s.p, s.q] {
+                        for k in 0..3 {
+                            lo[k] = lo[k].min(p[k]);
+                            hi[k] = hi[k].max(p[k]);
+                        }
+                    }
+                }
+            }
+            let mut margin = 1.5 * rmax;
+            let mut mesh = None;
+            for _attempt in 0..4 {
+                let l = lo.map(|x| x - margin);
+                let h = hi.map(|x| x + margin);
+                let side = (0..3).map(|k| h[k] - l[k]).fold(0.0, f64::max);
+                let cell = side / resolution as f64;
+                let dims = [0, 1, 2].map(|k| (((h[k] - l[k]) / cell).ceil() as usize + 1).max(3));
+                let hh = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * cell);
+                let grid = ScalarGrid::sample(l, hh, dims, |r| components_field(&comps, r))?;
+                // does the surface reach the grid boundary? then grow the box
+                let touches = (0..grid.values.len()).any(|i| {
+                    let c = [
+                        i % dims[0],
+                        (i / dims[0]) % dims[1],
+                        i / (dims[0] * dims[1]),
+                    ];
+                    (0..3).any(|k| c[k] == 0 || c[k] + 1 == dims[k]) && grid.values[i] > threshold
+                });
+                if touches {
+                    margin *= 2.0;
+                    continue;
+                }
+                mesh = Some(match method {
+                    Polygonizer::MarchingTetrahedra => marching_tetrahedra(&grid, threshold),
+                    Polygonizer::SurfaceNets => surface_nets(&grid, threshold),
+                });
+                break;
+            }
+            let Some(mut m) = mesh else {
+                return Err(ConvError::Numerical(format!(
+                    "the surface of group {g} does not close within the box (field unbounded?)"
+                )));
+            };
+            m.groups = vec![comps[0].name.clone()];
+            match &mut out {
+                None => out = Some(m),
+                Some(o) => o.append(&m),
+            }
+        }
+        let m = out.ok_or_else(|| ConvError::Numerical("the model produced no surface".into()))?;
+        if m.triangles.is_empty() {
+            return Err(ConvError::Numerical(
+                "the surface is empty at this resolution".into(),
+            ));
+        }
+        Ok(m)
+    }
+}
