@@ -1,5 +1,6 @@
 //! The demo character: template, two local sculpting edits, C2 PDE
-//! reconstruction, each step measured.
+//! reconstruction, and a prop sketched as a convolution surface, each step
+//! measured.
 
 use crate::makehuman;
 use crate::mesh::Mesh;
@@ -26,6 +27,8 @@ pub enum DemoError {
     Plate(#[from] crate::plate::PlateError),
     #[error("pde6 reconstruction")]
     Pde6(#[from] crate::pde6::Pde6Error),
+    #[error("SketchCo prop")]
+    Conv(#[from] crate::conv::ConvError),
     #[error("{0}")]
     Step(String),
 }
@@ -52,6 +55,9 @@ pub struct Demo {
     pub sculpted: Mesh,
     /// Its C2 sixth-order PDE reconstruction (one group per part).
     pub reconstruction: Mesh,
+    /// A prop sketched in silhouettes (paper 003), standing beside the body
+    /// (group `"teddy"`).
+    pub prop: Mesh,
     pub report: DemoReport,
 }
 
@@ -64,6 +70,117 @@ pub struct DemoReport {
     /// The plate edit against MakeHuman's pregnancy morph.
     pub belly_vs_morph: BellyComparison,
     pub reconstruction: BodyReport,
+    pub prop: PropReport,
+}
+
+/// The sketched prop: a convolution-surface teddy bear (paper 003) built
+/// from the bundled model file `data/conv/teddy.json` (eight strokes, merge
+/// and carve operations).
+#[derive(Clone, Debug, Serialize)]
+pub struct PropReport {
+    pub model: &'static str,
+    pub components: usize,
+    pub segments: usize,
+    pub triangles: usize,
+    pub watertight: bool,
+    pub manifold: bool,
+    pub oriented: bool,
+    /// Worst global-interpolation error |F - T| / T at the stroke points
+    /// over the components (paper 003 sec 3.3).
+    pub fit_max_rel: f64,
+    /// How the body component's surface follows its stroke: max distance
+    /// between its projected outline and the stroke, / stroke size.
+    pub body_silhouette_max_rel: f64,
+    /// Height of the prop in the scene (decimetres).
+    pub height: f64,
+}
+
+/// The bundled teddy model file.
+pub const TEDDY_MODEL: &str = include_str!("../../data/conv/teddy.json");
+
+/// Grid cells along the longest side of the teddy's box.
+pub const TEDDY_RESOLUTION: usize = 72;
+
+/// Paper 003: the teddy bear sketched in eight strokes, polygonised by
+/// marching tetrahedra, scaled to a quarter of the body's height and stood
+/// on the floor to the body's right.
+pub fn teddy_prop(body: &Mesh) -> Result<(Mesh, PropReport), DemoError> {
+    use crate::conv::model::{Model, Polygonizer};
+    let model = Model::from_json(TEDDY_MODEL)?;
+    let built = model.build()?;
+    let mut mesh = built.polygonize(
+        TEDDY_RESOLUTION,
+        model.options.threshold,
+        Polygonizer::MarchingTetrahedra,
+    )?;
+    let topo = crate::mesh::topology::report(&mesh);
+    // the body component alone, built as its own model: its surface,
+    // projected onto its (z = 0, front) plane, against its stroke
+    let body_only = Model {
+        components: model
+            .components
+            .iter()
+            .filter(|c| c.name == "body")
+            .cloned()
+            .collect(),
+        operations: Vec::new(),
+        ..model.clone()
+    };
+    let stroke = match body_only.components.first() {
+        Some(c) => c.stroke.clone(),
+        None => {
+            return Err(DemoError::Step(
+                "the teddy model has no \"body\" component".into(),
+            ))
+        }
+    };
+    let silhouette = crate::conv::silhouette::silhouette_error(
+        &body_only.build()?.polygonize(
+            TEDDY_RESOLUTION,
+            body_only.options.threshold,
+            Polygonizer::MarchingTetrahedra,
+        )?,
+        [0.0; 3],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        &stroke,
+    );
+    let fit_max_rel = built
+        .components
+        .iter()
+        .map(|c| c.sketch.fit.max_rel_error)
+        .fold(0.0, f64::max);
+    let segments = built.components.iter().map(|c| c.segments.len()).sum();
+    let (blo, bhi) = body.bbox();
+    let (tlo, thi) = mesh.bbox();
+    let height = 0.25 * (bhi[1] - blo[1]);
+    let k = height / (thi[1] - tlo[1]);
+    let at = [bhi[0] + 0.6 * (thi[0] - tlo[0]) * k, blo[1], 0.0];
+    let centre = [0.5 * (tlo[0] + thi[0]), tlo[1], 0.5 * (tlo[2] + thi[2])];
+    mesh.map_positions(|p| {
+        [
+            at[0] + k * (p[0] - centre[0]),
+            at[1] + k * (p[1] - centre[1]),
+            at[2] + k * (p[2] - centre[2]),
+        ]
+    });
+    mesh.set_single_group("teddy");
+    mesh.validate()?;
+    Ok((
+        mesh.clone(),
+        PropReport {
+            model: "data/conv/teddy.json",
+            components: built.components.len(),
+            segments,
+            triangles: mesh.triangles.len(),
+            watertight: topo.watertight,
+            manifold: topo.manifold,
+            oriented: topo.oriented,
+            fit_max_rel,
+            body_silhouette_max_rel: silhouette.max_rel,
+            height,
+        },
+    ))
 }
 
 /// A closed curve on one side of the chest (`side` = +1 or -1), drawn in
@@ -259,6 +376,7 @@ pub fn build() -> Result<Demo, DemoError> {
     ];
     let (_, reconstruction, body_report) =
         reconstruct(&belly, &makehuman_parts(), &BodyOptions::default())?;
+    let (prop, prop_report) = teddy_prop(&belly)?;
     Ok(Demo {
         report: DemoReport {
             template: "MakeHuman hm08 base body (skin group)",
@@ -266,8 +384,10 @@ pub fn build() -> Result<Demo, DemoError> {
             edits,
             belly_vs_morph,
             reconstruction: body_report,
+            prop: prop_report,
         },
         sculpted: belly,
         reconstruction,
+        prop,
     })
 }

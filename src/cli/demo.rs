@@ -2,9 +2,12 @@
 //!
 //! The MakeHuman base body as template, a chest sculpt (paper 000: one
 //! curve, one drag, fourth-order PDE), a pregnancy belly (paper 001: C1
-//! plate bending, compared with MakeHuman's own pregnancy morph), and the C2 sixth-order PDE reconstruction of the result from its
-//! cross sections (paper 002). Writes into `out/`:
-//! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body, front and side),
+//! plate bending, compared with MakeHuman's own pregnancy morph), the C2
+//! sixth-order PDE reconstruction of the result from its cross sections
+//! (paper 002), and a teddy bear sketched in eight silhouette strokes
+//! standing beside it (paper 003, convolution surfaces). Writes into `out/`:
+//! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body with the teddy,
+//! groups `skin` and `teddy`, front and side),
 //! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
 //! part) and `demo.json` (what every step measured).
 
@@ -25,9 +28,11 @@ pub struct Args {
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     eprintln!("template: the MakeHuman base body");
     eprintln!(
-        "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches)..."
+        "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches), sketching a prop (convolution surfaces)..."
     );
     let d = demo::build()?;
+    let mut scene = d.sculpted.clone();
+    scene.append(&d.prop);
     let views = |m| {
         render_views(
             m,
@@ -47,9 +52,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         args.out.join("demo-pde6.png"),
         args.out.join("demo.json"),
     ];
-    io::write(&d.sculpted, &files[0])?;
-    io::write(&d.sculpted, &files[1])?;
-    views(&d.sculpted).save_png(&files[2])?;
+    io::write(&scene, &files[0])?;
+    io::write(&scene, &files[1])?;
+    views(&scene).save_png(&files[2])?;
     io::write(&d.reconstruction, &files[3])?;
     views(&d.reconstruction).save_png(&files[4])?;
     io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
@@ -76,14 +81,26 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         r.gec_numbers,
         r.covered_vertex_numbers
     );
+    let p = &d.report.prop;
+    eprintln!(
+        "  teddy (paper 003): {} strokes, {} segments, {} triangles (watertight {}, manifold {}, oriented {}), fit |F-T|/T max {:.1e}, body outline vs stroke max {:.1} % of its size",
+        p.components,
+        p.segments,
+        p.triangles,
+        p.watertight,
+        p.manifold,
+        p.oriented,
+        p.fit_max_rel,
+        100.0 * p.body_silhouette_max_rel
+    );
     for p in &files {
         eprintln!("wrote {}", p.display());
     }
     if json {
         super::print_json(&serde_json::json!({
             "outputs": files,
-            "vertices": d.sculpted.positions.len(),
-            "triangles": d.sculpted.triangles.len(),
+            "vertices": scene.positions.len(),
+            "triangles": scene.triangles.len(),
             "report": d.report,
         }))?;
     }

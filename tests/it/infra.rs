@@ -266,4 +266,20 @@ fn demo_pipeline_measures_each_step() {
     );
     assert!(d.sculpted.validate().is_ok() && d.reconstruction.validate().is_ok());
     assert!(d.reconstruction.groups.len() >= 7);
+    let p = &d.report.prop;
+    assert!(
+        p.watertight && p.manifold && p.oriented,
+        "teddy topology {p:?}"
+    );
+    assert!(p.fit_max_rel < 0.1, "teddy fit {}", p.fit_max_rel);
+    assert!(
+        p.body_silhouette_max_rel < 0.05,
+        "teddy body outline {}",
+        p.body_silhouette_max_rel
+    );
+    assert_eq!(d.prop.groups, vec!["teddy".to_string()]);
+    let (blo, bhi) = d.sculpted.bbox();
+    let (tlo, thi) = d.prop.bbox();
+    assert!(tlo[0] > bhi[0], "the teddy stands beside the body");
+    assert!((tlo[1] - blo[1]).abs() < 1e-9 && (thi[1] - tlo[1] - p.height).abs() < 1e-9);
 }
