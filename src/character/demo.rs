@@ -27,6 +27,8 @@ pub enum DemoError {
     Plate(#[from] crate::plate::PlateError),
     #[error("pde6 reconstruction")]
     Pde6(#[from] crate::pde6::Pde6Error),
+    #[error(transparent)]
+    Skirt(#[from] super::skirt::SkirtError),
     #[error("SketchCo prop")]
     Conv(#[from] crate::conv::ConvError),
     #[error("{0}")]
@@ -55,6 +57,8 @@ pub struct Demo {
     pub sculpted: Mesh,
     /// Its C2 sixth-order PDE reconstruction (one group per part).
     pub reconstruction: Mesh,
+    /// A skirt fitted to the sculpted body (paper 004; group `"skirt"`).
+    pub skirt: Mesh,
     /// A prop sketched in silhouettes (paper 003), standing beside the body
     /// (group `"teddy"`).
     pub prop: Mesh,
@@ -70,6 +74,7 @@ pub struct DemoReport {
     /// The plate edit against MakeHuman's pregnancy morph.
     pub belly_vs_morph: BellyComparison,
     pub reconstruction: BodyReport,
+    pub skirt: super::skirt::SkirtReport,
     pub prop: PropReport,
 }
 
@@ -376,6 +381,8 @@ pub fn build() -> Result<Demo, DemoError> {
     ];
     let (_, reconstruction, body_report) =
         reconstruct(&belly, &makehuman_parts(), &BodyOptions::default())?;
+    let (skirt, skirt_report) =
+        super::skirt::skirt(&belly, &super::skirt::SkirtOptions::default())?;
     let (prop, prop_report) = teddy_prop(&belly)?;
     Ok(Demo {
         report: DemoReport {
@@ -384,8 +391,10 @@ pub fn build() -> Result<Demo, DemoError> {
             edits,
             belly_vs_morph,
             reconstruction: body_report,
+            skirt: skirt_report,
             prop: prop_report,
         },
+        skirt,
         sculpted: belly,
         reconstruction,
         prop,

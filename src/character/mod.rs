@@ -5,6 +5,10 @@
 //! make them (a closed curve plus one drag: paper 000's fourth-order PDE
 //! deformation, Fig 14; a region plus a cursor force: paper 001's C1 plate
 //! bending), and the C2 sixth-order PDE reconstruction of the edited body
-//! from its cross sections (paper 002). Every step reports what it measured.
+//! from its cross sections (paper 002), a skirt fitted to the body as a C2
+//! sixth-order ODE surface through boundary and control curves (paper 004,
+//! [`skirt`]) and a prop sketched in silhouettes as a convolution surface
+//! (paper 003). Every step reports what it measured.
 
 pub mod demo;
+pub mod skirt;

@@ -32,6 +32,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     );
     let d = demo::build()?;
     let mut scene = d.sculpted.clone();
+    scene.append(&d.skirt);
     scene.append(&d.prop);
     let views = |m| {
         render_views(
@@ -80,6 +81,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         100.0 * r.recon_to_skin_max_rel,
         r.gec_numbers,
         r.covered_vertex_numbers
+    );
+    let s = &d.report.skirt;
+    eprintln!(
+        "  skirt (paper 004): C2 ODE surface through 2 boundary + 4 control rings, {} numbers for {} vertex coordinates, clearance min {:.3} dm, {:.1} % of vertices inside the body",
+        s.ode_numbers,
+        s.mesh_numbers,
+        s.min_clearance,
+        100.0 * s.inside_fraction
     );
     let p = &d.report.prop;
     eprintln!(

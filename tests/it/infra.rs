@@ -241,6 +241,42 @@ fn render_draws_the_mesh_inside_the_frame() {
 }
 
 #[test]
+fn skirt_rejects_bad_options() {
+    use pdesculpt::character::skirt::{skirt, SkirtOptions};
+    let body = pdesculpt::makehuman::base_body().unwrap().mesh;
+    for o in [
+        SkirtOptions {
+            hem_y: 1.0,
+            ..Default::default()
+        },
+        SkirtOptions {
+            ease: f64::NAN,
+            ..Default::default()
+        },
+        SkirtOptions {
+            ring_samples: 2,
+            ..Default::default()
+        },
+        // above the head: no cross section
+        SkirtOptions {
+            waist_y: 20.0,
+            hem_y: 19.0,
+            ..Default::default()
+        },
+        // a = rho = eta = lambda = 0
+        SkirtOptions {
+            rho: 0.0,
+            eta: 0.0,
+            lambda: 0.0,
+            ..Default::default()
+        },
+    ] {
+        let e = skirt(&body, &o).expect_err("bad options are refused");
+        assert!(e.to_string().starts_with("skirt"), "{e}");
+    }
+}
+
+#[test]
 fn demo_pipeline_measures_each_step() {
     let d = pdesculpt::character::demo::build().expect("demo builds");
     assert_eq!(d.report.edits.len(), 2);
