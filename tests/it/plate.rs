@@ -449,3 +449,142 @@ fn plate_compare_rejects_bad_parameters() {
     assert!(compare(Shape::Square, 20, &DeltaMushParams::default(), &bad_w).is_err());
     assert!(compare(Shape::Square, 4, &DeltaMushParams::default(), &lap).is_err());
 }
+
+#[test]
+fn plate_cli_bad_input_is_a_clear_error() {
+    let dir = std::env::temp_dir().join(format!("plate_cli_bad_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mesh = sheet(16);
+    let input = dir.join("sheet.obj");
+    io::write(&mesh, &input).unwrap();
+    let square = region_in_polygon(&mesh, &Shape::Square.polygon());
+    let list = |r: &[u32]| {
+        r.iter()
+            .map(|v| v.to_string())
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    // a sheet whose OBJ holds a NaN coordinate
+    let nan_obj = dir.join("nan.obj");
+    let text = std::fs::read_to_string(&input).unwrap();
+    let mut done = false;
+    let lines: Vec<String> = text
+        .lines()
+        .map(|l| {
+            if !done && l.starts_with("v ") {
+                done = true;
+                "v nan 0 0".to_string()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    std::fs::write(&nan_obj, lines.join("\n")).unwrap();
+    // C-shaped region: centroid in the gap (paper limit 2)
+    let c_shape: Vec<u32> = (0..mesh.positions.len() as u32)
+        .filter(|&i| {
+            let p = mesh.positions[i as usize];
+            let r = p[0].hypot(p[1]);
+            (0.7..=1.2).contains(&r) && p[0] < 0.5
+        })
+        .collect();
+    let out = dir.join("out.obj");
+    let bin = env!("CARGO_BIN_EXE_pdesculpt");
+    // (region text, mesh, extra args, expected message)
+    let cases: Vec<(String, &std::path::Path, Vec<&str>, &str)> = vec![
+        (String::new(), &input, vec![], "region has 0 vertices"),
+        (list(&square[..2]), &input, vec![], "region has 2 vertices"),
+        (
+            list(&square),
+            &input,
+            vec!["--view", "1,0,0"],
+            "degenerate projection",
+        ),
+        (
+            list(&square),
+            &input,
+            vec!["--alpha0", "0.6"],
+            "does not close",
+        ),
+        (
+            list(&square),
+            &input,
+            vec!["--force", "nan,0,0"],
+            "--force needs three finite numbers",
+        ),
+        (
+            list(&square),
+            &input,
+            vec!["--sensitivity", "nan"],
+            "--sensitivity must be finite",
+        ),
+        (list(&square), &nan_obj, vec![], "non-finite"),
+        (list(&c_shape), &input, vec![], "centroid lies outside"),
+        (list(&square), &input, vec!["--poisson", "0.7"], "mu"),
+    ];
+    let rfile = dir.join("region.txt");
+    for (region, mesh_path, extra, expect) in cases {
+        std::fs::write(&rfile, &region).unwrap();
+        let mut cmd = std::process::Command::new(bin);
+        cmd.args(["plate", "deform"])
+            .arg(mesh_path)
+            .arg("--region")
+            .arg(&rfile)
+            .args(["-o"])
+            .arg(&out);
+        if !extra.contains(&"--force") {
+            cmd.args(["--force", "0,0,1"]);
+        }
+        let st = cmd.args(&extra).output().unwrap();
+        let err = String::from_utf8_lossy(&st.stderr);
+        assert_eq!(st.status.code(), Some(1), "{extra:?}: {err}");
+        assert!(
+            err.contains(expect),
+            "{extra:?}: expected {expect:?} in {err}"
+        );
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(!out.exists(), "{extra:?} wrote an output");
+    }
+    // the harmonic mapping handles the C-shaped region
+    std::fs::write(&rfile, list(&c_shape)).unwrap();
+    let st = std::process::Command::new(bin)
+        .args(["plate", "deform"])
+        .arg(&input)
+        .arg("--region")
+        .arg(&rfile)
+        .args(["--force", "0,0,1", "--harmonic", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        st.status.success(),
+        "{}",
+        String::from_utf8_lossy(&st.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+    /// Eq 3 and eq 12 over the documented material ranges (E > 0, mu in
+    /// [0, 0.5], h > 0) and forces: the biharmonic residual equals q/D and
+    /// the C1 conditions hold on the unit circle, measured with jets.
+    #[test]
+    fn plate_model_checks_hold_over_material_ranges(
+        young in 1e2f64..1e9, mu in 0.0f64..=0.5, h in 1e-3f64..1.0,
+        q in -1e3f64..1e3, r in 0.0f64..1.0, th in 0.0f64..6.3, tb in 0.0f64..6.3,
+    ) {
+        use pdesculpt::jet::Jet4x4;
+        use pdesculpt::plate::disk_solution;
+        let d = Material { young, poisson: mu, thickness: h }.rigidity().unwrap();
+        prop_assert!(d.is_finite() && d > 0.0);
+        let w = disk_solution(q, d, Jet4x4::var_u(r * th.cos()), Jet4x4::var_v(r * th.sin()));
+        let bl = w.deriv(4, 0) + 2.0 * w.deriv(2, 2) + w.deriv(0, 4);
+        prop_assert!((d * bl - q).abs() <= 1e-9 * q.abs().max(1e-12), "residual {}", d * bl - q);
+        let wb = disk_solution(q, d, Jet4x4::var_u(tb.cos()), Jet4x4::var_v(tb.sin()));
+        let scale = (q / d).abs().max(1e-300);
+        for v in [wb.value(), wb.deriv(1, 0), wb.deriv(0, 1)] {
+            prop_assert!(v.abs() <= 1e-12 * scale, "boundary value {v}");
+        }
+    }
+}

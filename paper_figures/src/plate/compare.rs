@@ -109,6 +109,39 @@ fn contour_map(c: &Comparison, w: &[f64], size: usize) -> Image {
     img
 }
 
+/// The row `img` of equal-width panels with one caption above each.
+fn with_captions(img: &Image, captions: &[String]) -> anyhow::Result<Image> {
+    let bar = 30usize;
+    let w = img.width;
+    let mut buf = vec![255u8; w * bar * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w as u32, bar as u32)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let pw = w / captions.len().max(1);
+        for (k, c) in captions.iter().enumerate() {
+            root.draw(&Text::new(
+                c.clone(),
+                ((k * pw + 12) as i32, 7),
+                ("sans-serif", 16).into_font(),
+            ))?;
+        }
+        root.present()?;
+    }
+    let mut out = Image::new(w, img.height + bar, [255, 255, 255, 255]);
+    for y in 0..bar {
+        for x in 0..w {
+            let i = (y * w + x) * 3;
+            out.put(x as i64, y as i64, [buf[i], buf[i + 1], buf[i + 2], 255]);
+        }
+    }
+    for y in 0..img.height {
+        for x in 0..w {
+            out.put(x as i64, (y + bar) as i64, img.get(x, y));
+        }
+    }
+    Ok(out)
+}
+
 fn methods(c: &Comparison) -> [(&'static str, &Vec<f64>); 4] {
     [
         ("ground_truth", &c.truth),
@@ -160,6 +193,11 @@ pub fn table(ctx: &Ctx) -> anyhow::Result<()> {
             "amplitude_ratio_ours_over_truth": c.amplitude_ratio,
         }));
     }
+    let (dm, lap) = (DeltaMushParams::default(), LaplacianParams::default());
+    md.push_str(&format!(
+        "\nErrors of the unit-peak deflection against the raw Morley FE clamped plate on the region's triangles ({GRID}x{GRID} sheet, q = 1). Laplacian: linearised Sorkine et al. 2004 (no implicit rotations), {:?} weights, handle weight {}; Delta Mush: {} iterations, step {}. Regenerate the table and Figs 1, 8, 9, 11, 12 with\n`cargo run --release -p paper_figures -- 001-table-errors 001-fig11 001-fig12 001-fig8 001-fig9 001-fig1`\n",
+        lap.weights, lap.handle_weight, dm.iterations, dm.step
+    ));
     eprintln!("{md}");
     ctx.write_bytes("001-table-errors.md", md.as_bytes())?;
     ctx.write_json(
@@ -168,6 +206,7 @@ pub fn table(ctx: &Ctx) -> anyhow::Result<()> {
             "grid": GRID,
             "normalisation": "every deflection field scaled to unit peak before differencing",
             "ground_truth": "Morley FE clamped plate on the region's triangles, q = 1",
+            "laplacian_model": "linearised (Sorkine et al. 2004 without implicit rotations)",
             "delta_mush": DeltaMushParams::default(),
             "laplacian": LaplacianParams::default(),
             "rows": rows,
@@ -197,6 +236,15 @@ pub fn fig11(ctx: &Ctx) -> anyhow::Result<()> {
         );
         let contours: Vec<Image> = ms.iter().map(|(_, w)| contour_map(&c, w, 360)).collect();
         let contour_row = Image::hstack(&contours, [255, 255, 255, 255]);
+        let captions: Vec<String> = ms
+            .iter()
+            .map(|(m, _)| match c.errors.iter().find(|e| e.method == *m) {
+                Some(e) => format!("{m}  rms {:.3} max {:.3}", e.rms, e.max),
+                None => format!("{m} (FE)"),
+            })
+            .collect();
+        let shapes = with_captions(&shapes, &captions)?;
+        let contour_row = with_captions(&contour_row, &captions)?;
         ctx.write_bytes(
             &format!("001-fig11-{}-shapes.png", s.name()),
             &shapes.encode_png(),
