@@ -1,5 +1,6 @@
 //! Regenerates the papers' figures and tables: `cargo run --release -p
-//! paper_figures -- list | all | <id>...`. Each figure writes its images
+//! paper_figures -- list | all | <id or paper>...` (a paper number such as
+//! `001` selects all of that paper's figures). Each figure writes its images
 //! (PNG/SVG) and a data JSON beside them into `paper_figures/out/` (or
 //! `--out DIR`), and records the checks it relied on.
 
@@ -46,7 +47,9 @@ fn run() -> anyhow::Result<()> {
     let ctx = Ctx::new(out)?;
     match args.first().map(String::as_str) {
         None | Some("list") | Some("--help") | Some("-h") => {
-            println!("usage: paper_figures [--out DIR] list | all | <id>...");
+            println!(
+                "usage: paper_figures [--out DIR] list | all | <id or paper number, e.g. 001>..."
+            );
             for f in &figures {
                 println!("{:<24} paper {}  {}", f.id, f.paper, f.title);
             }
@@ -60,11 +63,16 @@ fn run() -> anyhow::Result<()> {
         }
         Some(_) => {
             for id in &args {
-                let f = figures
+                let chosen: Vec<&Figure> = figures
                     .iter()
-                    .find(|f| f.id == id)
-                    .ok_or_else(|| anyhow::anyhow!("unknown figure {id:?}; try 'list'"))?;
-                ctx.run(f)?;
+                    .filter(|f| f.id == id || f.paper == id)
+                    .collect();
+                if chosen.is_empty() {
+                    anyhow::bail!("unknown figure or paper {id:?}; try 'list'");
+                }
+                for f in chosen {
+                    ctx.run(f)?;
+                }
             }
             Ok(())
         }
