@@ -359,7 +359,7 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                 .iter()
                 .filter_map(|(w, c)| match c {
                     Curve::Fourier(f) => Some((*w, f)),
-                    Curve::Spline { .. } => None,
+                    _ => None,
                 })
                 .collect();
             Curve::Fourier(lin(&fs))
@@ -379,6 +379,22 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                 }
             }
             Curve::Spline { points: p, m2: m }
+        }
+        Curve::Hermite { .. } => {
+            let mut ends = [[[0.0; 3]; 3]; 2];
+            for (w, c) in terms {
+                if let Curve::Hermite { ends: e } = c {
+                    for (a, b) in ends
+                        .iter_mut()
+                        .flatten()
+                        .flatten()
+                        .zip(e.iter().flatten().flatten())
+                    {
+                        *a += w * b;
+                    }
+                }
+            }
+            Curve::Hermite { ends }
         }
     }
 }
