@@ -175,6 +175,20 @@ pub fn checks() -> Vec<Check> {
                     tol::scaled(tol::SOLVE, amp * 1e-3),
                     &format!("g_j^(i)(0), g_j^(i)(1) against the unit constraints (jets); coefficient magnitude {amp:.1e}"),
                 ));
+                // C2 across the joins of a 2 x 2 grid whose columns both use
+                // this case (separate patches, Hermite constraint curves).
+                let knots: Vec<_> = grid_knots().into_iter().take(3).collect();
+                let rel = Grid::from_knots(&knots, vec![b.clone(), b.clone()])
+                    .map(|g| g.jumps(8).relative(GRID_MAGNITUDE_FLOOR))
+                    .unwrap_or(f64::NAN);
+                out.push(ck(
+                    "eqs 23-26",
+                    &format!("ode6.continuity.{name}"),
+                    Kind::Continuity,
+                    rel,
+                    tol::scaled(tol::SOLVE, amp * 1e-3),
+                    "2 x 2 grid, both columns this case: largest jump of d^jS/du^j, d^jS/dv^j (j <= 2) across the u- and v-joins relative to the derivative's magnitude there (fails below magnitude 0.1 as vacuous)",
+                ));
                 out.push(ck(
                     "eq 8",
                     &format!("ode6.residual.{name}"),
