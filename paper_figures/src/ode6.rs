@@ -648,9 +648,9 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             "panels": ["loft per pair of sections (C0)", "rho = 0 chain (C1)", "ODE6 chain (C2)"],
             "u_jumps_c2_chain": {"c0": j2[0], "c1": j2[1], "c2": j2[2]},
             "u_jumps_c1_chain": {"c0": j1[0], "c1": j1[1], "c2": j1[2]},
-            "v_split_equal_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(1.0, 1.0, 3.0))?,
+            "grid_3x2_jumps": pdesculpt::ode6::check::grid_3x2()?.jumps(32),
             "v_split_fig6b_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0))?,
-            "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) break even C0 in v."
+            "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. grid_3x2_jumps: the separately built 3 x 2 grid of the check ode6.continuity_grid_3x2 (jumps and derivative magnitudes at its u- and v-joins). Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) on one split patch break even C0 in v."
         }),
     )?;
     Ok(())
