@@ -84,6 +84,110 @@ fn panels(meshes: &[Mesh], overlays: &[Overlay], view: View) -> Image {
     Image::hstack(&imgs, [255, 255, 255, 255])
 }
 
+/// Adds a title above `img` (panels of width `img.width / captions.len()`),
+/// a caption under each panel (lines split at `\n`) and, in each panel's
+/// lower-left corner, the model axes x, y, z as seen by `view` (`z_up`: the
+/// render shows the model with z up, see [`y_up`]; else the model's own y
+/// is up).
+pub(crate) fn annotate(
+    img: &Image,
+    title: &str,
+    captions: &[String],
+    view: View,
+    z_up: bool,
+) -> anyhow::Result<Image> {
+    use plotters::prelude::{
+        BitMapBackend, Color, IntoDrawingArea, IntoFont, PathElement, RGBColor, Text,
+    };
+    let lines = captions
+        .iter()
+        .map(|c| c.lines().count())
+        .max()
+        .unwrap_or(0);
+    let (top, bottom) = (34usize, 10 + 17 * lines);
+    let (w, h) = (img.width, img.height + top + bottom);
+    let mut buf = vec![255u8; w * h * 3];
+    for y in 0..img.height {
+        for x in 0..img.width {
+            let p = img.get(x, y);
+            let o = 3 * ((y + top) * w + x);
+            for c in 0..3 {
+                let a = p[3] as u32;
+                buf[o + c] = ((p[c] as u32 * a + 255 * (255 - a)) / 255) as u8;
+            }
+        }
+    }
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w as u32, h as u32)).into_drawing_area();
+        let black = RGBColor(0, 0, 0);
+        root.draw(&Text::new(
+            title.to_string(),
+            (10, 8),
+            ("sans-serif", 18).into_font().color(&black),
+        ))?;
+        let n = captions.len().max(1);
+        let pw = (w / n) as i32;
+        let cam = Camera::fit_box([-1.0; 3], [1.0; 3], view, 10, 10, 0.1);
+        let axes = [
+            ("x", [1.0, 0.0, 0.0], RGBColor(200, 30, 30)),
+            (
+                "y",
+                if z_up {
+                    [0.0, 0.0, -1.0]
+                } else {
+                    [0.0, 1.0, 0.0]
+                },
+                RGBColor(20, 140, 40),
+            ),
+            (
+                "z",
+                if z_up {
+                    [0.0, 1.0, 0.0]
+                } else {
+                    [0.0, 0.0, 1.0]
+                },
+                RGBColor(30, 60, 200),
+            ),
+        ];
+        for (i, c) in captions.iter().enumerate() {
+            let x0 = i as i32 * pw;
+            if i > 0 {
+                root.draw(&PathElement::new(
+                    vec![(x0, top as i32), (x0, (top + img.height) as i32)],
+                    RGBColor(200, 200, 200).stroke_width(1),
+                ))?;
+            }
+            for (l, line) in c.lines().enumerate() {
+                root.draw(&Text::new(
+                    line.to_string(),
+                    (x0 + 8, (top + img.height + 4 + 17 * l) as i32),
+                    ("sans-serif", 14).into_font().color(&black),
+                ))?;
+            }
+            let o = (x0 + 30, (top + img.height) as i32 - 30);
+            for (name, axis, col) in axes {
+                let d = cam.to_view_dir(axis);
+                let e = (o.0 + (22.0 * d[0]) as i32, o.1 - (22.0 * d[1]) as i32);
+                root.draw(&PathElement::new(vec![o, e], col.stroke_width(2)))?;
+                root.draw(&Text::new(
+                    name,
+                    (e.0 + 2, e.1 - 7),
+                    ("sans-serif", 13).into_font().color(&col),
+                ))?;
+            }
+        }
+        root.present().context("drawing the annotations")?;
+    }
+    let mut out = Image::new(w, h, [255, 255, 255, 255]);
+    for y in 0..h {
+        for x in 0..w {
+            let o = 3 * (y * w + x);
+            out.put(x as i64, y as i64, [buf[o], buf[o + 1], buf[o + 2], 255]);
+        }
+    }
+    Ok(out)
+}
+
 fn overlay(c: &Curve, colour: [u8; 4]) -> Overlay {
     let pts = (0..=120).map(|i| c.eval(i as f64 / 120.0)).collect();
     Overlay {
@@ -225,7 +329,21 @@ fn fig2_3(ctx: &Ctx) -> anyhow::Result<()> {
             meshes.push(m);
         }
         let img = panels(&meshes, &[overlay(&c1, RED), overlay(&c4, RED)], VIEW);
-        img.save_png(&ctx.path(&format!("004-{name}.png")))?;
+        let kind = if name.contains("closed") {
+            "closed (Fig 2)"
+        } else {
+            "open (Fig 3)"
+        };
+        let mut caps = vec!["loft (ruled) through c1, c4".to_string()];
+        caps.extend(ws.iter().map(|(l, _)| format!("ODE6 approach 1, {l}")));
+        annotate(
+            &img,
+            &format!("Paper 004 approach 1, {kind} curves: c2 = w1 c1, c3 = w2 c1, c5 = w3 c4, c6 = w4 c4 (rho = lambda = 1, eta = 3); red: c1, c4"),
+            &caps,
+            VIEW,
+            true,
+        )?
+        .save_png(&ctx.path(&format!("004-{name}.png")))?;
         data.push(json!({"figure": name, "panels": ["loft (ruled)", "w = 0", "w1 = 1, w3 = 10", "w2 = 1, w4 = 10"], "params": paper, "surfaces": rows}));
     }
     ctx.write_json("004-fig2-3.json", &json!({"figures": data, "note": "approach 1, rho = lambda = 1, eta = 3; w = 0 lies on the loft (distance ~ tessellation chord error only)"}))?;
@@ -323,7 +441,24 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
         }
         let mut ov: Vec<Overlay> = all.iter().map(|c| overlay(c, RED)).collect();
         ov.truncate(6);
-        panels(&meshes, &ov, VIEW).save_png(&ctx.path(&format!("004-{name}.png")))?;
+        let kind = if name.contains("closed") {
+            "closed (Fig 4)"
+        } else {
+            "open (Fig 5)"
+        };
+        annotate(
+            &panels(&meshes, &ov, VIEW),
+            &format!("Paper 004 approach 2, {kind}: c1, c4 and control curves at u = {u2}, {u3}, {u5}, {u6} (red)"),
+            &[
+                "loft (natural spline in u)\nthrough the 6 curves".to_string(),
+                "ODE6 rho = lambda = 1, eta = 3\n(three-point derivatives)".to_string(),
+                "ODE6 rho = lambda = 1e-4, eta = 3\n(three-point derivatives)".to_string(),
+                "ODE6 rho = lambda = 1, eta = 3\n(printed eqs 4-7)".to_string(),
+            ],
+            VIEW,
+            true,
+        )?
+        .save_png(&ctx.path(&format!("004-{name}.png")))?;
         data.push(json!({"figure": name, "panels": ["loft through the 6 curves", "rho = lambda = 1, eta = 3 (three-point)", "rho = lambda = 1e-4, eta = 3 (three-point)", "rho = lambda = 1, eta = 3 (printed eqs 4-7)"], "u": [u2, u3, u5, u6], "surfaces": rows}));
     }
     ctx.write_json("004-fig4-5.json", &json!({"figures": data}))?;
@@ -359,7 +494,7 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                 .iter()
                 .filter_map(|(w, c)| match c {
                     Curve::Fourier(f) => Some((*w, f)),
-                    Curve::Spline { .. } => None,
+                    _ => None,
                 })
                 .collect();
             Curve::Fourier(lin(&fs))
@@ -379,6 +514,22 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                 }
             }
             Curve::Spline { points: p, m2: m }
+        }
+        Curve::Hermite { .. } => {
+            let mut ends = [[[0.0; 3]; 3]; 2];
+            for (w, c) in terms {
+                if let Curve::Hermite { ends: e } = c {
+                    for (a, b) in ends
+                        .iter_mut()
+                        .flatten()
+                        .flatten()
+                        .zip(e.iter().flatten().flatten())
+                    {
+                        *a += w * b;
+                    }
+                }
+            }
+            Curve::Hermite { ends }
         }
     }
 }
@@ -448,7 +599,18 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
     loft_mesh.append(&lofted[2]);
     let tc = |c: &Chain| tessellate(c, Tessellation { nu: 3 * NU, nv: NV });
     let ov: Vec<Overlay> = curves.iter().map(|c| overlay(c, RED)).collect();
-    panels(&[loft_mesh, tc(&c1), tc(&c2)], &ov, VIEW).save_png(&ctx.path("004-fig6.png"))?;
+    annotate(
+        &panels(&[loft_mesh, tc(&c1), tc(&c2)], &ov, VIEW),
+        "Paper 004 Fig 6: a chain of 3 patches through 4 sections (red), joins at u = 1, 2",
+        &[
+            "loft per pair of sections\n(C0 joins)".to_string(),
+            "rho = 0, eta = 1, lambda = 0\n(C1: positions + tangents)".to_string(),
+            "ODE6 rho = lambda = 1, eta = 3\n(C2 joins, eqs 23-25)".to_string(),
+        ],
+        VIEW,
+        true,
+    )?
+    .save_png(&ctx.path("004-fig6.png"))?;
     // Curvature |S_uu| along u at v = 0.1 through the joins.
     let v = 0.1;
     let n = 600;
@@ -486,9 +648,9 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             "panels": ["loft per pair of sections (C0)", "rho = 0 chain (C1)", "ODE6 chain (C2)"],
             "u_jumps_c2_chain": {"c0": j2[0], "c1": j2[1], "c2": j2[2]},
             "u_jumps_c1_chain": {"c0": j1[0], "c1": j1[1], "c2": j1[2]},
-            "v_split_equal_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(1.0, 1.0, 3.0))?,
+            "grid_3x2_jumps": pdesculpt::ode6::check::grid_3x2()?.jumps(32),
             "v_split_fig6b_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0))?,
-            "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) break even C0 in v."
+            "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. grid_3x2_jumps: the separately built 3 x 2 grid of the check ode6.continuity_grid_3x2 (jumps and derivative magnitudes at its u- and v-joins). Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) on one split patch break even C0 in v."
         }),
     )?;
     Ok(())
@@ -560,8 +722,31 @@ fn fig10(ctx: &Ctx) -> anyhow::Result<()> {
         rows.push(json!({"params": p, "case": s.basis.case.name(), "boundary_error": s.basis.boundary_error(), "max_distance_to_loft": dist_to(&m.positions, &lofted)}));
         meshes.push(m);
     }
-    panels(&meshes, &[overlay(&c1, GREY), overlay(&c4, GREY)], VIEW)
-        .save_png(&ctx.path("004-fig10.png"))?;
+    let mut caps = vec!["loft (ruled) through c1, c4".to_string()];
+    caps.extend(rows.iter().map(|r| {
+        format!(
+            "rho = {}, eta = {}, lambda = {}\n{}",
+            r["params"]["rho"],
+            r["params"]["eta"],
+            r["params"]["lambda"],
+            r["case"]
+                .as_str()
+                .unwrap_or("")
+                .split(" (")
+                .next()
+                .unwrap_or("")
+        )
+    }));
+    annotate(
+        &panels(&meshes, &[overlay(&c1, GREY), overlay(&c4, GREY)], VIEW),
+        &format!(
+            "Paper 004 Fig 10: shape parameters on one approach-1 patch (w = {w:?}); grey: c1, c4"
+        ),
+        &caps,
+        VIEW,
+        true,
+    )?
+    .save_png(&ctx.path("004-fig10.png"))?;
     ctx.write_json("004-fig10.json", &json!({"panels": ["loft", "rho=1 eta=3 lambda=1", "rho=1 eta=1 lambda=3 (complex roots)", "rho=lambda=1e-4 eta=3", "rho=1 eta=-20 lambda=50 (growing)", "rho=1 eta=30 lambda=200 (oscillatory)"], "w": w, "surfaces": rows}))?;
     Ok(())
 }

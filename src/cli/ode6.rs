@@ -1,12 +1,15 @@
 //! `pdesculpt ode6`: C2 sixth-order ODE surfaces (paper 004).
 //!
 //! * `ode6 surface SPEC.json -o OUT.{obj,glb,stl,ply}`: tessellates a patch
-//!   described by a JSON spec (see [`Spec`]).
+//!   described by a JSON spec (see [`Spec`]); curves are `fourier`,
+//!   `polyline`, `gec` (a generalized elliptic curve as serialized by
+//!   `pdesculpt gec`) or `hermite` (`{"start": [P, P', P''], "end": [...]}`).
 //! * `ode6 eval --rho R --eta E --lambda L --bc c1,...,c6 --at u[,u...]`: one
 //!   scalar iso-parametric line, its first two derivatives and the ODE
 //!   residual (teaching and checking).
 
 use anyhow::Context;
+use pdesculpt::curve::gec::Gec;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::jet::Jet;
 use pdesculpt::ode6::{
@@ -61,7 +64,17 @@ pub enum Cmd {
 #[serde(rename_all = "snake_case")]
 pub enum CurveSpec {
     Fourier(Fourier3),
-    Polyline { points: Vec<[f64; 3]>, closed: bool },
+    Polyline {
+        points: Vec<[f64; 3]>,
+        closed: bool,
+    },
+    /// A generalized elliptic curve (frame, centre, x and y coefficient pairs).
+    Gec(Gec),
+    /// An open quintic Hermite segment: `[P, P', P'']` at v = 0 and v = 1.
+    Hermite {
+        start: [[f64; 3]; 3],
+        end: [[f64; 3]; 3],
+    },
 }
 
 impl CurveSpec {
@@ -69,6 +82,13 @@ impl CurveSpec {
         Ok(match self {
             CurveSpec::Fourier(f) => Curve::Fourier(f.clone()),
             CurveSpec::Polyline { points, closed } => Curve::from_polyline(points, *closed)?,
+            CurveSpec::Gec(g) => {
+                // Re-validate the frame and coefficients of deserialized data.
+                let g = Gec::new(g.frame, g.centre, g.x.clone(), g.y.clone())
+                    .context("invalid gec curve")?;
+                Curve::from_gec(&g)?
+            }
+            CurveSpec::Hermite { start, end } => Curve::hermite(*start, *end)?,
         })
     }
 }

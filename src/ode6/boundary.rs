@@ -22,9 +22,15 @@
 //! Curves: a [`Fourier3`] (closed, $\theta = 2\pi v$), a closed sampled
 //! polyline (trigonometric interpolation, exact at the vertices, converted to
 //! a [`Fourier3`]), or an open sampled polyline (natural cubic spline through
-//! the vertices at $v_i = i/(m-1)$, C2 in $v$).
+//! the vertices at $v_i = i/(m-1)$, C2 in $v$), a generalized elliptic
+//! curve ([`Curve::from_gec`], exactly, as the [`Fourier3`] of the same angle
+//! $\theta = 2\pi v$), or a quintic Hermite segment ([`Curve::Hermite`]: its
+//! position, first and second derivative at both ends are given, which is
+//! what eq 26 asks of patches adjacent in $v$: $c_k^{(i)}(1) = \hat
+//! c_k^{(i)}(0)$, $i = 0, 1, 2$).
 
 use super::Ode6Error;
+use crate::curve::gec::Gec;
 use crate::curve::Fourier3;
 use crate::jet::Real;
 use std::f64::consts::PI;
@@ -40,6 +46,26 @@ pub enum Curve {
         points: Vec<[f64; 3]>,
         m2: Vec<[f64; 3]>,
     },
+    /// Open quintic Hermite segment: `ends[e] = [P, P', P'']` at `v = e`
+    /// (`e = 0, 1`), derivatives with respect to `v`.
+    Hermite { ends: [[[f64; 3]; 3]; 2] },
+}
+
+/// The quintic Hermite basis on `[0, 1]`: weights of `P(0), P'(0), P''(0),
+/// P(1), P'(1), P''(1)`.
+pub fn hermite5<T: Real>(t: T) -> [T; 6] {
+    let t2 = t * t;
+    let t3 = t2 * t;
+    let t4 = t3 * t;
+    let t5 = t4 * t;
+    [
+        T::one() - t3 * 10.0 + t4 * 15.0 - t5 * 6.0,
+        t - t3 * 6.0 + t4 * 8.0 - t5 * 3.0,
+        (t2 - t3 * 3.0 + t4 * 3.0 - t5) * 0.5,
+        t3 * 10.0 - t4 * 15.0 + t5 * 6.0,
+        t3 * (-4.0) + t4 * 7.0 - t5 * 3.0,
+        (t3 - t4 * 2.0 + t5) * 0.5,
+    ]
 }
 
 impl Curve {
@@ -67,6 +93,25 @@ impl Curve {
         })
     }
 
+    /// A generalized elliptic curve (paper 000 eq 16, paper 002 eq 1) placed
+    /// in space: `P(v) = gec.eval_v(v)`, exactly (as its [`Fourier3`]).
+    pub fn from_gec(gec: &Gec) -> Result<Curve, Ode6Error> {
+        if !gec.is_finite() {
+            return Err(Ode6Error::BadData(
+                "generalized elliptic curve has non-finite coefficients".into(),
+            ));
+        }
+        Ok(Curve::Fourier(gec.to_fourier3()))
+    }
+
+    /// A quintic Hermite segment from `[P, P', P'']` at `v = 0` and `v = 1`.
+    pub fn hermite(start: [[f64; 3]; 3], end: [[f64; 3]; 3]) -> Result<Curve, Ode6Error> {
+        if start.iter().chain(&end).flatten().any(|x| !x.is_finite()) {
+            return Err(Ode6Error::BadData("Hermite end data is not finite".into()));
+        }
+        Ok(Curve::Hermite { ends: [start, end] })
+    }
+
     /// Whether the curve is closed in `v`.
     pub fn closed(&self) -> bool {
         matches!(self, Curve::Fourier(_))
@@ -92,6 +137,18 @@ impl Curve {
                 }
                 p
             }
+            Curve::Hermite { ends } => {
+                let h = hermite5(v);
+                let mut p = [T::zero(); 3];
+                for k in 0..3 {
+                    for e in 0..2 {
+                        for i in 0..3 {
+                            p[k] += h[3 * e + i] * ends[e][i][k];
+                        }
+                    }
+                }
+                p
+            }
         }
     }
 
@@ -108,6 +165,11 @@ impl Curve {
                 points: sc(points),
                 m2: sc(m2),
             },
+            Curve::Hermite { ends } => {
+                let mut e = *ends;
+                e.iter_mut().flatten().flatten().for_each(|x| *x *= s);
+                Curve::Hermite { ends: e }
+            }
         }
     }
 
@@ -116,6 +178,7 @@ impl Curve {
         match self {
             Curve::Fourier(f) => 3 * (1 + f.cos.len() + f.sin.len()),
             Curve::Spline { points, .. } => 3 * points.len(),
+            Curve::Hermite { .. } => 18,
         }
     }
 }
@@ -248,6 +311,7 @@ impl BoundaryCurves {
                 Curve::Spline { points, m2 } => {
                     points.iter().chain(m2).flatten().all(|x| x.is_finite())
                 }
+                Curve::Hermite { ends } => ends.iter().flatten().flatten().all(|x| x.is_finite()),
             };
             if !finite {
                 return Err(Ode6Error::BadData(

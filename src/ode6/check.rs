@@ -7,9 +7,10 @@ use super::basis::{classify_closed, Basis, Params};
 use super::boundary::{Approach2, BoundaryCurves, Curve, DiffFormula};
 use super::force::Force;
 use super::paper;
-use super::surface::{v_jumps, Chain, Ode6Surface};
+use super::surface::{v_jumps, Chain, Grid, GridJumps, Knot, Ode6Surface};
 use super::Ode6Error;
 use crate::check::{tol, Check, Kind};
+use crate::curve::gec::{Frame, Gec};
 use crate::curve::Fourier3;
 use crate::jet::Jet;
 use crate::surface::Surface;
@@ -89,6 +90,53 @@ pub fn test_curve(scale: f64, z: f64, phase: f64) -> Fourier3 {
     }
 }
 
+/// Smallest derivative magnitude at the grid's joins for its continuity
+/// check to count (below it the check fails as vacuous).
+pub const GRID_MAGNITUDE_FLOOR: f64 = 0.1;
+
+/// Knot data of the 3 x 2 grid check: 4 sections x 3 constraint curves x 3
+/// v-knots of `[P, P_v, P_vv]`, all non-zero (deterministic, smooth in the
+/// indices), sections stacked 1 apart in z.
+pub fn grid_knots() -> Vec<[Vec<Knot>; 3]> {
+    (0..4)
+        .map(|s| {
+            std::array::from_fn(|k| {
+                (0..3)
+                    .map(|t| {
+                        let a = (9 * s + 3 * k + t) as f64 + 1.0;
+                        std::array::from_fn(|i| {
+                            std::array::from_fn(|d| {
+                                let x = (a * (0.7 + 0.31 * i as f64) + 1.3 * d as f64).sin();
+                                let amp = if k == 0 && i == 0 { 1.0 } else { 0.6 };
+                                amp * (0.3 + x)
+                                    + if k == 0 && i == 0 && d == 2 {
+                                        s as f64
+                                    } else {
+                                        0.0
+                                    }
+                            })
+                        })
+                    })
+                    .collect()
+            })
+        })
+        .collect()
+}
+
+/// The 3 x 2 grid of the continuity check: columns with the paper case,
+/// the Fig 4c case and the Fig 6b case.
+pub fn grid_3x2() -> Result<Grid, Ode6Error> {
+    let bases = [
+        Params::new(1.0, 3.0, 1.0),
+        Params::new(1e-4, 3.0, 1e-4),
+        Params::new(1.0, 1.0, 3.0),
+    ]
+    .into_iter()
+    .map(Basis::new)
+    .collect::<Result<Vec<_>, _>>()?;
+    Grid::from_knots(&grid_knots(), bases)
+}
+
 /// All checks of the ode6 family.
 pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
@@ -127,6 +175,20 @@ pub fn checks() -> Vec<Check> {
                     tol::scaled(tol::SOLVE, amp * 1e-3),
                     &format!("g_j^(i)(0), g_j^(i)(1) against the unit constraints (jets); coefficient magnitude {amp:.1e}"),
                 ));
+                // C2 across the joins of a 2 x 2 grid whose columns both use
+                // this case (separate patches, Hermite constraint curves).
+                let knots: Vec<_> = grid_knots().into_iter().take(3).collect();
+                let rel = Grid::from_knots(&knots, vec![b.clone(), b.clone()])
+                    .map(|g| g.jumps(8).relative(GRID_MAGNITUDE_FLOOR))
+                    .unwrap_or(f64::NAN);
+                out.push(ck(
+                    "eqs 23-26",
+                    &format!("ode6.continuity.{name}"),
+                    Kind::Continuity,
+                    rel,
+                    tol::scaled(tol::SOLVE, amp * 1e-3),
+                    "2 x 2 grid, both columns this case: largest jump of d^jS/du^j, d^jS/dv^j (j <= 2) across the u- and v-joins relative to the derivative's magnitude there (fails below magnitude 0.1 as vacuous)",
+                ));
                 out.push(ck(
                     "eq 8",
                     &format!("ode6.residual.{name}"),
@@ -152,7 +214,71 @@ pub fn checks() -> Vec<Check> {
     out.extend(difference_checks());
     out.extend(force_checks());
     out.extend(continuity_checks());
+    out.push(gec_check());
     out
+}
+
+/// Two GECs in tilted frames with different term counts (paper 000 eq 16).
+pub fn test_gecs() -> (Gec, Gec) {
+    let a = crate::curve::gec::check::tilted_gec();
+    let b = Gec {
+        frame: Frame {
+            origin: [0.5, 9.0, 0.4],
+            e1: [0.6, 0.0, 0.8],
+            e2: [0.0, 1.0, 0.0],
+        },
+        centre: [0.0, 0.2],
+        x: vec![[0.7, -0.1], [0.05, 0.0]],
+        y: vec![[0.9, 0.02], [0.0, 0.04]],
+    };
+    (a, b)
+}
+
+/// Largest error of a patch from GEC boundary curves (approach 1) against
+/// the GECs evaluated by [`Gec::eval_v`] itself: positions, u-derivatives
+/// `w c` and v-derivatives of the boundaries, at 24 v (jets).
+pub fn gec_boundary_error(p: Params, w: [f64; 4]) -> Result<f64, Ode6Error> {
+    let (ga, gb) = test_gecs();
+    let s = Ode6Surface::new(
+        Basis::new(p)?,
+        BoundaryCurves::approach1(Curve::from_gec(&ga)?, Curve::from_gec(&gb)?, w)?,
+    );
+    let mut err = 0.0f64;
+    for i in 0..24 {
+        let v = i as f64 / 24.0;
+        for (g, u, scale) in [(&ga, 0.0, [1.0, w[0], w[1]]), (&gb, 1.0, [1.0, w[2], w[3]])] {
+            let pt = s.eval(Jet::<3, 3>::var_u(u), Jet::<3, 3>::var_v(v));
+            let gv = g.eval_v(Jet::<1, 3>::var_v(v));
+            for k in 0..3 {
+                for (du, sc) in scale.iter().enumerate() {
+                    for dv in 0..3 {
+                        err = err.max((pt[k].deriv(du, dv) - sc * gv[k].deriv(0, dv)).abs());
+                    }
+                }
+            }
+        }
+    }
+    Ok(err)
+}
+
+fn gec_check() -> Check {
+    let cases = [
+        (Params::new(1.0, 3.0, 1.0), [1.0, 0.5, -1.0, 2.0]),
+        (Params::new(1.0, 1.0, 3.0), [0.0, 3.0, 0.0, -3.0]),
+        (Params::new(1e-4, 3.0, 1e-4), [2.0, 0.0, 1.0, 0.0]),
+    ];
+    let err = cases
+        .iter()
+        .map(|(p, w)| gec_boundary_error(*p, *w).unwrap_or(f64::NAN))
+        .fold(0.0f64, |a, b| if b.is_nan() { f64::NAN } else { a.max(b) });
+    ck(
+        "eq 1",
+        "ode6.boundary.gec_curves",
+        Kind::Boundary,
+        err,
+        tol::SOLVE,
+        "approach 1 from two GECs in tilted frames (crate::curve::gec): S, S_u, S_uu at u = 0, 1 and their v-derivatives up to 2 against w * Gec::eval_v (3 parameter cases, 24 v, jets)",
+    )
 }
 
 /// The series and the closed forms agree where both apply.
@@ -562,35 +688,54 @@ fn continuity_checks() -> Vec<Check> {
             &format!("jump of d^{i}S/du^{i} across the joins of a 3-patch chain with different shape parameters per patch (paper case, fig 4c case, fig 6b case)"),
         ));
     }
-    // A 3 x 2 grid: every patch of the chain split at v = 0.4; C2 across
-    // every v-join (equal parameters within a column of patches).
-    let grid_v = match &chain {
-        Ok(c) => c
-            .patches
-            .iter()
-            .map(|p| {
-                match (
-                    p.clone().with_v_range(0.0, 0.4),
-                    p.clone().with_v_range(0.4, 1.0),
-                ) {
-                    (Ok(a), Ok(b)) => v_jumps(&a, &b, 12),
-                    _ => [f64::NAN; 3],
-                }
-            })
-            .fold([0.0f64; 3], |acc, j| {
-                [acc[0].max(j[0]), acc[1].max(j[1]), acc[2].max(j[2])]
-            }),
-        Err(_) => [f64::NAN; 3],
+    // A 3 x 2 grid of separately built patches (own Hermite constraint
+    // curves each, see `grid_knots`): C2 across every u-join and v-join.
+    let grid = grid_3x2();
+    let gj = grid.as_ref().map(|g| g.jumps(16));
+    let rel = |f: fn(&GridJumps) -> (f64, f64)| match &gj {
+        Ok(j) => {
+            let (jump, mag) = f(j);
+            if mag < GRID_MAGNITUDE_FLOOR {
+                f64::INFINITY
+            } else {
+                jump / mag
+            }
+        }
+        Err(_) => f64::NAN,
     };
+    let mags = gj
+        .as_ref()
+        .map(|j| {
+            format!(
+                "|S_u^(j)| up to {:.2?}, |S_v^(j)| up to {:.2?}",
+                j.u_magnitude, j.v_magnitude
+            )
+        })
+        .unwrap_or_else(|e| format!("grid failed: {e}"));
     out.push(ck(
         "eqs 23-26",
         "ode6.continuity_grid_3x2",
         Kind::Continuity,
-        grid_v.iter().fold(0.0, |a: f64, b| if b.is_nan() { f64::NAN } else { a.max(*b) }),
+        gj.as_ref().map(|j| j.relative(GRID_MAGNITUDE_FLOOR)).unwrap_or(f64::NAN),
         tol::SOLVE,
-        "3 x 2 grid (the chain above split at v = 0.4): largest C0/C1/C2 jump in v across the three v-joins (the u-joins are the chain's)",
+        &format!("3 x 2 grid of separately built patches (each its own six quintic Hermite constraint curves; parameters per column: paper case, fig 4c case, fig 6b case): largest jump of d^jS/du^j (j <= 2) across the u-joins and d^jS/dv^j across the v-joins, relative to the derivative's magnitude there ({mags}; below {GRID_MAGNITUDE_FLOOR} the check fails as vacuous)"),
     ));
-    // v: split the same curves at v = 0.4.
+    for (i, what) in ["c0", "c1", "c2"].iter().enumerate() {
+        let m = match i {
+            0 => rel(|j| (j.v[0], j.v_magnitude[0])),
+            1 => rel(|j| (j.v[1], j.v_magnitude[1])),
+            _ => rel(|j| (j.v[2], j.v_magnitude[2])),
+        };
+        out.push(ck(
+            "eq 26",
+            &format!("ode6.continuity_v.{what}"),
+            Kind::Continuity,
+            m,
+            tol::SOLVE,
+            &format!("jump of d^{i}S/dv^{i} across the v-joins of the 3 x 2 grid (separate patches whose constraint curves meet C2 at the knot, equal shape parameters within a column), relative to |d^{i}S/dv^{i}| there"),
+        ));
+    }
+    // Fig 6b: split the same curves at v = 0.4, different parameters.
     let curves = BoundaryCurves::approach1(
         Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
         Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
@@ -608,17 +753,6 @@ fn continuity_checks() -> Vec<Check> {
         };
         v_jumps(&a, &b, 20)
     };
-    let same = split(Params::new(1.0, 1.0, 3.0), Params::new(1.0, 1.0, 3.0));
-    for (i, what) in ["c0", "c1", "c2"].iter().enumerate() {
-        out.push(ck(
-            "eq 26",
-            &format!("ode6.continuity_v.{what}"),
-            Kind::Continuity,
-            same[i],
-            tol::SOLVE,
-            &format!("jump of d^{i}S/dv^{i} across a split in v of one patch (equal shape parameters, rho = eta = 1, lambda = 3)"),
-        ));
-    }
     let fig6b = split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0));
     out.push(
         Check::paper_literal(FAMILY, PAPER, "eq 26, Fig 6b", "ode6.paper_literal.fig6b_v_join", fig6b[0], 1e-3, true).note(format!(

@@ -24,8 +24,8 @@
 //! * [`force`]: particular solutions for polynomial and sine sculpting forces
 //!   $F(u)$ (left to future work by the paper).
 //! * [`surface`]: [`Ode6Surface`] (the [`crate::surface::Surface`] impl, fast
-//!   tensor-product grids), chains of patches in $u$ (eqs 23-25) and splits in
-//!   $v$ (eq 26).
+//!   tensor-product grids), chains of patches in $u$ (eqs 23-25), splits in
+//!   $v$ and [`Grid`]s of patches C2 in both directions (eq 26).
 
 pub mod basis;
 pub mod boundary;
@@ -37,7 +37,7 @@ pub mod surface;
 pub use basis::{Basis, Params, RootCase};
 pub use boundary::{Approach2, BoundaryCurves, Curve, DiffFormula};
 pub use force::Force;
-pub use surface::{Chain, Ode6Surface};
+pub use surface::{Chain, Grid, GridJumps, Ode6Surface};
 
 /// Errors of the ode6 family.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

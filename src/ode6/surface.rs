@@ -257,3 +257,126 @@ pub fn v_jumps(a: &Ode6Surface, b: &Ode6Surface, nu: usize) -> [f64; 3] {
     }
     out
 }
+
+/// Curve data at a knot in `v`: `[P, P_v, P_vv]`.
+pub type Knot = [[f64; 3]; 3];
+
+/// A grid of patches, C2 in `u` and in `v`: `patches[i][r]` spans sections
+/// `i`, `i + 1` in `u` and knots `r`, `r + 1` in `v`, each with its own six
+/// constraint curves (quintic Hermite segments, see [`Grid::from_knots`]).
+#[derive(Clone, Debug)]
+pub struct Grid {
+    pub patches: Vec<Vec<Ode6Surface>>,
+}
+
+/// Largest jumps of `d^j S/du^j` across the u-joins and of `d^j S/dv^j`
+/// across the v-joins of a [`Grid`], `j = 0, 1, 2`, and the largest
+/// magnitudes of those derivatives at the joins (so a check can tell a
+/// continuous join from a vacuous one).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct GridJumps {
+    pub u: [f64; 3],
+    pub v: [f64; 3],
+    pub u_magnitude: [f64; 3],
+    pub v_magnitude: [f64; 3],
+}
+
+impl GridJumps {
+    /// `max_j jump_j / magnitude_j` over both directions; infinite when a
+    /// magnitude is below `floor` (the join would be vacuous), NaN when any
+    /// entry is NaN.
+    pub fn relative(&self, floor: f64) -> f64 {
+        let mut out = 0.0f64;
+        for (j, m) in self
+            .u
+            .iter()
+            .zip(&self.u_magnitude)
+            .chain(self.v.iter().zip(&self.v_magnitude))
+        {
+            if j.is_nan() || m.is_nan() {
+                return f64::NAN;
+            }
+            if *m < floor {
+                return f64::INFINITY;
+            }
+            out = out.max(j / m);
+        }
+        out
+    }
+}
+
+impl Grid {
+    /// `knots[s][k][t]`: constraint curve `k` (0: position, 1: first, 2:
+    /// second u-derivative) of section `s` at v-knot `t`, as `[P, P_v,
+    /// P_vv]` per unit of a row's own parameter. Patch `(i, r)` takes the
+    /// Hermite segments between knots `r` and `r + 1` of sections `i` and
+    /// `i + 1` and the basis `bases[i]` (one set of shape parameters per
+    /// column: eq 26 needs equal `g_k` across a v-join).
+    pub fn from_knots(knots: &[[Vec<Knot>; 3]], bases: Vec<Basis>) -> Result<Grid, Ode6Error> {
+        let nt = knots.first().map(|s| s[0].len()).unwrap_or(0);
+        if knots.len() < 2 || bases.len() + 1 != knots.len() || nt < 2 {
+            return Err(Ode6Error::BadData(format!(
+                "a grid needs n + 1 >= 2 sections for n parameter sets and >= 2 knots in v (got {} sections, {} parameter sets, {nt} knots)",
+                knots.len(),
+                bases.len()
+            )));
+        }
+        if knots.iter().flatten().any(|k| k.len() != nt) {
+            return Err(Ode6Error::BadData(
+                "every section and constraint needs the same number of v-knots".into(),
+            ));
+        }
+        let seg = |s: usize, k: usize, r: usize| Curve::hermite(knots[s][k][r], knots[s][k][r + 1]);
+        let patches = bases
+            .into_iter()
+            .enumerate()
+            .map(|(i, b)| {
+                (0..nt - 1)
+                    .map(|r| {
+                        let curves = BoundaryCurves::direct([
+                            seg(i, 0, r)?,
+                            seg(i, 1, r)?,
+                            seg(i, 2, r)?,
+                            seg(i + 1, 0, r)?,
+                            seg(i + 1, 1, r)?,
+                            seg(i + 1, 2, r)?,
+                        ])?;
+                        Ok(Ode6Surface::new(b.clone(), curves))
+                    })
+                    .collect::<Result<Vec<_>, Ode6Error>>()
+            })
+            .collect::<Result<Vec<_>, Ode6Error>>()?;
+        Ok(Grid { patches })
+    }
+
+    /// Jumps across every u-join and v-join, `n + 1` samples along each.
+    pub fn jumps(&self, n: usize) -> GridJumps {
+        let mut j = GridJumps {
+            u: [0.0; 3],
+            v: [0.0; 3],
+            u_magnitude: [0.0; 3],
+            v_magnitude: [0.0; 3],
+        };
+        let n = n.max(1);
+        for (i, col) in self.patches.iter().enumerate() {
+            for (r, p) in col.iter().enumerate() {
+                for s in 0..=n {
+                    let t = s as f64 / n as f64;
+                    for d in 0..3 {
+                        if let Some(q) = self.patches.get(i + 1).and_then(|c| c.get(r)) {
+                            let (a, b) = (p.derivative(1.0, t, d, 0), q.derivative(0.0, t, d, 0));
+                            j.u[d] = j.u[d].max(crate::mesh::dist(a, b));
+                            j.u_magnitude[d] = j.u_magnitude[d].max(crate::mesh::norm(a));
+                        }
+                        if let Some(q) = col.get(r + 1) {
+                            let (a, b) = (p.derivative(t, 1.0, 0, d), q.derivative(t, 0.0, 0, d));
+                            j.v[d] = j.v[d].max(crate::mesh::dist(a, b));
+                            j.v_magnitude[d] = j.v_magnitude[d].max(crate::mesh::norm(a));
+                        }
+                    }
+                }
+            }
+        }
+        j
+    }
+}

@@ -320,3 +320,256 @@ fn mismatched_case_is_refused() {
     );
     assert!(matches!(r, Err(Ode6Error::BadData(_))));
 }
+
+/// The quintic Hermite segment takes its end data: position, first and
+/// second derivative at v = 0 and v = 1 (jets).
+#[test]
+fn hermite_segment_meets_end_data() {
+    let knots = pdesculpt::ode6::check::grid_knots();
+    let (a, b) = (knots[1][2][0], knots[1][2][1]);
+    let c = Curve::hermite(a, b).unwrap();
+    for (v, want) in [(0.0, a), (1.0, b)] {
+        let p = c.eval(Jet::<3, 1>::var_u(v));
+        for i in 0..3 {
+            for k in 0..3 {
+                assert!(
+                    (p[k].deriv(i, 0) - want[i][k]).abs() < 1e-13,
+                    "v = {v} i = {i}"
+                );
+            }
+        }
+    }
+    let mut bad = a;
+    bad[1][0] = f64::NAN;
+    assert!(matches!(Curve::hermite(bad, b), Err(Ode6Error::BadData(_))));
+}
+
+/// The 3 x 2 grid check is not vacuous: the registered measure is small on
+/// the real grid and exceeds the tolerance on three deliberately broken
+/// variants (a v-knot's second derivative perturbed on one side, Fig 6b's
+/// differing parameters within a column, a u-section's curvature curve
+/// perturbed on one side), and on a grid whose curves are all zero.
+#[test]
+fn grid_continuity_check_can_fail() {
+    use pdesculpt::ode6::check::{grid_3x2, GRID_MAGNITUDE_FLOOR};
+    let measure = |g: &pdesculpt::ode6::Grid| g.jumps(16).relative(GRID_MAGNITUDE_FLOOR);
+    let good = grid_3x2().unwrap();
+    assert!(measure(&good) < tol::SOLVE, "{:?}", good.jumps(16));
+    let j = good.jumps(16);
+    assert!(j
+        .u_magnitude
+        .iter()
+        .chain(&j.v_magnitude)
+        .all(|m| *m > GRID_MAGNITUDE_FLOOR));
+
+    // (1) v-join: S_vv of patch (1, 1)'s c1 curve at its v = 0 end.
+    let mut g = good.clone();
+    if let Curve::Hermite { ends } = &mut g.patches[1][1].curves.keys[0] {
+        ends[0][2][0] += 0.5;
+    } else {
+        panic!("grid curves are Hermite segments");
+    }
+    let jb = g.jumps(16);
+    assert!(measure(&g) > 1e-3, "{jb:?}");
+    assert!(jb.v[2] > 0.1 && jb.v[0] < tol::SOLVE && jb.v[1] < tol::SOLVE);
+
+    // (2) Fig 6b: different parameters on the two sides of a v-join.
+    let mut g = good.clone();
+    g.patches[2][1].basis = Basis::new(Params::new(0.1, 0.1, 3.0)).unwrap();
+    let jb = g.jumps(16);
+    assert!(jb.v[0] > 1e-4, "{jb:?}");
+    assert!(measure(&g) > 1e-3);
+
+    // (3) u-join: the S_uu curve (c6) of patch (0, 0) at the join with (1, 0).
+    let mut g = good.clone();
+    if let Curve::Hermite { ends } = &mut g.patches[0][0].curves.keys[5] {
+        ends[1][0][2] += 0.3;
+    }
+    let jb = g.jumps(16);
+    assert!(jb.u[2] > 0.1 && jb.u[0] < tol::SOLVE, "{jb:?}");
+    assert!(measure(&g) > 1e-3);
+
+    // (4) Vacuous: all curves zero -> no derivative to compare -> fails.
+    let mut g = good;
+    for col in &mut g.patches {
+        for p in col {
+            for k in &mut p.curves.keys {
+                *k = k.scaled(0.0);
+            }
+        }
+    }
+    assert!(measure(&g).is_infinite());
+}
+
+/// Boundary curves as GECs: a patch meets eq 1 against `Gec::eval_v`
+/// itself, for closed tilted curves; non-finite GECs are refused.
+#[test]
+fn gec_boundary_curves() {
+    use pdesculpt::ode6::check::{gec_boundary_error, test_gecs};
+    for p in [Params::new(1.0, 3.0, 1.0), Params::new(1.0, -20.0, 50.0)] {
+        let e = gec_boundary_error(p, [1.5, -2.0, 0.5, 4.0]).unwrap();
+        assert!(e < tol::SOLVE, "{p:?}: {e:e}");
+    }
+    let (mut g, _) = test_gecs();
+    g.x[0][1] = f64::INFINITY;
+    assert!(matches!(Curve::from_gec(&g), Err(Ode6Error::BadData(_))));
+}
+
+/// `ode6 surface` takes GEC and Hermite curves; a singular parameter set
+/// gets a clear error naming the case, with exit 1 and no file.
+#[test]
+fn cli_gec_spec_and_singular_error() {
+    let bin = env!("CARGO_BIN_EXE_pdesculpt");
+    let dir = std::env::temp_dir().join(format!("ode6_cli_gec_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (ga, gb) = pdesculpt::ode6::check::test_gecs();
+    let spec = |params: serde_json::Value| {
+        serde_json::json!({"params": params,
+            "curves": {"approach1": {"c1": {"gec": ga}, "c4": {"gec": gb}, "w": [1, 0, -1, 0]}}})
+    };
+    let path = dir.join("spec.json");
+    let out_mesh = dir.join("g.obj");
+    std::fs::write(
+        &path,
+        spec(serde_json::json!({"rho": 1, "eta": 3, "lambda": 1})).to_string(),
+    )
+    .unwrap();
+    let st = std::process::Command::new(bin)
+        .args([
+            "ode6",
+            "surface",
+            path.to_str().unwrap(),
+            "-o",
+            out_mesh.to_str().unwrap(),
+            "--nu",
+            "4",
+            "--nv",
+            "16",
+        ])
+        .status()
+        .unwrap();
+    assert!(st.success());
+    let m = pdesculpt::mesh::io::read(&out_mesh).unwrap();
+    let p0 = ga.eval_v(0.0);
+    assert!(m
+        .positions
+        .iter()
+        .any(|q| pdesculpt::mesh::dist(*q, p0) < 1e-9));
+    // Hermite (open) curves.
+    let h = serde_json::json!({"hermite": {"start": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "end": [[1, 0, 0], [1, 0.5, 0], [0, 0, 0]]}});
+    let hs = serde_json::json!({"params": {"rho": 1, "eta": 1, "lambda": 3},
+        "curves": {"approach1": {"c1": h, "c4": h, "w": [0, 0, 0, 0]}}});
+    std::fs::write(&path, hs.to_string()).unwrap();
+    let st = std::process::Command::new(bin)
+        .args([
+            "ode6",
+            "surface",
+            path.to_str().unwrap(),
+            "-o",
+            out_mesh.to_str().unwrap(),
+        ])
+        .status()
+        .unwrap();
+    assert!(st.success());
+    // The singular parameter set of the golden file.
+    let golden: serde_json::Value = serde_json::from_str(pdesculpt::ode6::check::GOLDEN).unwrap();
+    let s = &golden["singular"];
+    std::fs::write(
+        &path,
+        spec(serde_json::json!({"rho": s["rho"], "eta": s["eta"], "lambda": s["lambda"]}))
+            .to_string(),
+    )
+    .unwrap();
+    let bad_mesh = dir.join("bad.obj");
+    let out = std::process::Command::new(bin)
+        .args([
+            "ode6",
+            "surface",
+            path.to_str().unwrap(),
+            "-o",
+            bad_mesh.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("singular boundary system"), "{err}");
+    // The case by name (the golden's q = -1, -w^2 are distinct real roots of eq 13).
+    assert!(err.contains("distinct real roots q ="), "{err}");
+    assert!(!bad_mesh.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A valid shape-parameter set for the grid sweep: eta, lambda any sign.
+fn column_params() -> impl Strategy<Value = Params> {
+    (-2.0f64..1.0, -30.0f64..30.0, -60.0f64..60.0)
+        .prop_map(|(lr, e, l)| Params::new(10f64.powf(lr), e, l))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Grids with random parameters per column and random knot data stay
+    /// C2 across every join (relative jumps below 1e-7), or the basis fails
+    /// by name; nothing non-finite reaches a tessellation.
+    #[test]
+    fn grids_are_c2(ps in prop::array::uniform3(column_params()), shift in prop::array::uniform3(-2.0f64..2.0)) {
+        let bases: Result<Vec<Basis>, Ode6Error> = ps.iter().map(|p| Basis::new(*p)).collect();
+        let bases = match bases {
+            Ok(b) => b,
+            Err(Ode6Error::Singular { case, .. }) => { prop_assert!(!case.is_empty()); return Ok(()); }
+            Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
+        };
+        let mut knots = pdesculpt::ode6::check::grid_knots();
+        for (s, sec) in knots.iter_mut().enumerate() {
+            for (k, curve) in sec.iter_mut().enumerate() {
+                for (t, knot) in curve.iter_mut().enumerate() {
+                    knot[1][k] += shift[(s + t) % 3];
+                    knot[2][(k + 1) % 3] -= shift[(s + 2 * t) % 3];
+                }
+            }
+        }
+        let g = pdesculpt::ode6::Grid::from_knots(&knots, bases).unwrap();
+        let j = g.jumps(6);
+        for d in 0..3 {
+            prop_assert!(j.u[d] <= 1e-7 * j.u_magnitude[d].max(1.0), "{ps:?} {j:?}");
+            prop_assert!(j.v[d] <= 1e-7 * j.v_magnitude[d].max(1.0), "{ps:?} {j:?}");
+        }
+        for col in &g.patches {
+            for p in col {
+                let m = tessellate(p, Tessellation { nu: 4, nv: 4 });
+                prop_assert!(m.positions.iter().flatten().all(|x| x.is_finite()));
+            }
+        }
+    }
+
+    /// Patches from random GECs (any frame) meet eq 1 against `Gec::eval_v`.
+    #[test]
+    fn gec_patches_meet_constraints(
+        a in prop::collection::vec(prop::array::uniform2(-1.0f64..1.0), 1..4),
+        b in prop::collection::vec(prop::array::uniform2(-1.0f64..1.0), 1..4),
+        n in crate::strategies::point3(1.0),
+        w in prop::array::uniform4(-5.0f64..5.0),
+    ) {
+        use pdesculpt::curve::gec::{Frame, Gec};
+        let Ok(frame) = Frame::from_normal([0.0, 0.0, 1.0], [n[0], n[1], n[2] + 1.5], [1.0, 0.0, 0.0]) else { return Ok(()); };
+        let ga = Gec::new(frame, [0.1, 0.0], a.clone(), a.iter().map(|p| [p[1], p[0]]).collect()).unwrap();
+        let gb = Gec::new(Frame::z_plane(1.0), [0.0, 0.2], b.clone(), b.iter().rev().cloned().collect()).unwrap();
+        let s = Ode6Surface::new(
+            Basis::new(Params::new(1.0, 3.0, 1.0)).unwrap(),
+            BoundaryCurves::approach1(Curve::from_gec(&ga).unwrap(), Curve::from_gec(&gb).unwrap(), w).unwrap(),
+        );
+        for i in 0..8 {
+            let v = i as f64 / 8.0;
+            for (g, u, sc) in [(&ga, 0.0, [1.0, w[0], w[1]]), (&gb, 1.0, [1.0, w[2], w[3]])] {
+                let pt = s.eval(Jet::<3, 1>::var_u(u), Jet::<3, 1>::constant(v));
+                let q = g.eval_v(v);
+                for k in 0..3 {
+                    for (du, c) in sc.iter().enumerate() {
+                        prop_assert!((pt[k].deriv(du, 0) - c * q[k]).abs() <= 1e-9 * (1.0 + (c * q[k]).abs()));
+                    }
+                }
+            }
+        }
+    }
+}

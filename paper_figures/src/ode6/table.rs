@@ -1,11 +1,14 @@
 //! Table 1 in the spirit of paper 004: the MakeHuman body's left leg, head
 //! and face (front half of the head) cut into horizontal cross sections, each
 //! resampled to `m` points and interpolated (closed: trigonometrically; face:
-//! open natural splines), joined by a C2 chain of ODE6 patches
+//! open natural splines) or, for the closed regions, fitted by a GEC of J
+//! terms (`crate::curve::gec::fit`, theta = 0 forward on every section;
+//! 4J + 3 scalars per section), joined by a C2 chain of ODE6 patches
 //! (derivative curves from finite differences of the sections), and compared
 //! with the polygon region: vertex counts (the paper's counting: positions,
-//! first and second derivatives per curve vertex) and the reconstruction
-//! error both ways.
+//! first and second derivatives per curve vertex; a GEC section counts as
+//! (4J + 3)/3 vertices) and the reconstruction error both ways, beside a
+//! natural-spline loft through the same sections.
 
 use super::{sections_from, NU};
 use crate::common::Ctx;
@@ -121,6 +124,21 @@ fn longest(loops: &[Polyline]) -> Option<Polyline> {
         .cloned()
 }
 
+/// A closed loop fitted by a GEC of `j` terms (paper 000 eq 16) in the
+/// horizontal plane at height `y`, axes front (+z) and +x so that theta = 0
+/// points forward on every section, from `m` arc-length samples starting at
+/// the front-most point.
+fn gec_section(l: &Polyline, m: usize, j: usize, y: f64) -> anyhow::Result<Curve> {
+    use pdesculpt::curve::gec::{fit, FitOptions, Frame, FrameChoice};
+    let frame = Frame::new([0.0, y, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])?;
+    let opts = FitOptions {
+        frame: FrameChoice::Given(frame),
+        ..FitOptions::new(j)
+    };
+    let rep = fit(&resample(l, m), &opts)?;
+    Ok(Curve::from_gec(&rep.gec)?)
+}
+
 pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
     let body = pdesculpt::makehuman::base_body()?.mesh;
     let (lo, hi) = body.bbox();
@@ -147,7 +165,16 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
     ];
     let mut rows = Vec::new();
     for r in &regions {
-        for (k, m) in [(6usize, 16usize), (8, 24), (12, 32), (16, 48)] {
+        let mut configs: Vec<(usize, usize, Option<usize>)> =
+            [(6usize, 16usize), (8, 24), (12, 32), (16, 48)]
+                .iter()
+                .map(|&(k, m)| (k, m, None))
+                .collect();
+        if !r.front {
+            // Closed sections as fitted GECs (crate::curve::gec) of J terms.
+            configs.extend([(12, 96, Some(6)), (12, 96, Some(12))]);
+        }
+        for (k, m, gec_terms) in configs {
             let ys: Vec<f64> = (0..k)
                 .map(|i| r.y.0 + (r.y.1 - r.y.0) * i as f64 / (k - 1) as f64)
                 .collect();
@@ -161,7 +188,9 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                 let c = l.centroid();
                 radius = radius.max(l.points.iter().map(|p| dist(*p, c)).fold(0.0, f64::max));
                 centroids.push(c);
-                secs.push(if r.front {
+                secs.push(if let Some(j) = gec_terms {
+                    gec_section(&l, m, j, y)?
+                } else if r.front {
                     Curve::from_polyline(&front_arc(&l, m), false)?
                 } else {
                     Curve::Fourier(trig_interpolate(&resample(&l, m)))
@@ -202,12 +231,24 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             let refs: Vec<&Curve> = secs.iter().collect();
             let lofted = super::loft(&refs, &knots, (k - 1) * NU / 4, 2 * m);
             let loft_to_rec = stats(&point_distances(&region_vertices, &lofted));
-            let curve_vertices = k * m;
-            let paper_variables = 3 * curve_vertices;
+            // Stored scalars per section: 3 per resampled point, or the
+            // GEC's centre and 4J coefficients plus its plane's height.
+            let section_scalars = match gec_terms {
+                Some(j) => 4 * j + 3,
+                None => 3 * m,
+            };
+            // "Curve vertices" in scalar-equivalent units (3 scalars each).
+            let curve_vertices = k * section_scalars / 3;
+            let paper_variables = k * section_scalars;
             rows.push(json!({
                 "region": r.name,
                 "sections": k,
                 "points_per_section": m,
+                "section": match gec_terms {
+                    Some(j) => format!("GEC J = {j} (fit to {m} points)"),
+                    None => format!("{m} points"),
+                },
+                "stored_scalars_positions_only": paper_variables,
                 "polygon_vertices": region_vertices.len(),
                 "curve_vertices": curve_vertices,
                 "curve_variables_paper_counting": paper_variables,
@@ -218,7 +259,7 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                 "original_to_loft_baseline": {"rms": loft_to_rec.rms, "max": loft_to_rec.max},
                 "body_height": h,
             }));
-            if k == 12 {
+            if k == 12 && gec_terms.is_none() {
                 let img = pdesculpt::render::render(
                     &rec,
                     &pdesculpt::render::RenderOptions {
@@ -236,17 +277,29 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
                     Some(t) => t,
                     None => "region",
                 };
-                img.save_png(&ctx.path(&format!("004-table1_{tag}.png")))?;
+                super::annotate(
+                    &img,
+                    &format!("ODE6 reconstruction: {tag}"),
+                    &[format!(
+                        "{k} sections x {m} points\nC2 chain, rho = lambda = 1, eta = 3"
+                    )],
+                    pdesculpt::render::View::Perspective {
+                        yaw: 30.0,
+                        pitch: 10.0,
+                    },
+                    false,
+                )?
+                .save_png(&ctx.path(&format!("004-table1_{tag}.png")))?;
             }
         }
     }
-    let mut md = String::from("| region | sections x points | polygon verts | curve variables (paper counting) | data size | positions only | rms / max error orig->rec (dm) | rms / max rec->orig (dm) | loft baseline rms / max orig->loft (dm) |\n|---|---|---|---|---|---|---|---|---|\n");
+    let mut md = String::from("| region | sections x section curve | polygon verts | curve variables (paper counting) | data size | positions only | rms / max error orig->rec (dm) | rms / max rec->orig (dm) | loft baseline rms / max orig->loft (dm) |\n|---|---|---|---|---|---|---|---|---|\n");
     for r in &rows {
         md += &format!(
             "| {} | {} x {} | {} | {} | {:.0}% | {:.0}% | {:.3} / {:.3} | {:.3} / {:.3} | {:.3} / {:.3} |\n",
             r["region"].as_str().unwrap_or(""),
             r["sections"],
-            r["points_per_section"],
+            r["section"].as_str().unwrap_or(""),
             r["polygon_vertices"],
             r["curve_variables_paper_counting"],
             100.0 * r["data_size_paper_counting"].as_f64().unwrap_or(f64::NAN),
