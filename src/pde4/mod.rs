@@ -30,6 +30,7 @@
 
 pub mod apply;
 pub mod check;
+pub mod fd;
 pub mod force;
 pub mod four_sided;
 pub mod quad;

@@ -369,3 +369,38 @@ fn cli_eval_matches_library_and_rejects_bad_specs() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn galerkin_convergence_order_sine_load_vs_fd_reference() {
+    use pdesculpt::pde4::check::{FD_GRID, SINE_LOAD};
+    use pdesculpt::pde4::fd::{fd_centre, fd_centre_extrapolated};
+    use std::f64::consts::PI;
+    let sine = |u: f64, v: f64| (PI * u).sin() * (PI * v).sin();
+    // the FD reference is second order: successive differences shrink by 4
+    let c: Vec<f64> = [16usize, 32, 64]
+        .iter()
+        .map(|&n| fd_centre(ShapeParams::PLATE, n, sine).unwrap())
+        .collect();
+    let fd_ratio = (c[0] - c[1]) / (c[1] - c[2]);
+    assert!((fd_ratio - 4.0).abs() < 0.1, "FD ratio {fd_ratio}");
+    for rho in [1.0, 1.0 / 1.5, 0.5] {
+        let p = ShapeParams::plate_ratio(rho);
+        let reference = fd_centre_extrapolated(p, FD_GRID, sine).unwrap().0;
+        let errs: Vec<(f64, f64)> = [8usize, 12, 16]
+            .iter()
+            .map(|&t| {
+                let w = plate_centre(p, SINE_LOAD, t, four_sided::Method::Galerkin);
+                (t as f64, rel(w, reference))
+            })
+            .collect();
+        for w in errs.windows(2) {
+            let order = (w[0].1 / w[1].1).ln() / (w[1].0 / w[0].0).ln();
+            eprintln!(
+                "rho {rho:.3}: order between M = {} and {}: {order:.2}",
+                w[0].0, w[1].0
+            );
+            assert!(order > MIN_ORDER, "order {order}");
+        }
+        assert!(errs[2].1 < tol::TABLE_4_DIGITS);
+    }
+}
