@@ -213,11 +213,55 @@ proptest! {
     }
 
     #[test]
+    fn part_deformation_is_finite_local_and_reaches_the_drag(p in params(), f in force(), lo in 0.0f64..0.6, len in 0.1f64..0.4, drag in -0.3f64..0.3) {
+        use pdesculpt::pde4::apply::{deform_part, Direction};
+        use pdesculpt::surface::{tessellate, Revolution, Tessellation};
+        prop_assume!(drag.abs() > 1e-3);
+        let part = tessellate(&Revolution { r0: 1.0, r1: 0.2 }, Tessellation { nu: 24, nv: 16 });
+        let t = TwoSided::new([p; 3], &[f], 8, 4, two_sided::Method::Exact, None).unwrap();
+        match deform_part(&part, ([0.0; 3], [0.0, 1.0, 0.0]), (lo, lo + len), f64::INFINITY, &t, Direction::Normal, drag) {
+            Ok(r) => {
+                let mut max = 0.0f64;
+                for (a, b) in r.mesh.positions.iter().zip(&part.positions) {
+                    prop_assert!(a.iter().all(|x| x.is_finite()));
+                    if b[1] < lo - 1e-12 || b[1] > lo + len + 1e-12 {
+                        prop_assert_eq!(a, b);
+                    }
+                    max = max.max(pdesculpt::mesh::dist(*a, *b));
+                }
+                prop_assert!((max - drag.abs()).abs() < tol::SOLVE);
+            }
+            // allowed only when the deformation vanishes at every sampled vertex
+            Err(e) => prop_assert!(matches!(e, Pde4Error::Degenerate(_)), "{e}"),
+        }
+    }
+
+    #[test]
     fn four_sided_galerkin_is_finite_and_clamped(p in params(), fs in prop::collection::vec(force(), 1..3), m in 1usize..7, n in 1usize..7) {
         let s = FourSided::new([p; 3], &fs, m, n, four_sided::Method::Galerkin).unwrap();
         let g = s.grid(&[0.0, 0.3, 0.5, 1.0], &[0.0, 0.2, 0.5, 1.0]);
         prop_assert!(g.iter().flatten().all(|x| x.is_finite()));
         prop_assert!(s.point(0.0, 0.4).iter().chain(s.point(0.6, 1.0).iter()).all(|x| x.abs() < tol::ROUNDING));
+    }
+}
+
+fn terms_to_max() -> impl Strategy<Value = (usize, usize)> {
+    use pdesculpt::pde4::MAX_TERMS;
+    prop_oneof![
+        (1usize..=MAX_TERMS, 0usize..=16),
+        (1usize..=16, 0usize..=MAX_TERMS)
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    #[test]
+    fn two_sided_exact_holds_up_to_max_terms(p in params(), f in force(), (m, n) in terms_to_max()) {
+        // sparse sweep of the whole documented term range, one direction large at a time
+        let t = TwoSided::new([p; 3], &[f], m, n, two_sided::Method::Exact, None).unwrap();
+        prop_assert!(two_sided_residual(&t, 3) < tol::SOLVE);
+        prop_assert!(t.grid(&[0.0, 0.3, 0.7, 1.0], &[0.1, 0.9]).iter().flatten().all(|x| x.is_finite()));
     }
 }
 
