@@ -486,7 +486,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
         "references": "Timoshenko & Woinowsky-Krieger tables 35 (uniform) and the central-load table; 0.00126532 Taylor & Govindjee 2004; sinusoidal loads: pdesculpt::pde4::fd (13-point FD, Richardson-extrapolated; it reproduces 0.00126532 to 1e-6)"}))?;
     let path = ctx.path("000-pde4-plate.png");
     {
-        let root = BitMapBackend::new(&path, (900, 560)).into_drawing_area();
+        let root = BitMapBackend::new(&path, (1100, 600)).into_drawing_area();
         root.fill(&WHITE_RGB)?;
         let mut chart = ChartBuilder::on(&root)
             .caption(
@@ -496,7 +496,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(60)
-            .build_cartesian_2d((1.5f64..24.0).log_scale(), (1e-5f64..10.0).log_scale())?;
+            .build_cartesian_2d((1.5f64..150.0).log_scale(), (1e-5f64..10.0).log_scale())?;
         chart
             .configure_mesh()
             .x_desc("terms M = N")
@@ -538,7 +538,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
         }
         chart
             .draw_series(LineSeries::new(
-                vec![(1.5, 5e-3), (24.0, 5e-3)],
+                vec![(1.5, 5e-3), (22.0, 5e-3)],
                 BLACK.stroke_width(1),
             ))?
             .label("0.5 %")
@@ -548,7 +548,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
             .background_style(WHITE_RGB.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 12))
-            .position(SeriesLabelPosition::LowerLeft)
+            .position(SeriesLabelPosition::LowerRight)
             .draw()?;
         root.present()?;
     }
