@@ -433,6 +433,32 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
             pc::PLATE_SQUARE_POINT,
         ),
     ];
+    // sinusoidal load sin(pi x/a) sin(pi y/b): no trusted published clamped
+    // value, reference = the independent FD solver (Richardson n = FD_GRID, 2 FD_GRID)
+    let sine = |u: f64, v: f64| (PI * u).sin() * (PI * v).sin();
+    let fd = |p: ShapeParams| -> anyhow::Result<f64> {
+        Ok(pdesculpt::pde4::fd::fd_centre_extrapolated(p, pc::FD_GRID, sine)?.0)
+    };
+    let cases = cases.into_iter().chain([
+        (
+            "square, sinusoidal (FD ref.)",
+            ShapeParams::PLATE,
+            pc::SINE_LOAD,
+            fd(ShapeParams::PLATE)?,
+        ),
+        (
+            "b/a = 1.5, sinusoidal (FD ref.)",
+            ShapeParams::plate_ratio(1.0 / 1.5),
+            pc::SINE_LOAD,
+            fd(ShapeParams::plate_ratio(1.0 / 1.5))?,
+        ),
+        (
+            "b/a = 2, sinusoidal (FD ref.)",
+            ShapeParams::plate_ratio(0.5),
+            pc::SINE_LOAD,
+            fd(ShapeParams::plate_ratio(0.5))?,
+        ),
+    ]);
     let terms = [2usize, 4, 6, 8, 12, 16, 20];
     let mut rows = Vec::new();
     let mut series = Vec::new();
@@ -456,22 +482,11 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
                 .collect::<Vec<_>>(),
         ));
     }
-    // sinusoidal load: Galerkin only (converged value recorded)
-    let sin_load = ForceKind::Area {
-        u0: 0.0,
-        u1: 1.0,
-        v0: 0.0,
-        v1: 1.0,
-    };
-    let sinus: Vec<f64> = terms
-        .iter()
-        .map(|&t| plate_centre(ShapeParams::PLATE, sin_load, t, gal))
-        .collect();
-    ctx.write_json("000-pde4-plate.json", &serde_json::json!({"cases": rows, "sinusoidal_square_galerkin": {"terms": terms, "w_centre": sinus},
-        "references": "Timoshenko & Woinowsky-Krieger tables 35 (uniform) and the central-load table; 0.00126532 Taylor & Govindjee 2004"}))?;
+    ctx.write_json("000-pde4-plate.json", &serde_json::json!({"cases": rows,
+        "references": "Timoshenko & Woinowsky-Krieger tables 35 (uniform) and the central-load table; 0.00126532 Taylor & Govindjee 2004; sinusoidal loads: pdesculpt::pde4::fd (13-point FD, Richardson-extrapolated; it reproduces 0.00126532 to 1e-6)"}))?;
     let path = ctx.path("000-pde4-plate.png");
     {
-        let root = BitMapBackend::new(&path, (900, 560)).into_drawing_area();
+        let root = BitMapBackend::new(&path, (1100, 600)).into_drawing_area();
         root.fill(&WHITE_RGB)?;
         let mut chart = ChartBuilder::on(&root)
             .caption(
@@ -481,16 +496,24 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(60)
-            .build_cartesian_2d((1.5f64..24.0).log_scale(), (1e-5f64..10.0).log_scale())?;
+            .build_cartesian_2d((1.5f64..150.0).log_scale(), (1e-5f64..10.0).log_scale())?;
         chart
             .configure_mesh()
             .x_desc("terms M = N")
             .y_desc("|w - w_ref| / w_ref")
             .label_style(("sans-serif", 14))
             .draw()?;
-        let colours = [RED, BLUE, GREEN, MAGENTA];
+        let colours = [
+            RED,
+            BLUE,
+            GREEN,
+            MAGENTA,
+            CYAN,
+            RGBColor(230, 140, 0),
+            RGBColor(110, 60, 20),
+        ];
         for (i, (name, g, p)) in series.iter().enumerate() {
-            let c = colours[i % 4];
+            let c = colours[i % colours.len()];
             let pts: Vec<(f64, f64)> = terms
                 .iter()
                 .zip(g)
@@ -515,7 +538,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
         }
         chart
             .draw_series(LineSeries::new(
-                vec![(1.5, 5e-3), (24.0, 5e-3)],
+                vec![(1.5, 5e-3), (22.0, 5e-3)],
                 BLACK.stroke_width(1),
             ))?
             .label("0.5 %")
@@ -525,7 +548,7 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
             .background_style(WHITE_RGB.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 12))
-            .position(SeriesLabelPosition::LowerLeft)
+            .position(SeriesLabelPosition::LowerRight)
             .draw()?;
         root.present()?;
     }

@@ -20,14 +20,20 @@
 //! Parameters are patch-local in `[0, 1]`; the output is the displacement
 //! `(x, y, z)(u, v)` of PDE (1).
 //!
-//! `eval SPEC --at u,v ...` prints displacements. `apply SPEC --curve
-//! CURVE.json (--mesh IN | --makehuman) --out OUT --drag D` deforms the mesh
-//! region enclosed by a closed curve (a JSON list of `[x, y, z]`) with the
-//! first component of a four-sided spec, re-parameterised onto the unit square
-//! (000 Fig 14).
+//! `eval SPEC --at u,v ...` prints displacements.
+//!
+//! `apply SPEC (--mesh IN | --makehuman) --out OUT --drag D` deforms a mesh
+//! with the first component `w` of the spec (each moved vertex goes `s w d`,
+//! `d` the vertex normal or `--direction`, `s` making the largest move `D`):
+//! * `--curve CURVE.json` (four-sided spec): the region enclosed by a closed
+//!   curve (a JSON list of `[x, y, z]`), re-parameterised onto the unit square
+//!   (000 Fig 14);
+//! * `--axis x0,y0,z0,x1,y1,z1 [--u-range a,b] [--radius R]` (two-sided spec):
+//!   a part closed in v (a limb, a torso), parameterised cylindrically about
+//!   the axis (u along it, v the angle), deformed over the u-range.
 
 use anyhow::{bail, Context};
-use pdesculpt::pde4::apply::{deform_region, Direction};
+use pdesculpt::pde4::apply::{deform_part, deform_region, Direction};
 use pdesculpt::pde4::spec::{Patch, PatchKind, Spec};
 use pdesculpt::surface::Surface;
 use std::path::PathBuf;
@@ -49,13 +55,23 @@ enum Cmd {
         #[arg(long = "at", required = true)]
         at: Vec<String>,
     },
-    /// Deform the mesh region enclosed by a closed curve (four-sided spec).
+    /// Deform a mesh: the region enclosed by a closed curve (four-sided
+    /// spec, --curve) or a u-range of a part closed in v (two-sided spec, --axis).
     Apply {
-        /// The JSON spec (must be four-sided; its x component is the profile).
+        /// The JSON spec (its x component is the profile).
         spec: PathBuf,
-        /// JSON list of `[x, y, z]` points of the closed curve.
+        /// JSON list of `[x, y, z]` points of the closed curve (four-sided spec).
+        #[arg(long, required_unless_present = "axis", conflicts_with = "axis")]
+        curve: Option<PathBuf>,
+        /// Part axis `x0,y0,z0,x1,y1,z1` (two-sided spec): u runs from the first point to the second.
         #[arg(long)]
-        curve: PathBuf,
+        axis: Option<String>,
+        /// Range `a,b` of the axis fraction deformed (with --axis).
+        #[arg(long, default_value = "0,1", requires = "axis")]
+        u_range: String,
+        /// Move only vertices within this distance of the axis (with --axis).
+        #[arg(long, default_value_t = f64::INFINITY, requires = "axis")]
+        radius: f64,
         /// Input mesh (OBJ/STL/PLY).
         #[arg(long, conflicts_with = "makehuman")]
         mesh: Option<PathBuf>,
@@ -68,7 +84,7 @@ enum Cmd {
         /// Largest displacement (the drag distance).
         #[arg(long)]
         drag: f64,
-        /// Move only vertices within this distance of the curve plane.
+        /// Move only vertices within this distance of the curve plane (with --curve).
         #[arg(long, default_value_t = 1.0)]
         depth: f64,
         /// Direction `x,y,z`; default the vertex normals.
@@ -127,6 +143,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         Cmd::Apply {
             spec,
             curve,
+            axis,
+            u_range,
+            radius,
             mesh,
             makehuman,
             out,
@@ -135,15 +154,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             direction,
         } => {
             let sp = load_spec(&spec)?;
-            if sp.patch != PatchKind::FourSided {
-                bail!("'apply' needs a four-sided spec (the region is re-parameterised onto the unit square)");
+            let want = if curve.is_some() {
+                PatchKind::FourSided
+            } else {
+                PatchKind::TwoSided
+            };
+            if sp.patch != want {
+                bail!(
+                    "'apply --curve' needs a four-sided spec (the region is re-parameterised onto the unit square); 'apply --axis' needs a two-sided spec (the part is closed in v)"
+                );
             }
             let patch: Patch = sp.solve()?;
-            let text = std::fs::read_to_string(&curve)
-                .with_context(|| format!("reading {}", curve.display()))?;
-            let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
-                format!("parsing curve {} (a list of [x, y, z])", curve.display())
-            })?;
             let base = match (mesh, makehuman) {
                 (Some(p), false) => pdesculpt::mesh::io::read(&p)
                     .with_context(|| format!("reading {}", p.display()))?,
@@ -157,7 +178,30 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
                 None => Direction::Normal,
             };
-            let r = deform_region(&base, &pts, &patch, dir, drag, depth)?;
+            let r = match (curve, axis) {
+                (Some(curve), _) => {
+                    let text = std::fs::read_to_string(&curve)
+                        .with_context(|| format!("reading {}", curve.display()))?;
+                    let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
+                        format!("parsing curve {} (a list of [x, y, z])", curve.display())
+                    })?;
+                    deform_region(&base, &pts, &patch, dir, drag, depth)?
+                }
+                (None, Some(axis)) => {
+                    let a = parse_list(&axis, 6, "--axis")?;
+                    let r = parse_list(&u_range, 2, "--u-range")?;
+                    deform_part(
+                        &base,
+                        ([a[0], a[1], a[2]], [a[3], a[4], a[5]]),
+                        (r[0], r[1]),
+                        radius,
+                        &patch,
+                        dir,
+                        drag,
+                    )?
+                }
+                (None, None) => bail!("give --curve CURVE.json or --axis x0,y0,z0,x1,y1,z1"),
+            };
             pdesculpt::mesh::io::write(&r.mesh, &out)
                 .with_context(|| format!("writing {}", out.display()))?;
             eprintln!(

@@ -16,6 +16,9 @@
 //!   $s\,w(u, v)\,\mathbf d$ with `w` the deformation's first component,
 //!   $\mathbf d$ the given direction or the vertex normal, and the magnitude
 //!   `s` chosen so that the largest displacement equals the drag distance.
+//! * [`deform_part`]: a mesh part closed in v (a limb, a torso) with a 2-sided
+//!   deformation over a u-range of its axis, parameterised cylindrically
+//!   ([`cylinder_uv`]), moved the same way.
 
 use super::Pde4Error;
 use crate::jet::Real;
@@ -58,7 +61,9 @@ impl<S: Surface, D: Surface> Deformed<S, D> {
                 return Err(Pde4Error::EmptyRange { what, lo, hi });
             }
             if lo < dlo || hi > dhi {
-                return Err(Pde4Error::OutsidePatch { what, lo, hi });
+                return Err(Pde4Error::Degenerate(format!(
+                    "{what} [{lo}, {hi}] lies outside the base domain [{dlo}, {dhi}]"
+                )));
             }
         }
         if !scale.is_finite() {
@@ -190,7 +195,7 @@ pub fn deform_region<D: Surface>(
     drag: f64,
     depth: f64,
 ) -> Result<RegionDeformation, Pde4Error> {
-    use crate::mesh::{dot, norm, sub};
+    use crate::mesh::{dot, sub};
     if curve.len() < 3 {
         return Err(Pde4Error::Degenerate(format!(
             "the closed curve needs at least 3 points, got {}",
@@ -203,24 +208,12 @@ pub fn deform_region<D: Surface>(
             value: f64::NAN,
         });
     }
-    if !drag.is_finite() || !depth.is_finite() || depth <= 0.0 {
-        return Err(Pde4Error::NonFinite {
-            what: "drag/depth",
-            value: if drag.is_finite() { depth } else { drag },
-        });
+    if !depth.is_finite() || depth <= 0.0 {
+        return Err(Pde4Error::Degenerate(format!(
+            "depth {depth} must be finite and > 0"
+        )));
     }
-    let dir = match direction {
-        Direction::Vector(d) => {
-            let l = norm(d);
-            if l.is_nan() || l <= 0.0 || !l.is_finite() {
-                return Err(Pde4Error::Degenerate(
-                    "direction vector is zero or not finite".into(),
-                ));
-            }
-            Some([d[0] / l, d[1] / l, d[2] / l])
-        }
-        Direction::Normal => None,
-    };
+    let dir = check_motion(direction, drag)?;
     let (c, e1, e2, nrm) = curve_frame(curve)?;
     let poly: Vec<[f64; 2]> = curve
         .iter()
@@ -241,6 +234,41 @@ pub fn deform_region<D: Surface>(
             "the drawn curve encloses no mesh vertex".into(),
         ));
     }
+    displace(mesh, region, deformation, dir, drag)
+}
+
+/// Validates drag and direction; `None` means along the vertex normals.
+fn check_motion(direction: Direction, drag: f64) -> Result<Option<[f64; 3]>, Pde4Error> {
+    use crate::mesh::norm;
+    if !drag.is_finite() {
+        return Err(Pde4Error::NonFinite {
+            what: "drag",
+            value: drag,
+        });
+    }
+    match direction {
+        Direction::Vector(d) => {
+            let l = norm(d);
+            if l.is_nan() || l <= 0.0 || !l.is_finite() {
+                return Err(Pde4Error::Degenerate(
+                    "direction vector is zero or not finite".into(),
+                ));
+            }
+            Ok(Some([d[0] / l, d[1] / l, d[2] / l]))
+        }
+        Direction::Normal => Ok(None),
+    }
+}
+
+/// Moves each `(vertex, (u, v))` of `region` by `s w(u, v) d` with `s` such
+/// that the largest displacement is `drag`.
+fn displace<D: Surface>(
+    mesh: &Mesh,
+    region: Vec<(usize, [f64; 2])>,
+    deformation: &D,
+    dir: Option<[f64; 3]>,
+    drag: f64,
+) -> Result<RegionDeformation, Pde4Error> {
     let w: Vec<f64> = region
         .iter()
         .map(|(_, uv)| deformation.point(uv[0], uv[1])[0])
@@ -265,4 +293,109 @@ pub fn deform_region<D: Surface>(
         region,
         magnitude,
     })
+}
+
+/// Cylindrical parameterisation of a part closed in v about the axis from
+/// `a` to `b`: `u` is the fraction along the axis of a vertex's projection,
+/// `v` its angle about the axis over `2 pi`, measured from a fixed direction
+/// perpendicular to the axis (the world axis least aligned with it, projected).
+/// Returns `(u, v, distance from the axis)`, or `None` where the angle is undefined.
+pub fn cylinder_uv(a: [f64; 3], b: [f64; 3], p: [f64; 3]) -> Option<(f64, f64, f64)> {
+    use crate::mesh::{dot, norm, scale, sub};
+    let ax = sub(b, a);
+    let len = norm(ax);
+    if !(len > 0.0 && len.is_finite()) {
+        return None;
+    }
+    let e3 = scale(ax, 1.0 / len);
+    let k = (0..3)
+        .min_by(|&i, &j| e3[i].abs().total_cmp(&e3[j].abs()))
+        .unwrap_or(0);
+    let mut w = [0.0; 3];
+    w[k] = 1.0;
+    let e1 = crate::surface::normalize(sub(w, scale(e3, dot(w, e3))));
+    let e2 = crate::surface::cross(e3, e1);
+    let d = sub(p, a);
+    let u = dot(d, e3) / len;
+    let (x, y) = (dot(d, e1), dot(d, e2));
+    let r = x.hypot(y);
+    if r.is_nan() || r <= 0.0 {
+        return None;
+    }
+    let v = (y.atan2(x) / (2.0 * std::f64::consts::PI)).rem_euclid(1.0);
+    Some((u, v, r))
+}
+
+/// Deforms a part that is closed in v (a limb or torso mesh) with a 2-sided
+/// deformation over the u-range `[u_a, u_b]` of its axis from `a` to `b`
+/// (paper 000 sec 3.1: the deformation is clamped at both ends of the range,
+/// so the part stays C1 there). Vertices whose axial fraction lies in the
+/// range and whose distance from the axis is at most `radius` get
+/// `u = (t - u_a)/(u_b - u_a)` and the angle `v` of [`cylinder_uv`], and move
+/// by `s w(u, v) d` as in [`deform_region`].
+#[allow(clippy::too_many_arguments)]
+pub fn deform_part<D: Surface>(
+    mesh: &Mesh,
+    axis: ([f64; 3], [f64; 3]),
+    u_range: (f64, f64),
+    radius: f64,
+    deformation: &D,
+    direction: Direction,
+    drag: f64,
+) -> Result<RegionDeformation, Pde4Error> {
+    let (a, b) = axis;
+    if a.iter().chain(&b).any(|x| !x.is_finite()) {
+        return Err(Pde4Error::NonFinite {
+            what: "axis point",
+            value: f64::NAN,
+        });
+    }
+    let len = crate::mesh::dist(a, b);
+    if len.is_nan() || len <= 0.0 {
+        return Err(Pde4Error::Degenerate(
+            "the part axis has zero length".into(),
+        ));
+    }
+    let (ua, ub) = u_range;
+    if !ua.is_finite() || !ub.is_finite() {
+        return Err(Pde4Error::NonFinite {
+            what: "part u range",
+            value: if ua.is_finite() { ub } else { ua },
+        });
+    }
+    if ub <= ua {
+        return Err(Pde4Error::EmptyRange {
+            what: "part u range",
+            lo: ua,
+            hi: ub,
+        });
+    }
+    if ua < 0.0 || ub > 1.0 {
+        return Err(Pde4Error::OutsidePatch {
+            what: "part u range",
+            lo: ua,
+            hi: ub,
+        });
+    }
+    if radius.is_nan() || radius <= 0.0 {
+        return Err(Pde4Error::Degenerate(format!(
+            "radius {radius} must be > 0"
+        )));
+    }
+    let dir = check_motion(direction, drag)?;
+    let region: Vec<(usize, [f64; 2])> = mesh
+        .positions
+        .iter()
+        .enumerate()
+        .filter_map(|(i, p)| {
+            let (t, v, r) = cylinder_uv(a, b, *p)?;
+            (t >= ua && t <= ub && r <= radius).then_some((i, [(t - ua) / (ub - ua), v]))
+        })
+        .collect();
+    if region.is_empty() {
+        return Err(Pde4Error::Degenerate(
+            "no mesh vertex lies in the u-range of the part axis".into(),
+        ));
+    }
+    displace(mesh, region, deformation, dir, drag)
 }

@@ -120,16 +120,16 @@ impl Force {
         }
         match self.kind {
             ForceKind::Concentrated { u0, v0 } => {
-                check_pos("u_p0", u0)?;
-                check_pos("v_p0", v0)
+                check_pos("force u_p0", u0)?;
+                check_pos("force v_p0", v0)
             }
             ForceKind::Line { u0, u1, v0 } => {
-                check_range("u_p0..u_p1", u0, u1)?;
-                check_pos("v_p0", v0)
+                check_range("force u_p0..u_p1", u0, u1)?;
+                check_pos("force v_p0", v0)
             }
             ForceKind::Area { u0, u1, v0, v1 } => {
-                check_range("u_p0..u_p1", u0, u1)?;
-                check_range("v_p0..v_p1", v0, v1)
+                check_range("force u_p0..u_p1", u0, u1)?;
+                check_range("force v_p0..v_p1", v0, v1)
             }
             ForceKind::Uniform => Ok(()),
         }

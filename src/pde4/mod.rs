@@ -30,6 +30,7 @@
 
 pub mod apply;
 pub mod check;
+pub mod fd;
 pub mod force;
 pub mod four_sided;
 pub mod quad;
@@ -52,13 +53,13 @@ pub enum Pde4Error {
     NonPositiveA1(f64),
     #[error("shape parameters a_t1 = {a1}, a_t2 = {a2}, a_t3 = {a3} make PDE (1) non-elliptic (need a_t3 > 0 and a_t2 > -2 sqrt(a_t1 a_t3))")]
     NotElliptic { a1: f64, a2: f64, a3: f64 },
-    #[error("force {what} = [{lo}, {hi}] lies outside the patch [0, 1]")]
+    #[error("{what} = [{lo}, {hi}] lies outside [0, 1]")]
     OutsidePatch {
         what: &'static str,
         lo: f64,
         hi: f64,
     },
-    #[error("force {what} = [{lo}, {hi}] is empty (need lower < upper)")]
+    #[error("{what} = [{lo}, {hi}] is empty (need lower < upper)")]
     EmptyRange {
         what: &'static str,
         lo: f64,

@@ -213,11 +213,55 @@ proptest! {
     }
 
     #[test]
+    fn part_deformation_is_finite_local_and_reaches_the_drag(p in params(), f in force(), lo in 0.0f64..0.6, len in 0.1f64..0.4, drag in -0.3f64..0.3) {
+        use pdesculpt::pde4::apply::{deform_part, Direction};
+        use pdesculpt::surface::{tessellate, Revolution, Tessellation};
+        prop_assume!(drag.abs() > 1e-3);
+        let part = tessellate(&Revolution { r0: 1.0, r1: 0.2 }, Tessellation { nu: 24, nv: 16 });
+        let t = TwoSided::new([p; 3], &[f], 8, 4, two_sided::Method::Exact, None).unwrap();
+        match deform_part(&part, ([0.0; 3], [0.0, 1.0, 0.0]), (lo, lo + len), f64::INFINITY, &t, Direction::Normal, drag) {
+            Ok(r) => {
+                let mut max = 0.0f64;
+                for (a, b) in r.mesh.positions.iter().zip(&part.positions) {
+                    prop_assert!(a.iter().all(|x| x.is_finite()));
+                    if b[1] < lo - 1e-12 || b[1] > lo + len + 1e-12 {
+                        prop_assert_eq!(a, b);
+                    }
+                    max = max.max(pdesculpt::mesh::dist(*a, *b));
+                }
+                prop_assert!((max - drag.abs()).abs() < tol::SOLVE);
+            }
+            // allowed only when the deformation vanishes at every sampled vertex
+            Err(e) => prop_assert!(matches!(e, Pde4Error::Degenerate(_)), "{e}"),
+        }
+    }
+
+    #[test]
     fn four_sided_galerkin_is_finite_and_clamped(p in params(), fs in prop::collection::vec(force(), 1..3), m in 1usize..7, n in 1usize..7) {
         let s = FourSided::new([p; 3], &fs, m, n, four_sided::Method::Galerkin).unwrap();
         let g = s.grid(&[0.0, 0.3, 0.5, 1.0], &[0.0, 0.2, 0.5, 1.0]);
         prop_assert!(g.iter().flatten().all(|x| x.is_finite()));
         prop_assert!(s.point(0.0, 0.4).iter().chain(s.point(0.6, 1.0).iter()).all(|x| x.abs() < tol::ROUNDING));
+    }
+}
+
+fn terms_to_max() -> impl Strategy<Value = (usize, usize)> {
+    use pdesculpt::pde4::MAX_TERMS;
+    prop_oneof![
+        (1usize..=MAX_TERMS, 0usize..=16),
+        (1usize..=16, 0usize..=MAX_TERMS)
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    #[test]
+    fn two_sided_exact_holds_up_to_max_terms(p in params(), f in force(), (m, n) in terms_to_max()) {
+        // sparse sweep of the whole documented term range, one direction large at a time
+        let t = TwoSided::new([p; 3], &[f], m, n, two_sided::Method::Exact, None).unwrap();
+        prop_assert!(two_sided_residual(&t, 3) < tol::SOLVE);
+        prop_assert!(t.grid(&[0.0, 0.3, 0.7, 1.0], &[0.1, 0.9]).iter().flatten().all(|x| x.is_finite()));
     }
 }
 
@@ -350,14 +394,26 @@ fn cli_eval_matches_library_and_rejects_bad_specs() {
         four_sided::Method::Galerkin,
     );
     assert!((got - want).abs() <= tol::ROUNDING * want.abs());
-    for bad in [
-        r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":0,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
-        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[0,8],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
-        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"line","u0":0.7,"u1":0.2,"v0":0.1,"p":[1,0,0]}]}"#,
-        r#"{"patch":"two-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"uniform","p":[1,0,0]}]}"#,
-        r#"{"patch":"two-sided""#,
+    // each bad spec exits 1 with an error naming the problem
+    let uni = r#""forces":[{"type":"uniform","p":[1,0,0]}]"#;
+    for (bad, says) in [
+        (format!(r#"{{"patch":"four-sided","method":"galerkin","shape":{{"a1":0,"a2":2,"a3":1}},"terms":[8,8],{uni}}}"#), "a_t1 = 0 must be > 0"),
+        (format!(r#"{{"patch":"two-sided","method":"exact","shape":{{"a1":-1,"a2":2,"a3":1}},"terms":[8,8],{uni}}}"#), "a_t1 = -1 must be > 0"),
+        (format!(r#"{{"patch":"two-sided","method":"exact","shape":{{"a1":1,"a2":-3,"a3":1}},"terms":[8,8],{uni}}}"#), "non-elliptic"),
+        (format!(r#"{{"patch":"four-sided","method":"galerkin","shape":{{"a1":1,"a2":1,"a3":0}},"terms":[8,8],{uni}}}"#), "non-elliptic"),
+        (format!(r#"{{"patch":"two-sided","method":"exact","shape":{{"a1":1,"a2":2,"a3":1}},"terms":[0,8],{uni}}}"#), "number of terms"),
+        (format!(r#"{{"patch":"four-sided","method":"galerkin","shape":{{"a1":1,"a2":2,"a3":1}},"terms":[8,0],{uni}}}"#), "number of terms"),
+        (r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"line","u0":0.7,"u1":0.2,"v0":0.1,"p":[1,0,0]}]}"#.into(), "u_p0..u_p1 = [0.7, 0.2] is empty"),
+        (r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"line","u0":0.5,"u1":0.5,"v0":0.1,"p":[1,0,0]}]}"#.into(), "is empty"),
+        (r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"concentrated","u0":1.5,"v0":0.1,"p":[1,0,0]}]}"#.into(), "force u_p0 = [1.5, 1.5] lies outside [0, 1]"),
+        (r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"area","u0":0.1,"u1":0.5,"v0":-0.2,"v1":0.4,"p":[1,0,0]}]}"#.into(), "v_p0..v_p1 = [-0.2, 0.4] lies outside"),
+        (r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[]}"#.into(), "no forces"),
+        (r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[4,4],"forces":[{"type":"uniform","p":[NaN,0,0]}]}"#.into(), "parsing spec"),
+        (r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1e999},"terms":[4,4],"forces":[{"type":"uniform","p":[1,0,0]}]}"#.into(), "parsing spec"),
+        (format!(r#"{{"patch":"two-sided","method":"galerkin","shape":{{"a1":1,"a2":2,"a3":1}},"terms":[4,4],{uni}}}"#), "four-sided patches"),
+        (r#"{"patch":"two-sided""#.into(), "parsing spec"),
     ] {
-        std::fs::write(&spec, bad).unwrap();
+        std::fs::write(&spec, &bad).unwrap();
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
             .args(["pde4", "eval"])
             .arg(&spec)
@@ -365,7 +421,252 @@ fn cli_eval_matches_library_and_rejects_bad_specs() {
             .output()
             .unwrap();
         assert_eq!(out.status.code(), Some(1), "{bad}");
-        assert!(String::from_utf8_lossy(&out.stderr).contains("error"));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("error") && err.contains(says), "{bad}: {err}");
+    }
+    // NaN and out-of-range evaluation points
+    std::fs::write(&spec, format!(r#"{{"patch":"four-sided","method":"galerkin","shape":{{"a1":1,"a2":2,"a3":1}},"terms":[4,4],{uni}}}"#)).unwrap();
+    for at in ["nan,0.5", "0.5,1.5", "0.5"] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+            .args(["pde4", "eval"])
+            .arg(&spec)
+            .args(["--at", at])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{at}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("--at"));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn galerkin_convergence_order_sine_load_vs_fd_reference() {
+    use pdesculpt::pde4::check::{FD_GRID, SINE_LOAD};
+    use pdesculpt::pde4::fd::{fd_centre, fd_centre_extrapolated};
+    use std::f64::consts::PI;
+    let sine = |u: f64, v: f64| (PI * u).sin() * (PI * v).sin();
+    // the FD reference is second order: successive differences shrink by 4
+    let c: Vec<f64> = [16usize, 32, 64]
+        .iter()
+        .map(|&n| fd_centre(ShapeParams::PLATE, n, sine).unwrap())
+        .collect();
+    let fd_ratio = (c[0] - c[1]) / (c[1] - c[2]);
+    assert!((fd_ratio - 4.0).abs() < 0.1, "FD ratio {fd_ratio}");
+    for rho in [1.0, 1.0 / 1.5, 0.5] {
+        let p = ShapeParams::plate_ratio(rho);
+        let reference = fd_centre_extrapolated(p, FD_GRID, sine).unwrap().0;
+        let errs: Vec<(f64, f64)> = [8usize, 12, 16]
+            .iter()
+            .map(|&t| {
+                let w = plate_centre(p, SINE_LOAD, t, four_sided::Method::Galerkin);
+                (t as f64, rel(w, reference))
+            })
+            .collect();
+        for w in errs.windows(2) {
+            let order = (w[0].1 / w[1].1).ln() / (w[1].0 / w[0].0).ln();
+            eprintln!(
+                "rho {rho:.3}: order between M = {} and {}: {order:.2}",
+                w[0].0, w[1].0
+            );
+            assert!(order > MIN_ORDER, "order {order}");
+        }
+        assert!(errs[2].1 < tol::TABLE_4_DIGITS);
+    }
+}
+
+fn run_cli(args: &[&std::ffi::OsStr]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn cli_apply_curve_and_part_match_library() {
+    use pdesculpt::mesh::{dist, io, Mesh};
+    use pdesculpt::pde4::apply::{deform_part, deform_region, Direction};
+    use pdesculpt::pde4::spec::Spec;
+    use pdesculpt::surface::{tessellate, Revolution, Tessellation};
+    use std::ffi::OsStr;
+    const F32: f64 = 1e-6;
+    let dir = std::env::temp_dir().join(format!("pde4_apply_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let os = |p: &std::path::Path| p.as_os_str().to_owned();
+    let max_diff = |a: &Mesh, b: &Mesh| {
+        a.positions
+            .iter()
+            .zip(&b.positions)
+            .map(|(p, q)| dist(*p, *q))
+            .fold(0.0, f64::max)
+    };
+
+    // four-sided spec over the region enclosed by a curve on a flat grid
+    let n = 31;
+    let pos: Vec<[f64; 3]> = (0..n * n)
+        .map(|k| {
+            [
+                (k / n) as f64 / (n - 1) as f64,
+                (k % n) as f64 / (n - 1) as f64,
+                0.0,
+            ]
+        })
+        .collect();
+    let mut tri = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            let a = (i * n + j) as u32;
+            tri.push([a, a + n as u32, a + 1]);
+            tri.push([a + 1, a + n as u32, a + n as u32 + 1]);
+        }
+    }
+    let flat = Mesh::new(pos, tri);
+    let (flat_in, flat_out) = (dir.join("flat.obj"), dir.join("flat_out.obj"));
+    io::write(&flat, &flat_in).unwrap();
+    let curve: Vec<[f64; 3]> = (0..36)
+        .map(|k| {
+            let t = 2.0 * std::f64::consts::PI * k as f64 / 36.0;
+            [0.5 + 0.3 * t.cos(), 0.5 + 0.25 * t.sin(), 0.0]
+        })
+        .collect();
+    let curve_path = dir.join("curve.json");
+    std::fs::write(&curve_path, serde_json::to_string(&curve).unwrap()).unwrap();
+    let four = r#"{"patch":"four-sided","method":"galerkin","shape":{"a1":1,"a2":2,"a3":1},"terms":[8,8],"forces":[{"type":"concentrated","u0":0.4,"v0":0.5,"p":[1,0,0]}]}"#;
+    let four_path = dir.join("four.json");
+    std::fs::write(&four_path, four).unwrap();
+    let out = run_cli(&[
+        OsStr::new("--json"),
+        OsStr::new("pde4"),
+        OsStr::new("apply"),
+        &os(&four_path),
+        OsStr::new("--curve"),
+        &os(&curve_path),
+        OsStr::new("--mesh"),
+        &os(&flat_in),
+        OsStr::new("--out"),
+        &os(&flat_out),
+        OsStr::new("--drag"),
+        OsStr::new("0.05"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let patch = serde_json::from_str::<Spec>(four).unwrap().solve().unwrap();
+    // OBJ stores f32: the library runs on the mesh as read back, outputs agree to f32 rounding
+    let flat = io::read(&flat_in).unwrap();
+    let want = deform_region(&flat, &curve, &patch, Direction::Normal, 0.05, 1.0).unwrap();
+    assert_eq!(v["moved"].as_u64(), Some(want.region.len() as u64));
+    let got = io::read(&flat_out).unwrap();
+    assert!(max_diff(&got, &want.mesh) < F32);
+    assert!((max_diff(&got, &flat) - 0.05).abs() < F32);
+
+    // two-sided spec over a u-range of a part closed in v (axis along y)
+    let part = tessellate(
+        &Revolution { r0: 1.0, r1: 0.2 },
+        Tessellation { nu: 40, nv: 32 },
+    );
+    let (part_in, part_out) = (dir.join("part.obj"), dir.join("part_out.obj"));
+    io::write(&part, &part_in).unwrap();
+    let two = r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":1,"a3":1},"terms":[12,6],"forces":[{"type":"area","u0":0.3,"u1":0.7,"v0":0.1,"v1":0.4,"p":[1,0,0]}]}"#;
+    let two_path = dir.join("two.json");
+    std::fs::write(&two_path, two).unwrap();
+    let out = run_cli(&[
+        OsStr::new("pde4"),
+        OsStr::new("apply"),
+        &os(&two_path),
+        OsStr::new("--axis"),
+        OsStr::new("0,0,0,0,1,0"),
+        OsStr::new("--u-range"),
+        OsStr::new("0.2,0.8"),
+        OsStr::new("--mesh"),
+        &os(&part_in),
+        OsStr::new("--out"),
+        &os(&part_out),
+        OsStr::new("--drag"),
+        OsStr::new("0.1"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stdout.is_empty(), "no --json, nothing on stdout");
+    let patch = serde_json::from_str::<Spec>(two).unwrap().solve().unwrap();
+    let part = io::read(&part_in).unwrap();
+    let want = deform_part(
+        &part,
+        ([0.0; 3], [0.0, 1.0, 0.0]),
+        (0.2, 0.8),
+        f64::INFINITY,
+        &patch,
+        Direction::Normal,
+        0.1,
+    )
+    .unwrap();
+    let got = io::read(&part_out).unwrap();
+    assert!(max_diff(&got, &want.mesh) < F32);
+    assert!((max_diff(&got, &part) - 0.1).abs() < F32);
+    for (p, q) in got.positions.iter().zip(&part.positions) {
+        if q[1] < 0.2 - 1e-12 || q[1] > 0.8 + 1e-12 {
+            assert_eq!(p, q, "vertex outside the u-range moved");
+        }
+    }
+
+    // bad input: clear error, exit 1, no output file
+    let bad_out = dir.join("bad.obj");
+    let cases: Vec<Vec<std::ffi::OsString>> = vec![
+        // patch type does not match the mode
+        vec![os(&two_path), "--curve".into(), os(&curve_path)],
+        vec![os(&four_path), "--axis".into(), "0,0,0,0,1,0".into()],
+        // zero-length axis, empty and outside u-ranges, NaN drag, bad radius
+        vec![os(&two_path), "--axis".into(), "0,0,0,0,0,0".into()],
+        vec![
+            os(&two_path),
+            "--axis".into(),
+            "0,0,0,0,1,0".into(),
+            "--u-range".into(),
+            "0.8,0.2".into(),
+        ],
+        vec![
+            os(&two_path),
+            "--axis".into(),
+            "0,0,0,0,1,0".into(),
+            "--u-range".into(),
+            "0.5,1.5".into(),
+        ],
+        vec![
+            os(&two_path),
+            "--axis".into(),
+            "0,0,0,0,1,0".into(),
+            "--drag".into(),
+            "NaN".into(),
+        ],
+        vec![
+            os(&two_path),
+            "--axis".into(),
+            "0,0,0,0,1,0".into(),
+            "--radius".into(),
+            "0".into(),
+        ],
+        vec![os(&two_path), "--axis".into(), "0,0,nan,0,1,0".into()],
+        // the region misses the mesh
+        vec![os(&two_path), "--axis".into(), "0,2,0,0,3,0".into()],
+    ];
+    for c in cases {
+        let mut args: Vec<std::ffi::OsString> = vec!["pde4".into(), "apply".into()];
+        args.extend(c.iter().cloned());
+        args.extend(["--mesh".into(), os(&part_in), "--out".into(), os(&bad_out)]);
+        if !c.iter().any(|a| a == "--drag") {
+            args.extend(["--drag".into(), "0.1".into()]);
+        }
+        let refs: Vec<&OsStr> = args.iter().map(|a| a.as_os_str()).collect();
+        let out = run_cli(&refs);
+        assert_eq!(out.status.code(), Some(1), "{c:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("error"), "{c:?}: {err}");
+        assert!(!bad_out.exists(), "{c:?} wrote a file");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
