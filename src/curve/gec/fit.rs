@@ -285,6 +285,92 @@ pub fn section(
     })
 }
 
+/// A closing gap longer than this many median segments (and longer than
+/// every other segment) marks a polyline as open; see [`check_closed`].
+pub const OPEN_GAP_FACTOR: f64 = 10.0;
+
+/// Drops a closing copy of the first point (last point within
+/// [`REPEAT_TOL`] times the diameter of the first), the usual way files
+/// write a closed polyline. Returns whether a point was dropped.
+pub fn strip_closing_copy(points: &mut Vec<[f64; 3]>) -> bool {
+    if points.len() < 2 {
+        return false;
+    }
+    let diam = diameter(points);
+    let (first, last) = (points[0], points[points.len() - 1]);
+    if diam.is_finite() && dist(first, last) <= REPEAT_TOL * diam {
+        points.pop();
+        return true;
+    }
+    false
+}
+
+/// The first pair `(i, j)`, `i < j`, of points closer than [`REPEAT_TOL`]
+/// times the diameter, consecutive or not (sort by x, then scan the window
+/// of equal-enough x: O(n log n) for generic data). Non-finite points are
+/// skipped (they are reported by [`fit`]).
+pub fn repeated_points(points: &[[f64; 3]]) -> Option<(usize, usize)> {
+    let finite: Vec<usize> = (0..points.len())
+        .filter(|&i| points[i].iter().all(|v| v.is_finite()))
+        .collect();
+    let sel: Vec<[f64; 3]> = finite.iter().map(|&i| points[i]).collect();
+    let tol = REPEAT_TOL * diameter(&sel);
+    if !tol.is_finite() {
+        return None;
+    }
+    let mut order = finite;
+    order.sort_by(|&a, &b| points[a][0].total_cmp(&points[b][0]));
+    let mut best: Option<(usize, usize)> = None;
+    for (k, &i) in order.iter().enumerate() {
+        for &j in &order[k + 1..] {
+            if points[j][0] - points[i][0] > tol {
+                break;
+            }
+            if dist(points[i], points[j]) <= tol {
+                let pair = (i.min(j), i.max(j));
+                if best.is_none_or(|b| pair < b) {
+                    best = Some(pair);
+                }
+            }
+        }
+    }
+    best
+}
+
+/// Rejects a polyline that looks open: with $g$ the gap from the last point
+/// back to the first and $\tilde s$ the median of the other segments, the
+/// polyline is open when $g > $ [`OPEN_GAP_FACTOR`] $\tilde s$ **and** $g$
+/// exceeds every other segment. (A uniformly sampled arc missing more than
+/// about ten sample steps is open; a closed curve sampled densely on one
+/// side and sparsely on the other is not, because its closing segment is no
+/// longer than the sparse ones.) Needs at least 3 points.
+pub fn check_closed(points: &[[f64; 3]]) -> Result<(), GecError> {
+    let n = points.len();
+    if n < 3 {
+        return Ok(());
+    }
+    let mut segs: Vec<f64> = (0..n - 1).map(|i| dist(points[i], points[i + 1])).collect();
+    let gap = dist(points[n - 1], points[0]);
+    let longest = segs.iter().copied().fold(0.0, f64::max);
+    segs.sort_by(f64::total_cmp);
+    let median = segs[segs.len() / 2];
+    if !(gap.is_finite() && median.is_finite()) {
+        return Ok(());
+    }
+    if gap > OPEN_GAP_FACTOR * median && gap > longest {
+        return Err(GecError::OpenPolyline {
+            gap,
+            median,
+            ratio: if median > 0.0 {
+                gap / median
+            } else {
+                f64::INFINITY
+            },
+        });
+    }
+    Ok(())
+}
+
 /// The angle of each point under `param` (see the module doc).
 pub fn parameters(p: &[[f64; 2]], param: Param, theta0: Option<f64>) -> Vec<f64> {
     let n = p.len();
@@ -319,20 +405,22 @@ fn dist2(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
-/// The design matrix `[1, cos t, sin t, .., cos J t, sin J t]`.
+/// The design matrix `[1, cos t, sin t, .., cos J t, sin J t]` (harmonics by
+/// the angle-addition recurrence from `cos t, sin t`: two trigonometric
+/// calls per row; the recurrence's rounding grows like `n eps`).
 pub fn design_matrix(thetas: &[f64], terms: usize) -> DMatrix<f64> {
-    DMatrix::from_fn(thetas.len(), 2 * terms + 1, |r, c| {
-        if c == 0 {
-            1.0
-        } else {
-            let n = c.div_ceil(2) as f64;
-            if c % 2 == 1 {
-                (n * thetas[r]).cos()
-            } else {
-                (n * thetas[r]).sin()
-            }
+    let mut a = DMatrix::zeros(thetas.len(), 2 * terms + 1);
+    for (r, &t) in thetas.iter().enumerate() {
+        a[(r, 0)] = 1.0;
+        let (s1, c1) = t.sin_cos();
+        let (mut c, mut s) = (c1, s1);
+        for n in 1..=terms {
+            a[(r, 2 * n - 1)] = c;
+            a[(r, 2 * n)] = s;
+            (c, s) = (c * c1 - s * s1, s * c1 + c * s1);
         }
-    })
+    }
+    a
 }
 
 /// Solves the least-squares problem for in-plane points at given angles.
