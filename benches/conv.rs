@@ -17,27 +17,31 @@ fn polygonize(c: &mut Criterion) {
         ..Default::default()
     };
     let b = m.build().expect("build");
-    let n = 48u32;
-    let grid = ScalarGrid::sample([-2.2, -2.2, -1.2], [2.2, 2.2, 1.2], [n as usize; 3], |r| {
-        b.group_field(0, r)
-    })
-    .expect("grid");
-    let sdf: Vec<f32> = grid.values.iter().map(|v| (1.0 - v) as f32).collect();
-    let mut g = c.benchmark_group("conv_polygonize_48");
-    g.bench_function("marching_tetrahedra", |bch| {
-        bch.iter(|| marching_tetrahedra(&grid, 1.0))
-    });
-    g.bench_function("surface_nets_ours", |bch| {
-        bch.iter(|| surface_nets(&grid, 1.0))
-    });
-    g.bench_function("fast_surface_nets_crate", |bch| {
-        use fast_surface_nets::ndshape::{RuntimeShape, Shape};
-        let shape = RuntimeShape::<u32, 3>::new([n, n, n]);
-        let _ = shape.size();
-        let mut buf = fast_surface_nets::SurfaceNetsBuffer::default();
-        bch.iter(|| fast_surface_nets::surface_nets(&sdf, &shape, [0; 3], [n - 1; 3], &mut buf))
-    });
-    g.finish();
+    for n in [48u32, 96] {
+        let grid = ScalarGrid::sample([-2.2, -2.2, -1.2], [2.2, 2.2, 1.2], [n as usize; 3], |r| {
+            b.group_field(0, r)
+        })
+        .expect("grid");
+        // the same samples as a signed distance-like field (negative inside)
+        let sdf: Vec<f32> = grid.values.iter().map(|v| (1.0 - v) as f32).collect();
+        let mut g = c.benchmark_group(format!("conv_polygonize_{n}"));
+        g.bench_function("marching_tetrahedra", |bch| {
+            bch.iter(|| marching_tetrahedra(&grid, 1.0))
+        });
+        g.bench_function("surface_nets_ours", |bch| {
+            bch.iter(|| surface_nets(&grid, 1.0))
+        });
+        g.bench_function("fast_surface_nets_crate", |bch| {
+            use fast_surface_nets::ndshape::RuntimeShape;
+            let shape = RuntimeShape::<u32, 3>::new([n, n, n]);
+            let mut buf = fast_surface_nets::SurfaceNetsBuffer::default();
+            bch.iter(|| {
+                fast_surface_nets::surface_nets(&sdf, &shape, [0; 3], [n - 1; 3], &mut buf);
+                buf.indices.len()
+            })
+        });
+        g.finish();
+    }
 }
 
 fn field(c: &mut Criterion) {

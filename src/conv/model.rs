@@ -370,6 +370,86 @@ impl BuiltModel {
         components_field(&comps, r)
     }
 
+    /// The gradient of the field of group `g` at `r`.
+    pub fn group_gradient(&self, g: usize, r: [f64; 3]) -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for &i in &self.groups[g] {
+            let c = &self.components[i];
+            let d = super::kernel::total_gradient(&c.segments, r, c.sketch.s);
+            for k in 0..3 {
+                out[k] += d[k];
+            }
+        }
+        out
+    }
+
+    /// Samples the field of group `g` on a grid with `resolution` cells
+    /// along the longest side of a box around its skeleton, grown until the
+    /// surface $F = T$ stays inside. `Ok(None)`: the group only carves
+    /// (every $\lambda \le 0$), so it has no surface of its own.
+    pub fn sample_group(
+        &self,
+        g: usize,
+        resolution: usize,
+        threshold: f64,
+    ) -> Result<Option<ScalarGrid>, ConvError> {
+        if !(4..=MAX_RESOLUTION).contains(&resolution) {
+            return Err(ConvError::Parameter(format!(
+                "resolution {resolution} outside 4..={MAX_RESOLUTION}"
+            )));
+        }
+        let members = self
+            .groups
+            .get(g)
+            .ok_or_else(|| ConvError::Parameter(format!("no group {g}")))?;
+        let comps: Vec<&BuiltComponent> = members.iter().map(|&i| &self.components[i]).collect();
+        if comps
+            .iter()
+            .all(|c| c.segments.iter().all(|s| s.lambda <= 0.0))
+        {
+            return Ok(None);
+        }
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        let mut rmax: f64 = 0.0;
+        for c in &comps {
+            rmax = rmax.max(c.max_radius);
+            for s in &c.segments {
+                for p in [s.p, s.q] {
+                    for k in 0..3 {
+                        lo[k] = lo[k].min(p[k]);
+                        hi[k] = hi[k].max(p[k]);
+                    }
+                }
+            }
+        }
+        let mut margin = 1.5 * rmax;
+        for _attempt in 0..4 {
+            let l = lo.map(|x| x - margin);
+            let h = hi.map(|x| x + margin);
+            let side = (0..3).map(|k| h[k] - l[k]).fold(0.0, f64::max);
+            let cell = side / resolution as f64;
+            let dims = [0, 1, 2].map(|k| (((h[k] - l[k]) / cell).ceil() as usize + 1).max(3));
+            let hh = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * cell);
+            let grid = ScalarGrid::sample(l, hh, dims, |r| components_field(&comps, r))?;
+            // does the surface reach the grid boundary? then grow the box
+            let touches = (0..grid.values.len()).any(|i| {
+                let c = [
+                    i % dims[0],
+                    (i / dims[0]) % dims[1],
+                    i / (dims[0] * dims[1]),
+                ];
+                (0..3).any(|k| c[k] == 0 || c[k] + 1 == dims[k]) && grid.values[i] > threshold
+            });
+            if !touches {
+                return Ok(Some(grid));
+            }
+            margin *= 2.0;
+        }
+        Err(ConvError::Numerical(format!(
+            "the surface of group {g} does not close within the box (field unbounded?)"
+        )))
+    }
+
     /// Polygonises every group with `resolution` cells along the longest
     /// side of its box and returns one mesh (a group per merged component).
     pub fn polygonize(
@@ -385,62 +465,14 @@ impl BuiltModel {
         }
         let mut out: Option<Mesh> = None;
         for (g, members) in self.groups.iter().enumerate() {
-            let comps: Vec<&BuiltComponent> =
-                members.iter().map(|&i| &self.components[i]).collect();
-            if comps
-                .iter()
-                .all(|c| c.segments.iter().all(|s| s.lambda <= 0.0))
-            {
+            let Some(grid) = self.sample_group(g, resolution, threshold)? else {
                 continue;
-            }
-            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            let mut rmax: f64 = 0.0;
-            for c in &comps {
-                rmax = rmax.max(c.max_radius);
-                for s in &c.segments {
-                    for p in [s.p, s.q] {
-                        for k in 0..3 {
-                            lo[k] = lo[k].min(p[k]);
-                            hi[k] = hi[k].max(p[k]);
-                        }
-                    }
-                }
-            }
-            let mut margin = 1.5 * rmax;
-            let mut mesh = None;
-            for _attempt in 0..4 {
-                let l = lo.map(|x| x - margin);
-                let h = hi.map(|x| x + margin);
-                let side = (0..3).map(|k| h[k] - l[k]).fold(0.0, f64::max);
-                let cell = side / resolution as f64;
-                let dims = [0, 1, 2].map(|k| (((h[k] - l[k]) / cell).ceil() as usize + 1).max(3));
-                let hh = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * cell);
-                let grid = ScalarGrid::sample(l, hh, dims, |r| components_field(&comps, r))?;
-                // does the surface reach the grid boundary? then grow the box
-                let touches = (0..grid.values.len()).any(|i| {
-                    let c = [
-                        i % dims[0],
-                        (i / dims[0]) % dims[1],
-                        i / (dims[0] * dims[1]),
-                    ];
-                    (0..3).any(|k| c[k] == 0 || c[k] + 1 == dims[k]) && grid.values[i] > threshold
-                });
-                if touches {
-                    margin *= 2.0;
-                    continue;
-                }
-                mesh = Some(match method {
-                    Polygonizer::MarchingTetrahedra => marching_tetrahedra(&grid, threshold),
-                    Polygonizer::SurfaceNets => surface_nets(&grid, threshold),
-                });
-                break;
-            }
-            let Some(mut m) = mesh else {
-                return Err(ConvError::Numerical(format!(
-                    "the surface of group {g} does not close within the box (field unbounded?)"
-                )));
             };
-            m.groups = vec![comps[0].name.clone()];
+            let mut m = match method {
+                Polygonizer::MarchingTetrahedra => marching_tetrahedra(&grid, threshold),
+                Polygonizer::SurfaceNets => surface_nets(&grid, threshold),
+            };
+            m.groups = vec![self.components[members[0]].name.clone()];
             match &mut out {
                 None => out = Some(m),
                 Some(o) => o.append(&m),

@@ -8,7 +8,7 @@
 //! (bounding-box diagonal); the pixel size (also reported) bounds the
 //! resolution of the measurement.
 
-use super::stroke::{dist2, distance_to_polygon};
+use super::stroke::{dist2, distance_to_polygon, inside_polygon};
 use crate::mesh::Mesh;
 
 /// Silhouette-following error.
@@ -35,6 +35,21 @@ pub fn silhouette_error(
     e2: [f64; 3],
     stroke: &[[f64; 2]],
 ) -> SilhouetteError {
+    silhouette_error_union(mesh, origin, e1, e2, &[stroke])
+}
+
+/// As [`silhouette_error`] for merged components sketched in one plane:
+/// the outline is compared with the boundary of the union of the closed
+/// `strokes` (outline pixels to the nearest stroke; stroke points inside
+/// another stroke are not on the union's boundary and are skipped). The
+/// size is the diagonal of all strokes' bounding box.
+pub fn silhouette_error_union(
+    mesh: &Mesh,
+    origin: [f64; 3],
+    e1: [f64; 3],
+    e2: [f64; 3],
+    strokes: &[&[[f64; 2]]],
+) -> SilhouetteError {
     let proj: Vec<[f64; 2]> = mesh
         .positions
         .iter()
@@ -44,14 +59,14 @@ pub fn silhouette_error(
         })
         .collect();
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in stroke.iter().chain(proj.iter()) {
+    for p in strokes.iter().flat_map(|s| s.iter()).chain(proj.iter()) {
         for k in 0..2 {
             lo[k] = lo[k].min(p[k]);
             hi[k] = hi[k].max(p[k]);
         }
     }
     let (mut slo, mut shi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in stroke {
+    for p in strokes.iter().flat_map(|s| s.iter()) {
         for k in 0..2 {
             slo[k] = slo[k].min(p[k]);
             shi[k] = shi[k].max(p[k]);
@@ -117,15 +132,29 @@ pub fn silhouette_error(
     }
     let mut dists: Vec<f64> = outline
         .iter()
-        .map(|&p| distance_to_polygon(p, stroke))
-        .collect();
-    for &s in stroke {
-        dists.push(
-            outline
+        .map(|&p| {
+            strokes
                 .iter()
-                .map(|&o| dist2(o, s))
-                .fold(f64::INFINITY, f64::min),
-        );
+                .map(|s| distance_to_polygon(p, s))
+                .fold(f64::INFINITY, f64::min)
+        })
+        .collect();
+    for (i, st) in strokes.iter().enumerate() {
+        for &s in st.iter() {
+            let covered = strokes
+                .iter()
+                .enumerate()
+                .any(|(j, o)| j != i && inside_polygon(s, o));
+            if covered {
+                continue;
+            }
+            dists.push(
+                outline
+                    .iter()
+                    .map(|&o| dist2(o, s))
+                    .fold(f64::INFINITY, f64::min),
+            );
+        }
     }
     let max = dists.iter().copied().fold(0.0, f64::max);
     let mean = dists.iter().sum::<f64>() / dists.len() as f64;

@@ -160,6 +160,13 @@ pub fn build(raw_stroke: &[[f64; 2]], opts: &ConvOptions) -> Result<Sketch, Conv
     )?;
     let points: Vec<[f64; 3]> = polygon.iter().map(|p| [p[0], p[1], 0.0]).collect();
     let report = fit::global_fit(&segments, &points, opts.threshold, s, opts.solver)?;
+    if report.lambda.iter().all(|&l| l <= 0.0) {
+        return Err(ConvError::Numerical(format!(
+            "the global fit switched every segment off (lambda = 0; weights {:?}): no surface; \
+             try the paper's weights or a larger s_scale",
+            opts.weights
+        )));
+    }
     for (seg, l) in segments.iter_mut().zip(&report.lambda) {
         seg.lambda = *l;
     }

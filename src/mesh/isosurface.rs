@@ -427,6 +427,13 @@ pub struct TriangleQuality {
     pub mean_min_angle_deg: f64,
     /// Fraction of triangles whose smallest angle is below 10 degrees.
     pub frac_below_10deg: f64,
+    /// Mean aspect ratio $\ell_{max}(a+b+c)/(4\sqrt3 A)$ (1 for an
+    /// equilateral triangle; degenerate triangles excluded).
+    pub mean_aspect: f64,
+    /// Largest finite aspect ratio.
+    pub max_aspect: f64,
+    /// Triangles of zero area (aspect ratio infinite).
+    pub degenerate: usize,
 }
 
 /// Angle statistics of `m`.
@@ -458,6 +465,26 @@ pub fn triangle_quality(m: &Mesh) -> TriangleQuality {
         }
         q.min_angle_deg = q.min_angle_deg.min(mn);
         q.mean_min_angle_deg += mn;
+        let l = [0, 1, 2].map(|c| {
+            let (a, b) = (p[c], p[(c + 1) % 3]);
+            super::norm([b[0] - a[0], b[1] - a[1], b[2] - a[2]])
+        });
+        let e1 = [p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]];
+        let e2 = [p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]];
+        let area = 0.5
+            * super::norm([
+                e1[1] * e2[2] - e1[2] * e2[1],
+                e1[2] * e2[0] - e1[0] * e2[2],
+                e1[0] * e2[1] - e1[1] * e2[0],
+            ]);
+        let lmax = l[0].max(l[1]).max(l[2]);
+        if area > 1e-14 * lmax * lmax && area > 0.0 {
+            let ar = lmax * (l[0] + l[1] + l[2]) / (4.0 * 3f64.sqrt() * area);
+            q.mean_aspect += ar;
+            q.max_aspect = q.max_aspect.max(ar);
+        } else {
+            q.degenerate += 1;
+        }
         if mn < 10.0 {
             below += 1;
         }
@@ -465,6 +492,10 @@ pub fn triangle_quality(m: &Mesh) -> TriangleQuality {
     if q.triangles > 0 {
         q.mean_min_angle_deg /= q.triangles as f64;
         q.frac_below_10deg = below as f64 / q.triangles as f64;
+        let good = q.triangles - q.degenerate;
+        if good > 0 {
+            q.mean_aspect /= good as f64;
+        }
     } else {
         q.min_angle_deg = 0.0;
     }
@@ -494,5 +525,24 @@ mod tests {
             let exact = 4.0 / 3.0 * std::f64::consts::PI;
             assert!((v - exact).abs() / exact < 0.05, "volume {v}");
         }
+    }
+
+    #[test]
+    fn quality_of_known_triangles() {
+        let h = 3f64.sqrt() / 2.0;
+        let m = Mesh {
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.5, h, 0.0], [2.0, 0.0, 0.0]],
+            triangles: vec![[0, 1, 2], [0, 1, 3]],
+            tri_group: vec![0, 0],
+            groups: vec!["s".into()],
+        };
+        let q = triangle_quality(&m);
+        assert_eq!(q.triangles, 2);
+        assert_eq!(q.degenerate, 1);
+        assert!((q.mean_aspect - 1.0).abs() < 1e-12, "{q:?}");
+        assert!((q.max_aspect - 1.0).abs() < 1e-12);
+        assert_eq!(q.min_angle_deg, 0.0);
+        assert!((q.mean_min_angle_deg - 30.0).abs() < 1e-9);
+        assert_eq!(q.frac_below_10deg, 0.5);
     }
 }

@@ -126,3 +126,658 @@ proptest! {
         prop_assert!(f.is_finite() && (f - q).abs() <= pdesculpt::check::tol::QUADRATURE * q.abs());
     }
 }
+
+// ---- strokes -------------------------------------------------------------
+
+#[test]
+fn orientation_is_normalised_to_counter_clockwise() {
+    let o = stroke::StrokeOptions::default();
+    let ccw = shapes::star(5, 0.6, 1.6, 300);
+    let mut cw = ccw.clone();
+    cw.reverse();
+    for raw in [ccw, cw] {
+        let p = stroke::filter_stroke(&raw, &o).expect("filter");
+        assert!(stroke::signed_area2(&p) > 0.0);
+        assert!(stroke::self_intersection(&p).is_none());
+    }
+}
+
+/// A closed stroke with a self-intersection (a bow tie with unequal lobes).
+fn bow_tie() -> Vec<[f64; 2]> {
+    shapes::figure_eight(200)
+        .into_iter()
+        .map(|p| {
+            if p[0] > 0.0 {
+                [2.0 * p[0], 2.0 * p[1]]
+            } else {
+                p
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn self_intersection_error_is_clear() {
+    let e = sketch::build(&bow_tie(), &Default::default()).expect_err("must fail");
+    assert!(e.to_string().contains("intersects itself"), "{e}");
+    let e = stroke::filter_stroke(&[[0.0, 0.0], [1.0, 0.0]], &Default::default())
+        .expect_err("too short");
+    assert!(e.to_string().contains("too short"), "{e}");
+}
+
+// ---- skeleton circle rules ----------------------------------------------
+
+fn line_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let e = [b[0] - a[0], b[1] - a[1]];
+    ((p[0] - a[0]) * e[1] - (p[1] - a[1]) * e[0]).abs() / e[0].hypot(e[1])
+}
+
+fn d2(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// Every triangle's circle follows the paper's rule for its type:
+/// junction = circumcircle, terminal = incircle, sleeve = circumcircle or
+/// the edge-tangent circle (centre halfway up the altitude onto the
+/// external edge); kinds match the number of external edges; radii never
+/// exceed the circle's and stay positive.
+fn assert_circle_rules(poly: &[[f64; 2]]) {
+    use pdesculpt::conv::skeleton::{extract, CircleKind, TriangleKind};
+    let sk = extract(poly, &Default::default()).expect("skeleton");
+    let n = poly.len();
+    let ext = |a: usize, b: usize| (a + 1) % n == b || (b + 1) % n == a;
+    let scale = stroke::perimeter(poly);
+    let tol = 1e-9 * scale;
+    for t in &sk.triangles {
+        let v = t.vertices.map(|i| poly[i]);
+        let next = |k: usize| t.vertices[(k + 1) % 3];
+        let ext_edges: Vec<usize> = (0..3).filter(|&k| ext(t.vertices[k], next(k))).collect();
+        let expect_kind = match ext_edges.len() {
+            0 => TriangleKind::Junction,
+            1 => TriangleKind::Sleeve,
+            _ => TriangleKind::Terminal,
+        };
+        assert_eq!(t.kind, expect_kind);
+        assert!(t.radius > 0.0 && t.radius.is_finite());
+        let c = t.centre;
+        let circ = [d2(c, v[0]), d2(c, v[1]), d2(c, v[2])];
+        let is_circum = (circ[0] - circ[1]).abs() <= tol && (circ[1] - circ[2]).abs() <= tol;
+        match (t.kind, t.circle) {
+            (TriangleKind::Junction, CircleKind::Circumcircle) => {
+                assert!(is_circum, "{circ:?}");
+                assert!(t.radius <= circ[0] + tol);
+            }
+            (TriangleKind::Terminal, CircleKind::Incircle) => {
+                let d = [0, 1, 2].map(|k| line_distance(c, v[k], v[(k + 1) % 3]));
+                assert!(
+                    (d[0] - d[1]).abs() <= tol && (d[1] - d[2]).abs() <= tol,
+                    "{d:?}"
+                );
+                assert!(t.radius <= d[0] + tol);
+            }
+            (TriangleKind::Sleeve, CircleKind::Circumcircle) => {
+                assert!(is_circum);
+                assert!(stroke::inside_polygon(c, poly));
+            }
+            (TriangleKind::Sleeve, CircleKind::EdgeTangent) => {
+                let k = ext_edges[0];
+                let (a, b, opp) = (v[k], v[(k + 1) % 3], v[(k + 2) % 3]);
+                let h = line_distance(opp, a, b);
+                assert!((line_distance(c, a, b) - 0.5 * h).abs() <= tol);
+                assert!((d2(c, opp) - 0.5 * h).abs() <= tol);
+                assert!(t.radius <= 0.5 * h + tol);
+            }
+            other => panic!("circle rule violated: {other:?}"),
+        }
+    }
+    // the skeleton links kept centres; every edge joins two distinct nodes
+    for e in &sk.edges {
+        assert!(e[0] != e[1] && e[0] < sk.nodes.len() && e[1] < sk.nodes.len());
+    }
+}
+
+#[test]
+fn skeleton_circles_follow_the_paper_rules() {
+    let o = stroke::StrokeOptions::default();
+    for raw in [
+        shapes::star(5, 0.6, 1.6, 400),
+        shapes::ellipse(2.0, 1.0, 300),
+        shapes::folding(1.5, 0.4, 4.0, 400),
+        shapes::figure(500),
+    ] {
+        assert_circle_rules(&stroke::filter_stroke(&raw, &o).expect("filter"));
+    }
+}
+
+// ---- weights --------------------------------------------------------------
+
+#[test]
+fn weight_options_have_the_paper_defaults_and_divide_at_joints() {
+    use pdesculpt::conv::fit::{weights, RawSegment, Solver, WeightMode};
+    let d = sketch::ConvOptions::default();
+    assert_eq!(d.radius_factor, 0.8);
+    assert_eq!(d.weights, WeightMode::Paper);
+    assert!(d.divide_at_joints);
+    assert_eq!(d.solver, Solver::HildrethDEsopo);
+    assert_eq!(d.threshold, 1.0);
+    // an empty options object in a model file means the defaults
+    let m = Model::from_json(
+        r#"{"options": {}, "components": [{"name": "a", "stroke": [[0,0],[1,0],[1,1],[0,1]]}]}"#,
+    )
+    .expect("parse");
+    assert_eq!(m.options, d);
+    let raw = RawSegment {
+        p: [0.0; 3],
+        q: [1.0, 0.0, 0.0],
+        rp: 0.4,
+        rq: 0.3,
+        degree: [3, 2],
+    };
+    for mode in [WeightMode::Paper, WeightMode::Exact] {
+        let whole = weights(&[raw], [0.0, 0.0, 1.0], 1.0, 2.0, mode, false).expect("w")[0];
+        let split = weights(&[raw], [0.0, 0.0, 1.0], 1.0, 2.0, mode, true).expect("w")[0];
+        assert!((split.w0 - whole.w0 / 3.0).abs() <= 1e-15 * whole.w0.abs());
+        assert!((split.w1 - whole.w1 / 2.0).abs() <= 1e-15 * whole.w1.abs());
+        // the isolated segment meets the threshold where the options say
+        let at = |x: [f64; 3]| whole.field(x, 2.0);
+        match mode {
+            WeightMode::Exact => {
+                assert!((at([0.0, 0.0, 0.4]) - 1.0).abs() < 1e-12);
+                assert!((at([1.0, 0.0, 0.3]) - 1.0).abs() < 1e-12);
+            }
+            WeightMode::Paper => assert!((at([0.5, 0.0, 0.35]) - 1.0).abs() < 1e-12),
+        }
+    }
+    // the radius factor scales the skeleton radii into the weights
+    let o = sketch::ConvOptions {
+        radius_factor: 1.0,
+        ..Default::default()
+    };
+    let st = shapes::ellipse(2.0, 1.0, 200);
+    let a = sketch::build(&st, &Default::default()).expect("0.8");
+    let b = sketch::build(&st, &o).expect("1.0");
+    let fat = |k: &sketch::Sketch| k.field([0.0, 0.0, 0.9]);
+    assert!(fat(&b) > 0.0 && fat(&a) > 0.0);
+}
+
+// ---- modeling operations and the model file -------------------------------
+
+fn comp(name: &str, stroke: Vec<[f64; 2]>) -> Component {
+    Component {
+        name: name.into(),
+        stroke,
+        ..Default::default()
+    }
+}
+
+#[test]
+fn translate_rotate_copy_move_the_segments_rigidly() {
+    use pdesculpt::conv::model::Rotation;
+    let st = shapes::star(5, 0.6, 1.6, 300);
+    let base = Model {
+        components: vec![comp("a", st.clone())],
+        ..Default::default()
+    };
+    let b0 = base.build().expect("base");
+    let s0 = &b0.components[0].segments;
+    // translate
+    let mut m = base.clone();
+    m.components[0].translate = [0.5, -1.0, 2.0];
+    let b = m.build().expect("translate");
+    for (x, y) in s0.iter().zip(&b.components[0].segments) {
+        for k in 0..3 {
+            assert!((y.p[k] - x.p[k] - m.components[0].translate[k]).abs() < 1e-12);
+        }
+        assert_eq!(x.lambda, y.lambda);
+    }
+    // rotate: the field is carried along (F_rot(R x) = F(x))
+    let mut m = base.clone();
+    m.components[0].rotate = Some(Rotation {
+        axis: [0.0, 1.0, 0.0],
+        degrees: 90.0,
+    });
+    let b = m.build().expect("rotate");
+    let cen = {
+        let n = s0.len() as f64;
+        let mut c = [0.0; 3];
+        for s in s0 {
+            for k in 0..3 {
+                c[k] += 0.5 * (s.p[k] + s.q[k]) / n;
+            }
+        }
+        c
+    };
+    // 90 degrees about +y: (x, y, z) -> (z, y, -x) about the centroid
+    let rot = |p: [f64; 3]| {
+        let d = [p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]];
+        [cen[0] + d[2], cen[1] + d[1], cen[2] - d[0]]
+    };
+    for x in [[0.3, 0.2, 0.1], [1.0, -0.5, 0.4], [-0.7, 0.9, -0.2]] {
+        let f0 = b0.group_field(0, x);
+        let f1 = b.group_field(0, rot(x));
+        assert!((f0 - f1).abs() <= 1e-12 * f0.abs().max(1.0), "{f0} {f1}");
+    }
+    // copy: the same stroke and plane, then its own translation
+    let mut m = base.clone();
+    m.components.push(Component {
+        name: "b".into(),
+        copy_of: Some("a".into()),
+        translate: [4.0, 0.0, 0.0],
+        ..Default::default()
+    });
+    let b = m.build().expect("copy");
+    assert_eq!(b.groups.len(), 2);
+    for (x, y) in b.components[0]
+        .segments
+        .iter()
+        .zip(&b.components[1].segments)
+    {
+        assert!((y.p[0] - x.p[0] - 4.0).abs() < 1e-12 && (y.q[1] - x.q[1]).abs() < 1e-12);
+    }
+    assert_eq!(b.components[0].depth, b.components[1].depth);
+    // a copy of a copy is refused, as is a copy of an unknown component
+    let mut bad = m.clone();
+    bad.components.push(Component {
+        name: "c".into(),
+        copy_of: Some("b".into()),
+        ..Default::default()
+    });
+    assert!(bad
+        .build()
+        .expect_err("copy of copy")
+        .to_string()
+        .contains("itself a copy"));
+    bad.components[2].copy_of = Some("zz".into());
+    assert!(bad
+        .build()
+        .expect_err("unknown")
+        .to_string()
+        .contains("unknown component"));
+}
+
+#[test]
+fn merge_sums_fields_and_carve_negates_lambda() {
+    use pdesculpt::conv::model::Operation;
+    let body = shapes::ellipse(1.2, 1.6, 200);
+    let hole: Vec<[f64; 2]> = shapes::ellipse(0.3, 0.3, 80)
+        .into_iter()
+        .map(|p| [p[0], p[1] + 0.2])
+        .collect();
+    let mut m = Model {
+        components: vec![comp("body", body), comp("hole", hole)],
+        ..Default::default()
+    };
+    m.components[1].depth = Some(0.6);
+    let sep = m.build().expect("separate");
+    assert_eq!(sep.groups.len(), 2);
+    m.operations = vec![Operation::Merge {
+        a: "body".into(),
+        b: "hole".into(),
+    }];
+    let merged = m.build().expect("merge");
+    assert_eq!(merged.groups.len(), 1);
+    let x = [0.1, 0.3, 0.4];
+    let sum = sep.group_field(0, x) + sep.group_field(1, x);
+    assert!((merged.group_field(0, x) - sum).abs() <= 1e-12 * sum);
+    m.operations = vec![Operation::Carve {
+        target: "body".into(),
+        tool: "hole".into(),
+    }];
+    let carved = m.build().expect("carve");
+    assert_eq!(carved.groups.len(), 1);
+    for (x, y) in sep.components[1]
+        .segments
+        .iter()
+        .zip(&carved.components[1].segments)
+    {
+        assert_eq!(y.lambda, -x.lambda);
+    }
+    let diff = sep.group_field(0, x) - sep.group_field(1, x);
+    assert!((carved.group_field(0, x) - diff).abs() <= 1e-12 * sum);
+    // the carved mesh is still closed and has less volume
+    let v = |b: &pdesculpt::conv::model::BuiltModel| {
+        let mesh = b
+            .polygonize(24, 1.0, Polygonizer::MarchingTetrahedra)
+            .expect("mesh");
+        let r = report(&mesh);
+        assert!(r.watertight && r.manifold && r.oriented, "{r:?}");
+        mesh.signed_volume()
+    };
+    let (vm, vc) = (v(&merged), v(&carved));
+    assert!(vc < vm, "carved {vc} merged {vm}");
+    // operations naming unknown components are refused
+    m.operations = vec![Operation::Merge {
+        a: "body".into(),
+        b: "nope".into(),
+    }];
+    assert!(m
+        .build()
+        .expect_err("unknown")
+        .to_string()
+        .contains("unknown component"));
+}
+
+#[test]
+fn depth_from_the_first_stroke_point_lies_on_the_surface() {
+    use pdesculpt::conv::model::View;
+    // a side-view stroke whose first point looks at the body: its plane
+    // goes where the ray along +x through that point meets the body surface
+    let knob: Vec<[f64; 2]> = shapes::ellipse(0.3, 0.3, 80)
+        .into_iter()
+        .map(|p| [p[0] - 0.3, p[1]])
+        .collect();
+    let m = Model {
+        components: vec![
+            comp("body", shapes::ellipse(1.2, 1.6, 200)),
+            Component {
+                view: View::Side,
+                ..comp("knob", knob)
+            },
+        ],
+        ..Default::default()
+    };
+    let b = m.build().expect("build");
+    let knob = &b.components[1];
+    let comps = vec![&b.components[0]];
+    let p0 = knob.sketch.polygon[0];
+    let f = knob.frame;
+    let hit = [0, 1, 2].map(|k| f[0][k] * p0[0] + f[1][k] * p0[1] + f[2][k] * knob.depth);
+    let field = pdesculpt::conv::model::components_field(&comps, hit);
+    assert!(knob.depth > 0.5, "depth {}", knob.depth);
+    assert!(
+        (field - m.options.threshold).abs() < 1e-9,
+        "field {field} at depth {}",
+        knob.depth
+    );
+    // a ray that misses everything leaves the plane at depth 0 ("in the air")
+    let far: Vec<[f64; 2]> = shapes::ellipse(0.3, 0.3, 80)
+        .into_iter()
+        .map(|p| [p[0] + 5.0, p[1]])
+        .collect();
+    let m2 = Model {
+        components: vec![
+            comp("body", shapes::ellipse(1.2, 1.6, 200)),
+            Component {
+                view: View::Side,
+                ..comp("far", far)
+            },
+        ],
+        ..Default::default()
+    };
+    assert_eq!(m2.build().expect("build").components[1].depth, 0.0);
+    // the bundled teddy's side-view tail takes its depth from the body
+    let path = format!("{}/data/conv/teddy.json", env!("CARGO_MANIFEST_DIR"));
+    let t = Model::from_json(&std::fs::read_to_string(path).expect("read")).expect("parse");
+    let tb = t.build().expect("teddy");
+    let i = tb
+        .components
+        .iter()
+        .position(|c| c.name == "tail")
+        .expect("tail");
+    let tail = &tb.components[i];
+    let (p0, f) = (tail.sketch.polygon[0], tail.frame);
+    let hit = [0, 1, 2].map(|k| f[0][k] * p0[0] + f[1][k] * p0[1] + f[2][k] * tail.depth);
+    let comps: Vec<_> = tb.components[..i].iter().collect();
+    let field = pdesculpt::conv::model::components_field(&comps, hit);
+    assert!(t.components[i].depth.is_none() && tail.depth > 0.0);
+    assert!(
+        (field - t.options.threshold).abs() < 1e-9,
+        "tail field {field}"
+    );
+}
+
+#[test]
+fn model_file_round_trips_and_rebuilds_at_any_resolution() {
+    let path = format!("{}/data/conv/star.json", env!("CARGO_MANIFEST_DIR"));
+    let m = Model::from_json(&std::fs::read_to_string(path).expect("read")).expect("parse");
+    let again = Model::from_json(&m.to_json()).expect("re-parse");
+    assert_eq!(m, again);
+    let b = again.build().expect("build");
+    let mut vols = Vec::new();
+    for res in [16, 32, 48] {
+        for method in [Polygonizer::MarchingTetrahedra, Polygonizer::SurfaceNets] {
+            let mesh = b
+                .polygonize(res, m.options.threshold, method)
+                .expect("mesh");
+            let r = report(&mesh);
+            // surface nets: closed (no boundary edges) but not manifold at
+            // ambiguous cubes (documented in mesh::isosurface)
+            assert_eq!(r.boundary_edges, 0, "{res} {method:?} {r:?}");
+            if method == Polygonizer::MarchingTetrahedra {
+                assert!(r.watertight && r.manifold && r.oriented, "{res} {r:?}");
+            }
+            vols.push((res, mesh.signed_volume()));
+        }
+    }
+    // the same file at 32 and 48 cells: volumes within 10 % of the finest
+    // marching-tetrahedra mesh (16 cells is coarse for the star's arms)
+    let fine = vols[vols.len() - 2].1;
+    for (res, v) in &vols {
+        assert!(*v > 0.0, "{vols:?}");
+        if *res >= 32 {
+            assert!((v - fine).abs() / fine < 0.1, "{vols:?}");
+        }
+    }
+    for res in [0, 3, 513] {
+        assert!(b
+            .polygonize(res, 1.0, Polygonizer::MarchingTetrahedra)
+            .is_err());
+    }
+}
+
+// ---- the CLI on bad input --------------------------------------------------
+
+fn model_with_stroke(stroke: &str) -> String {
+    format!(r#"{{"components": [{{"name": "c", "stroke": {stroke}}}]}}"#)
+}
+
+#[test]
+fn cli_build_rejects_bad_strokes_clearly_without_writing() {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    let d = tmpdir("conv-bad");
+    let eight: Vec<String> = bow_tie()
+        .iter()
+        .map(|p| format!("[{},{}]", p[0], p[1]))
+        .collect();
+    let cases = [
+        ("selfx", model_with_stroke(&format!("[{}]", eight.join(","))), "intersects itself"),
+        ("short", model_with_stroke("[[0,0],[1,0],[0,1]]"), "too short"),
+        (
+            "flat",
+            model_with_stroke("[[0,0],[1,0],[2,0],[3,0],[4,0],[5,0]]"),
+            "no area",
+        ),
+        ("nan", model_with_stroke("[[0,0],[1,0],[NaN,1],[0,1]]"), "model file"),
+        ("inf", model_with_stroke("[[0,0],[1,0],[1e999,1],[0,1]]"), "model file"),
+        ("nulls", model_with_stroke("[[0,0],[1,0],[null,1],[0,1]]"), "model file"),
+        ("empty", r#"{"components": []}"#.to_string(), "no components"),
+        (
+            "badopt",
+            r#"{"options": {"threshold": -1}, "components": [{"name": "c", "stroke": [[0,0],[1,0],[1,1],[0,1]]}]}"#
+                .to_string(),
+            "threshold",
+        ),
+    ];
+    for (name, text, needle) in cases {
+        let model = d.join(format!("{name}.json"));
+        std::fs::write(&model, text).expect("write");
+        let out_path = d.join(format!("{name}.obj"));
+        let out = pdesculpt(&[
+            "conv",
+            "build",
+            model.to_str().expect("utf8"),
+            "-o",
+            out_path.to_str().expect("utf8"),
+            "--resolution",
+            "16",
+        ]);
+        assert_clear_error(&out, needle);
+        assert!(!out_path.exists(), "{name}: an output file was written");
+    }
+    // bad resolution and polygonizer
+    let model = d.join("ok.json");
+    std::fs::write(&model, model_with_stroke("[[0,0],[1,0],[1,1],[0,1]]")).expect("write");
+    let o = d.join("ok.obj");
+    for (flag, val, needle) in [
+        ("--resolution", "2", "resolution"),
+        ("--polygonizer", "xx", "polygonizer"),
+    ] {
+        let out = pdesculpt(&[
+            "conv",
+            "build",
+            model.to_str().expect("utf8"),
+            "-o",
+            o.to_str().expect("utf8"),
+            flag,
+            val,
+        ]);
+        assert_clear_error(&out, needle);
+        assert!(!o.exists());
+    }
+    // conv field: NaN and degenerate segments
+    for (args, needle) in [
+        (
+            vec![
+                "--segment",
+                "0,0,0,0,0,0",
+                "--weights",
+                "1,1",
+                "--s",
+                "1",
+                "--at",
+                "1,0,0",
+            ],
+            "coincide",
+        ),
+        (
+            vec![
+                "--segment",
+                "0,0,0,1,0,0",
+                "--weights",
+                "1,NaN",
+                "--s",
+                "1",
+                "--at",
+                "1,0,0",
+            ],
+            "not finite",
+        ),
+        (
+            vec![
+                "--segment",
+                "0,0,0,1,0,0",
+                "--weights",
+                "1,1",
+                "--s",
+                "0",
+                "--at",
+                "1,0,0",
+            ],
+            "--s",
+        ),
+        (
+            vec![
+                "--segment",
+                "0,0,0,1,0",
+                "--weights",
+                "1,1",
+                "--s",
+                "1",
+                "--at",
+                "1,0,0",
+            ],
+            "--segment",
+        ),
+    ] {
+        let mut a = vec!["conv", "field"];
+        a.extend(args);
+        assert_clear_error(&pdesculpt(&a), needle);
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+// ---- proptests over the documented parameter ranges -------------------------
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Stroke filter: any tolerance / spacing in range keeps the polygon
+    /// simple, counter-clockwise, finite and within the DP tolerance of the
+    /// raw stroke.
+    #[test]
+    fn stroke_filter_sweeps_its_options(
+        dp in 0.0f64..0.05, spacing in 0.005f64..0.1, a in 0.5f64..3.0, b in 0.3f64..2.0,
+        arms in 3usize..8, reverse in any::<bool>(), star in any::<bool>(),
+    ) {
+        let mut raw = if star { shapes::star(arms, 0.5 * a.min(b), a.max(b) + 0.5, 300) } else { shapes::ellipse(a, b, 200) };
+        if reverse { raw.reverse(); }
+        let o = stroke::StrokeOptions { dp_tolerance: dp, spacing };
+        let p = stroke::filter_stroke(&raw, &o).expect("filter");
+        prop_assert!(p.iter().all(|q| q[0].is_finite() && q[1].is_finite()));
+        prop_assert!(stroke::signed_area2(&p) > 0.0);
+        prop_assert!(stroke::self_intersection(&p).is_none());
+        let diag = {
+            let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+            for q in &raw { for k in 0..2 { lo[k] = lo[k].min(q[k]); hi[k] = hi[k].max(q[k]); } }
+            d2(lo, hi)
+        };
+        for q in &raw {
+            prop_assert!(stroke::distance_to_polygon(*q, &p) <= dp * diag * (1.0 + 1e-9) + 1e-12);
+        }
+        let h = spacing * stroke::perimeter(&p);
+        prop_assert!((0..p.len()).all(|i| d2(p[i], p[(i + 1) % p.len()]) <= h * (1.0 + 1e-9) + 1e-12 || dp == 0.0));
+        assert_circle_rules(&p);
+    }
+
+    /// The whole reconstruction over the documented option ranges: it
+    /// either builds (finite weights, lambda >= 0, fit error finite, the
+    /// fitted field near T at the silhouette points) or fails with an error,
+    /// never a panic or a NaN.
+    #[test]
+    fn reconstruction_sweeps_its_options(
+        threshold in 0.5f64..2.0, s_scale in 0.5f64..2.0, radius_factor in 0.5f64..1.0,
+        overlap in 0.0f64..1.0, exact in any::<bool>(), divide in any::<bool>(), solver in 0usize..3,
+        a in 0.6f64..2.5, b in 0.4f64..1.5, arms in 3usize..7, star in any::<bool>(),
+    ) {
+        use pdesculpt::conv::fit::{Solver, WeightMode};
+        let st = if star { shapes::star(arms, 0.5 * a.min(b), a.max(b) + 0.5, 300) } else { shapes::ellipse(a, b, 200) };
+        let mut o = sketch::ConvOptions {
+            threshold, s_scale, radius_factor, divide_at_joints: divide,
+            weights: if exact { WeightMode::Exact } else { WeightMode::Paper },
+            solver: [Solver::HildrethDEsopo, Solver::LawsonHanson, Solver::ProjectedLm][solver],
+            ..Default::default()
+        };
+        o.skeleton.overlap = overlap;
+        let sk = match sketch::build(&st, &o) {
+            Ok(sk) => sk,
+            // exact weights can all go negative (round strokes, small s):
+            // the fit then switches every segment off, reported as an error
+            Err(e) if exact => {
+                prop_assert!(e.to_string().contains("switched every segment off"), "{e}");
+                return Ok(());
+            }
+            Err(e) => return Err(TestCaseError::fail(format!("build: {e}"))),
+        };
+        prop_assert!(sk.s.is_finite() && sk.s > 0.0);
+        prop_assert!(sk.segments.iter().all(|s| s.w0.is_finite() && s.w1.is_finite() && s.lambda.is_finite() && s.lambda >= 0.0));
+        prop_assert!(sk.fit.rms_rel_error.is_finite());
+        // FIT_RMS_TOLERANCE (0.15) holds for the default options (see
+        // ellipses_and_stars_build_finite_closed_surfaces) but not over the
+        // whole sweep: exact 2x2 weights can go negative on round strokes
+        // (rms up to ~0.27 measured), and small stars without division at
+        // joints reach ~0.19. Here: a bound against blow-up only.
+        prop_assert!(sk.fit.rms_rel_error < 0.5, "rms {}", sk.fit.rms_rel_error);
+        for p in sk.polygon.iter().step_by(7) {
+            prop_assert!(sk.field([p[0], p[1], 0.0]).is_finite());
+        }
+    }
+
+    /// Random garbage strokes: an error or a finite sketch, never a panic.
+    #[test]
+    fn random_strokes_never_panic(pts in prop::collection::vec((-2.0f64..2.0, -2.0f64..2.0), 0..40)) {
+        let raw: Vec<[f64; 2]> = pts.into_iter().map(|(x, y)| [x, y]).collect();
+        if let Ok(sk) = sketch::build(&raw, &Default::default()) {
+            prop_assert!(sk.segments.iter().all(|s| s.w0.is_finite() && s.w1.is_finite() && s.lambda.is_finite()));
+        }
+    }
+}
