@@ -140,6 +140,32 @@ impl Check {
     }
 }
 
+/// Parses a committed golden JSON (`verify/golden/*.json`). A golden that
+/// does not parse is not a panic but a failing reference check named
+/// `name`, so `verify` reports it beside the others.
+pub fn parse_golden<T: serde::de::DeserializeOwned>(
+    text: &str,
+    family: &str,
+    paper: &str,
+    equation: &str,
+    name: &str,
+) -> Result<T, Box<Check>> {
+    serde_json::from_str(text).map_err(|e| {
+        Box::new(
+            Check::new(
+                family,
+                paper,
+                equation,
+                name,
+                Kind::Reference,
+                f64::NAN,
+                0.0,
+            )
+            .note(format!("golden JSON does not parse: {e}")),
+        )
+    })
+}
+
 /// Maximum of `|a_i - b_i|` over two equally long slices.
 pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
     a.iter()

@@ -272,24 +272,14 @@ pub fn lebesgue(b: ModeBasis) -> Option<f64> {
 }
 
 fn golden_checks(out: &mut Vec<Check>) {
-    let g: Golden = match serde_json::from_str(GOLDEN) {
-        Ok(g) => g,
-        Err(e) => {
-            out.push(
-                Check::new(
-                    FAMILY,
-                    PAPER,
-                    "golden",
-                    "pde6.golden_parse",
-                    Kind::Reference,
-                    f64::NAN,
-                    0.0,
-                )
-                .note(format!("golden JSON does not parse: {e}")),
-            );
-            return;
-        }
-    };
+    let g: Golden =
+        match crate::check::parse_golden(GOLDEN, FAMILY, PAPER, "golden", "pde6.golden_parse") {
+            Ok(g) => g,
+            Err(c) => {
+                out.push(*c);
+                return;
+            }
+        };
     let (mut e1, mut e2) = (0.0f64, 0.0f64);
     for c in &g.cases {
         let values: [f64; 6] = std::array::from_fn(|i| c.values[i]);
