@@ -285,9 +285,28 @@ fn fig3(ctx: &Ctx) -> anyhow::Result<()> {
                 .map(|p| (p[0], p[1]))
                 .collect();
             let e: Vec<(f64, f64)> = ell.sample_plane(400).iter().map(|p| (p[0], p[1])).collect();
-            chart.draw_series(LineSeries::new(close(e), BLUE.stroke_width(2)))?;
-            chart.draw_series(LineSeries::new(close(orig), RED.stroke_width(3)))?;
-            chart.draw_series(LineSeries::new(close(g), GREEN.stroke_width(2)))?;
+            let key = |c: RGBColor| {
+                move |(x, y): (i32, i32)| PathElement::new([(x, y), (x + 16, y)], c.stroke_width(2))
+            };
+            chart
+                .draw_series(LineSeries::new(close(e), BLUE.stroke_width(2)))?
+                .label("standard ellipse")
+                .legend(key(BLUE));
+            chart
+                .draw_series(LineSeries::new(close(orig), RED.stroke_width(3)))?
+                .label("MakeHuman section")
+                .legend(key(RED));
+            chart
+                .draw_series(LineSeries::new(close(g), GREEN.stroke_width(2)))?
+                .label(format!("GEC, J = {FIG3_TERMS}"))
+                .legend(key(GREEN));
+            chart
+                .configure_series_labels()
+                .label_font(("sans-serif", 10))
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .position(SeriesLabelPosition::LowerRight)
+                .draw()?;
         }
         root.present()?;
     }
