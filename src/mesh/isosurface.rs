@@ -210,6 +210,7 @@ impl<'a> Sampler<'a> {
 
     /// Level crossing on the grid edge from node `lo` to `lo + dir`, where
     /// `dir` holds offset bits (x, y, z): linear interpolation of the values.
+    #[inline(never)]
     fn crossing(&self, lo: [usize; 3], dir: usize) -> [f64; 3] {
         let hi = [
             lo[0] + (dir & 1),
@@ -392,6 +393,8 @@ impl SlabVertices<'_> {
         self.touched[p].clear();
     }
 
+    /// The vertex on edge `e` of `cube`, created on first use.
+    #[inline(always)]
     fn vertex(&mut self, cube: [usize; 3], e: CubeEdge) -> u32 {
         let c = e.corner as usize;
         let lo = [
@@ -402,13 +405,17 @@ impl SlabVertices<'_> {
         let d = self.sampler.grid.dims;
         let p = lo[2] & 1;
         let slot = ((lo[0] + d[0] * lo[1]) << 3) | e.dir as usize;
-        let v = self.slabs[p][slot];
-        if v != u32::MAX {
-            return v;
+        match self.slabs[p][slot] {
+            u32::MAX => self.create(lo, e.dir as usize, slot),
+            v => v,
         }
+    }
+
+    #[inline(always)]
+    fn create(&mut self, lo: [usize; 3], dir: usize, slot: usize) -> u32 {
+        let p = lo[2] & 1;
         let id = self.positions.len() as u32;
-        self.positions
-            .push(self.sampler.crossing(lo, e.dir as usize));
+        self.positions.push(self.sampler.crossing(lo, dir));
         self.slabs[p][slot] = id;
         self.touched[p].push(slot);
         id
@@ -484,7 +491,14 @@ const CUBE_EDGES: [[usize; 2]; 12] = [
 /// lie in cube layers `k - 1` and `k`).
 pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
     let d = grid.dims;
-    let sampler = Sampler::new(grid, iso);
+    // edge crossings, each shared by up to four cubes
+    let slab = d[0] * d[1];
+    let mut crossings = SlabVertices {
+        sampler: Sampler::new(grid, iso),
+        slabs: [vec![u32::MAX; slab << 3], vec![u32::MAX; slab << 3]],
+        touched: [Vec::new(), Vec::new()],
+        positions: Vec::new(),
+    };
     let mut ins = [vec![0u8; d[0] * d[1]], vec![0u8; d[0] * d[1]]];
     inside_layer(grid, iso, 0, &mut ins[0]);
     // cube vertices of cube layers k - 1 and k, by layer parity
@@ -496,6 +510,7 @@ pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
     for k in 0..d[2] - 1 {
         let cur = (k & 1) * layer;
         cube_vertex[cur..cur + layer].fill(u32::MAX);
+        crossings.clear_layer(k + 1);
         inside_layer(grid, iso, k + 1, &mut ins[(k + 1) & 1]);
         let (lower, upper) = (&ins[k & 1], &ins[(k + 1) & 1]);
         for j in 0..d[1] - 1 {
@@ -504,8 +519,12 @@ pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
                 let mut cnt = 0;
                 for [a, b] in CUBE_EDGES {
                     if ((mask >> a) ^ (mask >> b)) & 1 == 1 {
-                        let lo = [i + (a & 1), j + ((a >> 1) & 1), k + (a >> 2)];
-                        let p = sampler.crossing(lo, a ^ b);
+                        let e = CubeEdge {
+                            corner: a as u8,
+                            dir: (a ^ b) as u8,
+                        };
+                        let v = crossings.vertex([i, j, k], e) as usize;
+                        let p = crossings.positions[v];
                         for x in 0..3 {
                             sum[x] += p[x];
                         }
