@@ -314,6 +314,10 @@ fn mostly_inside(a: ([f64; 2], f64), b: ([f64; 2], f64), beta: f64) -> bool {
     beta > 0.0 && super::stroke::dist2(a.0, b.0) + beta * a.1 <= b.1
 }
 
+/// Sleeve circles smaller than this fraction of the largest circle are
+/// slivers (see `prune_and_link`).
+pub const SLIVER: f64 = 1e-9;
+
 fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> Skeleton {
     let nt = triangles.len();
     let mut pruned = vec![false; nt];
@@ -377,6 +381,18 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
             } else {
                 cluster = vec![next];
             }
+        }
+    }
+    // a sleeve sliver along a straight run of the stroke (its apex within
+    // rounding of the external edge's line, which the uniform re-insertion
+    // of points makes possible) has a zero-width tangent circle on the
+    // stroke itself: it carries no thickness and gets no node; the linking
+    // below walks through it like through a pruned triangle
+    let rmax = triangles.iter().map(|t| t.radius).fold(0.0, f64::max);
+    for (t, tri) in triangles.iter().enumerate() {
+        if tri.kind == TriangleKind::Sleeve && (tri.radius.is_nan() || tri.radius <= SLIVER * rmax)
+        {
+            pruned[t] = true;
         }
     }
     // nodes
