@@ -171,13 +171,14 @@ pub fn teddy_prop(body: &Mesh) -> Result<(Mesh, PropReport), DemoError> {
     });
     mesh.set_single_group("teddy");
     mesh.validate()?;
+    let triangles = mesh.triangles.len();
     Ok((
-        mesh.clone(),
+        mesh,
         PropReport {
             model: "data/conv/teddy.json",
             components: built.components.len(),
             segments,
-            triangles: mesh.triangles.len(),
+            triangles,
             watertight: topo.watertight,
             manifold: topo.manifold,
             oriented: topo.oriented,

@@ -139,6 +139,9 @@ fn ring(axis: [f64; 2], y: f64, r: &[f64], ease: f64) -> Vec<[f64; 3]> {
         .collect()
 }
 
+/// Intervals of the tessellation from waist to hem.
+const NU: usize = 40;
+
 /// Builds the skirt around `body` (y up, the body facing +z). Returns the
 /// tessellated skirt (group `"skirt"`) and its report.
 pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), SkirtError> {
@@ -165,22 +168,16 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
             o.ring_samples
         )));
     }
-    // the axis: centre of the waist section's points
+    // the axis: centre of the waist section's points (within reach of the
+    // bounding box's vertical centre line)
     let (lo, hi) = body.bbox();
-    let waist_all = section_points(
-        body,
-        o.waist_y,
-        [0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2])],
-        o.max_reach,
-    );
-    if waist_all.is_empty() {
+    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2])];
+    let waist = section_points(body, o.waist_y, mid, o.max_reach);
+    if waist.is_empty() {
         return Err(SkirtError::NoSection(o.waist_y));
     }
-    let n = waist_all.len() as f64;
-    let c = [
-        0.5 * (lo[0] + hi[0]) + waist_all.iter().map(|p| p[0]).sum::<f64>() / n,
-        0.5 * (lo[2] + hi[2]) + waist_all.iter().map(|p| p[1]).sum::<f64>() / n,
-    ];
+    let n = waist.len() as f64;
+    let c = [0, 1].map(|k| mid[k] + waist.iter().map(|p| p[k]).sum::<f64>() / n);
     let control_u = [0.2, 0.4, 0.6, 0.8];
     let us = [
         0.0,
@@ -226,7 +223,7 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
     let mut mesh = tessellate(
         &surface,
         Tessellation {
-            nu: 40,
+            nu: NU,
             nv: 2 * o.ring_samples,
         },
     );
@@ -254,19 +251,13 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
             min_clearance = min_clearance.min(s);
         }
     }
+    // tessellation column 2j is ring sample j (nv = 2 ring_samples)
     let nv = 2 * o.ring_samples;
     let ring_error = |row: usize, k: usize| {
-        (0..nv)
-            .map(|j| {
-                let p = mesh.positions[row * nv + j];
-                // ring sample j/2 when j is even; compare with the curve's
-                // own polyline at even samples only
-                if j % 2 == 0 {
-                    crate::mesh::dist(p, rings[k][j / 2])
-                } else {
-                    0.0
-                }
-            })
+        rings[k]
+            .iter()
+            .enumerate()
+            .map(|(j, q)| crate::mesh::dist(mesh.positions[row * nv + 2 * j], *q))
             .fold(0.0, f64::max)
     };
     let report = SkirtReport {
@@ -279,7 +270,7 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
         min_clearance,
         inside_fraction: inside as f64 / mesh.positions.len() as f64,
         waist_ring_error: ring_error(0, 0),
-        hem_ring_error: ring_error(40, 5),
+        hem_ring_error: ring_error(NU, 5),
     };
     mesh.validate()
         .map_err(|e| SkirtError::Options(format!("tessellation: {e}")))?;

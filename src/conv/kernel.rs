@@ -201,36 +201,28 @@ pub fn integrate(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
 /// The field of a linearly weighted segment by adaptive quadrature of the
 /// kernel along it (reference for the closed form).
 pub fn field_by_quadrature(seg: &Segment, r: [f64; 3], s: f64, tol: f64) -> f64 {
-    let l = seg.length();
-    let e = sub(seg.q, seg.p);
     let f = |t: f64| {
-        let c = [
-            seg.p[0] + e[0] * t / l,
-            seg.p[1] + e[1] * t / l,
-            seg.p[2] + e[2] * t / l,
-        ];
-        let d = sub(r, c);
-        let w = seg.w0 + (seg.w1 - seg.w0) * t / l;
+        let (d, w) = offset_and_weight(seg, r, t);
         w * cauchy(dot(d, d), s)
     };
-    seg.lambda * integrate(&f, 0.0, l, tol)
+    seg.lambda * integrate(&f, 0.0, seg.length(), tol)
+}
+
+/// `r - c(t)` and the weight `w(t)` at arc length `t` along the segment.
+fn offset_and_weight(seg: &Segment, r: [f64; 3], t: f64) -> ([f64; 3], f64) {
+    let x = t / seg.length();
+    let c = [0, 1, 2].map(|k| seg.p[k] + (seg.q[k] - seg.p[k]) * x);
+    (sub(r, c), seg.w0 + (seg.w1 - seg.w0) * x)
 }
 
 /// The gradient of the field by quadrature of the kernel gradient
 /// $-4s^2 (r-c)/(1+s^2|r-c|^2)^3$.
 pub fn gradient_by_quadrature(seg: &Segment, r: [f64; 3], s: f64, tol: f64) -> [f64; 3] {
     let l = seg.length();
-    let e = sub(seg.q, seg.p);
     let mut g = [0.0; 3];
     for k in 0..3 {
         let f = |t: f64| {
-            let c = [
-                seg.p[0] + e[0] * t / l,
-                seg.p[1] + e[1] * t / l,
-                seg.p[2] + e[2] * t / l,
-            ];
-            let d = sub(r, c);
-            let w = seg.w0 + (seg.w1 - seg.w0) * t / l;
+            let (d, w) = offset_and_weight(seg, r, t);
             let a = 1.0 + s * s * dot(d, d);
             -4.0 * s * s * w * d[k] / (a * a * a)
         };

@@ -152,46 +152,39 @@ fn approach2_three_point_on_quadratic_surface() {
 /// The CLI evaluates a line and refuses rho = 0 with the named case.
 #[test]
 fn cli_eval_and_errors() {
-    let bin = env!("CARGO_BIN_EXE_pdesculpt");
-    let out = std::process::Command::new(bin)
-        .args([
-            "--json",
-            "ode6",
-            "eval",
-            "--rho",
-            "1",
-            "--eta",
-            "1",
-            "--lambda",
-            "3",
-            "--bc",
-            "1,0,0,2,0.5,-1",
-            "--at",
-            "0,1",
-        ])
-        .output()
-        .unwrap();
+    let out = crate::cli::pdesculpt(&[
+        "--json",
+        "ode6",
+        "eval",
+        "--rho",
+        "1",
+        "--eta",
+        "1",
+        "--lambda",
+        "3",
+        "--bc",
+        "1,0,0,2,0.5,-1",
+        "--at",
+        "0,1",
+    ]);
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!((v["points"][1]["s"].as_f64().unwrap() - 2.0).abs() < tol::SOLVE);
     assert!((v["points"][1]["s_uu"].as_f64().unwrap() + 1.0).abs() < tol::SOLVE);
-    let out = std::process::Command::new(bin)
-        .args([
-            "ode6",
-            "eval",
-            "--rho",
-            "0",
-            "--eta",
-            "1",
-            "--lambda",
-            "3",
-            "--bc",
-            "1,0,0,2,0.5,-1",
-            "--at",
-            "0.5",
-        ])
-        .output()
-        .unwrap();
+    let out = crate::cli::pdesculpt(&[
+        "ode6",
+        "eval",
+        "--rho",
+        "0",
+        "--eta",
+        "1",
+        "--lambda",
+        "3",
+        "--bc",
+        "1,0,0,2,0.5,-1",
+        "--at",
+        "0.5",
+    ]);
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("rho = 0"));
 }
@@ -212,34 +205,30 @@ fn cli_surface_writes_mesh() {
     )
     .unwrap();
     let out_mesh = dir.join("s.obj");
-    let st = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
-        .args([
-            "ode6",
-            "surface",
-            spec.to_str().unwrap(),
-            "-o",
-            out_mesh.to_str().unwrap(),
-            "--nu",
-            "8",
-            "--nv",
-            "12",
-        ])
-        .status()
-        .unwrap();
+    let st = crate::cli::pdesculpt(&[
+        "ode6",
+        "surface",
+        spec.to_str().unwrap(),
+        "-o",
+        out_mesh.to_str().unwrap(),
+        "--nu",
+        "8",
+        "--nv",
+        "12",
+    ])
+    .status;
     assert!(st.success());
     let m = pdesculpt::mesh::io::read(&out_mesh).unwrap();
     assert_eq!(m.positions.len(), (8 + 1) * 12);
     std::fs::write(&spec, r#"{"params": {"rho": 1, "eta": 3}}"#).unwrap();
-    let st = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
-        .args([
-            "ode6",
-            "surface",
-            spec.to_str().unwrap(),
-            "-o",
-            out_mesh.to_str().unwrap(),
-        ])
-        .status()
-        .unwrap();
+    let st = crate::cli::pdesculpt(&[
+        "ode6",
+        "surface",
+        spec.to_str().unwrap(),
+        "-o",
+        out_mesh.to_str().unwrap(),
+    ])
+    .status;
     assert_eq!(st.code(), Some(1));
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -419,7 +408,6 @@ fn gec_boundary_curves() {
 /// gets a clear error naming the case, with exit 1 and no file.
 #[test]
 fn cli_gec_spec_and_singular_error() {
-    let bin = env!("CARGO_BIN_EXE_pdesculpt");
     let dir = std::env::temp_dir().join(format!("ode6_cli_gec_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let (ga, gb) = pdesculpt::ode6::check::test_gecs();
@@ -434,20 +422,18 @@ fn cli_gec_spec_and_singular_error() {
         spec(serde_json::json!({"rho": 1, "eta": 3, "lambda": 1})).to_string(),
     )
     .unwrap();
-    let st = std::process::Command::new(bin)
-        .args([
-            "ode6",
-            "surface",
-            path.to_str().unwrap(),
-            "-o",
-            out_mesh.to_str().unwrap(),
-            "--nu",
-            "4",
-            "--nv",
-            "16",
-        ])
-        .status()
-        .unwrap();
+    let st = crate::cli::pdesculpt(&[
+        "ode6",
+        "surface",
+        path.to_str().unwrap(),
+        "-o",
+        out_mesh.to_str().unwrap(),
+        "--nu",
+        "4",
+        "--nv",
+        "16",
+    ])
+    .status;
     assert!(st.success());
     let m = pdesculpt::mesh::io::read(&out_mesh).unwrap();
     let p0 = ga.eval_v(0.0);
@@ -460,16 +446,14 @@ fn cli_gec_spec_and_singular_error() {
     let hs = serde_json::json!({"params": {"rho": 1, "eta": 1, "lambda": 3},
         "curves": {"approach1": {"c1": h, "c4": h, "w": [0, 0, 0, 0]}}});
     std::fs::write(&path, hs.to_string()).unwrap();
-    let st = std::process::Command::new(bin)
-        .args([
-            "ode6",
-            "surface",
-            path.to_str().unwrap(),
-            "-o",
-            out_mesh.to_str().unwrap(),
-        ])
-        .status()
-        .unwrap();
+    let st = crate::cli::pdesculpt(&[
+        "ode6",
+        "surface",
+        path.to_str().unwrap(),
+        "-o",
+        out_mesh.to_str().unwrap(),
+    ])
+    .status;
     assert!(st.success());
     // The singular parameter set of the golden file.
     let golden: serde_json::Value = serde_json::from_str(pdesculpt::ode6::check::GOLDEN).unwrap();
@@ -481,16 +465,13 @@ fn cli_gec_spec_and_singular_error() {
     )
     .unwrap();
     let bad_mesh = dir.join("bad.obj");
-    let out = std::process::Command::new(bin)
-        .args([
-            "ode6",
-            "surface",
-            path.to_str().unwrap(),
-            "-o",
-            bad_mesh.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
+    let out = crate::cli::pdesculpt(&[
+        "ode6",
+        "surface",
+        path.to_str().unwrap(),
+        "-o",
+        bad_mesh.to_str().unwrap(),
+    ]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("singular boundary system"), "{err}");

@@ -264,22 +264,19 @@ fn body_ripples_are_removed_without_losing_accuracy() {
 #[test]
 fn cli_mode_patch_and_errors() {
     let exe = env!("CARGO_BIN_EXE_pdesculpt");
-    let out = std::process::Command::new(exe)
-        .args([
-            "--json",
-            "pde6",
-            "mode",
-            "--a",
-            "-1",
-            "--n",
-            "4",
-            "--values",
-            "0.3,-1.2,0.7,2.0,-0.4,1.1",
-            "--at",
-            "0.5",
-        ])
-        .output()
-        .unwrap();
+    let out = crate::cli::pdesculpt(&[
+        "--json",
+        "pde6",
+        "mode",
+        "--a",
+        "-1",
+        "--n",
+        "4",
+        "--values",
+        "0.3,-1.2,0.7,2.0,-0.4,1.1",
+        "--at",
+        "0.5",
+    ]);
     assert!(
         out.status.success(),
         "{}",
@@ -321,12 +318,9 @@ fn cli_mode_patch_and_errors() {
         .unwrap();
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("6 + 3k"));
-    let out = std::process::Command::new(exe)
-        .args([
-            "pde6", "mode", "--a", "-1", "--n", "2", "--values", "1,2,3", "--at", "0.5",
-        ])
-        .output()
-        .unwrap();
+    let out = crate::cli::pdesculpt(&[
+        "pde6", "mode", "--a", "-1", "--n", "2", "--values", "1,2,3", "--at", "0.5",
+    ]);
     assert!(!out.status.success());
     // GEC input (paper 002 eq 1 placement: planes z = z_c)
     use pdesculpt::curve::gec::{Frame, Gec};

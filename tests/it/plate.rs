@@ -321,12 +321,9 @@ fn plate_cli_deform_and_compare() {
         .unwrap();
     assert_eq!(st.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&st.stderr).contains("not a vertex index"));
-    let st = std::process::Command::new(bin)
-        .args([
-            "--json", "plate", "compare", "--shape", "square", "--grid", "24",
-        ])
-        .output()
-        .unwrap();
+    let st = crate::cli::pdesculpt(&[
+        "--json", "plate", "compare", "--shape", "square", "--grid", "24",
+    ]);
     assert!(st.status.success());
     let v: serde_json::Value = serde_json::from_slice(&st.stdout).unwrap();
     assert_eq!(v["errors"].as_array().unwrap().len(), 4);
