@@ -103,7 +103,7 @@ fn cli_field_matches_library() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(crate::strategies::config(24))]
     #[test]
     fn ellipses_and_stars_build_finite_closed_surfaces(a in 0.5f64..3.0, b in 0.3f64..2.0, arms in 3usize..7, star in any::<bool>()) {
         let st = if star { shapes::star(arms, 0.5 * b.min(a), a.max(b) + 0.5, 300) } else { shapes::ellipse(a, b, 200) };
@@ -704,7 +704,7 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
 // ---- proptests over the documented parameter ranges -------------------------
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(crate::strategies::config(24))]
 
     /// Stroke filter: any tolerance / spacing in range keeps the polygon
     /// simple, counter-clockwise, finite and within the DP tolerance of the

@@ -180,7 +180,7 @@ fn auto_terms_reaches_tolerance() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(32))]
+    #![proptest_config(crate::strategies::config(32))]
     #[test]
     fn fit_never_panics_or_nans(
         a in 0.2f64..3.0, b in 0.2f64..3.0, w in -0.15f64..0.15,
@@ -255,7 +255,7 @@ fn rel_coeff_diff(a: &Gec, b: &Gec) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(crate::strategies::config(48))]
 
     #[test]
     fn transforms_equal_transformed_points(

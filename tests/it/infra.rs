@@ -26,7 +26,7 @@ fn jet_product_rule_holds_for_mixed_orders() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(crate::strategies::config(64))]
 
     #[test]
     fn jet_quotient_times_divisor_is_identity(a in -3.0f64..3.0, b in 0.5f64..3.0) {

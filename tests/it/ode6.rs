@@ -242,7 +242,7 @@ fn param() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(crate::strategies::config(64))]
 
     /// Over |rho|, |eta|, |lambda| in {0} U [1e-3, 1e3] with any signs: a
     /// basis meets eq 1 and eq 8, or a named error comes back; never NaN.
@@ -488,7 +488,7 @@ fn column_params() -> impl Strategy<Value = Params> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(crate::strategies::config(24))]
 
     /// Grids with random parameters per column and random knot data stay
     /// C2 across every join (relative jumps below 1e-7), or the basis fails

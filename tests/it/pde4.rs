@@ -187,7 +187,7 @@ fn force() -> impl Strategy<Value = Force> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(32))]
+    #![proptest_config(crate::strategies::config(32))]
 
     #[test]
     fn two_sided_exact_holds(p in params(), fs in prop::collection::vec(force(), 1..4), m in 1usize..10, n in 0usize..6) {
@@ -254,7 +254,7 @@ fn terms_to_max() -> impl Strategy<Value = (usize, usize)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(8))]
+    #![proptest_config(crate::strategies::config(8))]
 
     #[test]
     fn two_sided_exact_holds_up_to_max_terms(p in params(), f in force(), (m, n) in terms_to_max()) {

@@ -414,7 +414,7 @@ fn cli_mode_patch_and_errors() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(crate::strategies::config(48))]
 
     #[test]
     fn modes_interpolate_over_documented_range(a in -10.0f64..10.0, n in 0usize..=20, vals in prop::array::uniform6(-5.0f64..5.0)) {

@@ -249,7 +249,7 @@ fn plate_stated_limits_and_bad_input_are_clear_errors() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(32))]
+    #![proptest_config(crate::strategies::config(32))]
     #[test]
     fn plate_pipeline_sweeps_documented_ranges(
         a in 0.4f64..1.15, b in 0.4f64..1.15, rot in 0.0f64..3.2,
@@ -411,7 +411,7 @@ fn plate_region_files_vertex_list_and_lasso() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(12))]
+    #![proptest_config(crate::strategies::config(12))]
     #[test]
     fn plate_compare_sweeps_baseline_parameters(
         shape in 0usize..5, grid in 16usize..36, iterations in 1usize..60,
@@ -562,7 +562,7 @@ fn plate_cli_bad_input_is_a_clear_error() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(crate::strategies::config(64))]
     /// Eq 3 and eq 12 over the documented material ranges (E > 0, mu in
     /// [0, 0.5], h > 0) and forces: the biharmonic residual equals q/D and
     /// the C1 conditions hold on the unit circle, measured with jets.

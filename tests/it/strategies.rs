@@ -46,3 +46,39 @@ pub fn tube_mesh() -> impl Strategy<Value = Mesh> {
     (0.5f64..2.0, -0.4f64..0.4, 3usize..12, 3usize..24)
         .prop_map(|(r0, r1, nu, nv)| tessellate(&Revolution { r0, r1 }, Tessellation { nu, nv }))
 }
+
+/// The proptest configuration every property test uses: `cases` cases drawn
+/// from a fixed seed, so that `cargo test` and CI draw the same cases on every
+/// run. Failures found are persisted under `tests/proptest-regressions/` (commit
+/// them) and replayed first.
+///
+/// Exploration with fresh seeds is a separate command (README, "Exploring"):
+/// `PDESCULPT_EXPLORE=1 cargo test --test it` draws random seeds and
+/// `PDESCULPT_EXPLORE_CASES_FACTOR` (default 8) times as many cases. A
+/// failure found that way is a library bug: fix it, then keep the case as a
+/// named test.
+pub fn config(cases: u32) -> ProptestConfig {
+    use proptest::test_runner::{FileFailurePersistence, RngSeed};
+    let explore = std::env::var_os("PDESCULPT_EXPLORE").is_some();
+    let factor = std::env::var("PDESCULPT_EXPLORE_CASES_FACTOR")
+        .ok()
+        .and_then(|s| s.parse::<u32>().ok())
+        .unwrap_or(8);
+    ProptestConfig {
+        cases: if explore {
+            cases.saturating_mul(factor)
+        } else {
+            cases
+        },
+        rng_seed: if explore {
+            RngSeed::Random
+        } else {
+            RngSeed::Fixed(0x7064_6573_6375_6c70) // "pdesculp"
+        },
+        // tests/it/conv.rs -> tests/proptest-regressions/conv.txt
+        failure_persistence: Some(Box::new(FileFailurePersistence::SourceParallel(
+            "proptest-regressions",
+        ))),
+        ..ProptestConfig::default()
+    }
+}
