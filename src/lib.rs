@@ -3,13 +3,14 @@
 //! A verification-first research kit for modeling 3D characters with PDE and
 //! ODE surfaces. Each equation family lives in its own module with a
 //! `check.rs` that measures boundary conditions, residuals, continuity,
-//! thresholds and agreement with independent references; [`check::run`]
+//! thresholds and agreement with independent references; [`verify::run`]
 //! gathers them all.
 //!
 //! | module | paper | holds |
 //! |---|---|---|
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
-//! | [`check`] | all | verification reports and their registry |
+//! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
+//! | [`verify`] | all | the registry of every family's checks (the top) |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
 //! | [`render`] | - | CPU rasteriser for PNG previews |
@@ -37,3 +38,4 @@ pub mod plate;
 pub mod profile;
 pub mod render;
 pub mod surface;
+pub mod verify;

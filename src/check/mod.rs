@@ -1,6 +1,8 @@
-//! The verification registry.
+//! Verification reports: the [`Check`] type, its [`Kind`]s and the named
+//! tolerances ([`tol`]). This module is a leaf: it names no family; the list
+//! of families lives in [`crate::verify`].
 //!
-//! Every equation family has a `check.rs` whose `checks()` *measures* and
+//! Every equation family has a `check` module whose `checks()` *measures* and
 //! returns [`Check`] reports; it never asserts. Tests assert on the reports,
 //! `pdesculpt verify` prints them and exits non-zero when one fails, and the
 //! figure programs record them.
@@ -14,10 +16,7 @@
 //! measured difference really exceeds the tolerance, so an erratum that stops
 //! reproducing (or was never real) fails loudly.
 
-mod registry;
 pub mod tol;
-
-pub use registry::{families, run, Family};
 
 use serde::Serialize;
 use std::fmt;

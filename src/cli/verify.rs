@@ -1,6 +1,6 @@
 //! `pdesculpt verify [--family F] [--json]`: run the check registry.
 
-use pdesculpt::check;
+use pdesculpt::verify as check;
 
 /// Arguments of `pdesculpt verify`.
 #[derive(clap::Args, Debug)]

@@ -7,6 +7,7 @@
 use super::fit::{self, paper_literal_field, RawSegment, Solver, WeightMode};
 use super::kernel::{self, Segment};
 use super::model::{Component, Model, Polygonizer};
+pub use super::samples::{random_case, Lcg};
 use super::{shapes, silhouette, sketch};
 use crate::check::{rel_err, tol, Check, Kind};
 use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid};
@@ -44,51 +45,6 @@ struct GoldenCase {
     ft: f64,
     dfdh: f64,
     dfdq: f64,
-}
-
-/// Deterministic pseudo-random numbers in [0, 1) (no dependency).
-pub struct Lcg(pub u64);
-impl Lcg {
-    pub fn next_f64(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    pub fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next_f64()
-    }
-}
-
-/// A random segment and point for the quadrature checks.
-pub fn random_case(rng: &mut Lcg) -> (Segment, [f64; 3], f64) {
-    let p = [
-        rng.range(-1.0, 1.0),
-        rng.range(-1.0, 1.0),
-        rng.range(-1.0, 1.0),
-    ];
-    let mut q = [
-        rng.range(-1.0, 1.0),
-        rng.range(-1.0, 1.0),
-        rng.range(-1.0, 1.0),
-    ];
-    if crate::mesh::dist(p, q) < 0.2 {
-        q[0] += 0.5;
-    }
-    let seg = Segment {
-        p,
-        q,
-        w0: rng.range(0.1, 3.0),
-        w1: rng.range(0.1, 3.0),
-        lambda: rng.range(0.2, 2.0),
-    };
-    let r = [
-        rng.range(-2.0, 2.0),
-        rng.range(-2.0, 2.0),
-        rng.range(-2.0, 2.0),
-    ];
-    (seg, r, rng.range(0.3, 4.0))
 }
 
 fn golden_checks(out: &mut Vec<Check>) {

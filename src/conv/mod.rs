@@ -20,6 +20,7 @@ pub mod check;
 pub mod fit;
 pub mod kernel;
 pub mod model;
+pub mod samples;
 pub mod shapes;
 pub mod silhouette;
 pub mod skeleton;

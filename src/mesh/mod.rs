@@ -14,6 +14,7 @@ pub mod check;
 pub mod io;
 pub mod isosurface;
 pub mod metrics;
+pub mod samples;
 pub mod slice;
 pub mod topology;
 

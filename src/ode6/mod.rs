@@ -32,6 +32,7 @@ pub mod boundary;
 pub mod check;
 pub mod force;
 pub mod paper;
+pub mod samples;
 pub mod surface;
 
 pub use basis::{Basis, Params, RootCase};

@@ -17,7 +17,7 @@
 use super::force::Particular;
 use super::{Basis, BoundaryCurves, Curve, Force, Ode6Error};
 use crate::jet::{Jet, Real};
-use crate::surface::{Domain, Surface};
+use crate::surface::{Domain, Joined, Surface};
 
 /// One ODE surface patch.
 #[derive(Clone, Debug)]
@@ -198,8 +198,19 @@ impl Chain {
     }
 
     /// Jumps `[position, first, second]` of `d^i S/du^i` across every join,
-    /// maximised over `nv` samples of `v`.
+    /// maximised over `nv` samples of `v` (the old name of
+    /// [`Joined::join_jumps`]).
     pub fn u_jumps(&self, nv: usize) -> [f64; 3] {
+        self.join_jumps(nv)
+    }
+}
+
+/// Jumps `[position, first, second]` of `d^i S/du^i` across every join,
+/// maximised over `nv` samples of `v`.
+impl Joined for Chain {
+    type Jumps = [f64; 3];
+
+    fn join_jumps(&self, nv: usize) -> [f64; 3] {
         let mut out = [0.0f64; 3];
         for w in self.patches.windows(2) {
             for iv in 0..nv {
@@ -349,8 +360,18 @@ impl Grid {
         Ok(Grid { patches })
     }
 
-    /// Jumps across every u-join and v-join, `n + 1` samples along each.
+    /// Jumps across every u-join and v-join, `n + 1` samples along each
+    /// (the old name of [`Joined::join_jumps`]).
     pub fn jumps(&self, n: usize) -> GridJumps {
+        self.join_jumps(n)
+    }
+}
+
+/// Jumps across every u-join and v-join, `n + 1` samples along each.
+impl Joined for Grid {
+    type Jumps = GridJumps;
+
+    fn join_jumps(&self, n: usize) -> GridJumps {
         let mut j = GridJumps {
             u: [0.0; 3],
             v: [0.0; 3],

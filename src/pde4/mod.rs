@@ -34,6 +34,7 @@ pub mod fd;
 pub mod force;
 pub mod four_sided;
 pub mod quad;
+pub mod samples;
 pub mod spec;
 pub mod two_sided;
 

@@ -33,7 +33,7 @@ use crate::curve::gec::fit::{fit, FitOptions, FrameChoice};
 use crate::mesh::metrics::{point_distances, stats, DistanceStats};
 use crate::mesh::slice::{slice, Polyline};
 use crate::mesh::Mesh;
-use crate::surface::{tessellate, Tessellation};
+use crate::surface::{tessellate, Joined, Tessellation};
 
 /// One body part: a height range cut into `sections` horizontal sections
 /// (7 + 3k for the global C2 chain; method 1 and 2 drop the last), keeping the longest closed loop with centroid x in `x_range`.
@@ -353,7 +353,7 @@ pub fn reconstruct(
             .copied()
             .collect();
         let d = stats(&point_distances(&own, &p.mesh));
-        let j = super::check::join_jumps(&p.chain);
+        let j = p.chain.join_jumps(super::JOIN_SAMPLES);
         let r = stats(&point_distances(&p.mesh.positions, skin));
         let (roughness, slip_deg, start_angle_deg) = part_smoothness(&p);
         part_reports.push(PartReport {

@@ -19,8 +19,8 @@
 use super::patch::{validate_curves, Patch};
 use super::Pde6Error;
 use crate::curve::Fourier3;
-use crate::jet::Real;
-use crate::surface::{Domain, Surface};
+use crate::jet::{Jet, Real};
+use crate::surface::{Domain, Joined, Surface};
 use std::f64::consts::PI;
 
 /// A cross section at a position u along the chain.
@@ -310,5 +310,31 @@ impl Surface for Chain {
             i = j;
         }
         out
+    }
+}
+
+/// Jumps of d^i S / du^i (i = 0, 1, 2) across every join of the chain, each
+/// relative to max(|derivative|, 1), max over `samples` v samples:
+/// `[c0, c1, c2]`.
+impl Joined for Chain {
+    type Jumps = [f64; 3];
+
+    fn join_jumps(&self, samples: usize) -> [f64; 3] {
+        let mut worst = [0.0f64; 3];
+        for w in self.pieces.windows(2) {
+            let u = w[1].start;
+            for j in 0..samples {
+                let v = 2.0 * PI * j as f64 / samples as f64;
+                let l = w[0].eval(Jet::<3, 1>::var_u(u), Jet::<3, 1>::constant(v));
+                let r = w[1].eval(Jet::<3, 1>::var_u(u), Jet::<3, 1>::constant(v));
+                for (d, wd) in worst.iter_mut().enumerate() {
+                    for k in 0..3 {
+                        let (x, y) = (l[k].deriv(d, 0), r[k].deriv(d, 0));
+                        *wd = wd.max((x - y).abs() / x.abs().max(y.abs()).max(1.0));
+                    }
+                }
+            }
+        }
+        worst
     }
 }

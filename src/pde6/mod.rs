@@ -42,15 +42,18 @@
 pub mod body;
 pub mod chain;
 pub mod check;
-pub mod check_body;
 pub mod mode;
 pub mod patch;
+pub mod samples;
 pub mod sampling;
 pub mod spline;
 
 pub use chain::{Chain, Method, Piece, Section};
 pub use mode::{Mode, ModeBasis, ModeSolver, Regime};
 pub use patch::Patch;
+
+/// v samples per join in the join-continuity measurement of a chain.
+pub const JOIN_SAMPLES: usize = 16;
 
 /// Largest |a| accepted.
 pub const A_MAX: f64 = 10.0;

@@ -43,6 +43,7 @@ pub mod baselines;
 pub mod boundary;
 pub mod check;
 pub mod deformer;
+mod delaunay;
 pub mod mapping;
 pub mod projection;
 pub mod reference;

@@ -280,6 +280,6 @@ pub fn ellipse_mesh(a: f64, b: f64, rings: usize) -> Result<TriMesh2, PlateError
             pts.push([a * r * th.cos(), b * r * th.sin()]);
         }
     }
-    let tris = super::shapes::delaunay(&pts)?;
+    let tris = super::delaunay::delaunay(&pts)?;
     Ok((pts, tris))
 }

@@ -9,11 +9,11 @@
 
 use super::baselines::{delta_mush, laplacian_deform, DeltaMushParams, LaplacianParams};
 use super::deformer::{Direction, MappingMethod, PlateDeformer, RegionOptions};
+pub use super::delaunay::delaunay;
 use super::mapping::inside;
 use super::reference::solve_clamped;
 use super::PlateError;
 use crate::mesh::Mesh;
-use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation};
 
 /// Region shapes of the comparisons.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -76,37 +76,6 @@ impl Shape {
             }
         }
     }
-}
-
-#[derive(Clone, Copy)]
-struct Site([f64; 2]);
-impl HasPosition for Site {
-    type Scalar = f64;
-    fn position(&self) -> Point2<f64> {
-        Point2::new(self.0[0], self.0[1])
-    }
-}
-
-/// Delaunay triangles (counter-clockwise) of distinct points, indices
-/// into `points`.
-pub fn delaunay(points: &[[f64; 2]]) -> Result<Vec<[usize; 3]>, PlateError> {
-    let mut dt = DelaunayTriangulation::<Site>::new();
-    let mut handle_to_index = Vec::new();
-    for (i, &p) in points.iter().enumerate() {
-        let h = dt
-            .insert(Site(p))
-            .map_err(|e| PlateError::DegenerateProjection(format!("{e:?}")))?;
-        if h.index() != handle_to_index.len() {
-            return Err(PlateError::DegenerateProjection(format!(
-                "duplicate point {i}"
-            )));
-        }
-        handle_to_index.push(i);
-    }
-    Ok(dt
-        .inner_faces()
-        .map(|f| f.vertices().map(|v| handle_to_index[v.fix().index()]))
-        .collect())
 }
 
 /// A flat sheet in the plane z = 0: an `n` x `n` grid over

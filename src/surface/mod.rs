@@ -12,8 +12,10 @@
 //! surfaces of different families are stored together (character assembly).
 
 pub mod check;
+mod join;
 mod tessellate;
 
+pub use join::Joined;
 pub use tessellate::{tessellate, tessellate_grid, Tessellation};
 
 use crate::jet::{Jet, Real};

@@ -2,7 +2,7 @@
 
 #[test]
 fn every_check_passes() {
-    let checks = pdesculpt::check::run(None);
+    let checks = pdesculpt::verify::run(None);
     assert!(!checks.is_empty());
     let failed: Vec<String> = checks
         .iter()
@@ -19,7 +19,7 @@ fn every_check_passes() {
 
 #[test]
 fn check_names_are_unique() {
-    let checks = pdesculpt::check::run(None);
+    let checks = pdesculpt::verify::run(None);
     let mut names: Vec<&str> = checks.iter().map(|c| c.name.as_str()).collect();
     names.sort_unstable();
     let before = names.len();

@@ -60,6 +60,7 @@
 pub mod check;
 pub mod fit;
 pub mod metrics;
+pub mod samples;
 pub mod study;
 pub mod transform;
 

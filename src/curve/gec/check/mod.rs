@@ -3,13 +3,14 @@
 //! transformed points, and the paper-literal forms of 000 eq 16 and 002 eq 1.
 
 use super::fit::{dft_coefficients, solve};
+pub use super::samples::tilted_gec;
 use super::transform::Bend;
 use super::{fit, fit_fft, metrics, FitOptions, Frame, Gec, Param, Solver};
 use crate::check::{tol, Check, Kind};
 use std::f64::consts::PI;
 
 const FAMILY: &str = "gec";
-const GOLDEN: &str = include_str!("../../../verify/golden/gec_golden.json");
+const GOLDEN: &str = include_str!("../../../../verify/golden/gec_golden.json");
 /// Nodes of the checked arc-length quadrature.
 const ARC_NODES: usize = 512;
 
@@ -30,21 +31,6 @@ fn golden() -> Option<(Golden, Gec)> {
     let g: Golden = serde_json::from_str(GOLDEN).ok()?;
     let gec = Gec::new(Frame::z_plane(g.z_c), g.centre, g.x.clone(), g.y.clone()).ok()?;
     Some((g, gec))
-}
-
-/// A tilted, non-axis-aligned GEC for round trips.
-pub fn tilted_gec() -> Gec {
-    let frame = Frame {
-        origin: [0.3, 8.0, -0.2],
-        e1: [0.8, 0.0, -0.6],
-        e2: [0.36, 0.8, 0.48],
-    };
-    Gec {
-        frame,
-        centre: [0.1, -0.05],
-        x: vec![[1.2, 0.1], [0.1, -0.05], [0.02, 0.03]],
-        y: vec![[0.8, 0.05], [-0.04, 0.06], [0.01, -0.02]],
-    }
 }
 
 /// Largest difference of the space Fourier coefficients (frame-independent).

@@ -2,7 +2,7 @@
 //! Figs 5-6): the current options against [`legacy_options`] on the parts
 //! that rippled (torso and head).
 
-use super::body::{
+use super::super::body::{
     legacy_options, makehuman_parts, part_smoothness, reconstruct_part, BodyOptions,
 };
 use crate::check::{Check, Kind};

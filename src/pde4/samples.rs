@@ -1,0 +1,129 @@
+//! Named test problems of the fourth-order family (paper 000): shape
+//! parameters for every root case, sample forces and a sample boundary,
+//! shared by the checks, tests, benches and figures.
+
+use super::two_sided::Boundary;
+use super::{Force, ForceKind, ShapeParams};
+use crate::curve::Fourier3;
+
+/// The sinusoidal load `sin(pi u) sin(pi v)` (an area force over the whole patch).
+pub const SINE_LOAD: ForceKind = ForceKind::Area {
+    u0: 0.0,
+    u1: 1.0,
+    v0: 0.0,
+    v1: 1.0,
+};
+
+/// Shape parameters covering every root case of the mode ODE.
+pub fn root_cases() -> Vec<(&'static str, ShapeParams)> {
+    vec![
+        ("double", ShapeParams::PLATE),
+        (
+            "distinct",
+            ShapeParams {
+                a1: 1.0,
+                a2: 3.0,
+                a3: 1.0,
+            },
+        ),
+        (
+            "complex",
+            ShapeParams {
+                a1: 1.0,
+                a2: 0.5,
+                a3: 1.0,
+            },
+        ),
+        (
+            "negative-a2",
+            ShapeParams {
+                a1: 2.0,
+                a2: -1.0,
+                a3: 1.0,
+            },
+        ),
+        ("paper-0.3", ShapeParams::uniform(0.3)),
+    ]
+}
+
+/// A combination of a concentrated, a line and an area force.
+pub fn sample_forces() -> Vec<Force> {
+    vec![
+        Force {
+            kind: ForceKind::Concentrated { u0: 0.3, v0: 0.2 },
+            p: [0.0, 0.0, 1.0],
+        },
+        Force {
+            kind: ForceKind::Line {
+                u0: 0.2,
+                u1: 0.7,
+                v0: 0.6,
+            },
+            p: [0.5, 0.0, 0.3],
+        },
+        Force {
+            kind: ForceKind::Area {
+                u0: 0.35,
+                u1: 0.85,
+                v0: 0.4,
+                v1: 0.9,
+            },
+            p: [0.0, 1.0, 0.5],
+        },
+    ]
+}
+
+/// A sample boundary (curves and tangents) for the non-zero-boundary checks.
+pub fn sample_boundary() -> Boundary {
+    let ring = |r: f64, y: f64| Fourier3 {
+        c0: [0.0, y, 0.0],
+        cos: vec![[r, 0.0, 0.0], [0.0, 0.0, 0.05]],
+        sin: vec![[0.0, 0.0, r]],
+    };
+    Boundary {
+        curve0: ring(1.0, 0.0),
+        curve1: ring(0.7, 1.0),
+        tangent0: Fourier3 {
+            c0: [0.0, 1.0, 0.0],
+            cos: vec![[0.3, 0.0, 0.0]],
+            sin: vec![[0.0, 0.0, 0.3]],
+        },
+        tangent1: Fourier3 {
+            c0: [0.0, 1.0, 0.0],
+            cos: vec![[-0.2, 0.0, 0.0]],
+            sin: vec![[0.0, 0.0, -0.2]],
+        },
+    }
+}
+
+/// The two-sided patch of the non-zero-boundary checks: three different
+/// shape parameters, the sample forces, 8 x 8 terms, [`sample_boundary`].
+pub fn two_sided() -> Result<super::TwoSided, super::Pde4Error> {
+    super::TwoSided::new(
+        [
+            ShapeParams::PLATE,
+            ShapeParams::uniform(0.3),
+            ShapeParams {
+                a1: 1.0,
+                a2: 0.5,
+                a3: 1.0,
+            },
+        ],
+        &sample_forces(),
+        8,
+        8,
+        super::two_sided::Method::Exact,
+        Some(&sample_boundary()),
+    )
+}
+
+/// The four-sided Galerkin patch of the clamped-edge check (8 x 8 terms).
+pub fn four_sided() -> Result<super::FourSided, super::Pde4Error> {
+    super::FourSided::new(
+        [ShapeParams::uniform(0.3); 3],
+        &sample_forces(),
+        8,
+        8,
+        super::four_sided::Method::Galerkin,
+    )
+}

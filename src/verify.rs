@@ -1,0 +1,120 @@
+//! The verification layer: the list of every equation family and its
+//! checks, above the families (the `check` module below them holds only the
+//! report types, kinds and named tolerances).
+//!
+//! A new family adds one line to [`families`] (its `checks` generator).
+
+use crate::check::{Check, Kind};
+
+/// One equation family and its check generator.
+pub struct Family {
+    pub name: &'static str,
+    /// Papers it implements (file numbers).
+    pub papers: &'static str,
+    pub checks: fn() -> Vec<Check>,
+}
+
+/// Every family, in dependency order.
+#[rustfmt::skip]
+pub fn families() -> &'static [Family] {
+    &[
+        Family { name: "jet", papers: "-", checks: crate::jet::check::checks },
+        Family { name: "mesh", papers: "-", checks: crate::mesh::check::checks },
+        Family { name: "surface", papers: "-", checks: crate::surface::check::checks },
+        Family { name: "gec", papers: "000, 002", checks: crate::curve::gec::check::checks },
+        Family { name: "pde4", papers: "000", checks: crate::pde4::check::checks },
+        Family { name: "plate", papers: "001", checks: crate::plate::check::checks },
+        Family { name: "pde6", papers: "002", checks: crate::pde6::check::checks },
+        Family { name: "ode6", papers: "004", checks: crate::ode6::check::checks },
+        Family { name: "conv", papers: "003", checks: crate::conv::check::checks },
+        Family { name: "derivatives", papers: "-", checks: derivative_checks },
+    ]
+}
+
+/// Runs the checks of every family whose name equals `family` (all when
+/// `None`). Families run in parallel threads; the order of the result is the
+/// registry order.
+pub fn run(family: Option<&str>) -> Vec<Check> {
+    let selected: Vec<&Family> = families()
+        .iter()
+        .filter(|f| family.is_none_or(|n| n == f.name))
+        .collect();
+    std::thread::scope(|s| {
+        let handles: Vec<_> = selected
+            .iter()
+            .map(|f| s.spawn(move || (f.checks)()))
+            .collect();
+        handles
+            .into_iter()
+            .zip(&selected)
+            .flat_map(|(h, f)| {
+                h.join().unwrap_or_else(|_| {
+                    vec![Check::new(
+                        f.name,
+                        f.papers,
+                        "-",
+                        &format!("{}.checks-panicked", f.name),
+                        Kind::Reference,
+                        f64::NAN,
+                        0.0,
+                    )
+                    .note("the family's check generator panicked (a bug)")]
+                })
+            })
+            .collect()
+    })
+}
+
+/// Jet derivatives against finite differences for every `Surface` sample of
+/// every family (the samples live in each family's `samples.rs`). A sample
+/// that fails to build is a failing check.
+pub fn derivative_checks() -> Vec<Check> {
+    use crate::surface::check::derivative_check;
+    use crate::surface::Revolution;
+    fn built<S: crate::surface::Surface, E: std::fmt::Display>(
+        sample: &str,
+        paper: &str,
+        s: Result<S, E>,
+    ) -> Check {
+        match s {
+            Ok(s) => derivative_check(sample, paper, &s),
+            Err(e) => Check::new(
+                "derivatives",
+                paper,
+                "derivatives",
+                &format!("derivatives.{sample}"),
+                Kind::Reference,
+                f64::NAN,
+                0.0,
+            )
+            .note(format!("sample failed to build: {e}")),
+        }
+    }
+    let mut out = vec![
+        derivative_check("surface.revolution", "-", &Revolution { r0: 1.0, r1: 0.3 }),
+        derivative_check(
+            "mesh.torus",
+            "-",
+            &crate::mesh::samples::Torus {
+                big: 2.0,
+                small: 0.5,
+            },
+        ),
+        built("pde4.two_sided", "000", crate::pde4::samples::two_sided()),
+        built("pde4.four_sided", "000", crate::pde4::samples::four_sided()),
+        built("ode6.patch", "004", crate::ode6::samples::patch()),
+        built(
+            "ode6.grid_3x2_column",
+            "004",
+            crate::ode6::samples::grid_3x2().map(|g| g.patches[1][0].clone()),
+        ),
+    ];
+    for (name, a) in crate::pde6::samples::SIGNS {
+        out.push(built(
+            &format!("pde6.method2_chain_{name}"),
+            "002",
+            crate::pde6::samples::chain(a),
+        ));
+    }
+    out
+}
