@@ -22,6 +22,8 @@ pub struct Args {
     /// Output directory.
     #[arg(short, long, default_value = "out")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub units: super::units::UnitArgs,
 }
 
 /// Builds the demo outputs.
@@ -53,10 +55,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         args.out.join("demo-pde6.png"),
         args.out.join("demo.json"),
     ];
-    io::write(&scene, &files[0])?;
-    io::write(&scene, &files[1])?;
+    let unit_glb = args.units.write(&scene, &files[0], d.unit)?;
+    let unit_obj = args.units.write(&scene, &files[1], d.unit)?;
     views(&scene).save_png(&files[2])?;
-    io::write(&d.reconstruction, &files[3])?;
+    args.units.write(&d.reconstruction, &files[3], d.unit)?;
     views(&d.reconstruction).save_png(&files[4])?;
     io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
     for e in &d.report.edits {
@@ -105,9 +107,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     for p in &files {
         eprintln!("wrote {}", p.display());
     }
+    eprintln!(
+        "units: GLB {unit_glb}, OBJ {unit_obj}, report lengths {}",
+        d.unit
+    );
     if json {
         super::print_json(&serde_json::json!({
             "outputs": files,
+            "units": {"demo.glb": unit_glb, "demo.obj": unit_obj, "demo-pde6.glb": unit_glb, "report": d.unit},
             "vertices": scene.positions.len(),
             "triangles": scene.triangles.len(),
             "report": d.report,

@@ -16,6 +16,7 @@ pub mod isosurface;
 pub mod metrics;
 pub mod slice;
 pub mod topology;
+pub mod unit;
 
 use thiserror::Error;
 
