@@ -69,6 +69,8 @@ const MODELS: [(&str, &str); 3] = [
 
 /// Rows of the data table of one figure; longer JSONs are cut with a note.
 const MAX_ROWS: usize = 40;
+/// Columns of a records table.
+const MAX_COLUMNS: usize = 10;
 /// Arrays of numbers longer than this are summarised (count, min, max).
 const MAX_INLINE: usize = 6;
 
@@ -164,15 +166,86 @@ fn flatten(v: &Value, path: &str, rows: &mut Vec<(String, String)>) {
     }
 }
 
-fn data_table(json: &Path) -> anyhow::Result<String> {
-    let v: Value = serde_json::from_slice(&std::fs::read(json)?)?;
-    let mut rows = Vec::new();
-    flatten(&v, "", &mut rows);
-    let mut h = String::from("<table class=\"data\"><tr><th>quantity</th><th>value</th></tr>");
-    for (k, x) in rows.iter().take(MAX_ROWS) {
-        let _ = write!(h, "<tr><td>{}</td><td>{}</td></tr>", esc(k), esc(x));
+/// A list of records (objects) as one table: a row per record, a column
+/// per flattened field (first `MAX_COLUMNS` fields in order of appearance).
+fn records_table(name: &str, records: &[Value], h: &mut String) {
+    let rows: Vec<Vec<(String, String)>> = records
+        .iter()
+        .map(|r| {
+            let mut kv = Vec::new();
+            flatten(r, "", &mut kv);
+            kv
+        })
+        .collect();
+    let mut cols: Vec<&str> = Vec::new();
+    for kv in &rows {
+        for (k, _) in kv {
+            if !cols.contains(&k.as_str()) && cols.len() < MAX_COLUMNS {
+                cols.push(k);
+            }
+        }
+    }
+    let _ = write!(
+        h,
+        "<table class=\"data\"><caption>{}</caption><tr>",
+        esc(name)
+    );
+    for c in &cols {
+        let _ = write!(h, "<th>{}</th>", esc(c));
+    }
+    h.push_str("</tr>");
+    for kv in rows.iter().take(MAX_ROWS) {
+        h.push_str("<tr>");
+        for c in &cols {
+            let x = kv
+                .iter()
+                .find(|(k, _)| k == c)
+                .map_or("", |(_, x)| x.as_str());
+            let _ = write!(h, "<td>{}</td>", esc(x));
+        }
+        h.push_str("</tr>");
     }
     h.push_str("</table>");
+    if rows.len() > MAX_ROWS {
+        let _ = write!(
+            h,
+            "<p class=\"more\">{} more rows</p>",
+            rows.len() - MAX_ROWS
+        );
+    }
+}
+
+/// Whether `v` is a list of at least two objects.
+fn is_records(v: &Value) -> Option<&[Value]> {
+    let a = v.as_array()?;
+    (a.len() >= 2 && a.iter().all(Value::is_object)).then_some(a.as_slice())
+}
+
+/// The numbers of a data JSON: lists of records as tables, every other
+/// field as quantity/value rows.
+fn data_table(json: &Path) -> anyhow::Result<String> {
+    let v: Value = serde_json::from_slice(&std::fs::read(json)?)?;
+    let mut h = String::new();
+    let mut rows = Vec::new();
+    if let Some(records) = is_records(&v) {
+        records_table("", records, &mut h);
+    } else if let Some(o) = v.as_object() {
+        for (k, x) in o {
+            match is_records(x) {
+                Some(records) => records_table(k, records, &mut h),
+                None => flatten(x, k, &mut rows),
+            }
+        }
+    } else {
+        flatten(&v, "", &mut rows);
+    }
+    if !rows.is_empty() {
+        h.push_str("<table class=\"data\"><tr><th>quantity</th><th>value</th></tr>");
+        for (k, x) in rows.iter().take(MAX_ROWS) {
+            let _ = write!(h, "<tr><td>{}</td><td>{}</td></tr>", esc(k), esc(x));
+        }
+        h.push_str("</table>");
+    }
     if rows.len() > MAX_ROWS {
         let _ = write!(
             h,
@@ -349,13 +422,16 @@ pub fn write_index(ctx: &Ctx, figures: &[Figure], checks: &[Check]) -> anyhow::R
                     id = esc(f.id)
                 );
             }
-            body.push_str("</div><div class=\"numbers\">");
+            body.push_str("</div><div class=\"numbers\"><h4>checks it relies on</h4>");
+            body.push_str(&checks_table(&checks::for_figure(f, checks)));
             for n in mine.iter().filter(|n| n.ends_with(".json")) {
-                let _ = write!(body, "<h4>{}</h4>", esc(n));
+                let _ = write!(
+                    body,
+                    "<h4>numbers: <a href=\"{n}\">{n}</a></h4>",
+                    n = esc(n)
+                );
                 body.push_str(&data_table(&ctx.path(n))?);
             }
-            body.push_str("<h4>checks</h4>");
-            body.push_str(&checks_table(&checks::for_figure(f, checks)));
             body.push_str("</div></div></article>");
         }
         body.push_str("</section>");

@@ -17,7 +17,8 @@ import path from 'path';
 const nm = process.env.GALLERY_NODE_MODULES;
 const require = createRequire(nm ? nm + '/' : import.meta.url);
 const { chromium } = require('playwright-core');
-const threeDir = path.dirname(require.resolve('three/package.json'));
+// three's package.json is not an export: locate it from its main entry
+const threeDir = path.resolve(path.dirname(require.resolve('three')), '..');
 
 const out = path.resolve(process.argv[2] || 'paper_figures/out');
 // "about 1.7 m": the MakeHuman base body is 1.67 m; a unit slip is 10x.
