@@ -9,7 +9,9 @@
 //! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body with the teddy,
 //! groups `skin` and `teddy`, front and side),
 //! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
-//! part) and `demo.json` (what every step measured).
+//! part) and `demo.json` (what every step measured). GLBs are metres (a
+//! 1.67 m body), `demo.obj` is in `--unit` (default metres), `demo.json`'s
+//! lengths are decimetres, the MakeHuman template's unit (`"unit": "dm"`).
 
 use pdesculpt::character::demo;
 use pdesculpt::mesh::io;
