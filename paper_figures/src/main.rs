@@ -2,11 +2,14 @@
 //! paper_figures -- list | all | <id or paper>...` (a paper number such as
 //! `001` selects all of that paper's figures). Each figure writes its images
 //! (PNG/SVG) and a data JSON beside them into `paper_figures/out/` (or
-//! `--out DIR`), and records the checks it relied on.
+//! `--out DIR`), and records the checks it relied on. `all` (and `gallery`,
+//! which uses whatever is already in the output directory) also writes the
+//! gallery page `index.html` (see `gallery.rs`).
 
 mod common;
 
 mod conv;
+mod gallery;
 mod gec;
 mod ode6;
 mod pde4;
@@ -23,6 +26,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(pde6::figures());
     v.extend(ode6::figures());
     v.extend(conv::figures());
+    v.extend(gallery::figures());
     v
 }
 
@@ -31,6 +35,21 @@ fn main() {
         eprintln!("error: {e:#}");
         std::process::exit(1);
     }
+}
+
+/// Runs every registered check (`verify --json`'s rows) and writes the
+/// gallery page for the files in the output directory.
+fn write_gallery(ctx: &Ctx, figures: &[Figure]) -> anyhow::Result<()> {
+    let t = std::time::Instant::now();
+    let checks = pdesculpt::check::run(None);
+    eprintln!(
+        "[gallery] {} checks in {:.1} s",
+        checks.len(),
+        t.elapsed().as_secs_f64()
+    );
+    let p = gallery::write_index(ctx, figures, &checks)?;
+    eprintln!("[gallery] open {}", p.display());
+    Ok(())
 }
 
 fn run() -> anyhow::Result<()> {
@@ -48,7 +67,7 @@ fn run() -> anyhow::Result<()> {
     match args.first().map(String::as_str) {
         None | Some("list") | Some("--help") | Some("-h") => {
             println!(
-                "usage: paper_figures [--out DIR] list | all | <id or paper number, e.g. 001>..."
+                "usage: paper_figures [--out DIR] list | all | gallery | <id or paper number, e.g. 001>..."
             );
             for f in &figures {
                 println!("{:<24} paper {}  {}", f.id, f.paper, f.title);
@@ -59,8 +78,9 @@ fn run() -> anyhow::Result<()> {
             for f in &figures {
                 ctx.run(f)?;
             }
-            Ok(())
+            write_gallery(&ctx, &figures)
         }
+        Some("gallery") => write_gallery(&ctx, &figures),
         Some(_) => {
             for id in &args {
                 let chosen: Vec<&Figure> = figures

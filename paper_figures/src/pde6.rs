@@ -140,7 +140,13 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
     }
     let img = Image::hstack(&panels, [255, 255, 255, 255]);
     ctx.write_bytes("002-fig6.png", &img.encode_png())?;
-    pdesculpt::mesh::io::write(&mesh, &ctx.path("002-fig6-body.glb"))?;
+    // glTF is metres; the MakeHuman body is decimetres (mesh::unit)
+    pdesculpt::mesh::io::write_in_unit(
+        &mesh,
+        &ctx.path("002-fig6-body.glb"),
+        pdesculpt::mesh::unit::MAKEHUMAN,
+        pdesculpt::mesh::unit::GLB,
+    )?;
     ctx.write_json("002-fig6.json", &report)?;
     Ok(())
 }

@@ -3,6 +3,7 @@
 //! measured.
 
 use crate::makehuman;
+use crate::mesh::unit::{self, Unit};
 use crate::mesh::Mesh;
 use crate::pde4::apply::{deform_region, Direction as Pde4Direction};
 use crate::pde4::force::{Force, ForceKind};
@@ -53,6 +54,9 @@ pub struct EditReport {
 /// The demo's outputs and measurements.
 #[derive(Clone, Debug)]
 pub struct Demo {
+    /// Unit of every mesh below: decimetres, the MakeHuman data's unit
+    /// ([`unit::MAKEHUMAN`]); writers convert (GLB to metres).
+    pub unit: Unit,
     /// The sculpted template.
     pub sculpted: Mesh,
     /// Its C2 sixth-order PDE reconstruction (one group per part).
@@ -68,6 +72,8 @@ pub struct Demo {
 /// Everything the demo measured.
 #[derive(Clone, Debug, Serialize)]
 pub struct DemoReport {
+    /// Unit of every length in this report (decimetres, the template's).
+    pub unit: Unit,
     pub template: &'static str,
     pub template_vertices: usize,
     pub edits: Vec<EditReport>,
@@ -99,6 +105,9 @@ pub struct PropReport {
     /// Height of the prop in the scene (decimetres).
     pub height: f64,
 }
+
+/// The unit the demo works in: the MakeHuman template's.
+pub const UNIT: Unit = unit::MAKEHUMAN;
 
 /// The bundled teddy model file.
 pub const TEDDY_MODEL: &str = include_str!("../../data/conv/teddy.json");
@@ -386,7 +395,9 @@ pub fn build() -> Result<Demo, DemoError> {
         super::skirt::skirt(&belly, &super::skirt::SkirtOptions::default())?;
     let (prop, prop_report) = teddy_prop(&belly)?;
     Ok(Demo {
+        unit: UNIT,
         report: DemoReport {
+            unit: UNIT,
             template: "MakeHuman hm08 base body (skin group)",
             template_vertices: template.positions.len(),
             edits,

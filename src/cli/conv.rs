@@ -34,6 +34,8 @@ enum Cmd {
         /// Polygoniser: mt (marching tetrahedra, the paper's) or sn (surface nets).
         #[arg(long, default_value = "mt")]
         polygonizer: String,
+        #[command(flatten)]
+        units: super::units::UnitArgs,
     },
     /// The closed-form field of one linearly weighted segment at a point.
     Field {
@@ -75,6 +77,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             output,
             resolution,
             polygonizer,
+            units,
         } => {
             let method = match polygonizer.as_str() {
                 "mt" => Polygonizer::MarchingTetrahedra,
@@ -88,7 +91,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let built = m.build()?;
             let mesh = built.polygonize(resolution, m.options.threshold, method)?;
             let secs = t0.elapsed().as_secs_f64();
-            pdesculpt::mesh::io::write(&mesh, &output)?;
+            let unit = units.write_input(&mesh, &output)?;
             let topo = report(&mesh);
             let comps: Vec<serde_json::Value> = built
                 .components
@@ -108,6 +111,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if json {
                 super::print_json(&serde_json::json!({
                     "output": output.display().to_string(),
+                    "unit": unit,
                     "triangles": mesh.triangles.len(),
                     "vertices": mesh.positions.len(),
                     "topology": topo,

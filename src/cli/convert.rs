@@ -11,6 +11,8 @@ pub struct Args {
     /// Output mesh (.obj, .glb, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub units: super::units::UnitArgs,
 }
 
 /// Reads, validates and writes (atomically).
@@ -18,7 +20,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     // check the output format before reading anything
     io::Format::from_path(&args.output)?;
     let m = io::read(&args.input)?;
-    io::write(&m, &args.output)?;
+    let unit = args.units.write_input(&m, &args.output)?;
     eprintln!(
         "wrote {} ({} vertices, {} triangles)",
         args.output.display(),
@@ -31,6 +33,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             "vertices": m.positions.len(),
             "triangles": m.triangles.len(),
             "groups": m.groups,
+            "unit": unit,
         }))?;
     }
     Ok(0)

@@ -9,7 +9,9 @@
 //! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body with the teddy,
 //! groups `skin` and `teddy`, front and side),
 //! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
-//! part) and `demo.json` (what every step measured).
+//! part) and `demo.json` (what every step measured). GLBs are metres (a
+//! 1.67 m body), `demo.obj` is in `--unit` (default metres), `demo.json`'s
+//! lengths are decimetres, the MakeHuman template's unit (`"unit": "dm"`).
 
 use pdesculpt::character::demo;
 use pdesculpt::mesh::io;
@@ -22,6 +24,8 @@ pub struct Args {
     /// Output directory.
     #[arg(short, long, default_value = "out")]
     pub out: PathBuf,
+    #[command(flatten)]
+    pub units: super::units::UnitArgs,
 }
 
 /// Builds the demo outputs.
@@ -53,10 +57,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         args.out.join("demo-pde6.png"),
         args.out.join("demo.json"),
     ];
-    io::write(&scene, &files[0])?;
-    io::write(&scene, &files[1])?;
+    let unit_glb = args.units.write(&scene, &files[0], d.unit)?;
+    let unit_obj = args.units.write(&scene, &files[1], d.unit)?;
     views(&scene).save_png(&files[2])?;
-    io::write(&d.reconstruction, &files[3])?;
+    args.units.write(&d.reconstruction, &files[3], d.unit)?;
     views(&d.reconstruction).save_png(&files[4])?;
     io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
     for e in &d.report.edits {
@@ -105,9 +109,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     for p in &files {
         eprintln!("wrote {}", p.display());
     }
+    eprintln!(
+        "units: GLB {unit_glb}, OBJ {unit_obj}, report lengths {}",
+        d.unit
+    );
     if json {
         super::print_json(&serde_json::json!({
             "outputs": files,
+            "units": {"demo.glb": unit_glb, "demo.obj": unit_obj, "demo-pde6.glb": unit_glb, "report": d.unit},
             "vertices": scene.positions.len(),
             "triangles": scene.triangles.len(),
             "report": d.report,

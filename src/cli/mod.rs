@@ -5,6 +5,7 @@
 mod convert;
 mod demo;
 mod render;
+mod units;
 mod verify;
 
 mod conv;

@@ -41,6 +41,8 @@ pub enum Cmd {
         /// Samples in v (overrides the spec).
         #[arg(long)]
         nv: Option<usize>,
+        #[command(flatten)]
+        units: super::units::UnitArgs,
     },
     /// Evaluate one scalar iso-parametric line S(u) of eq 19.
     Eval {
@@ -182,7 +184,13 @@ pub fn build(spec: &Spec) -> anyhow::Result<Ode6Surface> {
 /// Runs `pdesculpt ode6`.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     match args.command {
-        Cmd::Surface { spec, out, nu, nv } => {
+        Cmd::Surface {
+            spec,
+            out,
+            nu,
+            nv,
+            units,
+        } => {
             let text = std::fs::read_to_string(&spec)
                 .with_context(|| format!("reading {}", spec.display()))?;
             let sp: Spec = serde_json::from_str(&text)
@@ -199,10 +207,12 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 mesh.positions.iter().flatten().all(|x| x.is_finite()),
                 "surface has non-finite points"
             );
-            pdesculpt::mesh::io::write(&mesh, &out)
+            let unit = units
+                .write_input(&mesh, &out)
                 .with_context(|| format!("writing {}", out.display()))?;
             let info = serde_json::json!({
                 "out": out.display().to_string(),
+                "unit": unit,
                 "case": s.basis.case.name(),
                 "vertices": mesh.positions.len(),
                 "triangles": mesh.triangles.len(),

@@ -90,6 +90,8 @@ enum Cmd {
         /// Direction `x,y,z`; default the vertex normals.
         #[arg(long)]
         direction: Option<String>,
+        #[command(flatten)]
+        units: super::units::UnitArgs,
     },
 }
 
@@ -152,6 +154,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             drag,
             depth,
             direction,
+            units,
         } => {
             let sp = load_spec(&spec)?;
             let want = if curve.is_some() {
@@ -202,7 +205,12 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
                 (None, None) => bail!("give --curve CURVE.json or --axis x0,y0,z0,x1,y1,z1"),
             };
-            pdesculpt::mesh::io::write(&r.mesh, &out)
+            let source = match makehuman {
+                true => pdesculpt::mesh::unit::MAKEHUMAN,
+                false => units.input_unit,
+            };
+            let unit = units
+                .write(&r.mesh, &out, source)
                 .with_context(|| format!("writing {}", out.display()))?;
             eprintln!(
                 "moved {} vertices, magnitude {:.6e}",
@@ -211,7 +219,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             );
             if json {
                 super::print_json(
-                    &serde_json::json!({"moved": r.region.len(), "magnitude": r.magnitude, "out": out}),
+                    &serde_json::json!({"moved": r.region.len(), "magnitude": r.magnitude, "out": out, "unit": unit}),
                 )?;
             }
             Ok(0)

@@ -82,6 +82,8 @@ pub enum Command {
         /// Output mesh (obj, glb, stl, ply).
         #[arg(short, long)]
         output: PathBuf,
+        #[command(flatten)]
+        units: super::units::UnitArgs,
     },
     /// Reconstructs the MakeHuman body from cross sections.
     Body {
@@ -107,6 +109,8 @@ pub enum Command {
         /// Output mesh (obj, glb, stl, ply).
         #[arg(short, long)]
         output: PathBuf,
+        #[command(flatten)]
+        units: super::units::UnitArgs,
     },
     /// The single-harmonic function A_n(u) through six values at u = 0, 0.2, ..., 1.
     Mode {
@@ -176,6 +180,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             nu,
             nv,
             output,
+            units,
         } => {
             if nu == 0 || nv < 3 {
                 bail!("tessellation needs --nu >= 1 and --nv >= 3");
@@ -192,13 +197,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if mesh.positions.iter().flatten().any(|x| !x.is_finite()) {
                 bail!("the surface has non-finite points");
             }
-            pdesculpt::mesh::io::write(&mesh, &output)?;
+            let unit = units.write_input(&mesh, &output)?;
             let jumps = pdesculpt::pde6::check::join_jumps(&chain);
             let summary = serde_json::json!({
                 "sections": sections.len(), "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
                 "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),
                 "join_jumps_c0_c1_c2": jumps, "vertices": mesh.positions.len(), "triangles": mesh.triangles.len(),
-                "output": output.display().to_string(),
+                "output": output.display().to_string(), "unit": unit,
             });
             if json {
                 super::print_json(&summary)?;
@@ -226,6 +231,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             anchors,
             pull,
             output,
+            units,
         } => {
             if terms == 0 {
                 bail!("--terms must be at least 1");
@@ -257,9 +263,12 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 ..BodyOptions::default()
             };
             let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), &opts)?;
-            pdesculpt::mesh::io::write(&mesh, &output)?;
+            let unit = units.write(&mesh, &output, pdesculpt::mesh::unit::MAKEHUMAN)?;
             if json {
-                super::print_json(&report)?;
+                let mut out = serde_json::to_value(&report)?;
+                out["unit"] = serde_json::json!(unit);
+                out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
+                super::print_json(&out)?;
             } else {
                 let h = 100.0;
                 eprintln!(

@@ -67,6 +67,8 @@ pub struct DeformArgs {
     /// Output mesh (.obj, .glb, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub units: super::units::UnitArgs,
 }
 
 #[derive(clap::Args, Debug)]
@@ -142,11 +144,12 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
         Direction::Cursor
     };
     let out = plate.deform(&mesh, d, a.sensitivity, dir)?;
-    io::write(&out, &a.output)?;
+    let unit = a.units.write_input(&out, &a.output)?;
     let peak = plate.weights.iter().fold(0.0f64, |m, w| m.max(*w));
     let force = plate.force(d, a.sensitivity, dir);
     let info = serde_json::json!({
         "output": a.output.display().to_string(),
+        "unit": unit,
         "region_vertices": plate.region.len(),
         "boundary_vertices": plate.boundary.loop_indices.len(),
         "extra_boundary_loops": plate.boundary.extra_loops,

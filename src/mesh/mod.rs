@@ -17,6 +17,7 @@ pub mod metrics;
 pub mod samples;
 pub mod slice;
 pub mod topology;
+pub mod unit;
 
 use thiserror::Error;
 

@@ -4,6 +4,7 @@ mod cli;
 mod infra;
 mod registry;
 mod strategies;
+mod units;
 
 mod conv;
 mod gec;

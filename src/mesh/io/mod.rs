@@ -8,11 +8,13 @@
 //! loses the previous one.
 
 mod glb;
+mod in_unit;
 mod obj;
 mod ply;
 mod stl;
 
 pub use glb::{encode_glb, group_colour as group_colour_rgb};
+pub use in_unit::{output_unit, write_in_unit};
 pub use obj::{encode_obj, parse_obj};
 pub use ply::{encode_ply, parse_ply};
 pub use stl::{encode_stl, parse_stl};

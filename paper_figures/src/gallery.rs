@@ -1,0 +1,445 @@
+//! The gallery: `paper_figures/out/index.html`, one static page (no server,
+//! no network at view time) with, per paper, every figure beside its caption
+//! (figure number and what it shows), the numbers of its data JSON in a
+//! table and the checks it relies on (rows of `verify --json`, pass/fail),
+//! and the models (GLB, metres) in a small dependency-free WebGL viewer
+//! (`gallery/viewer.js`: GLB parser, orbit, per-part toggles).
+//!
+//! A `file://` page may not `fetch` files or import modules, so each model's
+//! GLB is also written as `gallery/<name>.glb.js`, a classic script that
+//! registers the bytes (base64) with the viewer. `verify/gallery/test.mjs`
+//! opens the page in headless Chromium and checks it.
+
+use crate::common::{Ctx, Figure};
+use pdesculpt::check::Check;
+use pdesculpt::mesh::unit;
+use serde_json::Value;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+#[path = "gallery/checks.rs"]
+mod checks;
+
+/// The viewer script (written beside the page).
+const VIEWER_JS: &str = include_str!("gallery/viewer.js");
+/// The page's style sheet (inlined).
+const STYLE_CSS: &str = include_str!("gallery/style.css");
+
+/// The figure that writes the demo's models into the gallery: the demo
+/// character (MakeHuman body, chest and belly edits, skirt, teddy) and its
+/// C2 PDE6 reconstruction, both GLB in metres.
+pub fn figures() -> Vec<Figure> {
+    vec![Figure {
+        id: "demo-models",
+        paper: "all",
+        title:
+            "The demo character and its PDE6 reconstruction as GLB (metres) for the gallery viewer",
+        run: demo_models,
+    }]
+}
+
+fn demo_models(ctx: &Ctx) -> anyhow::Result<()> {
+    let d = pdesculpt::character::demo::build()?;
+    let mut scene = d.sculpted.clone();
+    scene.append(&d.skirt);
+    scene.append(&d.prop);
+    for (name, mesh) in [("demo.glb", &scene), ("demo-pde6.glb", &d.reconstruction)] {
+        let p = ctx.path(name);
+        pdesculpt::mesh::io::write_in_unit(mesh, &p, d.unit, unit::GLB)?;
+        eprintln!("  wrote {}", p.display());
+    }
+    Ok(())
+}
+
+/// The papers, for the section headings.
+const PAPERS: [(&str, &str); 5] = [
+    ("000", "You et al., Fast character modeling with sketch-based PDE surfaces (2020)"),
+    ("001", "Wang et al., Real-time surface manipulation with C1 continuity through simple and efficient physics-based deformations (2021)"),
+    ("002", "Fu et al., 3D Modelling with C2 Continuous PDE Surface Patches (2022)"),
+    ("003", "Kukelova, A User Interface for Freeform Modeling Based on Convolution Surfaces from Sketched Silhouette Curves (SketchCo)"),
+    ("004", "Bian et al., Efficient C2 Continuous Surface Creation Technique Based on Ordinary Differential Equation (2020)"),
+];
+
+/// Models shown in viewers, in page order: file, title.
+const MODELS: [(&str, &str); 3] = [
+    ("demo.glb", "Demo character: MakeHuman body with the chest (000) and belly (001) edits, the ODE6 skirt (004) and the sketched teddy (003)"),
+    ("demo-pde6.glb", "The demo body's C2 sixth-order PDE reconstruction (002), one part per colour"),
+    ("002-fig6-body.glb", "002 Fig 6: the MakeHuman body reconstructed from its cross sections"),
+];
+
+/// Rows of the data table of one figure; longer JSONs are cut with a note.
+const MAX_ROWS: usize = 40;
+/// Columns of a records table.
+const MAX_COLUMNS: usize = 10;
+/// Arrays of numbers longer than this are summarised (count, min, max).
+const MAX_INLINE: usize = 6;
+
+/// "Fig. 11", "Table 1", "Figs 2-3" from a figure id; `None` for figures of
+/// our own (not in the paper).
+pub fn figure_number(id: &str) -> Option<String> {
+    let tail = id.split_once('-')?.1;
+    let (kind, rest) = if let Some(r) = tail.strip_prefix("fig") {
+        ("Fig.", r)
+    } else if let Some(r) = tail.strip_prefix("table") {
+        ("Table", r)
+    } else {
+        return None;
+    };
+    if rest.is_empty() || !rest.starts_with(|c: char| c.is_ascii_digit()) {
+        return None;
+    }
+    let kind = if rest.contains('-') && kind == "Fig." {
+        "Figs"
+    } else {
+        kind
+    };
+    Some(format!("{kind} {rest}"))
+}
+
+/// Whether `file` belongs to figure `id`: its name starts with the id and
+/// the id is not the prefix of a longer number (`001-fig1` owns
+/// `001-fig1a-teapot.png`, not `001-fig11.json`).
+fn belongs(file: &str, id: &str) -> bool {
+    match file.strip_prefix(id) {
+        Some(rest) => !rest.starts_with(|c: char| c.is_ascii_digit()),
+        None => false,
+    }
+}
+
+fn esc(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+fn fmt_num(x: f64) -> String {
+    if x == x.trunc() && x.abs() < 1e9 {
+        format!("{x:.0}")
+    } else if x != 0.0 && (x.abs() < 1e-3 || x.abs() >= 1e6) {
+        format!("{x:.3e}")
+    } else {
+        format!("{x:.4}")
+    }
+}
+
+/// Flattens a JSON value into (path, value) rows of numbers and short
+/// strings; long numeric arrays become one summary row.
+fn flatten(v: &Value, path: &str, rows: &mut Vec<(String, String)>) {
+    match v {
+        Value::Number(n) => rows.push((path.into(), fmt_num(n.as_f64().unwrap_or(f64::NAN)))),
+        Value::Bool(b) => rows.push((path.into(), b.to_string())),
+        Value::String(s) if s.len() <= 80 => rows.push((path.into(), s.clone())),
+        Value::String(_) | Value::Null => {}
+        Value::Array(a) => {
+            let nums: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
+            match nums {
+                Some(n) if n.len() > MAX_INLINE => {
+                    let lo = n.iter().cloned().fold(f64::INFINITY, f64::min);
+                    let hi = n.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+                    rows.push((
+                        path.into(),
+                        format!("{} numbers in [{}, {}]", n.len(), fmt_num(lo), fmt_num(hi)),
+                    ));
+                }
+                Some(n) => rows.push((
+                    path.into(),
+                    n.iter().map(|x| fmt_num(*x)).collect::<Vec<_>>().join(", "),
+                )),
+                None => {
+                    for (i, x) in a.iter().enumerate() {
+                        flatten(x, &format!("{path}[{i}]"), rows);
+                    }
+                }
+            }
+        }
+        Value::Object(o) => {
+            for (k, x) in o {
+                let p = if path.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{path}.{k}")
+                };
+                flatten(x, &p, rows);
+            }
+        }
+    }
+}
+
+/// A list of records (objects) as one table: a row per record, a column
+/// per flattened field (first `MAX_COLUMNS` fields in order of appearance).
+fn records_table(name: &str, records: &[Value], h: &mut String) {
+    let rows: Vec<Vec<(String, String)>> = records
+        .iter()
+        .map(|r| {
+            let mut kv = Vec::new();
+            flatten(r, "", &mut kv);
+            kv
+        })
+        .collect();
+    let mut cols: Vec<&str> = Vec::new();
+    for kv in &rows {
+        for (k, _) in kv {
+            if !cols.contains(&k.as_str()) && cols.len() < MAX_COLUMNS {
+                cols.push(k);
+            }
+        }
+    }
+    let _ = write!(
+        h,
+        "<table class=\"data\"><caption>{}</caption><tr>",
+        esc(name)
+    );
+    for c in &cols {
+        let _ = write!(h, "<th>{}</th>", esc(c));
+    }
+    h.push_str("</tr>");
+    for kv in rows.iter().take(MAX_ROWS) {
+        h.push_str("<tr>");
+        for c in &cols {
+            let x = kv
+                .iter()
+                .find(|(k, _)| k == c)
+                .map_or("", |(_, x)| x.as_str());
+            let _ = write!(h, "<td>{}</td>", esc(x));
+        }
+        h.push_str("</tr>");
+    }
+    h.push_str("</table>");
+    if rows.len() > MAX_ROWS {
+        let _ = write!(
+            h,
+            "<p class=\"more\">{} more rows</p>",
+            rows.len() - MAX_ROWS
+        );
+    }
+}
+
+/// Whether `v` is a list of at least two objects.
+fn is_records(v: &Value) -> Option<&[Value]> {
+    let a = v.as_array()?;
+    (a.len() >= 2 && a.iter().all(Value::is_object)).then_some(a.as_slice())
+}
+
+/// The numbers of a data JSON: lists of records as tables, every other
+/// field as quantity/value rows.
+fn data_table(json: &Path) -> anyhow::Result<String> {
+    let v: Value = serde_json::from_slice(&std::fs::read(json)?)?;
+    let mut h = String::new();
+    let mut rows = Vec::new();
+    if let Some(records) = is_records(&v) {
+        records_table("", records, &mut h);
+    } else if let Some(o) = v.as_object() {
+        for (k, x) in o {
+            match is_records(x) {
+                Some(records) => records_table(k, records, &mut h),
+                None => flatten(x, k, &mut rows),
+            }
+        }
+    } else {
+        flatten(&v, "", &mut rows);
+    }
+    if !rows.is_empty() {
+        h.push_str("<table class=\"data\"><tr><th>quantity</th><th>value</th></tr>");
+        for (k, x) in rows.iter().take(MAX_ROWS) {
+            let _ = write!(h, "<tr><td>{}</td><td>{}</td></tr>", esc(k), esc(x));
+        }
+        h.push_str("</table>");
+    }
+    if rows.len() > MAX_ROWS {
+        let _ = write!(
+            h,
+            "<p class=\"more\">{} more rows in <a href=\"{n}\">{n}</a></p>",
+            rows.len() - MAX_ROWS,
+            n = esc(&file_name(json))
+        );
+    }
+    Ok(h)
+}
+
+fn file_name(p: &Path) -> String {
+    p.file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+fn checks_table(rows: &[&Check]) -> String {
+    if rows.is_empty() {
+        return "<p class=\"nochecks\">no registered check for this figure</p>".into();
+    }
+    let mut h = String::from(
+        "<table class=\"checks\"><tr><th></th><th>check</th><th>equation</th><th>kind</th><th>measured</th><th>tolerance</th></tr>",
+    );
+    for c in rows {
+        let _ = write!(
+            h,
+            "<tr class=\"{cls}\"><td>{mark}</td><td title=\"{note}\">{name}</td><td>{eq}</td><td>{kind}</td><td>{m:.2e}</td><td>{t:.1e}{differs}</td></tr>",
+            cls = if c.passed { "pass" } else { "fail" },
+            mark = if c.passed { "pass" } else { "FAIL" },
+            note = esc(&c.note),
+            name = esc(&c.name),
+            eq = esc(&c.equation),
+            kind = c.kind,
+            m = c.measured,
+            t = c.tolerance,
+            differs = if c.paper_differs { " (erratum: must exceed)" } else { "" },
+        );
+    }
+    h.push_str("</table>");
+    h
+}
+
+/// The figures' files in `out`, by figure (longest matching id wins).
+fn files_by_figure(out: &Path, figures: &[Figure]) -> anyhow::Result<Vec<Vec<String>>> {
+    let mut names: Vec<String> = std::fs::read_dir(out)?
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    let mut by = vec![Vec::new(); figures.len()];
+    for n in names {
+        let best = figures
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| belongs(&n, f.id))
+            .max_by_key(|(_, f)| f.id.len());
+        if let Some((i, _)) = best {
+            by[i].push(n);
+        }
+    }
+    Ok(by)
+}
+
+/// Primitives (three.js meshes) in a GLB, from its JSON chunk.
+fn glb_primitives(bytes: &[u8]) -> anyhow::Result<usize> {
+    anyhow::ensure!(bytes.len() >= 20 && &bytes[0..4] == b"glTF", "not a GLB");
+    let n = u32::from_le_bytes([bytes[12], bytes[13], bytes[14], bytes[15]]) as usize;
+    anyhow::ensure!(bytes.len() >= 20 + n, "truncated GLB");
+    let doc: Value = serde_json::from_slice(&bytes[20..20 + n])?;
+    Ok(doc["meshes"]
+        .as_array()
+        .map(|ms| {
+            ms.iter()
+                .map(|m| m["primitives"].as_array().map_or(0, |p| p.len()))
+                .sum()
+        })
+        .unwrap_or(0))
+}
+
+/// Standard base64 (RFC 4648, with padding).
+pub fn base64(bytes: &[u8]) -> String {
+    const A: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut s = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for c in bytes.chunks(3) {
+        let n = (c[0] as u32) << 16
+            | (*c.get(1).unwrap_or(&0) as u32) << 8
+            | *c.get(2).unwrap_or(&0) as u32;
+        for k in 0..4 {
+            if k <= c.len() {
+                s.push(A[(n >> (18 - 6 * k) & 63) as usize] as char);
+            } else {
+                s.push('=');
+            }
+        }
+    }
+    s
+}
+
+/// Writes each model's `.glb.js` and returns the viewers' HTML.
+fn models_html(ctx: &Ctx) -> anyhow::Result<String> {
+    let mut h = String::new();
+    for (file, title) in MODELS {
+        let p = ctx.path(file);
+        let Ok(bytes) = std::fs::read(&p) else {
+            eprintln!("  gallery: {file} not built (run its figure); left out");
+            continue;
+        };
+        let meshes = glb_primitives(&bytes)?;
+        let b64 = base64(&bytes);
+        let js = format!("pdesculptGallery.register({file:?}, \"{b64}\");\n");
+        ctx.write_bytes(&format!("gallery/{file}.js"), js.as_bytes())?;
+        let _ = write!(
+            h,
+            "<figure class=\"model\"><div class=\"viewer\" data-model=\"{f}\" data-status=\"loading\" data-expected-meshes=\"{meshes}\"></div>\
+             <figcaption><b>{f}</b> ({meshes} parts, metres; drag to orbit, wheel to zoom). {t} <a href=\"{f}\">download</a></figcaption>\
+             <script src=\"gallery/{f}.js\"></script></figure>",
+            f = esc(file),
+            t = esc(title),
+        );
+    }
+    Ok(h)
+}
+
+/// Writes `index.html` (and `gallery/viewer.js`) for the figures whose
+/// files are in `ctx.out`; `checks` are the rows of `verify --json`.
+pub fn write_index(ctx: &Ctx, figures: &[Figure], checks: &[Check]) -> anyhow::Result<PathBuf> {
+    ctx.write_bytes("gallery/viewer.js", VIEWER_JS.as_bytes())?;
+    let files = files_by_figure(&ctx.out, figures)?;
+    let passed = checks.iter().filter(|c| c.passed).count();
+    let mut body = String::new();
+    let _ = write!(
+        body,
+        "<header><h1>pdesculpt: figures and models</h1><p>Every figure regenerated by \
+         <code>cargo run --release -p paper_figures -- all</code>, beside the checks it relies on \
+         ({passed} of {} registered checks pass). Models are GLB in metres.</p><nav>",
+        checks.len()
+    );
+    for (p, _) in PAPERS {
+        let _ = write!(body, "<a href=\"#paper-{p}\">{p}</a> ");
+    }
+    body.push_str("<a href=\"#models\">models</a></nav></header>");
+    body.push_str("<section id=\"models\"><h2>Models</h2>");
+    body.push_str(&models_html(ctx)?);
+    body.push_str("</section>");
+    for (paper, title) in PAPERS {
+        let _ = write!(
+            body,
+            "<section id=\"paper-{paper}\"><h2>{paper}: {}</h2>",
+            esc(title)
+        );
+        for (i, f) in figures.iter().enumerate().filter(|(_, f)| f.paper == paper) {
+            let mine = &files[i];
+            if mine.is_empty() {
+                continue;
+            }
+            let number = figure_number(f.id)
+                .map(|n| format!("{n}. "))
+                .unwrap_or_else(|| "Not in the paper: ".into());
+            let _ = write!(
+                body,
+                "<article class=\"figure\" id=\"{id}\"><h3>{number}{t} <span class=\"id\">{id}</span></h3><div class=\"row\"><div class=\"images\">",
+                id = esc(f.id),
+                t = esc(f.title)
+            );
+            for n in mine
+                .iter()
+                .filter(|n| n.ends_with(".png") || n.ends_with(".svg"))
+            {
+                let _ = write!(
+                    body,
+                    "<a href=\"{n}\"><img src=\"{n}\" alt=\"{id} {n}\"></a>",
+                    n = esc(n),
+                    id = esc(f.id)
+                );
+            }
+            body.push_str("</div><div class=\"numbers\"><h4>checks it relies on</h4>");
+            body.push_str(&checks_table(&checks::for_figure(f, checks)));
+            for n in mine.iter().filter(|n| n.ends_with(".json")) {
+                let _ = write!(
+                    body,
+                    "<h4>numbers: <a href=\"{n}\">{n}</a></h4>",
+                    n = esc(n)
+                );
+                body.push_str(&data_table(&ctx.path(n))?);
+            }
+            body.push_str("</div></div></article>");
+        }
+        body.push_str("</section>");
+    }
+    let html = format!(
+        "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>pdesculpt gallery</title>\
+         <style>{STYLE_CSS}</style><script src=\"gallery/viewer.js\"></script></head><body>{body}</body></html>\n"
+    );
+    let p = ctx.write_bytes("index.html", html.as_bytes())?;
+    Ok(p)
+}
