@@ -41,7 +41,7 @@ fn main() {
 /// gallery page for the files in the output directory.
 fn write_gallery(ctx: &Ctx, figures: &[Figure]) -> anyhow::Result<()> {
     let t = std::time::Instant::now();
-    let checks = pdesculpt::check::run(None);
+    let checks = pdesculpt::verify::run(None);
     eprintln!(
         "[gallery] {} checks in {:.1} s",
         checks.len(),
