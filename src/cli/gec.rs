@@ -9,10 +9,13 @@
 //! prints its values on stdout (one `t x y z` line per parameter, or JSON).
 
 use anyhow::{bail, Context};
-use pdesculpt::curve::gec::fit::{fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice};
+use pdesculpt::curve::gec::fit::{
+    check_scale, fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice,
+};
 use pdesculpt::curve::gec::{
     check_closed, repeated_points, strip_closing_copy, Frame, Gec, GecError, Param, Solver,
 };
+use pdesculpt::limits;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
@@ -54,9 +57,6 @@ GEC.json: the file written by 'gec fit -o', or the JSON report of 'gec fit
 and derivatives are taken with respect to v.
 Output: one line 't x y z' per parameter on stdout, or with --json
 {\"derivative\": k, \"unit\": \"rad\"|\"turn\", \"points\": [{\"t\": t, \"value\": [x, y, z]}, ...]}.";
-
-/// Largest `--samples`.
-const MAX_SAMPLES: usize = 10_000_000;
 
 /// Arguments of `pdesculpt gec`.
 #[derive(clap::Args, Debug)]
@@ -314,12 +314,20 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bail!("--theta0 {t}: must be finite");
             }
             let param: Param = param.parse().map_err(|e: GecError| anyhow::anyhow!(e))?;
+            if let Some(t) = terms {
+                limits::check("--terms", t, limits::GEC_TERMS)?;
+            }
+            limits::check("--max-terms", max_terms, limits::GEC_TERMS)?;
+            if let Some(out) = &output {
+                pdesculpt::mesh::io::refuse_overwriting_input(&[&input], out)?;
+            }
             let mut inp = read_input(&input)?;
             let name = input.display().to_string();
             if inp.declared_open {
                 bail!("{name}: the file declares the polyline open; a GEC needs a closed cross section");
             }
             let dropped = strip_closing_copy(&mut inp.points);
+            check_scale(&inp.points).with_context(|| name.clone())?;
             if let Some((i, j)) = repeated_points(&inp.points) {
                 bail!(
                     "{name}: {} and {} coincide; remove repeated points",
@@ -440,8 +448,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             derivative,
             turns,
         } => {
-            if derivative > 8 {
-                bail!("--derivative {derivative}: at most 8");
+            limits::check("--derivative", derivative, limits::GEC_DERIVATIVE)?;
+            if let Some(n) = samples {
+                limits::check("--samples", n, limits::GEC_SAMPLES)?;
             }
             let text = std::fs::read_to_string(&gec)
                 .with_context(|| format!("reading {}", gec.display()))?;
@@ -457,8 +466,6 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let g = Gec::new(g.frame, g.centre, g.x, g.y)
                 .with_context(|| format!("{}: invalid GEC", gec.display()))?;
             let ts: Vec<f64> = match samples {
-                Some(0) => bail!("--samples must be at least 1"),
-                Some(n) if n > MAX_SAMPLES => bail!("--samples {n}: at most {MAX_SAMPLES}"),
                 Some(n) => (0..n)
                     .map(|k| {
                         let f = k as f64 / n as f64;

@@ -153,6 +153,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             depth,
             direction,
         } => {
+            pdesculpt::mesh::io::Format::from_path(&out)?;
+            let inputs: Vec<&std::path::Path> = [Some(&spec), curve.as_ref(), mesh.as_ref()]
+                .into_iter()
+                .flatten()
+                .map(|p| p.as_path())
+                .collect();
+            pdesculpt::mesh::io::refuse_overwriting_input(&inputs, &out)?;
             let sp = load_spec(&spec)?;
             let want = if curve.is_some() {
                 PatchKind::FourSided
@@ -166,8 +173,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             let patch: Patch = sp.solve()?;
             let base = match (mesh, makehuman) {
-                (Some(p), false) => pdesculpt::mesh::io::read(&p)
-                    .with_context(|| format!("reading {}", p.display()))?,
+                (Some(p), false) => pdesculpt::mesh::io::read(&p)?,
                 (None, true) => pdesculpt::makehuman::base_body()?.mesh,
                 _ => bail!("give --mesh PATH or --makehuman"),
             };
@@ -202,8 +208,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
                 (None, None) => bail!("give --curve CURVE.json or --axis x0,y0,z0,x1,y1,z1"),
             };
-            pdesculpt::mesh::io::write(&r.mesh, &out)
-                .with_context(|| format!("writing {}", out.display()))?;
+            pdesculpt::mesh::io::write(&r.mesh, &out)?;
             eprintln!(
                 "moved {} vertices, magnitude {:.6e}",
                 r.region.len(),

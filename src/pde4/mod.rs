@@ -73,6 +73,8 @@ pub enum Pde4Error {
     BoundaryHarmonics { got: usize, n: usize },
     #[error("{0}")]
     Degenerate(String),
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// Shape parameters `(a_t1, a_t2, a_t3)` of one component.
@@ -144,6 +146,18 @@ pub(crate) fn check_terms(m: usize, n: usize, n_min: usize) -> Result<(), Pde4Er
             max: MAX_TERMS,
         });
     }
+    Ok(())
+}
+
+/// Refuses a Galerkin solve (dense `MN x MN` stiffness matrix, Cholesky in
+/// `(MN)^3 / 3` operations) whose memory or work passes the budgets of
+/// [`crate::limits`], before allocating anything.
+pub fn check_galerkin_cost(m: usize, n: usize) -> Result<(), Pde4Error> {
+    let mn = (m as f64) * (n as f64);
+    let value = format!("[{m}, {n}]");
+    let what = format!("the Galerkin solve with M x N = {mn} unknowns");
+    crate::limits::check_memory("terms", &value, &what, 8.0 * mn * mn)?;
+    crate::limits::check_work("terms", &value, &what, mn * mn * mn / 3.0 + 3.0 * mn * mn)?;
     Ok(())
 }
 

@@ -114,6 +114,8 @@ pub enum GecError {
     InvalidParameter(String),
     #[error("coefficient arrays malformed: {0}")]
     Malformed(String),
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// Where a GEC lives in space: origin and two orthonormal in-plane axes.
