@@ -12,6 +12,7 @@ use anyhow::{bail, Context};
 use pdesculpt::curve::gec::fit::{
     check_scale, fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice,
 };
+use pdesculpt::curve::gec::input::{parse_points, PointsFile as Input};
 use pdesculpt::curve::gec::{
     check_closed, repeated_points, strip_closing_copy, Frame, Gec, GecError, Param, Solver,
 };
@@ -143,148 +144,10 @@ pub enum Command {
     },
 }
 
-/// Points read from a file, with the 1-based line of each (CSV) and
-/// whether the file declared the polyline open.
-struct Input {
-    points: Vec<[f64; 3]>,
-    lines: Option<Vec<usize>>,
-    declared_open: bool,
-    columns: usize,
-}
-
-fn parse_csv(text: &str) -> anyhow::Result<Input> {
-    let mut points = Vec::new();
-    let mut lines = Vec::new();
-    let mut columns = 0;
-    let mut declared_open = false;
-    for (i, raw) in text.lines().enumerate() {
-        let line_no = i + 1;
-        let line = raw.trim();
-        if line.is_empty() {
-            continue;
-        }
-        if let Some(c) = line.strip_prefix('#') {
-            if c.trim().eq_ignore_ascii_case("open") {
-                declared_open = true;
-            }
-            continue;
-        }
-        let fields: Vec<&str> = line
-            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
-        let nums: Vec<Result<f64, _>> = fields.iter().map(|f| f.parse::<f64>()).collect();
-        if points.is_empty()
-            && columns == 0
-            && nums.iter().all(|r| r.is_err())
-            && (2..=3).contains(&fields.len())
-        {
-            // header
-            columns = fields.len();
-            continue;
-        }
-        if !(2..=3).contains(&fields.len()) {
-            bail!(
-                "line {line_no}: expected 2 or 3 numbers (x,y or x,y,z), found {} field(s): {line:?}",
-                fields.len()
-            );
-        }
-        if columns != 0 && fields.len() != columns {
-            bail!(
-                "line {line_no}: {} fields, but earlier rows have {columns}",
-                fields.len()
-            );
-        }
-        columns = fields.len();
-        let mut p = [0.0; 3];
-        for (k, (f, r)) in fields.iter().zip(&nums).enumerate() {
-            let v = r
-                .as_ref()
-                .map_err(|_| anyhow::anyhow!("line {line_no}: {f:?} is not a number"))?;
-            if !v.is_finite() {
-                bail!("line {line_no}: coordinate {} is {f} (not finite)", k + 1);
-            }
-            p[k] = *v;
-        }
-        points.push(p);
-        lines.push(line_no);
-    }
-    if points.is_empty() {
-        bail!("no points in the file");
-    }
-    Ok(Input {
-        points,
-        lines: Some(lines),
-        declared_open,
-        columns,
-    })
-}
-
-fn parse_json(text: &str) -> anyhow::Result<Input> {
-    let v: serde_json::Value = serde_json::from_str(text).context("invalid JSON")?;
-    let (arr, declared_open) = match &v {
-        serde_json::Value::Array(a) => (a, false),
-        serde_json::Value::Object(o) => {
-            let arr = o
-                .get("points")
-                .and_then(|p| p.as_array())
-                .ok_or_else(|| anyhow::anyhow!("the JSON object needs a \"points\" array"))?;
-            let open = match o.get("closed") {
-                None => false,
-                Some(serde_json::Value::Bool(b)) => !b,
-                Some(other) => bail!("\"closed\" must be true or false, got {other}"),
-            };
-            (arr, open)
-        }
-        _ => bail!("expected a JSON array of points or an object with \"points\""),
-    };
-    let mut points = Vec::with_capacity(arr.len());
-    let mut columns = 0;
-    for (i, p) in arr.iter().enumerate() {
-        let c = p
-            .as_array()
-            .ok_or_else(|| anyhow::anyhow!("point {i}: expected [x, y] or [x, y, z], got {p}"))?;
-        if !(2..=3).contains(&c.len()) || (columns != 0 && c.len() != columns) {
-            bail!(
-                "point {i}: expected {} coordinates, got {}",
-                if columns == 0 {
-                    "2 or 3".to_string()
-                } else {
-                    columns.to_string()
-                },
-                c.len()
-            );
-        }
-        columns = c.len();
-        let mut q = [0.0; 3];
-        for (k, x) in c.iter().enumerate() {
-            q[k] = x.as_f64().filter(|v| v.is_finite()).ok_or_else(|| {
-                anyhow::anyhow!("point {i}: coordinate {x} is not a finite number")
-            })?;
-        }
-        points.push(q);
-    }
-    if points.is_empty() {
-        bail!("no points in the file");
-    }
-    Ok(Input {
-        points,
-        lines: None,
-        declared_open,
-        columns,
-    })
-}
-
 fn read_input(path: &Path) -> anyhow::Result<Input> {
     let text =
         std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let json = matches!(text.trim_start().chars().next(), Some('[') | Some('{'));
-    let r = if json {
-        parse_json(&text)
-    } else {
-        parse_csv(&text)
-    };
-    r.with_context(|| format!("parsing {}", path.display()))
+    parse_points(&text).with_context(|| format!("parsing {}", path.display()))
 }
 
 /// "point i" or "point i (line L)".

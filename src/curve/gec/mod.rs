@@ -59,6 +59,7 @@
 
 pub mod check;
 pub mod fit;
+pub mod input;
 pub mod metrics;
 pub mod study;
 pub mod transform;
