@@ -136,7 +136,7 @@ pub const PLATE_ITERATIONS: Range = Range {
 /// A parameter outside its range or an operation over budget.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum LimitError {
-    #[error("{param} = {value} is out of range: must be between {min} and {max} ({why})")]
+    #[error("{param} = {value} is out of range: must be at least {min} and at most {max} ({why})")]
     OutOfRange {
         param: String,
         value: String,

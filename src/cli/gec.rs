@@ -12,7 +12,7 @@ use anyhow::{bail, Context};
 use pdesculpt::curve::gec::fit::{
     check_scale, fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice,
 };
-use pdesculpt::curve::gec::input::{parse_points, PointsFile as Input};
+use pdesculpt::curve::gec::input::{check_magnitudes, parse_points, PointsFile as Input};
 use pdesculpt::curve::gec::{
     check_closed, repeated_points, strip_closing_copy, Frame, Gec, GecError, Param, Solver,
 };
@@ -328,6 +328,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             })?;
             let g = Gec::new(g.frame, g.centre, g.x, g.y)
                 .with_context(|| format!("{}: invalid GEC", gec.display()))?;
+            check_magnitudes(&g).with_context(|| format!("{}: invalid GEC", gec.display()))?;
             let ts: Vec<f64> = match samples {
                 Some(n) => (0..n)
                     .map(|k| {

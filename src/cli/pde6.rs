@@ -150,6 +150,8 @@ fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
                 (Some(g), None) => {
                     let g = Gec::new(g.frame, g.centre, g.x, g.y)
                         .with_context(|| format!("section {i}"))?;
+                    pdesculpt::curve::gec::input::check_magnitudes(&g)
+                        .with_context(|| format!("section {i}"))?;
                     g.to_fourier3()
                 }
                 (None, Some(f)) => f,

@@ -41,6 +41,11 @@ pub use force::{Force, ForceKind};
 pub use four_sided::FourSided;
 pub use two_sided::TwoSided;
 
+/// Largest magnitude of a force component and of a shape parameter (and
+/// the inverse of the smallest positive a_t1, a_t3): keeps every
+/// displacement finite.
+pub const MAX_MAGNITUDE: f64 = 1e100;
+
 /// Largest number of series terms per direction accepted.
 pub const MAX_TERMS: usize = 256;
 
@@ -120,6 +125,14 @@ impl ShapeParams {
         }
         if self.a1 <= 0.0 {
             return Err(Pde4Error::NonPositiveA1(self.a1));
+        }
+        for (what, value) in [("a_t1", self.a1), ("a_t2", self.a2), ("a_t3", self.a3)] {
+            if value.abs() > MAX_MAGNITUDE || (what != "a_t2" && value < 1.0 / MAX_MAGNITUDE) {
+                return Err(Pde4Error::Degenerate(format!(
+                    "shape parameter {what} = {value:e} lies outside [{:e}, {MAX_MAGNITUDE:e}] (the solution would overflow or underflow)",
+                    1.0 / MAX_MAGNITUDE
+                )));
+            }
         }
         if self.a3 <= 0.0 || self.a2 <= -2.0 * (self.a1 * self.a3).sqrt() {
             return Err(Pde4Error::NotElliptic {

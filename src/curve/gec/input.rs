@@ -162,3 +162,29 @@ pub fn parse_points(text: &str) -> Result<PointsFile, InputError> {
         parse_csv(text)
     }
 }
+
+/// Largest magnitude of a coefficient or frame origin coordinate of a GEC
+/// read from a file: with J <= [`crate::limits::CURVE_HARMONICS`] terms and
+/// derivatives up to order 8, every value and derivative stays finite.
+pub const MAX_COEFFICIENT: f64 = 1e100;
+
+/// Refuses a GEC read from a file whose numbers are so large that its
+/// points or derivatives would overflow (clear error instead of inf output).
+pub fn check_magnitudes(g: &super::Gec) -> Result<(), InputError> {
+    crate::limits::check("terms", g.terms(), crate::limits::CURVE_HARMONICS)
+        .map_err(|e| InputError(e.to_string()))?;
+    let nums =
+        g.x.iter()
+            .chain(&g.y)
+            .flatten()
+            .chain(&g.centre)
+            .chain(&g.frame.origin);
+    for x in nums {
+        if !(x.abs() <= MAX_COEFFICIENT) {
+            return Err(InputError(format!(
+                "GEC number {x:e} is larger than {MAX_COEFFICIENT:e} in magnitude (values and derivatives would overflow; rescale the curve)"
+            )));
+        }
+    }
+    Ok(())
+}
