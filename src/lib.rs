@@ -29,6 +29,7 @@ pub mod check;
 pub mod conv;
 pub mod curve;
 pub mod jet;
+pub mod limits;
 pub mod makehuman;
 pub mod mesh;
 pub mod ode6;

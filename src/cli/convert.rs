@@ -19,6 +19,7 @@ pub struct Args {
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     // check the output format before reading anything
     io::Format::from_path(&args.output)?;
+    io::refuse_overwriting_input(&[&args.input], &args.output)?;
     let m = io::read(&args.input)?;
     let unit = args.units.write_input(&m, &args.output)?;
     eprintln!(

@@ -30,6 +30,19 @@ pub struct Args {
 
 /// Builds the demo outputs.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    // the output directory is checked (and made) before the long build
+    if args.out.exists() && !args.out.is_dir() {
+        anyhow::bail!(
+            "-o {}: is a file; the demo writes several files into a directory",
+            args.out.display()
+        );
+    }
+    std::fs::create_dir_all(&args.out).map_err(|e| {
+        anyhow::anyhow!(
+            "-o {}: cannot create the directory: {e}",
+            args.out.display()
+        )
+    })?;
     eprintln!("template: the MakeHuman base body");
     eprintln!(
         "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches), sketching a prop (convolution surfaces)..."

@@ -9,10 +9,14 @@
 //! prints its values on stdout (one `t x y z` line per parameter, or JSON).
 
 use anyhow::{bail, Context};
-use pdesculpt::curve::gec::fit::{fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice};
+use pdesculpt::curve::gec::fit::{
+    check_scale, fit, fit_auto, fit_fft, FitOptions, FitReport, FrameChoice,
+};
+use pdesculpt::curve::gec::input::{check_magnitudes, parse_points, PointsFile as Input};
 use pdesculpt::curve::gec::{
     check_closed, repeated_points, strip_closing_copy, Frame, Gec, GecError, Param, Solver,
 };
+use pdesculpt::limits;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
 
@@ -54,9 +58,6 @@ GEC.json: the file written by 'gec fit -o', or the JSON report of 'gec fit
 and derivatives are taken with respect to v.
 Output: one line 't x y z' per parameter on stdout, or with --json
 {\"derivative\": k, \"unit\": \"rad\"|\"turn\", \"points\": [{\"t\": t, \"value\": [x, y, z]}, ...]}.";
-
-/// Largest `--samples`.
-const MAX_SAMPLES: usize = 10_000_000;
 
 /// Arguments of `pdesculpt gec`.
 #[derive(clap::Args, Debug)]
@@ -143,148 +144,10 @@ pub enum Command {
     },
 }
 
-/// Points read from a file, with the 1-based line of each (CSV) and
-/// whether the file declared the polyline open.
-struct Input {
-    points: Vec<[f64; 3]>,
-    lines: Option<Vec<usize>>,
-    declared_open: bool,
-    columns: usize,
-}
-
-fn parse_csv(text: &str) -> anyhow::Result<Input> {
-    let mut points = Vec::new();
-    let mut lines = Vec::new();
-    let mut columns = 0;
-    let mut declared_open = false;
-    for (i, raw) in text.lines().enumerate() {
-        let line_no = i + 1;
-        let line = raw.trim();
-        if line.is_empty() {
-            continue;
-        }
-        if let Some(c) = line.strip_prefix('#') {
-            if c.trim().eq_ignore_ascii_case("open") {
-                declared_open = true;
-            }
-            continue;
-        }
-        let fields: Vec<&str> = line
-            .split(|c: char| c == ',' || c == ';' || c.is_whitespace())
-            .filter(|f| !f.is_empty())
-            .collect();
-        let nums: Vec<Result<f64, _>> = fields.iter().map(|f| f.parse::<f64>()).collect();
-        if points.is_empty()
-            && columns == 0
-            && nums.iter().all(|r| r.is_err())
-            && (2..=3).contains(&fields.len())
-        {
-            // header
-            columns = fields.len();
-            continue;
-        }
-        if !(2..=3).contains(&fields.len()) {
-            bail!(
-                "line {line_no}: expected 2 or 3 numbers (x,y or x,y,z), found {} field(s): {line:?}",
-                fields.len()
-            );
-        }
-        if columns != 0 && fields.len() != columns {
-            bail!(
-                "line {line_no}: {} fields, but earlier rows have {columns}",
-                fields.len()
-            );
-        }
-        columns = fields.len();
-        let mut p = [0.0; 3];
-        for (k, (f, r)) in fields.iter().zip(&nums).enumerate() {
-            let v = r
-                .as_ref()
-                .map_err(|_| anyhow::anyhow!("line {line_no}: {f:?} is not a number"))?;
-            if !v.is_finite() {
-                bail!("line {line_no}: coordinate {} is {f} (not finite)", k + 1);
-            }
-            p[k] = *v;
-        }
-        points.push(p);
-        lines.push(line_no);
-    }
-    if points.is_empty() {
-        bail!("no points in the file");
-    }
-    Ok(Input {
-        points,
-        lines: Some(lines),
-        declared_open,
-        columns,
-    })
-}
-
-fn parse_json(text: &str) -> anyhow::Result<Input> {
-    let v: serde_json::Value = serde_json::from_str(text).context("invalid JSON")?;
-    let (arr, declared_open) = match &v {
-        serde_json::Value::Array(a) => (a, false),
-        serde_json::Value::Object(o) => {
-            let arr = o
-                .get("points")
-                .and_then(|p| p.as_array())
-                .ok_or_else(|| anyhow::anyhow!("the JSON object needs a \"points\" array"))?;
-            let open = match o.get("closed") {
-                None => false,
-                Some(serde_json::Value::Bool(b)) => !b,
-                Some(other) => bail!("\"closed\" must be true or false, got {other}"),
-            };
-            (arr, open)
-        }
-        _ => bail!("expected a JSON array of points or an object with \"points\""),
-    };
-    let mut points = Vec::with_capacity(arr.len());
-    let mut columns = 0;
-    for (i, p) in arr.iter().enumerate() {
-        let c = p
-            .as_array()
-            .ok_or_else(|| anyhow::anyhow!("point {i}: expected [x, y] or [x, y, z], got {p}"))?;
-        if !(2..=3).contains(&c.len()) || (columns != 0 && c.len() != columns) {
-            bail!(
-                "point {i}: expected {} coordinates, got {}",
-                if columns == 0 {
-                    "2 or 3".to_string()
-                } else {
-                    columns.to_string()
-                },
-                c.len()
-            );
-        }
-        columns = c.len();
-        let mut q = [0.0; 3];
-        for (k, x) in c.iter().enumerate() {
-            q[k] = x.as_f64().filter(|v| v.is_finite()).ok_or_else(|| {
-                anyhow::anyhow!("point {i}: coordinate {x} is not a finite number")
-            })?;
-        }
-        points.push(q);
-    }
-    if points.is_empty() {
-        bail!("no points in the file");
-    }
-    Ok(Input {
-        points,
-        lines: None,
-        declared_open,
-        columns,
-    })
-}
-
 fn read_input(path: &Path) -> anyhow::Result<Input> {
     let text =
         std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let json = matches!(text.trim_start().chars().next(), Some('[') | Some('{'));
-    let r = if json {
-        parse_json(&text)
-    } else {
-        parse_csv(&text)
-    };
-    r.with_context(|| format!("parsing {}", path.display()))
+    parse_points(&text).with_context(|| format!("parsing {}", path.display()))
 }
 
 /// "point i" or "point i (line L)".
@@ -314,12 +177,20 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bail!("--theta0 {t}: must be finite");
             }
             let param: Param = param.parse().map_err(|e: GecError| anyhow::anyhow!(e))?;
+            if let Some(t) = terms {
+                limits::check("--terms", t, limits::GEC_TERMS)?;
+            }
+            limits::check("--max-terms", max_terms, limits::GEC_TERMS)?;
+            if let Some(out) = &output {
+                pdesculpt::mesh::io::refuse_overwriting_input(&[&input], out)?;
+            }
             let mut inp = read_input(&input)?;
             let name = input.display().to_string();
             if inp.declared_open {
                 bail!("{name}: the file declares the polyline open; a GEC needs a closed cross section");
             }
             let dropped = strip_closing_copy(&mut inp.points);
+            check_scale(&inp.points).with_context(|| name.clone())?;
             if let Some((i, j)) = repeated_points(&inp.points) {
                 bail!(
                     "{name}: {} and {} coincide; remove repeated points",
@@ -440,8 +311,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             derivative,
             turns,
         } => {
-            if derivative > 8 {
-                bail!("--derivative {derivative}: at most 8");
+            limits::check("--derivative", derivative, limits::GEC_DERIVATIVE)?;
+            if let Some(n) = samples {
+                limits::check("--samples", n, limits::GEC_SAMPLES)?;
             }
             let text = std::fs::read_to_string(&gec)
                 .with_context(|| format!("reading {}", gec.display()))?;
@@ -456,9 +328,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             })?;
             let g = Gec::new(g.frame, g.centre, g.x, g.y)
                 .with_context(|| format!("{}: invalid GEC", gec.display()))?;
+            check_magnitudes(&g).with_context(|| format!("{}: invalid GEC", gec.display()))?;
             let ts: Vec<f64> = match samples {
-                Some(0) => bail!("--samples must be at least 1"),
-                Some(n) if n > MAX_SAMPLES => bail!("--samples {n}: at most {MAX_SAMPLES}"),
                 Some(n) => (0..n)
                     .map(|k| {
                         let f = k as f64 / n as f64;

@@ -12,6 +12,7 @@ use anyhow::Context;
 use pdesculpt::curve::gec::Gec;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::jet::Jet;
+use pdesculpt::limits;
 use pdesculpt::ode6::{
     Approach2, Basis, BoundaryCurves, Curve, DiffFormula, Force, Ode6Surface, Params,
 };
@@ -63,7 +64,7 @@ pub enum Cmd {
 
 /// One curve of a spec.
 #[derive(Deserialize, Debug)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum CurveSpec {
     Fourier(Fourier3),
     Polyline {
@@ -81,6 +82,26 @@ pub enum CurveSpec {
 
 impl CurveSpec {
     fn build(&self) -> anyhow::Result<Curve> {
+        match self {
+            CurveSpec::Polyline { points, .. } => {
+                limits::check("polyline points", points.len(), limits::POLYLINE_POINTS)?;
+            }
+            CurveSpec::Fourier(f) => {
+                limits::check(
+                    "fourier harmonics",
+                    f.cos.len().max(f.sin.len()),
+                    limits::CURVE_HARMONICS,
+                )?;
+            }
+            CurveSpec::Gec(g) => {
+                limits::check(
+                    "gec terms",
+                    g.x.len().max(g.y.len()),
+                    limits::CURVE_HARMONICS,
+                )?;
+            }
+            CurveSpec::Hermite { .. } => {}
+        }
         Ok(match self {
             CurveSpec::Fourier(f) => Curve::Fourier(f.clone()),
             CurveSpec::Polyline { points, closed } => Curve::from_polyline(points, *closed)?,
@@ -97,7 +118,7 @@ impl CurveSpec {
 
 /// How the six constraint curves are made.
 #[derive(Deserialize, Debug)]
-#[serde(rename_all = "snake_case")]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum CurvesSpec {
     Approach1 {
         c1: CurveSpec,
@@ -122,6 +143,7 @@ fn three_point() -> DiffFormula {
 
 /// A surface spec.
 #[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields)]
 pub struct Spec {
     pub params: Params,
     pub curves: CurvesSpec,
@@ -191,6 +213,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             nv,
             units,
         } => {
+            pdesculpt::mesh::io::Format::from_path(&out)?;
+            pdesculpt::mesh::io::refuse_overwriting_input(&[&spec], &out)?;
+            if let Some(n) = nu {
+                limits::check("--nu", n, limits::TESS_NU)?;
+            }
+            if let Some(n) = nv {
+                limits::check("--nv", n, limits::TESS_NV)?;
+            }
             let text = std::fs::read_to_string(&spec)
                 .with_context(|| format!("reading {}", spec.display()))?;
             let sp: Spec = serde_json::from_str(&text)
@@ -207,9 +237,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 mesh.positions.iter().flatten().all(|x| x.is_finite()),
                 "surface has non-finite points"
             );
-            let unit = units
-                .write_input(&mesh, &out)
-                .with_context(|| format!("writing {}", out.display()))?;
+            let unit = units.write_input(&mesh, &out)?;
             let info = serde_json::json!({
                 "out": out.display().to_string(),
                 "unit": unit,
@@ -247,6 +275,11 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bc.iter().chain(&at).all(|x| x.is_finite()),
                 "--bc and --at must be finite"
             );
+            if let Some(u) = at.iter().find(|u| !(0.0..=1.0).contains(*u)) {
+                anyhow::bail!(
+                    "--at {u}: must lie in [0, 1] (the parameter of the iso-parametric line)"
+                );
+            }
             let c: [f64; 6] = [bc[0], bc[1], bc[2], bc[3], bc[4], bc[5]];
             let b = Basis::new(Params::new(rho, eta, lambda))?;
             let points: Vec<serde_json::Value> = at
@@ -257,6 +290,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     serde_json::json!({"u": u, "s": s.deriv(0, 0), "s_u": s.deriv(1, 0), "s_uu": s.deriv(2, 0), "residual": res})
                 })
                 .collect();
+            let finite = |v: &serde_json::Value| v.as_f64().is_some_and(f64::is_finite);
+            if let Some(p) = points.iter().find(|p| {
+                !["s", "s_u", "s_uu", "residual"]
+                    .iter()
+                    .all(|k| finite(&p[k]))
+            }) {
+                anyhow::bail!(
+                    "S(u = {}) is not finite in double precision for --rho {rho} --eta {eta} --lambda {lambda} and these --bc (scale the boundary values or the parameters down)",
+                    p["u"]
+                );
+            }
             if json {
                 super::print_json(
                     &serde_json::json!({"case": b.case.name(), "rcond": b.rcond, "points": points}),

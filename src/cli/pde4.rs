@@ -156,6 +156,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             direction,
             units,
         } => {
+            pdesculpt::mesh::io::Format::from_path(&out)?;
+            let inputs: Vec<&std::path::Path> = [Some(&spec), curve.as_ref(), mesh.as_ref()]
+                .into_iter()
+                .flatten()
+                .map(|p| p.as_path())
+                .collect();
+            pdesculpt::mesh::io::refuse_overwriting_input(&inputs, &out)?;
             let sp = load_spec(&spec)?;
             let want = if curve.is_some() {
                 PatchKind::FourSided
@@ -169,8 +176,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             let patch: Patch = sp.solve()?;
             let base = match (mesh, makehuman) {
-                (Some(p), false) => pdesculpt::mesh::io::read(&p)
-                    .with_context(|| format!("reading {}", p.display()))?,
+                (Some(p), false) => pdesculpt::mesh::io::read(&p)?,
                 (None, true) => pdesculpt::makehuman::base_body()?.mesh,
                 _ => bail!("give --mesh PATH or --makehuman"),
             };
@@ -209,9 +215,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 true => pdesculpt::mesh::unit::MAKEHUMAN,
                 false => units.input_unit,
             };
-            let unit = units
-                .write(&r.mesh, &out, source)
-                .with_context(|| format!("writing {}", out.display()))?;
+            let unit = units.write(&r.mesh, &out, source)?;
             eprintln!(
                 "moved {} vertices, magnitude {:.6e}",
                 r.region.len(),

@@ -18,6 +18,7 @@ use anyhow::{bail, Context};
 use pdesculpt::curve::gec::Gec;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::jet::Jet;
+use pdesculpt::limits;
 use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
 use pdesculpt::pde6::sampling::Sampling;
 use pdesculpt::pde6::{Chain, Method, Mode, ModeSolver, Section};
@@ -127,11 +128,13 @@ pub enum Command {
 }
 
 #[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 struct SectionFile {
     sections: Vec<SectionEntry>,
 }
 
 #[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 struct SectionEntry {
     u: f64,
     gec: Option<Gec>,
@@ -151,11 +154,18 @@ fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
                 (Some(g), None) => {
                     let g = Gec::new(g.frame, g.centre, g.x, g.y)
                         .with_context(|| format!("section {i}"))?;
+                    pdesculpt::curve::gec::input::check_magnitudes(&g)
+                        .with_context(|| format!("section {i}"))?;
                     g.to_fourier3()
                 }
                 (None, Some(f)) => f,
                 _ => bail!("section {i}: give exactly one of \"gec\" or \"fourier\""),
             };
+            limits::check(
+                &format!("section {i}: harmonics"),
+                curve.cos.len().max(curve.sin.len()),
+                limits::CURVE_HARMONICS,
+            )?;
             Ok(Section { u: s.u, curve })
         })
         .collect()
@@ -182,18 +192,15 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             output,
             units,
         } => {
-            if nu == 0 || nv < 3 {
-                bail!("tessellation needs --nu >= 1 and --nv >= 3");
-            }
+            limits::check("--nu", nu, limits::TESS_NU)?;
+            limits::check("--nv", nv, limits::TESS_NV)?;
+            pdesculpt::mesh::io::Format::from_path(&output)?;
+            pdesculpt::mesh::io::refuse_overwriting_input(&[&curves], &output)?;
             let sections = read_sections(&curves)?;
             let chain = build(a, method.method(), &sections, first)?;
-            let mesh = tessellate(
-                &chain,
-                Tessellation {
-                    nu: nu * chain.pieces.len(),
-                    nv,
-                },
-            );
+            let nu_total = limits::mul("--nu", nu, chain.pieces.len())?;
+            limits::mesh_vertices("--nu/--nv", nu_total, nv)?;
+            let mesh = tessellate(&chain, Tessellation { nu: nu_total, nv });
             if mesh.positions.iter().flatten().any(|x| !x.is_finite()) {
                 bail!("the surface has non-finite points");
             }
@@ -233,13 +240,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             output,
             units,
         } => {
-            if terms == 0 {
-                bail!("--terms must be at least 1");
+            limits::check("--terms", terms, limits::BODY_TERMS)?;
+            limits::check("--anchors", anchors, limits::BODY_ANCHORS)?;
+            if !(0.0..=1.0).contains(&pull) {
+                bail!("--pull {pull}: must lie in [0, 1]");
             }
+            pdesculpt::mesh::io::Format::from_path(&output)?;
             let sampling = if sampling == "anchored" {
-                if anchors == 0 {
-                    bail!("--anchors must be at least 1");
-                }
                 Sampling::Anchored {
                     anchors,
                     samples: pdesculpt::pde6::body::DEFAULT_SAMPLES,
@@ -302,9 +309,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     values.len()
                 );
             }
-            if !at.is_finite() {
-                bail!("--at must be finite");
+            if !(0.0..=1.0).contains(&at) {
+                bail!("--at {at}: must lie in [0, 1] (the six values sit at u = 0, 0.2, ..., 1)");
             }
+            limits::check("--n", n, limits::CURVE_HARMONICS)?;
             let v: [f64; 6] = std::array::from_fn(|i| values[i]);
             let m = Mode::interpolate(a, n, v)?;
             let j = m.eval(Jet::<3, 1>::var_u(at));
@@ -313,6 +321,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 pdesculpt::pde6::mode::method1_conditions(pdesculpt::pde6::mode::NODES_METHOD1),
             )?
             .condition_number;
+            let vals = [j.deriv(0, 0), j.deriv(1, 0), j.deriv(2, 0), cond];
+            if vals.iter().chain(&m.coef).any(|x| !x.is_finite()) {
+                bail!("A_{n}({at}) with --a {a} is not finite in double precision (the basis overflows; reduce --n or |--a|)");
+            }
             let out = serde_json::json!({
                 "a": a, "n": n, "regime": format!("{:?}", m.basis.regime), "q": m.basis.q,
                 "at": at, "value": j.deriv(0, 0), "slope": j.deriv(1, 0), "curvature": j.deriv(2, 0),

@@ -113,7 +113,16 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     if !a.sensitivity.is_finite() {
         anyhow::bail!("--sensitivity must be finite, got {}", a.sensitivity);
     }
+    if d.iter().any(|x| !(x * a.sensitivity).is_finite()) {
+        anyhow::bail!(
+            "--force {:?} times --sensitivity {} overflows; reduce --force",
+            d,
+            a.sensitivity
+        );
+    }
     let view = a.view.as_deref().map(|v| vec3(v, "--view")).transpose()?;
+    io::Format::from_path(&a.output)?;
+    io::refuse_overwriting_input(&[&a.mesh, &a.region], &a.output)?;
     let mesh = io::read(&a.mesh)?;
     let text = std::fs::read_to_string(&a.region)
         .with_context(|| format!("reading region file {}", a.region.display()))?;
@@ -144,6 +153,13 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
         Direction::Cursor
     };
     let out = plate.deform(&mesh, d, a.sensitivity, dir)?;
+    if out.positions.iter().flatten().any(|x| !x.is_finite()) {
+        anyhow::bail!(
+            "--force {:?} with --sensitivity {} moves vertices to non-finite positions; reduce --force",
+            d,
+            a.sensitivity
+        );
+    }
     let unit = a.units.write_input(&out, &a.output)?;
     let peak = plate.weights.iter().fold(0.0f64, |m, w| m.max(*w));
     let force = plate.force(d, a.sensitivity, dir);
@@ -185,6 +201,12 @@ fn run_compare(a: CompareArgs, json: bool) -> anyhow::Result<i32> {
             a.shape
         )
     })?;
+    pdesculpt::limits::check("--grid", a.grid, pdesculpt::limits::PLATE_GRID)?;
+    pdesculpt::limits::check(
+        "--dm-iterations",
+        a.dm_iterations,
+        pdesculpt::limits::PLATE_ITERATIONS,
+    )?;
     let dm = DeltaMushParams {
         iterations: a.dm_iterations,
         step: a.dm_step,

@@ -1,5 +1,6 @@
 //! `pdesculpt render MESH -o PNG [--view front|side|top|perspective]...`.
 
+use pdesculpt::limits;
 use pdesculpt::mesh::io;
 use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;
@@ -22,10 +23,16 @@ pub struct Args {
 
 /// Renders the mesh.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
-    if !(16..=8192).contains(&args.size) {
+    limits::check("--size", args.size, limits::RENDER_SIZE)?;
+    limits::check("--view (count)", args.view.len(), limits::RENDER_VIEWS)?;
+    let pixels = limits::mul("--size", args.size, args.size)
+        .and_then(|p| limits::mul("--size", p, args.view.len()))?;
+    if pixels as u64 > limits::RENDER_PIXELS.max {
         anyhow::bail!(
-            "--size must be between 16 and 8192 pixels, got {}",
-            args.size
+            "--size {} with {} view(s) makes a {pixels}-pixel image, over the limit of {} pixels; reduce --size or the views",
+            args.size,
+            args.view.len(),
+            limits::RENDER_PIXELS.max
         );
     }
     let ext = args
@@ -42,6 +49,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         .iter()
         .map(|v| v.parse::<View>().map_err(anyhow::Error::msg))
         .collect::<anyhow::Result<_>>()?;
+    io::refuse_overwriting_input(&[&args.mesh], &args.output)?;
     let m = io::read(&args.mesh)?;
     let img = render_views(
         &m,

@@ -46,6 +46,14 @@ pub enum MeshError {
         index: u32,
         count: usize,
     },
+    #[error("vertex {index} = {value:?} is outside the range of the 32-bit floats mesh files store (|x| <= 3.4e38); scale the mesh down")]
+    OutOfF32Range { index: usize, value: [f64; 3] },
+    #[error("{path}: byte {offset}: {message}")]
+    ParseAt {
+        path: String,
+        offset: usize,
+        message: String,
+    },
     #[error("the mesh has no triangles")]
     Empty,
     #[error("{0}")]

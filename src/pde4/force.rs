@@ -117,6 +117,13 @@ impl Force {
                     value: p,
                 });
             }
+            if p.abs() > super::MAX_MAGNITUDE {
+                return Err(Pde4Error::Degenerate(format!(
+                    "force component {} = {p:e} is larger than {:e} in magnitude (the displacement would overflow; rescale the forces)",
+                    ["p_x", "p_y", "p_z"][i],
+                    super::MAX_MAGNITUDE
+                )));
+            }
         }
         match self.kind {
             ForceKind::Concentrated { u0, v0 } => {

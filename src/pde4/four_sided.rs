@@ -138,6 +138,9 @@ impl FourSided {
         method: Method,
     ) -> Result<Self, Pde4Error> {
         check_terms(m, n, 1)?;
+        if method == Method::Galerkin {
+            super::check_galerkin_cost(m, n)?;
+        }
         params.iter().try_for_each(ShapeParams::validate)?;
         check_forces(forces)?;
         let d = match method {

@@ -42,6 +42,11 @@ pub use force::{Force, ForceKind};
 pub use four_sided::FourSided;
 pub use two_sided::TwoSided;
 
+/// Largest magnitude of a force component and of a shape parameter (and
+/// the inverse of the smallest positive a_t1, a_t3): keeps every
+/// displacement finite.
+pub const MAX_MAGNITUDE: f64 = 1e100;
+
 /// Largest number of series terms per direction accepted.
 pub const MAX_TERMS: usize = 256;
 
@@ -74,6 +79,8 @@ pub enum Pde4Error {
     BoundaryHarmonics { got: usize, n: usize },
     #[error("{0}")]
     Degenerate(String),
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// Shape parameters `(a_t1, a_t2, a_t3)` of one component.
@@ -120,6 +127,14 @@ impl ShapeParams {
         if self.a1 <= 0.0 {
             return Err(Pde4Error::NonPositiveA1(self.a1));
         }
+        for (what, value) in [("a_t1", self.a1), ("a_t2", self.a2), ("a_t3", self.a3)] {
+            if value.abs() > MAX_MAGNITUDE || (what != "a_t2" && value < 1.0 / MAX_MAGNITUDE) {
+                return Err(Pde4Error::Degenerate(format!(
+                    "shape parameter {what} = {value:e} lies outside [{:e}, {MAX_MAGNITUDE:e}] (the solution would overflow or underflow)",
+                    1.0 / MAX_MAGNITUDE
+                )));
+            }
+        }
         if self.a3 <= 0.0 || self.a2 <= -2.0 * (self.a1 * self.a3).sqrt() {
             return Err(Pde4Error::NotElliptic {
                 a1: self.a1,
@@ -145,6 +160,18 @@ pub(crate) fn check_terms(m: usize, n: usize, n_min: usize) -> Result<(), Pde4Er
             max: MAX_TERMS,
         });
     }
+    Ok(())
+}
+
+/// Refuses a Galerkin solve (dense `MN x MN` stiffness matrix, Cholesky in
+/// `(MN)^3 / 3` operations) whose memory or work passes the budgets of
+/// [`crate::limits`], before allocating anything.
+pub fn check_galerkin_cost(m: usize, n: usize) -> Result<(), Pde4Error> {
+    let mn = (m as f64) * (n as f64);
+    let value = format!("[{m}, {n}]");
+    let what = format!("the Galerkin solve with M x N = {mn} unknowns");
+    crate::limits::check_memory("terms", &value, &what, 8.0 * mn * mn)?;
+    crate::limits::check_work("terms", &value, &what, mn * mn * mn / 3.0 + 3.0 * mn * mn)?;
     Ok(())
 }
 

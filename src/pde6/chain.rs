@@ -167,7 +167,7 @@ impl Chain {
     pub fn method1(a: f64, sections: &[Section], first: usize) -> Result<Chain, Pde6Error> {
         validate_sections(sections, 6, 0)?;
         let m = sections.len();
-        if first % 3 != 0 || first + 6 > m {
+        if first % 3 != 0 || m < 6 || first > m - 6 {
             return Err(Pde6Error::FirstPatch { first, sections: m });
         }
         let mut pieces = vec![Chain::method1_window(a, &sections[first..first + 6])?];
@@ -198,7 +198,7 @@ impl Chain {
     pub fn method2(a: f64, sections: &[Section], first: usize) -> Result<Chain, Pde6Error> {
         validate_sections(sections, 6, 0)?;
         let m = sections.len();
-        if first % 3 != 0 || first + 6 > m {
+        if first % 3 != 0 || m < 6 || first > m - 6 {
             return Err(Pde6Error::FirstPatch { first, sections: m });
         }
         let w = &sections[first..first + 6];

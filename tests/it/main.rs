@@ -1,6 +1,8 @@
 //! Integration tests: one binary (fast links), one module per area.
 
 mod cli;
+mod fuzz;
+mod fuzz_harness;
 mod infra;
 mod registry;
 mod strategies;

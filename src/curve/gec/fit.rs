@@ -170,6 +170,42 @@ fn diameter(points: &[[f64; 3]]) -> f64 {
     dist(lo, hi)
 }
 
+/// Smallest and largest diameter (and largest coordinate magnitude) of a
+/// point set the fit accepts: outside, squared distances underflow or
+/// overflow and the repeated-point, planarity and least-squares tests would
+/// give false answers.
+pub const SCALE_RANGE: (f64, f64) = (1e-100, 1e100);
+
+/// Refuses points whose diameter or coordinates lie outside
+/// [`SCALE_RANGE`] (a clear error instead of a false "coincide" or a
+/// non-finite fit).
+pub fn check_scale(points: &[[f64; 3]]) -> Result<(), GecError> {
+    let (lo, hi) = SCALE_RANGE;
+    if let Some(i) = points.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
+        return Err(GecError::NonFinite {
+            index: i,
+            point: points[i],
+        });
+    }
+    let big = points.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    let mut d = [0.0f64; 3];
+    for k in 0..3 {
+        let (a, b) = points
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p[k]), b.max(p[k]))
+            });
+        d[k] = b - a;
+    }
+    let span = d[0].max(d[1]).max(d[2]);
+    if points.len() > 1 && !(span >= lo && big <= hi) {
+        return Err(GecError::InvalidParameter(format!(
+            "the points span {span:.3e} with coordinates up to {big:.3e}; the fit supports spans of at least {lo:e} and coordinates up to {hi:e} (rescale the input)"
+        )));
+    }
+    Ok(())
+}
+
 /// Signed area and area centroid of a closed planar polygon.
 pub fn polygon_area_centroid(p: &[[f64; 2]]) -> (f64, [f64; 2]) {
     let n = p.len();
@@ -474,10 +510,18 @@ fn unpack(sol: &DMatrix<f64>, terms: usize) -> ([f64; 2], Vec<[f64; 2]>, Vec<[f6
     (centre, x, y)
 }
 
-fn check_counts(n: usize, terms: usize) -> Result<(), GecError> {
+/// Checks J against [`crate::limits::GEC_TERMS`] (so `2J + 1` cannot wrap),
+/// the point count against `2J + 1`, and the least-squares cost
+/// (`n x (2J+1)` design matrix, `n (2J+1)^2` operations) against the budgets.
+pub fn check_counts(n: usize, terms: usize) -> Result<(), GecError> {
     if terms == 0 {
         return Err(GecError::ZeroTerms);
     }
+    crate::limits::check("terms J", terms, crate::limits::GEC_TERMS)?;
+    let cols = (2 * terms + 1) as f64;
+    let what = format!("the least-squares fit of {n} points");
+    crate::limits::check_memory("terms J", terms, &what, 8.0 * 3.0 * n as f64 * cols)?;
+    crate::limits::check_work("terms J", terms, &what, 2.0 * n as f64 * cols * cols)?;
     if n < 2 * terms + 1 {
         return Err(GecError::TooFewPoints {
             terms,
@@ -491,6 +535,7 @@ fn check_counts(n: usize, terms: usize) -> Result<(), GecError> {
 /// Fits a closed polyline (3D points in a plane, not repeating the first
 /// point at the end) with `opts.terms` terms.
 pub fn fit(points: &[[f64; 3]], opts: &FitOptions) -> Result<FitReport, GecError> {
+    check_scale(points)?;
     check_counts(points.len(), opts.terms)?;
     let sec = section(points, opts.frame, opts.planarity_tol, 2 * opts.terms + 1)?;
     let thetas = parameters(&sec.points, opts.param, opts.theta0);
@@ -601,6 +646,7 @@ pub fn resample_uniform(
 /// (`m > 2J`), then take the truncated DFT. Errors are measured against the
 /// original points.
 pub fn fit_fft(points: &[[f64; 3]], opts: &FitOptions, m: usize) -> Result<FitReport, GecError> {
+    check_scale(points)?;
     check_counts(points.len(), opts.terms)?;
     check_counts(m, opts.terms)?;
     let sec = section(points, opts.frame, opts.planarity_tol, 2 * opts.terms + 1)?;
@@ -626,8 +672,16 @@ pub fn fit_auto(
     if max_terms == 0 {
         return Err(GecError::ZeroTerms);
     }
+    crate::limits::check("max terms", max_terms, crate::limits::GEC_TERMS)?;
     let cap = max_terms.min(points.len().saturating_sub(1) / 2);
     check_counts(points.len(), 1)?;
+    let c = cap as f64;
+    crate::limits::check_work(
+        "max terms",
+        max_terms,
+        &format!("the search over J = 1..={cap} with {} points", points.len()),
+        2.0 * points.len() as f64 * (4.0 / 3.0) * c * c * c,
+    )?;
     let mut best = f64::INFINITY;
     for j in 1..=cap {
         let r = fit(points, &FitOptions { terms: j, ..*opts })?;

@@ -59,6 +59,7 @@
 
 pub mod check;
 pub mod fit;
+pub mod input;
 pub mod metrics;
 pub mod samples;
 pub mod study;
@@ -115,6 +116,8 @@ pub enum GecError {
     InvalidParameter(String),
     #[error("coefficient arrays malformed: {0}")]
     Malformed(String),
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
 }
 
 /// Where a GEC lives in space: origin and two orthonormal in-plane axes.

@@ -7,12 +7,14 @@
 //! over the target, so a failure never leaves a half-written file and never
 //! loses the previous one.
 
+mod atomic;
 mod glb;
 mod in_unit;
 mod obj;
 mod ply;
 mod stl;
 
+pub use atomic::{refuse_overwriting_input, same_file, write_atomic};
 pub use glb::{encode_glb, group_colour as group_colour_rgb};
 pub use in_unit::{output_unit, write_in_unit};
 pub use obj::{encode_obj, parse_obj};
@@ -20,7 +22,6 @@ pub use ply::{encode_ply, parse_ply};
 pub use stl::{encode_stl, parse_stl};
 
 use super::{Mesh, MeshError};
-use std::io::Write;
 use std::path::Path;
 
 /// Mesh file formats, chosen by extension.
@@ -53,7 +54,8 @@ impl Format {
     }
 }
 
-/// Reads a mesh (OBJ, STL or PLY by extension) and validates it.
+/// Reads a mesh (OBJ, STL or PLY by extension) and validates it (finite,
+/// indices in range, at least one triangle).
 pub fn read(path: &Path) -> Result<Mesh, MeshError> {
     let fmt = Format::from_path(path)?;
     let name = path.display().to_string();
@@ -75,6 +77,12 @@ pub fn read(path: &Path) -> Result<Mesh, MeshError> {
         }
     };
     m.validate()?;
+    if m.triangles.is_empty() {
+        return Err(MeshError::Invalid(format!(
+            "{name}: no triangles (an empty file, or not a valid {} file?)",
+            format!("{fmt:?}").to_uppercase()
+        )));
+    }
     Ok(m)
 }
 
@@ -84,6 +92,7 @@ pub fn encode(m: &Mesh, fmt: Format) -> Result<Vec<u8>, MeshError> {
     if m.triangles.is_empty() {
         return Err(MeshError::Empty);
     }
+    check_f32_range(m)?;
     Ok(match fmt {
         Format::Obj => encode_obj(m).into_bytes(),
         Format::Glb => encode_glb(m),
@@ -99,29 +108,14 @@ pub fn write(m: &Mesh, path: &Path) -> Result<(), MeshError> {
     write_atomic(path, &bytes)
 }
 
-/// Writes `bytes` to a temporary file beside `path`, syncs it and renames it
-/// over `path`. Creates missing parent directories.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), MeshError> {
-    let err = |source| MeshError::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(err)?;
+/// Every file format stores positions as 32-bit floats: refuses a vertex
+/// whose coordinate would become infinite on narrowing (instead of writing
+/// `inf`).
+pub fn check_f32_range(m: &Mesh) -> Result<(), MeshError> {
+    for (index, p) in m.positions.iter().enumerate() {
+        if p.iter().any(|x| x.abs() > f32::MAX as f64) {
+            return Err(MeshError::OutOfF32Range { index, value: *p });
+        }
     }
-    let file_name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "out".into());
-    let tmp = path.with_file_name(format!(".{file_name}.tmp-{}", std::process::id()));
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result.map_err(err)
+    Ok(())
 }

@@ -94,6 +94,7 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
         line,
         message,
     };
+    let berr = |message: String| MeshError::Invalid(format!("{path}: {message}"));
     let end = bytes
         .windows(11)
         .position(|w| w == b"end_header\n")
@@ -142,32 +143,87 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
         }
     }
     let ascii = ascii.ok_or_else(|| err(2, "missing 'format' line".into()))?;
+    let header_end = end + 11;
+    for e in &elements {
+        if e.count > 0 && e.props.is_empty() {
+            return Err(berr(format!("element '{}' has no properties", e.name)));
+        }
+        // every element takes at least one token or byte: a count beyond the
+        // data is refused before any allocation or loop
+        if e.count > body.len() {
+            return Err(berr(format!(
+                "element '{}' declares {} entries but the data has only {} bytes",
+                e.name,
+                e.count,
+                body.len()
+            )));
+        }
+        if e.name == "vertex" {
+            for axis in ["x", "y", "z"] {
+                if !e
+                    .props
+                    .iter()
+                    .any(|p| matches!(p, Prop::Scalar(n, _) if n == axis))
+                {
+                    return Err(berr(format!(
+                        "element 'vertex' has no scalar property '{axis}'"
+                    )));
+                }
+            }
+        }
+    }
+    let vertex_count = elements
+        .iter()
+        .find(|e| e.name == "vertex")
+        .map_or(0, |e| e.count);
     let mut m = Mesh::new(Vec::new(), Vec::new());
     let mut tokens = if ascii {
         Some(
             std::str::from_utf8(body)
-                .map_err(|_| err(0, "ASCII body is not text".into()))?
+                .map_err(|_| berr("ASCII body is not text".into()))?
                 .split_whitespace(),
         )
     } else {
         None
     };
     let mut pos = 0usize;
-    let mut next = |ty: Ty| -> Result<f64, MeshError> {
+    let mut token_no = 0usize;
+    // where the next value starts: byte offset in the file (binary) or the
+    // value number in the body (ASCII)
+    let at = |pos: usize, token_no: usize| {
+        if ascii {
+            format!("value {token_no} of the data")
+        } else {
+            format!("byte {}", header_end + pos)
+        }
+    };
+    let mut next = |ty: Ty| -> Result<(f64, String), MeshError> {
+        let here = at(pos, token_no);
         if let Some(t) = tokens.as_mut() {
+            token_no += 1;
             let s = t
                 .next()
-                .ok_or_else(|| err(0, "unexpected end of PLY data".into()))?;
-            s.parse::<f64>()
-                .map_err(|_| err(0, format!("bad PLY value {s:?}")))
+                .ok_or_else(|| berr(format!("{here}: unexpected end of PLY data")))?;
+            let v = s
+                .parse::<f64>()
+                .map_err(|_| berr(format!("{here}: bad PLY value {s:?}")))?;
+            Ok((v, here))
         } else {
             let n = ty.size();
             let b = body
                 .get(pos..pos + n)
-                .ok_or_else(|| err(0, "unexpected end of PLY data".into()))?;
+                .ok_or_else(|| berr(format!("{here}: unexpected end of PLY data")))?;
             pos += n;
-            Ok(ty.read(b))
+            Ok((ty.read(b), here))
         }
+    };
+    let index = |v: f64, here: &str, what: &str, max: f64| -> Result<usize, MeshError> {
+        if !(v.is_finite() && v.fract() == 0.0 && v >= 0.0 && v < max) {
+            return Err(berr(format!(
+                "{here}: {what} {v} is not an integer in 0..{max}"
+            )));
+        }
+        Ok(v as usize)
     };
     for e in &elements {
         for _ in 0..e.count {
@@ -176,22 +232,27 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
             for prop in &e.props {
                 match prop {
                     Prop::Scalar(name, ty) => {
-                        let x = next(*ty)?;
-                        match name.as_str() {
-                            "x" => p[0] = x,
-                            "y" => p[1] = x,
-                            "z" => p[2] = x,
-                            _ => {}
+                        let (x, here) = next(*ty)?;
+                        let slot = match name.as_str() {
+                            "x" => Some(0),
+                            "y" => Some(1),
+                            "z" => Some(2),
+                            _ => None,
+                        };
+                        if let Some(k) = slot {
+                            if !x.is_finite() {
+                                return Err(berr(format!("{here}: vertex coordinate {x}")));
+                            }
+                            p[k] = x;
                         }
                     }
                     Prop::List(name, cty, ity) => {
-                        let n = next(*cty)? as usize;
+                        let (n, here) = next(*cty)?;
+                        let n = index(n, &here, "list length", 1e6)?;
                         for _ in 0..n {
-                            let i = next(*ity)?;
+                            let (i, here) = next(*ity)?;
                             if name == "vertex_indices" || name == "vertex_index" {
-                                if i < 0.0 {
-                                    return Err(err(0, format!("negative face index {i}")));
-                                }
+                                let i = index(i, &here, "face index", vertex_count as f64)?;
                                 face.push(i as u32);
                             }
                         }
@@ -202,7 +263,7 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
                 m.positions.push(p);
             } else if e.name == "face" {
                 if face.len() < 3 {
-                    return Err(err(0, format!("face with {} vertices", face.len())));
+                    return Err(berr(format!("face with {} vertices", face.len())));
                 }
                 for k in 1..face.len() - 1 {
                     m.triangles.push([face[0], face[k], face[k + 1]]);

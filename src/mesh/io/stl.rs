@@ -72,6 +72,13 @@ pub fn parse_stl(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
                     let o = base + 12 * k + 4 * j;
                     *x = f32::from_le_bytes([bytes[o], bytes[o + 1], bytes[o + 2], bytes[o + 3]])
                         as f64;
+                    if !x.is_finite() {
+                        return Err(MeshError::ParseAt {
+                            path: path.to_string(),
+                            offset: o,
+                            message: format!("triangle {t}: non-finite coordinate {x}"),
+                        });
+                    }
                 }
             }
             w.triangle(c);
@@ -92,8 +99,10 @@ pub fn parse_stl(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
                         .next()
                         .ok_or_else(|| perr(ln + 1, "vertex needs 3 coordinates".into()))?;
                     *x = s
-                        .parse()
-                        .map_err(|_| perr(ln + 1, format!("bad coordinate {s:?}")))?;
+                        .parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite())
+                        .ok_or_else(|| perr(ln + 1, format!("bad coordinate {s:?}")))?;
                 }
                 corners.push(p);
                 if corners.len() == 3 {
@@ -101,6 +110,15 @@ pub fn parse_stl(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
                     corners.clear();
                 }
             }
+        }
+        if !corners.is_empty() {
+            return Err(perr(
+                text.lines().count(),
+                format!(
+                    "the file ends inside a facet ({} of 3 vertices)",
+                    corners.len()
+                ),
+            ));
         }
     }
     Ok(w.mesh)

@@ -1,0 +1,279 @@
+//! Resource limits: one policy for every user-supplied count, size and
+//! iteration parameter (CLI flag or file field).
+//!
+//! Each parameter has a documented range (a [`Range`]), checked before any
+//! work with [`check`]; each costly operation estimates its memory and work
+//! from its parameters and refuses with [`check_cost`] when the estimate
+//! passes a documented budget ([`MEMORY_BYTES`], [`WORK_FLOPS`]). Both
+//! errors name the parameter, its value and the limit. Arithmetic on user
+//! numbers goes through [`mul`] / [`add`] (checked; an overflow is reported as
+//! a limit error naming the parameter, never a wrapped number).
+//!
+//! | parameter | range | where |
+//! |---|---|---|
+//! | `gec fit --terms`, `--max-terms` | [`GEC_TERMS`] | paper 000/002 fit |
+//! | `gec eval --samples` | [`GEC_SAMPLES`] | |
+//! | `gec eval --derivative` | [`GEC_DERIVATIVE`] | |
+//! | `pde4` spec `terms` | 1..=256 per direction, then the cost budget | Galerkin: `(MN)^2` matrix, `(MN)^3/3` Cholesky |
+//! | `pde6 patch --nu/--nv`, `ode6 --nu/--nv` | [`TESS_NU`], [`TESS_NV`], mesh size [`MESH_VERTICES`] | |
+//! | `pde6 patch --first` | `0..=sections-6`, multiple of 3 | |
+//! | `pde6 body --terms`, `--anchors` | [`BODY_TERMS`], [`BODY_ANCHORS`] | |
+//! | section / curve harmonics | [`CURVE_HARMONICS`] | JSON files |
+//! | `ode6` polyline points | [`POLYLINE_POINTS`], then `points * grid` work | |
+//! | `render --size` x views | [`RENDER_SIZE`], [`RENDER_VIEWS`], [`RENDER_PIXELS`] | |
+//! | `plate --grid`, `--dm-iterations` | [`PLATE_GRID`], [`PLATE_ITERATIONS`] | |
+
+use thiserror::Error;
+
+/// Memory budget of one operation (estimated before allocating): 1 GiB.
+pub const MEMORY_BYTES: u64 = 1 << 30;
+
+/// Work budget of one operation (estimated floating-point operations before
+/// starting): 2e10, a few seconds on one core.
+pub const WORK_FLOPS: f64 = 2e10;
+
+/// An inclusive range of a count parameter, with the reason for its bounds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Range {
+    pub min: u64,
+    pub max: u64,
+    /// Why the bounds are what they are (printed in the error).
+    pub why: &'static str,
+}
+
+/// GEC terms J (the fit needs 2J + 1 points, the design matrix 4J + 2 columns).
+pub const GEC_TERMS: Range = Range {
+    min: 1,
+    max: 2000,
+    why: "a GEC term per harmonic; the fit needs 2J+1 points",
+};
+/// Samples of `gec eval --samples`.
+pub const GEC_SAMPLES: Range = Range {
+    min: 1,
+    max: 10_000_000,
+    why: "points printed",
+};
+/// Derivative order of `gec eval`.
+pub const GEC_DERIVATIVE: Range = Range {
+    min: 0,
+    max: 8,
+    why: "derivative order",
+};
+/// Harmonics of a curve read from a file (GEC or Fourier sections).
+pub const CURVE_HARMONICS: Range = Range {
+    min: 0,
+    max: 2000,
+    why: "harmonics of one curve",
+};
+/// Tessellation intervals in u (per piece for pde6).
+pub const TESS_NU: Range = Range {
+    min: 1,
+    max: 100_000,
+    why: "tessellation intervals in u",
+};
+/// Tessellation intervals around v.
+pub const TESS_NV: Range = Range {
+    min: 3,
+    max: 100_000,
+    why: "tessellation intervals in v",
+};
+/// Vertices of a tessellated mesh (about 100 bytes each with the written file).
+pub const MESH_VERTICES: Range = Range {
+    min: 1,
+    max: 5_000_000,
+    why: "vertices of one output mesh",
+};
+/// `pde6 body --terms`.
+pub const BODY_TERMS: Range = Range {
+    min: 1,
+    max: 64,
+    why: "GEC terms per body cross section",
+};
+/// `pde6 body --anchors`.
+pub const BODY_ANCHORS: Range = Range {
+    min: 1,
+    max: 4096,
+    why: "rays per body cross section",
+};
+/// Points of an `ode6` polyline curve (trigonometric interpolation is
+/// quadratic in this number).
+pub const POLYLINE_POINTS: Range = Range {
+    min: 2,
+    max: 20_000,
+    why: "points of one polyline curve",
+};
+/// `render --size` (pixels per side of one view).
+pub const RENDER_SIZE: Range = Range {
+    min: 16,
+    max: 8192,
+    why: "pixels per side of one view",
+};
+/// Views of one `render`.
+pub const RENDER_VIEWS: Range = Range {
+    min: 1,
+    max: 16,
+    why: "views side by side",
+};
+/// Pixels of one rendered image (all views): 64 Mpx, about 0.5 GB of buffers.
+pub const RENDER_PIXELS: Range = Range {
+    min: 1,
+    max: 1 << 26,
+    why: "pixels of the whole image (size x size x views)",
+};
+/// `plate --grid`.
+pub const PLATE_GRID: Range = Range {
+    min: 4,
+    max: 1000,
+    why: "parameter-domain grid of the plate solve",
+};
+/// `plate --dm-iterations`.
+pub const PLATE_ITERATIONS: Range = Range {
+    min: 0,
+    max: 10_000,
+    why: "distance-map iterations",
+};
+
+/// A parameter outside its range or an operation over budget.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LimitError {
+    #[error("{param} = {value} is out of range: must be at least {min} and at most {max} ({why})")]
+    OutOfRange {
+        param: String,
+        value: String,
+        min: u64,
+        max: u64,
+        why: &'static str,
+    },
+    #[error("{param} = {value}: {what} would need about {estimate:.3e} {unit}, over the budget of {budget:.3e} {unit}; reduce {param}")]
+    OverBudget {
+        param: String,
+        value: String,
+        what: String,
+        estimate: f64,
+        budget: f64,
+        unit: &'static str,
+    },
+}
+
+/// Checks `value` of `param` against `range`; returns it.
+pub fn check(param: &str, value: usize, range: Range) -> Result<usize, LimitError> {
+    let v = value as u64;
+    if v < range.min || v > range.max {
+        return Err(LimitError::OutOfRange {
+            param: param.to_string(),
+            value: value.to_string(),
+            min: range.min,
+            max: range.max,
+            why: range.why,
+        });
+    }
+    Ok(value)
+}
+
+/// Refuses when `estimate` (in `unit`) is over `budget`; `param = value` is
+/// the parameter blamed (the one the user should reduce).
+pub fn check_cost(
+    param: &str,
+    value: impl std::fmt::Display,
+    what: &str,
+    estimate: f64,
+    budget: f64,
+    unit: &'static str,
+) -> Result<(), LimitError> {
+    if !(estimate <= budget) {
+        return Err(LimitError::OverBudget {
+            param: param.to_string(),
+            value: value.to_string(),
+            what: what.to_string(),
+            estimate,
+            budget,
+            unit,
+        });
+    }
+    Ok(())
+}
+
+/// Memory check against [`MEMORY_BYTES`].
+pub fn check_memory(
+    param: &str,
+    value: impl std::fmt::Display,
+    what: &str,
+    bytes: f64,
+) -> Result<(), LimitError> {
+    check_cost(param, value, what, bytes, MEMORY_BYTES as f64, "bytes")
+}
+
+/// Work check against [`WORK_FLOPS`].
+pub fn check_work(
+    param: &str,
+    value: impl std::fmt::Display,
+    what: &str,
+    flops: f64,
+) -> Result<(), LimitError> {
+    check_cost(param, value, what, flops, WORK_FLOPS, "operations")
+}
+
+/// `a * b`, or an error naming `param` when it overflows `usize`.
+pub fn mul(param: &str, a: usize, b: usize) -> Result<usize, LimitError> {
+    a.checked_mul(b).ok_or_else(|| overflow(param, a, b, '*'))
+}
+
+/// `a + b`, or an error naming `param` when it overflows `usize`.
+pub fn add(param: &str, a: usize, b: usize) -> Result<usize, LimitError> {
+    a.checked_add(b).ok_or_else(|| overflow(param, a, b, '+'))
+}
+
+fn overflow(param: &str, a: usize, b: usize, op: char) -> LimitError {
+    LimitError::OverBudget {
+        param: param.to_string(),
+        value: format!("{a} {op} {b}"),
+        what: "the size".into(),
+        estimate: f64::INFINITY,
+        budget: usize::MAX as f64,
+        unit: "elements",
+    }
+}
+
+/// Vertices of a `nu x nv` tessellation, checked against [`MESH_VERTICES`]
+/// (`param` names the flags, e.g. `"--nu/--nv"`).
+pub fn mesh_vertices(param: &str, nu: usize, nv: usize) -> Result<usize, LimitError> {
+    let n = mul(param, nu.saturating_add(1), nv.saturating_add(1))?;
+    if n as u64 > MESH_VERTICES.max {
+        return Err(LimitError::OverBudget {
+            param: param.to_string(),
+            value: format!("{nu} x {nv}"),
+            what: "the mesh".into(),
+            estimate: n as f64,
+            budget: MESH_VERTICES.max as f64,
+            unit: "vertices",
+        });
+    }
+    Ok(n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn range_error_names_parameter_value_and_limit() {
+        let e = check("--terms", 9_223_372_036_854_775_808, GEC_TERMS).unwrap_err();
+        let s = e.to_string();
+        assert!(s.contains("--terms = 9223372036854775808"), "{s}");
+        assert!(s.contains("2000"), "{s}");
+        assert_eq!(check("--terms", 10, GEC_TERMS), Ok(10));
+    }
+
+    #[test]
+    fn overflow_is_an_error_not_a_wrap() {
+        assert!(mul("--nu", usize::MAX, 2).is_err());
+        assert!(mesh_vertices("--nu/--nv", usize::MAX, 64).is_err());
+        assert_eq!(mesh_vertices("--nu/--nv", 16, 64), Ok(17 * 65));
+    }
+
+    #[test]
+    fn nan_cost_is_refused() {
+        assert!(check_work("x", 1, "y", f64::NAN).is_err());
+        assert!(check_work("x", 1, "y", 1.0).is_ok());
+    }
+}
