@@ -25,7 +25,7 @@ pub struct Args {
     #[arg(short, long, default_value = "out")]
     pub out: PathBuf,
     #[command(flatten)]
-    pub units: super::units::UnitArgs,
+    pub units: super::units::OutputUnitArgs,
 }
 
 /// Builds the demo outputs.

@@ -111,7 +111,7 @@ pub enum Command {
         #[arg(short, long)]
         output: PathBuf,
         #[command(flatten)]
-        units: super::units::UnitArgs,
+        units: super::units::OutputUnitArgs,
     },
     /// The single-harmonic function A_n(u) through six values at u = 0, 0.2, ..., 1.
     Mode {

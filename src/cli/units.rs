@@ -31,3 +31,20 @@ impl UnitArgs {
         self.write(m, path, self.input_unit)
     }
 }
+
+/// `--unit` alone, for commands that read only bundled data (whose unit is
+/// known: MakeHuman is decimetres).
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct OutputUnitArgs {
+    /// Unit of OBJ/STL/PLY output: m, dm, cm or mm (GLB is always metres).
+    #[arg(long, default_value = "m")]
+    pub unit: Unit,
+}
+
+impl OutputUnitArgs {
+    /// Writes `m` (coordinates in `source`) to `path` in the unit the format
+    /// takes; returns that unit for the report.
+    pub fn write(&self, m: &Mesh, path: &Path, source: Unit) -> anyhow::Result<Unit> {
+        Ok(io::write_in_unit(m, path, source, self.unit)?)
+    }
+}

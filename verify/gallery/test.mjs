@@ -25,6 +25,9 @@ const out = path.resolve(process.argv[2] || 'paper_figures/out');
 const BODY_HEIGHT_M = [1.6, 1.8];
 // demo.glb: skin, skirt, teddy (issue 20: three.js loads 3 meshes).
 const DEMO_MESHES = 3;
+// Every gallery model is a character or a part of one, in metres: a model
+// left in decimetres (10x) or millimetres falls outside this range.
+const ANY_MODEL_HEIGHT_M = [0.1, 3.0];
 const TIMEOUT_MS = 180000;
 
 const failures = [];
@@ -65,6 +68,8 @@ try {
     if (v.status !== 'loaded') { fail(`viewer ${v.model}: status ${v.status}`); continue; }
     if (v.meshes !== v.expectedMeshes) fail(`viewer ${v.model}: ${v.meshes} meshes, expected ${v.expectedMeshes}`);
     else ok(`viewer ${v.model}: ${v.meshes} meshes, ${v.triangles} triangles, height ${Number(v.height).toFixed(3)} m`);
+    const vh = Number(v.height);
+    if (!(vh >= ANY_MODEL_HEIGHT_M[0] && vh <= ANY_MODEL_HEIGHT_M[1])) fail(`viewer ${v.model}: height ${vh} is not a character's height in metres`);
     if (v.model === 'demo.glb') {
       if (Number(v.meshes) !== DEMO_MESHES) fail(`demo.glb: ${v.meshes} meshes, expected ${DEMO_MESHES}`);
       const h = Number(v.height);

@@ -194,6 +194,23 @@ fn cites(equation: &str, n: &str) -> bool {
     })
 }
 
+/// Entries of the table that no longer match: a figure id not registered,
+/// or a prefix that names no registered check (renamed or removed).
+pub fn stale(figures: &[Figure], checks: &[Check]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (id, prefixes) in RELIES_ON {
+        if !figures.iter().any(|f| f.id == *id) {
+            out.push(format!("figure {id} is not registered"));
+        }
+        for p in *prefixes {
+            if !checks.iter().any(|c| c.name.starts_with(p)) {
+                out.push(format!("{id}: no check named {p}*"));
+            }
+        }
+    }
+    out
+}
+
 /// The checks `f` relies on, in registry order.
 pub fn for_figure<'a>(f: &Figure, checks: &'a [Check]) -> Vec<&'a Check> {
     let prefixes = RELIES_ON
@@ -209,4 +226,22 @@ pub fn for_figure<'a>(f: &Figure, checks: &'a [Check]) -> Vec<&'a Check> {
                 || (c.paper == f.paper && number.as_deref().is_some_and(|n| cites(&c.equation, n)))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn equations_citing_a_figure_are_found() {
+        assert!(cites("sec 4, Figs 5-6", "5"));
+        assert!(cites("sec 4, Figs 5-6", "6"));
+        assert!(cites("eq 26, Fig 6b", "6"));
+        assert!(cites("sec 5 Fig 8", "8"));
+        assert!(!cites("sec 5 Fig 8", "7"));
+        assert!(!cites("sec 5 Fig 18", "8"));
+        assert!(!cites("eqs 23-26", "2"));
+        assert_eq!(cited_as("004-fig2-3").as_deref(), Some("2"));
+        assert_eq!(cited_as("003-polygonizers"), None);
+    }
 }
