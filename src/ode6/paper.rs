@@ -7,6 +7,29 @@
 //! $\xi_{1,2} = \sqrt{\eta(1 \pm \sqrt{1 - 4\rho\lambda/\eta^2})/(2\rho)}$,
 //! so that $r = \pm i\xi$ and $q = -\xi^2$ (eq 16).
 
+/// `q_{1,2}` of eq 14 exactly as extracted, `η(1 ± 1 4ρλ/η²)/(2ρ)`, with
+/// the lost minus read as `1 - 4ρλ/η²` under no root and no leading minus
+/// (the same reading as [`xi_printed`]; the texts of eqs 14 and 15 are
+/// identical).
+pub fn q_printed(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
+    xi_printed(rho, eta, lambda)
+}
+
+/// `q_{1,2}` of eq 14 with the leading minus and the square root restored:
+/// `-η(1 ± sqrt(1 - 4ρλ/η²))/(2ρ)`.
+pub fn q_restored(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
+    let t = (1.0 - 4.0 * rho * lambda / (eta * eta)).sqrt();
+    [
+        -eta * (1.0 + t) / (2.0 * rho),
+        -eta * (1.0 - t) / (2.0 * rho),
+    ]
+}
+
+/// Residual `|ρq² + ηq + λ|` of eq 13 at `q`, relative to `max(|λ|, 1)`.
+pub fn eq13_residual(rho: f64, eta: f64, lambda: f64, q: f64) -> f64 {
+    (rho * q * q + eta * q + lambda).abs() / lambda.abs().max(1.0)
+}
+
 /// `ξ_{1,2}` of eq 15 read literally (no square roots, "1 4ρλ" as `1 - 4ρλ`
 /// under no root): `η(1 ± (1 - 4ρλ/η²))/(2ρ)`.
 pub fn xi_printed(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
