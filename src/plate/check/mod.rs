@@ -9,6 +9,8 @@ use super::shapes::{region_in_polygon, sheet, Shape};
 use super::{disk_profile, disk_solution, Material, PlateError};
 use crate::check::{max_abs_diff, rel_err, tol, Check, Kind};
 use crate::jet::Jet4x4;
+mod equations;
+use equations::equation_checks;
 use serde::Deserialize;
 
 const F: &str = "plate";
@@ -60,7 +62,7 @@ struct Golden {
 }
 
 fn golden() -> Golden {
-    serde_json::from_str(include_str!("../../verify/golden/plate_model.json"))
+    serde_json::from_str(include_str!("../../../verify/golden/plate_model.json"))
         .expect("committed golden JSON parses")
 }
 
@@ -336,6 +338,7 @@ pub fn checks() -> Vec<Check> {
         )
         .note("displacement of the alpha-shape boundary vertices after a cursor move"),
     );
+    equation_checks(&mut out);
     out
 }
 
