@@ -104,7 +104,9 @@ impl Check {
 
     /// A paper-literal check. With `differs = true` (the printed form is in
     /// ERRATA.md) it passes when the measured difference exceeds `tolerance`;
-    /// with `differs = false` it passes when it is within it.
+    /// with `differs = false` it passes when it is within it. A NaN
+    /// or infinite measurement fails either way (every constructor: a failed computation
+    /// fails its check).
     pub fn paper_literal(
         family: &str,
         paper: &str,
@@ -125,7 +127,10 @@ impl Check {
         );
         c.paper_differs = differs;
         c.passed = if differs {
-            measured.is_nan() || measured > tolerance
+            // a failed computation (NaN, inf) fails: it is no evidence that
+            // the printed form differs; measure a printed form that is
+            // undefined by a finite count instead
+            measured.is_finite() && measured > tolerance
         } else {
             measured.is_finite() && measured <= tolerance
         };

@@ -208,7 +208,16 @@ fn weight_checks(out: &mut Vec<Check>) {
             let lit = (paper_literal_field(&paper, rp, s) - paper.field(rp, s)).abs() / t;
             out.push(
                 Check::paper_literal(FAMILY, PAPER, "sec 3.3 weight equations", "conv.weights.paper_literal_no_1_over_l", lit, 1e-6, true)
-                    .note("printed T = w0 (F1 - F_t) + w1 F_t (no 1/l) vs the field w0 F1 + (w1-w0) F_t/l, at r_p of a segment of length 2.60"),
+                    .note("a misreading, not the paper: dropping the extracted 'I' gives T = w0 (F1 - F_t) + w1 F_t (no 1/l), which differs from the field w0 F1 + (w1-w0) F_t/l at r_p of a segment of length 2.60; read 'I' as the length l (conv.weights.printed_I_as_l) the printed equations are right"),
+            );
+            let (field_err, weight_err) = printed_weights_i_as_l(&raw, n, t, s, &paper);
+            out.push(
+                Check::paper_literal(FAMILY, PAPER, "sec 3.3 weight equations", "conv.weights.printed_I_as_l", field_err, tol::scaled(tol::ROUNDING, 10.0), false)
+                    .note("the printed l T = l F(r) = w0 (l F1(r) - F_t(r)) + w1 F_t(r), the extracted 'I' read as the segment length l and 'F_i' as F_t: |l F_printed / l - F| / T at r_p, r_q and r_mid"),
+            );
+            out.push(
+                Check::paper_literal(FAMILY, PAPER, "sec 3.3 kappa", "conv.weights.printed_approximations_I_as_l", weight_err, tol::scaled(tol::ROUNDING, 10.0), false)
+                    .note("the printed approximations w0 = l T/(l F1(r_p) - F_t(r_p)), w1 = l T/F_t(r_q) and kappa = l T/(w0 (l F1(r_mid) - F_t(r_mid)) + w1 F_t(r_mid)), 'I' read as l, built here and compared with the implementation's paper weights (relative)"),
             );
         }
         (Err(e), _) | (_, Err(e)) => out.push(
@@ -224,6 +233,45 @@ fn weight_checks(out: &mut Vec<Check>) {
             .note(format!("weights failed: {e}")),
         ),
     }
+}
+
+/// Paper 003 sec 3.3 as printed with the extracted `I` read as the segment
+/// length `l` (and `F_i` as `F_t`): the field equation
+/// `l F = w0 (l F1 - F_t) + w1 F_t` against [`Segment::field`] at `r_p`,
+/// `r_q`, `r_mid`, and the weight approximations and `kappa` built from the
+/// printed formulas against `paper` (the implementation's
+/// `WeightMode::Paper` weights). Returns `(field error / T, weight error)`.
+pub fn printed_weights_i_as_l(
+    raw: &RawSegment,
+    normal: [f64; 3],
+    t: f64,
+    s: f64,
+    paper: &Segment,
+) -> (f64, f64) {
+    let at = |x: [f64; 3], d: f64| std::array::from_fn::<f64, 3, _>(|k| x[k] + d * normal[k]);
+    let rp = at(raw.p, raw.rp);
+    let rq = at(raw.q, raw.rq);
+    let mid = at(
+        std::array::from_fn(|k| 0.5 * (raw.p[k] + raw.q[k])),
+        0.5 * (raw.rp + raw.rq),
+    );
+    let l = paper.length();
+    let basis = |r: [f64; 3]| paper.basis(r, s);
+    let printed_l_f = |w0: f64, w1: f64, r: [f64; 3]| {
+        let (f1, ft) = basis(r);
+        w0 * (l * f1 - ft) + w1 * ft
+    };
+    let field_err = [rp, rq, mid]
+        .iter()
+        .map(|&r| (printed_l_f(paper.w0, paper.w1, r) / l - paper.field(r, s)).abs() / t)
+        .fold(0.0, f64::max);
+    let (f1p, ftp) = basis(rp);
+    let (_, ftq) = basis(rq);
+    let w0 = l * t / (l * f1p - ftp);
+    let w1 = l * t / ftq;
+    let kappa = l * t / printed_l_f(w0, w1, mid);
+    let weight_err = rel_err(kappa * w0, paper.w0).max(rel_err(kappa * w1, paper.w1));
+    (field_err, weight_err)
 }
 
 fn fit_checks(out: &mut Vec<Check>) {

@@ -7,6 +7,29 @@
 //! $\xi_{1,2} = \sqrt{\eta(1 \pm \sqrt{1 - 4\rho\lambda/\eta^2})/(2\rho)}$,
 //! so that $r = \pm i\xi$ and $q = -\xi^2$ (eq 16).
 
+/// `q_{1,2}` of eq 14 exactly as extracted, `η(1 ± 1 4ρλ/η²)/(2ρ)`, with
+/// the lost minus read as `1 - 4ρλ/η²` under no root and no leading minus
+/// (the same reading as [`xi_printed`]; the texts of eqs 14 and 15 are
+/// identical).
+pub fn q_printed(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
+    xi_printed(rho, eta, lambda)
+}
+
+/// `q_{1,2}` of eq 14 with the leading minus and the square root restored:
+/// `-η(1 ± sqrt(1 - 4ρλ/η²))/(2ρ)`.
+pub fn q_restored(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
+    let t = (1.0 - 4.0 * rho * lambda / (eta * eta)).sqrt();
+    [
+        -eta * (1.0 + t) / (2.0 * rho),
+        -eta * (1.0 - t) / (2.0 * rho),
+    ]
+}
+
+/// Residual `|ρq² + ηq + λ|` of eq 13 at `q`, relative to `max(|λ|, 1)`.
+pub fn eq13_residual(rho: f64, eta: f64, lambda: f64, q: f64) -> f64 {
+    (rho * q * q + eta * q + lambda).abs() / lambda.abs().max(1.0)
+}
+
 /// `ξ_{1,2}` of eq 15 read literally (no square roots, "1 4ρλ" as `1 - 4ρλ`
 /// under no root): `η(1 ± (1 - 4ρλ/η²))/(2ρ)`.
 pub fn xi_printed(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
@@ -34,9 +57,9 @@ pub struct PrintedSigns {
     pub lead: f64,
 }
 
-/// The basis functions `g_1..g_6` of eq 20 with the constants of eqs 21-22
-/// exactly as printed, the lost minus signs restored between adjacent terms.
-pub fn g_printed(x1: f64, x2: f64, s: PrintedSigns, t: f64) -> [f64; 6] {
+/// The constants `e_1..e_13` and `d_1..d_10` of eqs 21-22 as printed, the
+/// lost minus signs restored between adjacent terms (index 0 unused).
+pub fn printed_constants(x1: f64, x2: f64, s: PrintedSigns) -> ([f64; 14], [f64; 11]) {
     let (c1, s1, c2, s2) = (x1.cos(), x1.sin(), x2.cos(), x2.sin());
     let mut e = [0.0; 14];
     e[1] = x1 * (c1 - 1.0) + x1 * x1 * s1 * (1.0 - c2) / (x2 * s2);
@@ -65,6 +88,13 @@ pub fn g_printed(x1: f64, x2: f64, s: PrintedSigns, t: f64) -> [f64; 6] {
     d[10] = s.d10 / (x2 * x2) + (e[11] + 1.0) * d[5];
     e[9] = x1 * x1 * (d[4] * s1 - d[1] * (c2 - c1)) / (x2 * x2 * s2);
     e[10] = x1 * x1 * (d[3] * s1 - d[2] * (c2 - c1)) / (x2 * x2 * s2);
+    (e, d)
+}
+
+/// The basis functions `g_1..g_6` of eq 20 with the constants of eqs 21-22
+/// exactly as printed, the lost minus signs restored between adjacent terms.
+pub fn g_printed(x1: f64, x2: f64, s: PrintedSigns, t: f64) -> [f64; 6] {
+    let (e, d) = printed_constants(x1, x2, s);
     let (ca, sa, cb, sb) = (
         (x1 * t).cos(),
         (x1 * t).sin(),

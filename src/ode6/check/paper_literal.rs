@@ -17,6 +17,23 @@ pub(super) fn paper_literal_checks() -> Vec<Check> {
         Check::paper_literal(FAMILY, PAPER, "eq 15", "ode6.paper_literal.xi_eq15", diff, tol::SOLVE, true)
             .note("eq 15 as extracted (no square roots) against the intended xi (extraction loss, see ERRATA)"),
     ];
+    // eq 14 as extracted, and with its minus and root restored, in eq 13
+    let qp = paper::q_printed(rho, eta, lambda);
+    let qr = paper::q_restored(rho, eta, lambda);
+    let res = |q: [f64; 2]| {
+        paper::eq13_residual(rho, eta, lambda, q[0])
+            .max(paper::eq13_residual(rho, eta, lambda, q[1]))
+    };
+    let ours = [q[0].0, q[1].0];
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eq 14", "ode6.paper_literal.q_eq14", res(qp), tol::SOLVE, true)
+            .note(format!("eq 14 evaluated as extracted, eta(1 +- (1 - 4 rho lambda/eta^2))/(2 rho) = ({:.4}, {:.4}) at rho = lambda = 1, eta = 3: residual of eq 13 rho q^2 + eta q + lambda (extraction loss of the minus and the root)", qp[0], qp[1])),
+    );
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eq 14", "ode6.paper_literal.q_eq14_restored", res(qr).max((qr[0] - ours[0]).abs().max((qr[1] - ours[1]).abs())), tol::ROUNDING, false)
+            .note(format!("eq 14 with the leading minus and the square root restored, ({:.6}, {:.6}): residual of eq 13 and difference from the basis's own roots", qr[0], qr[1])),
+    );
+    eq20_restoration_checks(&mut out);
     let mut worst_printed = f64::INFINITY;
     let mut best_printed = 0.0f64;
     for k in 0..6 {
@@ -30,4 +47,65 @@ pub(super) fn paper_literal_checks() -> Vec<Check> {
         )),
     );
     out
+}
+
+/// The golden of `verify/ode6_eq20_signs.py`: exact coefficients of g_1..g_6
+/// (rows `A cos xi1 u, B sin xi1 u, C cos xi2 u, D sin xi2 u, E u, F`).
+const EQ20_SIGNS: &str = include_str!("../../../verify/golden/ode6_eq20_signs.json");
+
+/// Eqs 21-22 with the lost minus signs restored (every gap of e1, e3, e4 and
+/// the denominator, a leading minus inside e4's bracket, xi1 < xi2): the
+/// magnitudes of d1..d4 and d9 against the exact coefficients; and g_2 as
+/// printed, which has no cos xi2 u term.
+fn eq20_restoration_checks(out: &mut Vec<Check>) {
+    let golden: serde_json::Value = serde_json::from_str(EQ20_SIGNS).unwrap_or_default();
+    let cases: Vec<&serde_json::Value> = golden["cases"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .filter(|c| c["xi1"].as_f64() < c["xi2"].as_f64())
+                .collect()
+        })
+        .unwrap_or_default();
+    let (mut restored, mut missing) = (
+        if cases.is_empty() { f64::NAN } else { 0.0f64 },
+        f64::INFINITY,
+    );
+    for c in &cases {
+        let x = |k: &str| c[k].as_f64().unwrap_or(f64::NAN);
+        let g = |k: usize, j: usize| c["exact"][k][j].as_f64().unwrap_or(f64::NAN);
+        let signs = paper::PrintedSigns {
+            e4: -1.0,
+            e6: 1.0,
+            d10: 1.0,
+            lead: 1.0,
+        };
+        let (e, d) = paper::printed_constants(x("xi1"), x("xi2"), signs);
+        let rel = |a: f64, b: f64| (a.abs() - b.abs()).abs() / b.abs();
+        let d9 = (e[11] + 1.0) * (d[1] - d[2]);
+        for (a, b) in [
+            (d[1], g(0, 0)),
+            (d[4], g(0, 1)),
+            (d[2], g(4, 0)),
+            (d[3], g(4, 1)),
+            (d9, g(1, 2)),
+        ] {
+            let r = rel(a, b);
+            restored = if r.is_nan() {
+                f64::NAN
+            } else {
+                restored.max(r)
+            };
+        }
+        let scale = (0..6).map(|j| g(1, j).abs()).fold(0.0, f64::max);
+        missing = missing.min(g(1, 2).abs() / scale);
+    }
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eqs 21-22", "ode6.paper_literal.eq21_22_constants_restored", restored, tol::SOLVE, false)
+            .note(format!("{} parameter cases: e1..e4 and d1..d4 as printed with the lost minus signs restored (xi1 < xi2) have the magnitudes of the exact cos/sin xi1 u coefficients of g_1, g_5 (and d9 of g_2's cos xi2 u), relative; sign search in verify/ode6_eq20_signs.py", cases.len())),
+    );
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eq 20", "ode6.paper_literal.g2_missing_term", missing, tol::SOLVE, true)
+            .note("printed g_2 has no cos xi2 u term (d9 is defined for it and never used): the exact g_2's cos xi2 u coefficient relative to its largest, smallest over the cases"),
+    );
 }

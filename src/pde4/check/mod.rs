@@ -22,8 +22,11 @@ mod two_sided_patch;
 use two_sided_patch::two_sided_checks;
 pub use two_sided_patch::{two_sided_boundary, two_sided_residual};
 mod four_sided_patch;
+mod paper_literal;
 use four_sided_patch::four_sided_checks;
 pub use four_sided_patch::plate_centre;
+use paper_literal::printed_statement_checks;
+pub use paper_literal::{printed_area_profile, printed_line_profile};
 
 const F: &str = "pde4";
 const P: &str = "000";
@@ -70,5 +73,6 @@ pub fn checks() -> Vec<Check> {
     force_checks(&mut out);
     two_sided_checks(&mut out);
     four_sided_checks(&mut out);
+    printed_statement_checks(&mut out);
     out
 }

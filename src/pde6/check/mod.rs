@@ -21,10 +21,13 @@ use basis::basis_checks;
 mod chains;
 use chains::chain_checks;
 mod measure;
+mod paper_literal;
 pub use measure::{
     basis_ode_residual, closed_v_mismatch, interpolation_error, lebesgue, method2_amplification,
     mode_vs_rk4, pde_residual,
 };
+pub use paper_literal::eq26_printed_interpolation_error;
+use paper_literal::printed_form_checks;
 
 const FAMILY: &str = "pde6";
 const PAPER: &str = "002";
@@ -188,6 +191,7 @@ pub fn checks() -> Vec<Check> {
 
     basis_checks(&mut out);
     chain_checks(&mut out);
+    printed_form_checks(&mut out);
     body::body_smoothness_checks(&mut out);
     out
 }

@@ -1,0 +1,36 @@
+//! Paper-literal checks of paper 002 that build a printed form itself.
+
+use super::*;
+
+/// Eq 26 as printed for the bottom patch P2 of a method-2 chain: x and y
+/// from the patch, `z^{P2}(u, v) = A_{z0}^{P2}(0)` (a constant: the v-mean of
+/// z at the patch's local u = 0). Returns the largest distance from the
+/// printed patch to the sections in its range (16 v samples each).
+pub fn eq26_printed_interpolation_error(c: &Chain, sections: &[Section]) -> f64 {
+    let Some(p) = c.pieces.first() else {
+        return f64::NAN;
+    };
+    let z0 = p.patch.section(0.0, 0).c0[2];
+    sections
+        .iter()
+        .filter(|s| s.u >= p.start && s.u <= p.end)
+        .flat_map(|s| {
+            (0..16).map(move |j| {
+                let v = 2.0 * PI * j as f64 / 16.0;
+                let [x, y, _] = p.eval(s.u, v);
+                crate::mesh::dist([x, y, z0], s.curve.eval(v))
+            })
+        })
+        .fold(0.0, f64::max)
+}
+
+pub(super) fn printed_form_checks(out: &mut Vec<Check>) {
+    let sec = synthetic_sections(12, 6);
+    let (name, a) = SIGNS[0];
+    let e =
+        Chain::method2(a, &sec, 3).map_or(f64::NAN, |c| eq26_printed_interpolation_error(&c, &sec));
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eq 26", &format!("pde6.paper_literal.eq26_constant_z_{name}"), e, SOLVE_TOL, true)
+            .note(format!("eq 26 built as printed for patch 2 of the 12-section method-2 chain (a = {a}): z = A_z0(0) constant; max distance to the sections C1-C4 it must pass through (eq 25); the corrected z = A_z0(u) passes within SOLVE_TOL (pde6.method2_interpolates_*)")),
+    );
+}
