@@ -2,6 +2,7 @@
 
 use super::grid::{first_self_intersection, len, point_segment};
 use super::{ProfileError, View};
+use serde::{Deserialize, Serialize};
 
 /// Consecutive points closer than this fraction of the bounding-box
 /// diagonal are one point (the later copy is dropped).
@@ -9,7 +10,15 @@ pub const DUPLICATE_REL: f64 = 1e-12;
 
 /// A simple closed polygon, counter-clockwise in (horizontal, vertical)
 /// profile coordinates of its [`View`], without a repeated closing point.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// Serialises as `{"view": "front", "points": [[h, v], ...]}` (the JSON
+/// input format); deserialising validates with [`Profile::new`], so a
+/// document embedding a profile cannot hold an invalid one.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(
+    try_from = "super::json::ProfileJson",
+    into = "super::json::ProfileJson"
+)]
 pub struct Profile {
     view: View,
     points: Vec<[f64; 2]>,

@@ -3,7 +3,7 @@
 
 use super::{Profile, ProfileError, View};
 use kurbo::{BezPath, PathEl, Point};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 use std::path::Path;
 use usvg::roxmltree;
@@ -17,7 +17,7 @@ pub struct SvgSketch {
 
 /// An open polyline whose SVG id starts with `cut` (an explicit part
 /// boundary), in profile coordinates of the sketch's view.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cut {
     pub id: String,
     pub points: Vec<[f64; 2]>,
@@ -86,10 +86,20 @@ pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, Pr
     }
 }
 
+/// Id given to `circle`/`ellipse` elements that have none, so that their
+/// usvg paths can be recognised (followed by a counter).
+const ELLIPSE_ID: &str = "pdesculpt-ellipse-";
+
 /// Every subpath of every shape in document order, flattened, with its
 /// absolute transform applied. Shapes without an id are named
 /// `<shape N>` (N counts shapes from 1); a shape with several subpaths
 /// gives `id (subpath K)`.
+///
+/// Two edits of the XML text (never of path data) before usvg sees it: the
+/// root `viewBox` is blanked (user units are model units, so the canvas
+/// maps user space by the identity), and `circle`/`ellipse` elements
+/// without an id get one, so that they are flattened from their exact
+/// conic rather than from usvg's cubic approximation.
 fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, ProfileError> {
     let svg_err = |e: &dyn std::fmt::Display| ProfileError::Svg {
         message: e.to_string(),
@@ -99,47 +109,84 @@ fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, Profil
         ..Default::default()
     };
     let doc = roxmltree::Document::parse_with_options(text, xml_opt()).map_err(|e| svg_err(&e))?;
-    // User units are model units: drop the root viewBox so that usvg maps
-    // user space to the canvas by the identity.
-    let stripped;
-    let doc = match doc
+    // (position, bytes removed, text inserted), in document order
+    let mut edits: Vec<(usize, usize, String)> = Vec::new();
+    if let Some(a) = doc
         .root_element()
         .attributes()
         .find(|a| a.name() == "viewBox")
     {
-        Some(a) => {
-            let r = a.range();
-            stripped = format!(
-                "{}{}{}",
-                &text[..r.start],
-                " ".repeat(r.len()),
-                &text[r.end..]
-            );
-            roxmltree::Document::parse_with_options(&stripped, xml_opt())
-                .map_err(|e| svg_err(&e))?
+        let r = a.range();
+        edits.push((r.start, r.len(), String::new()));
+    }
+    let mut ellipses: Vec<String> = Vec::new();
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        let tag = node.tag_name();
+        let svg_ns = tag.namespace() == Some("http://www.w3.org/2000/svg");
+        if !(svg_ns && matches!(tag.name(), "circle" | "ellipse")) {
+            continue;
         }
-        None => doc,
+        match node.attribute("id") {
+            Some(id) if !id.is_empty() => ellipses.push(id.to_string()),
+            _ => {
+                let id = format!("{ELLIPSE_ID}{}", ellipses.len());
+                // after "<" and the qualified tag name
+                let at = node.range().start
+                    + 1
+                    + text[node.range().start + 1..]
+                        .find(|c: char| c.is_whitespace() || c == '/' || c == '>')
+                        .unwrap_or(0);
+                edits.push((at, 0, format!(" id=\"{id}\"")));
+                ellipses.push(id);
+            }
+        }
+    }
+    let edited;
+    let doc = if edits.is_empty() {
+        doc
+    } else {
+        edits.sort_by_key(|e| e.0);
+        let mut t = String::with_capacity(text.len() + 32 * edits.len());
+        let mut pos = 0;
+        for (at, removed, insert) in &edits {
+            t.push_str(&text[pos..*at]);
+            t.push_str(insert);
+            pos = at + removed;
+        }
+        t.push_str(&text[pos..]);
+        edited = t;
+        roxmltree::Document::parse_with_options(&edited, xml_opt()).map_err(|e| svg_err(&e))?
     };
     let tree =
         usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| svg_err(&e))?;
     let mut out = Vec::new();
     let mut shape = 0usize;
-    collect(tree.root(), tolerance, &mut shape, &mut out);
+    collect(tree.root(), tolerance, &ellipses, &mut shape, &mut out);
     Ok(out)
 }
 
-fn collect(g: &usvg::Group, tolerance: f64, shape: &mut usize, out: &mut Vec<Subpath>) {
+fn collect(
+    g: &usvg::Group,
+    tolerance: f64,
+    ellipses: &[String],
+    shape: &mut usize,
+    out: &mut Vec<Subpath>,
+) {
     for node in g.children() {
         match node {
-            usvg::Node::Group(g) => collect(g, tolerance, shape, out),
+            usvg::Node::Group(g) => collect(g, tolerance, ellipses, shape, out),
             usvg::Node::Path(p) => {
                 *shape += 1;
-                let id = if p.id().is_empty() {
+                let id = if p.id().is_empty() || p.id().starts_with(ELLIPSE_ID) {
                     format!("<shape {shape}>")
                 } else {
                     p.id().to_string()
                 };
-                let subs = flatten(&to_kurbo(p.data(), p.abs_transform()), tolerance);
+                let is_ellipse = !p.id().is_empty() && ellipses.iter().any(|e| e == p.id());
+                let subs = match exact_ellipse(p, tolerance).filter(|_| is_ellipse) {
+                    Some(points) => vec![(points, true)],
+                    None => flatten(&to_kurbo(p.data(), p.abs_transform()), tolerance),
+                };
                 let many = subs.len() > 1;
                 for (k, (points, closed)) in subs.into_iter().enumerate() {
                     let id = if many {
@@ -153,6 +200,42 @@ fn collect(g: &usvg::Group, tolerance: f64, shape: &mut usize, out: &mut Vec<Sub
             _ => {}
         }
     }
+}
+
+/// Most points of one flattened ellipse.
+const MAX_ELLIPSE_POINTS: usize = 1 << 20;
+
+/// The exact ellipse of a `circle`/`ellipse` element (its local bounding
+/// box: usvg builds it from four arcs through the extreme points), under
+/// the path's absolute transform, sampled so that every chord is within
+/// `tolerance`: for `x(t) = c + A cos t + B sin t` the chord error of a
+/// step `dt` is at most `(|A| + |B|) dt^2 / 8`.
+fn exact_ellipse(p: &usvg::Path, tolerance: f64) -> Option<Vec<[f64; 2]>> {
+    let b = p.data().bounds();
+    let (cx, cy) = (
+        0.5 * (b.left() + b.right()) as f64,
+        0.5 * (b.top() + b.bottom()) as f64,
+    );
+    let (rx, ry) = (0.5 * b.width() as f64, 0.5 * b.height() as f64);
+    let t = p.abs_transform();
+    let (sx, ky, kx, sy) = (t.sx as f64, t.ky as f64, t.kx as f64, t.sy as f64);
+    let map = |x: f64, y: f64| [sx * x + kx * y + t.tx as f64, ky * x + sy * y + t.ty as f64];
+    let a = [sx * rx, ky * rx];
+    let bb = [kx * ry, sy * ry];
+    let size = a[0].hypot(a[1]) + bb[0].hypot(bb[1]);
+    if !(size.is_finite() && size > 0.0) {
+        return None;
+    }
+    let dt = (8.0 * tolerance / size).sqrt();
+    let n = ((2.0 * std::f64::consts::PI / dt).ceil() as usize).clamp(8, MAX_ELLIPSE_POINTS);
+    Some(
+        (0..n)
+            .map(|k| {
+                let th = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                map(cx + rx * th.cos(), cy + ry * th.sin())
+            })
+            .collect(),
+    )
 }
 
 /// The path with the affine transform applied (before flattening, so the

@@ -290,6 +290,51 @@ fn svg_applies_transforms_flattens_curves_and_reads_cuts() {
 }
 
 #[test]
+fn svg_arcs_and_ellipses_are_flattened_within_tolerance() {
+    let tol_model = 1e-4;
+    // a circle of radius 30 centred at (0, 0) as two `A` arcs: usvg's cubic
+    // approximation adds up to USVG_ARC_REL * r
+    let arcs = r#"<svg xmlns="http://www.w3.org/2000/svg"><path id="o" d="M 30 0 A 30 30 0 0 1 -30 0 A 30 30 0 0 1 30 0 Z"/></svg>"#;
+    // an ellipse without id, rotated: exact conic
+    let ell = r#"<svg xmlns="http://www.w3.org/2000/svg"><ellipse cx="0" cy="0" rx="30" ry="10" transform="rotate(30)"/></svg>"#;
+    let s = parse_svg(arcs, View::Front, tol_model).expect("arcs");
+    let worst = s
+        .outline
+        .points()
+        .iter()
+        .map(|p| (p[0].hypot(p[1]) - 30.0).abs())
+        .fold(0.0, f64::max);
+    assert!(
+        worst <= tol_model + USVG_ARC_REL * 30.0,
+        "arc deviation {worst}"
+    );
+    let e = parse_svg(ell, View::Front, tol_model).expect("ellipse");
+    let (c, s30) = ((PI / 6.0).cos(), (PI / 6.0).sin());
+    let n = e.outline.len();
+    let pts = e.outline.points();
+    for i in 0..n {
+        let (a, b) = (pts[i], pts[(i + 1) % n]);
+        for q in [a, [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]] {
+            // back to the ellipse's frame (model y = -svg y)
+            let (x, y) = (q[0], -q[1]);
+            let (u, v) = (c * x + s30 * y, -s30 * x + c * y);
+            let level = ((u / 30.0).powi(2) + (v / 10.0).powi(2)).sqrt();
+            // distance to the ellipse is at most (level - 1) * 30 in the
+            // outward direction and (1 - level) * 10 inward
+            let dev = if level > 1.0 {
+                (level - 1.0) * 30.0
+            } else {
+                (1.0 - level) * 10.0
+            };
+            assert!(
+                dev <= tol_model + SVG_ROUNDING * 30.0,
+                "ellipse deviation {dev}"
+            );
+        }
+    }
+}
+
+#[test]
 fn svg_rect_and_file_with_groups() {
     let svg = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect id="r" x="1" y="2" width="3" height="4" transform="rotate(90)"/></svg>"#;
     let s = parse_svg(svg, View::Side, 1e-3).expect("rect");
@@ -390,6 +435,9 @@ fn svg_and_json_round_trip() {
         }
         let j = parse_json(&to_json(&p)).expect("json reads back");
         assert_eq!(j, p);
+        let embedded: Profile =
+            serde_json::from_str(&serde_json::to_string(&p).expect("ser")).expect("de");
+        assert_eq!(embedded, p);
     }
     assert!(matches!(
         parse_json(r#"{"view": "front", "points": [[0,0],[1,0],[0,1]], "extra": 1}"#),
@@ -398,6 +446,17 @@ fn svg_and_json_round_trip() {
     assert!(matches!(
         parse_json(r#"{"view": "back", "points": [[0,0],[1,0],[0,1]]}"#),
         Err(ProfileError::Json { .. })
+    ));
+    // deserialising validates
+    let bow = r#"{"view": "side", "points": [[0,0],[1,1],[1,0],[0,1]]}"#;
+    let e = serde_json::from_str::<Profile>(bow)
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(e.contains("intersects itself"), "{e}");
+    assert!(matches!(
+        parse_json(bow),
+        Err(ProfileError::SelfIntersecting { .. })
     ));
 }
 
