@@ -8,7 +8,9 @@
 //! $w_0 = T/A(r_p)$, $w_1 = T/B(r_q)$ ([`WeightMode::Paper`], default), then
 //! scales both by $\kappa = T / (w_0 A(r_{mid}) + w_1 B(r_{mid}))$ with
 //! $r_{mid}$ at $(R_p+R_q)/2$ above $(p+q)/2$. [`WeightMode::Exact`] solves
-//! the 2x2 system instead (no $\kappa$). Finally the weight at each
+//! the 2x2 system instead (no $\kappa$), with both weights kept
+//! non-negative ([`nonnegative_endpoint_weights`]: on short segments the
+//! system is nearly singular and its plain solution changes sign). Finally the weight at each
 //! skeletal endpoint is divided by the number of segments meeting there.
 //! The printed weight equations omit the $1/l$ of $F_t$ (ERRATA.md).
 //!
@@ -31,7 +33,7 @@ use nalgebra::{DMatrix, DVector};
 pub enum WeightMode {
     /// The paper's decoupled approximation plus the midpoint scale $\kappa$.
     Paper,
-    /// The exact 2x2 solve of both endpoint conditions.
+    /// The exact 2x2 solve of both endpoint conditions, weights $\ge 0$.
     Exact,
 }
 
@@ -111,9 +113,9 @@ pub fn segment_weights(
             seg.w1 *= kappa;
         }
         WeightMode::Exact => {
-            let det = ap * bq - bp * aq;
-            seg.w0 = threshold * (bq - bp) / det;
-            seg.w1 = threshold * (ap - aq) / det;
+            let [w0, w1] = nonnegative_endpoint_weights([[ap, bp], [aq, bq]], threshold);
+            seg.w0 = w0;
+            seg.w1 = w1;
         }
     }
     if !(seg.w0.is_finite() && seg.w1.is_finite()) {
@@ -123,6 +125,51 @@ pub fn segment_weights(
         )));
     }
     Ok(seg)
+}
+
+/// The exact endpoint weights: $\min_{w \ge 0} \|M w - T\mathbf 1\|$ for
+/// the 2x2 system $M = [[A(r_p), B(r_p)], [A(r_q), B(r_q)]]$ of both
+/// endpoint conditions.
+///
+/// The unconstrained solve is the answer when both weights come out
+/// non-negative. On a segment that is short against its radius (or under
+/// a wide kernel, small $s$) the two rows are nearly equal, the system is
+/// nearly singular and its solution is a large positive weight at one end
+/// and a large negative one at the other: a kernel weight that changes sign
+/// along the segment, so its field is negative on one side. The global fit
+/// ($\lambda \ge 0$) cannot undo that, and a near-circular stroke was
+/// reconstructed with an RMS error of 87 % of $T$ (issue 16). With the sign
+/// constraint the minimum lies on a face $w_0 = 0$ or $w_1 = 0$ (Karush-Kuhn-
+/// Tucker: the unconstrained minimum is infeasible and the problem is
+/// convex), a one-variable least-squares problem each; the better face wins.
+pub fn nonnegative_endpoint_weights(m: [[f64; 2]; 2], threshold: f64) -> [f64; 2] {
+    let [[ap, bp], [aq, bq]] = m;
+    let det = ap * bq - bp * aq;
+    if det != 0.0 {
+        let w0 = threshold * (bq - bp) / det;
+        let w1 = threshold * (ap - aq) / det;
+        if w0 >= 0.0 && w1 >= 0.0 && w0.is_finite() && w1.is_finite() {
+            return [w0, w1];
+        }
+    }
+    // one column at a time: w = T (c . 1) / (c . c), clamped at 0
+    let face = |c0: f64, c1: f64| -> (f64, f64) {
+        let cc = c0 * c0 + c1 * c1;
+        let w = if cc > 0.0 {
+            (threshold * (c0 + c1) / cc).max(0.0)
+        } else {
+            0.0
+        };
+        let r = (c0 * w - threshold).powi(2) + (c1 * w - threshold).powi(2);
+        (w, r)
+    };
+    let (w0, r0) = face(ap, aq);
+    let (w1, r1) = face(bp, bq);
+    if r0 <= r1 {
+        [w0, 0.0]
+    } else {
+        [0.0, w1]
+    }
 }
 
 /// Weights of all segments, divided at joints when `divide_at_joints`.

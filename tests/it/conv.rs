@@ -813,3 +813,32 @@ fn sliver_sleeves_get_no_node() {
     let built = sketch::build(&raw, &Default::default()).expect("build");
     assert!(built.fit.rms_rel_error.is_finite());
 }
+
+/// The option sweep's failing case of issue 16: a near-circular ellipse
+/// with exact 2x2 weights, division at joints and Hildreth-d'Esopo.
+#[test]
+fn near_circular_ellipse_with_exact_weights_is_reconstructed() {
+    use pdesculpt::conv::fit::{Solver, WeightMode};
+    let st = shapes::ellipse(1.1043640902746836, 1.190488019596483, 200);
+    let mut o = sketch::ConvOptions {
+        threshold: 0.5,
+        s_scale: 0.5,
+        radius_factor: 0.5942389110515671,
+        divide_at_joints: true,
+        weights: WeightMode::Exact,
+        solver: Solver::HildrethDEsopo,
+        ..Default::default()
+    };
+    o.skeleton.overlap = 0.0;
+    let sk = sketch::build(&st, &o).expect("build");
+    // before the fix: rms 0.868 (exact 2x2 weights of opposite signs)
+    assert!(
+        sk.segments.iter().all(|s| s.w0 >= 0.0 && s.w1 >= 0.0),
+        "a negative weight"
+    );
+    assert!(
+        sk.fit.rms_rel_error < pdesculpt::conv::check::FIT_RMS_TOLERANCE,
+        "rms {}",
+        sk.fit.rms_rel_error
+    );
+}
