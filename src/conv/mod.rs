@@ -16,10 +16,13 @@
 //! surface nets). [`model`] places components on planes at depths, merges
 //! and carves them, and reads / writes the compact JSON model file.
 
+pub mod bvh;
 pub mod check;
 pub mod fit;
 pub mod kernel;
 pub mod model;
+pub mod narrow;
+pub mod sample;
 pub mod shapes;
 pub mod silhouette;
 pub mod skeleton;
