@@ -242,6 +242,78 @@ impl SegmentBvh {
         (lo, hi)
     }
 
+    /// The interaction list of the ball of radius `rho` around `x`: the
+    /// segments to evaluate exactly at its points, and bounds `(lo, hi)`,
+    /// valid on the whole ball, of the sum of all other segments, with
+    /// `hi - lo <= budget`. [`Self::near_field`] of the list plus the
+    /// midpoint of the bounds is then the field within `budget / 2`
+    /// anywhere in the ball.
+    pub fn near_list(
+        &self,
+        x: [f64; 3],
+        rho: f64,
+        budget: f64,
+        near: &mut Vec<usize>,
+    ) -> (f64, f64) {
+        near.clear();
+        if self.nodes.is_empty() {
+            return (0.0, 0.0);
+        }
+        let per_mass = if self.total_mass > 0.0 {
+            budget / self.total_mass
+        } else {
+            0.0
+        };
+        let (mut lo, mut hi) = (0.0, 0.0);
+        let mut stack = [0usize; 64];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = &self.nodes[stack[top]];
+            let dc = norm(sub(x, node.centre));
+            let dmin = (dc - node.radius - rho).max(0.0);
+            let dmax = dc + node.radius + rho;
+            let near_k = (
+                node.pos * kernel(dmin, node.s_min),
+                node.neg * kernel(dmin, node.s_min),
+            );
+            let far_k = (
+                node.pos * kernel(dmax, node.s_max),
+                node.neg * kernel(dmax, node.s_max),
+            );
+            let (l, h) = (far_k.0 - near_k.1, near_k.0 - far_k.1);
+            if h - l <= per_mass * (node.pos + node.neg) {
+                lo += l;
+                hi += h;
+                continue;
+            }
+            match node.kids {
+                Ok([a, b]) if top + 2 <= stack.len() => {
+                    stack[top] = a;
+                    stack[top + 1] = b;
+                    top += 2;
+                }
+                Ok(_) => {
+                    lo += l;
+                    hi += h;
+                }
+                Err(i) => near.push(i),
+            }
+        }
+        (lo, hi)
+    }
+
+    /// The exact field at `x` of the segments `list` (from
+    /// [`Self::near_list`]).
+    pub fn near_field(&self, list: &[usize], x: [f64; 3]) -> f64 {
+        list.iter()
+            .map(|&i| {
+                let (seg, s) = &self.segments[i];
+                seg.field(x, *s)
+            })
+            .sum()
+    }
+
     /// The field at `x` within `budget / 2` (midpoint of [`Self::interval`]
     /// at radius 0).
     pub fn field(&self, x: [f64; 3], budget: f64) -> f64 {

@@ -203,6 +203,9 @@ pub struct FitReport {
     /// RMS of $(F(r_j) - T)/T$.
     pub rms_rel_error: f64,
     pub iterations: usize,
+    /// The solver met its stopping rule (`false`: it ran into its
+    /// iteration cap and `lambda` is its last iterate).
+    pub converged: bool,
     pub seconds: f64,
 }
 
@@ -232,8 +235,30 @@ pub const HILDRETH_MAX_SWEEPS: usize = 20_000;
 /// Relative change at which the iterative solvers stop.
 pub const SOLVER_STOP: f64 = 1e-12;
 
-fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> usize {
+/// Hildreth-d'Esopo stops when the optimality (Karush-Kuhn-Tucker)
+/// residual of $\min_{x \ge 0} \frac12 x^TQx - c^Tx$, the projected
+/// gradient, is below this fraction of $\max_i |c_i|$.
+pub const HILDRETH_KKT_STOP: f64 = 1e-9;
+
+/// The projected gradient's largest entry: $|g_i|$ where $x_i > 0$,
+/// $\max(0, -g_i)$ where $x_i = 0$, $g = Qx - c$.
+fn kkt_residual(q: &DMatrix<f64>, c: &DVector<f64>, x: &DVector<f64>) -> f64 {
+    let g = q * x - c;
+    (0..x.len())
+        .map(|i| {
+            if x[i] > 0.0 {
+                g[i].abs()
+            } else {
+                (-g[i]).max(0.0)
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Cyclic projected coordinate descent; (sweeps, converged).
+fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> (usize, bool) {
     let n = c.len();
+    let cmax = c.amax().max(f64::MIN_POSITIVE);
     for sweep in 0..HILDRETH_MAX_SWEEPS {
         let mut change: f64 = 0.0;
         let mut scale: f64 = 0.0;
@@ -247,19 +272,22 @@ fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> usize {
             x[i] = new;
             scale = scale.max(new.abs());
         }
-        if change <= SOLVER_STOP * scale.max(1.0) {
-            return sweep + 1;
+        if change <= SOLVER_STOP * scale.max(1.0)
+            || (sweep % 8 == 7 && kkt_residual(q, c, x) <= HILDRETH_KKT_STOP * cmax)
+        {
+            return (sweep + 1, true);
         }
     }
-    HILDRETH_MAX_SWEEPS
+    (HILDRETH_MAX_SWEEPS, false)
 }
 
-fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
+fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize, bool) {
     let n = a.ncols();
     let mut x = DVector::zeros(n);
     let mut passive = vec![false; n];
     let tol = 1e-12 * a.norm() * b.norm().max(1.0);
     let mut iters = 0;
+    let mut converged = false;
     let ls = |passive: &[bool]| -> DVector<f64> {
         let cols: Vec<usize> = (0..n).filter(|&i| passive[i]).collect();
         let sub = DMatrix::from_fn(a.nrows(), cols.len(), |r, c| a[(r, cols[c])]);
@@ -278,7 +306,10 @@ fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
         let cand = (0..n)
             .filter(|&i| !passive[i] && w[i] > tol)
             .max_by(|&i, &j| w[i].total_cmp(&w[j]));
-        let Some(t) = cand else { break };
+        let Some(t) = cand else {
+            converged = true;
+            break;
+        };
         passive[t] = true;
         loop {
             iters += 1;
@@ -305,16 +336,19 @@ fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
             }
         }
     }
-    (x, iters)
+    (x, iters, converged)
 }
 
-fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> usize {
+/// Largest iteration count of the projected Levenberg-Marquardt solver.
+pub const LM_MAX_ITERATIONS: usize = 500;
+
+fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> (usize, bool) {
     let jtj = a.transpose() * a;
     let cost = |x: &DVector<f64>| (a * x - b).norm_squared();
     let mut mu = 1e-3;
     let mut c = cost(x);
     let n = x.len();
-    for it in 0..500 {
+    for it in 0..LM_MAX_ITERATIONS {
         let g = a.transpose() * (a * &*x - b);
         let mut m = jtj.clone();
         for i in 0..n {
@@ -333,16 +367,17 @@ fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> usi
             c = ct;
             mu = (mu / 3.0).max(1e-12);
             if done {
-                return it + 1;
+                return (it + 1, true);
             }
         } else {
             mu *= 4.0;
             if mu > 1e12 {
-                return it + 1;
+                // no descent step left: stationary within rounding
+                return (it + 1, true);
             }
         }
     }
-    500
+    (LM_MAX_ITERATIONS, false)
 }
 
 /// Solves the global interpolation for `segments` at `points`.
@@ -360,20 +395,20 @@ pub fn global_fit(
     let f = field_matrix(segments, points, s);
     let tv = DVector::from_element(points.len(), threshold);
     let ones = DVector::from_element(segments.len(), 1.0);
-    let (lambda, iterations) = match solver {
-        Solver::None => (ones, 0),
+    let (lambda, iterations, converged) = match solver {
+        Solver::None => (ones, 0, true),
         Solver::HildrethDEsopo => {
             let q = f.transpose() * &f;
             let c = f.transpose() * &tv;
             let mut x = ones;
-            let it = hildreth(&q, &c, &mut x);
-            (x, it)
+            let (it, ok) = hildreth(&q, &c, &mut x);
+            (x, it, ok)
         }
         Solver::LawsonHanson => lawson_hanson(&f, &tv),
         Solver::ProjectedLm => {
             let mut x = ones;
-            let it = projected_lm(&f, &tv, &mut x);
-            (x, it)
+            let (it, ok) = projected_lm(&f, &tv, &mut x);
+            (x, it, ok)
         }
     };
     let seconds = t0.elapsed().as_secs_f64();
@@ -389,6 +424,7 @@ pub fn global_fit(
         max_rel_error,
         rms_rel_error,
         iterations,
+        converged,
         seconds,
     })
 }

@@ -19,6 +19,7 @@
 pub mod bvh;
 pub mod check;
 pub mod fit;
+pub mod incremental;
 pub mod kernel;
 pub mod model;
 pub mod narrow;

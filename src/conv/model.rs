@@ -18,8 +18,9 @@
 //! groups). The file stores only strokes, planes, transforms and operations,
 //! so it rebuilds at any resolution.
 
+use super::incremental::SketchCache;
 use super::kernel::Segment;
-use super::sketch::{self, ConvOptions, Sketch};
+use super::sketch::{ConvOptions, Sketch};
 use super::ConvError;
 use serde::{Deserialize, Serialize};
 
@@ -46,6 +47,7 @@ impl View {
 
 /// A rotation by `degrees` about `axis` (through the component's centroid).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Rotation {
     pub axis: [f64; 3],
     pub degrees: f64,
@@ -53,7 +55,7 @@ pub struct Rotation {
 
 /// One sketched component.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Component {
     pub name: String,
     /// Closed stroke in screen coordinates of its view plane.
@@ -69,7 +71,7 @@ pub struct Component {
 
 /// A modeling operation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "op", rename_all = "lowercase")]
+#[serde(tag = "op", rename_all = "lowercase", deny_unknown_fields)]
 pub enum Operation {
     Merge { a: String, b: String },
     Carve { target: String, tool: String },
@@ -86,7 +88,7 @@ pub enum Polygonizer {
 
 /// The model file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Model {
     pub name: String,
     pub options: ConvOptions,
@@ -162,6 +164,12 @@ impl Model {
 
     /// Reconstructs every component and resolves the operations.
     pub fn build(&self) -> Result<BuiltModel, ConvError> {
+        self.build_cached(&mut SketchCache::default())
+    }
+
+    /// [`Self::build`] reusing the sketches of `cache` whose stroke and
+    /// options are unchanged (copies and unedited strokes are not refitted).
+    pub fn build_cached(&self, cache: &mut SketchCache) -> Result<BuiltModel, ConvError> {
         let n = self.components.len();
         let mut parent: Vec<usize> = (0..n).collect();
         fn find(p: &mut [usize], i: usize) -> usize {
@@ -202,7 +210,8 @@ impl Model {
                 }
                 None => c,
             };
-            let sk = sketch::build(&src.stroke, &self.options)
+            let sk = cache
+                .sketch(&src.stroke, &self.options)
                 .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
             let frame = src.view.frame();
             let copied_depth = c

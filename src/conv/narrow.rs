@@ -30,6 +30,9 @@ pub struct NarrowStats {
     pub evaluated: usize,
     pub boxes_skipped: usize,
     pub boxes_tested: usize,
+    /// Exact segment evaluations (the segments near a leaf times its
+    /// nodes evaluated).
+    pub segment_evaluations: usize,
 }
 
 struct Band<'a> {
@@ -42,6 +45,7 @@ struct Band<'a> {
     values: Vec<f64>,
     exact: Vec<bool>,
     stats: NarrowStats,
+    near: Vec<usize>,
 }
 
 impl Band<'_> {
@@ -60,25 +64,30 @@ impl Band<'_> {
     /// Cells `lo..hi` (per axis), nodes `lo..=hi`.
     fn visit(&mut self, lo: [usize; 3], hi: [usize; 3]) {
         let n = [0, 1, 2].map(|k| hi[k] - lo[k]);
+        let a = self.at(lo[0], lo[1], lo[2]);
+        let b = self.at(hi[0], hi[1], hi[2]);
+        let centre = [0, 1, 2].map(|k| 0.5 * (a[k] + b[k]));
+        let rho = 0.5 * crate::mesh::norm(crate::mesh::sub(b, a));
         if n.iter().all(|&c| c <= LEAF_CELLS) {
+            let mut near = std::mem::take(&mut self.near);
+            let (flo, fhi) = self.bvh.near_list(centre, rho, self.budget, &mut near);
+            let far = 0.5 * (flo + fhi);
             for k in lo[2]..=hi[2] {
                 for j in lo[1]..=hi[1] {
                     for i in lo[0]..=hi[0] {
                         let id = self.index(i, j, k);
                         if !self.exact[id] {
-                            self.values[id] = self.bvh.field(self.at(i, j, k), self.budget);
+                            self.values[id] = far + self.bvh.near_field(&near, self.at(i, j, k));
                             self.exact[id] = true;
                             self.stats.evaluated += 1;
+                            self.stats.segment_evaluations += near.len();
                         }
                     }
                 }
             }
+            self.near = near;
             return;
         }
-        let a = self.at(lo[0], lo[1], lo[2]);
-        let b = self.at(hi[0], hi[1], hi[2]);
-        let centre = [0, 1, 2].map(|k| 0.5 * (a[k] + b[k]));
-        let rho = 0.5 * crate::mesh::norm(crate::mesh::sub(b, a));
         let (flo, fhi) = self.bvh.interval(centre, rho, self.budget);
         self.stats.boxes_tested += 1;
         let fill = if flo > self.threshold {
@@ -159,6 +168,7 @@ pub fn sample(
             nodes: total,
             ..Default::default()
         },
+        near: Vec::new(),
     };
     band.visit([0; 3], [dims[0] - 1, dims[1] - 1, dims[2] - 1]);
     let stats = band.stats;

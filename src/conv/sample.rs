@@ -230,3 +230,35 @@ impl BuiltModel {
         Ok(Some(m))
     }
 }
+
+/// Largest rounding error of an f32 coordinate in a written mesh file,
+/// as a fraction of the mesh's size (bounding-box diagonal).
+pub const OUTPUT_PRECISION: f64 = 1e-4;
+
+/// Refuses a mesh whose coordinates lose its shape when stored as f32 (as
+/// every mesh file writer does): a model far from the origin relative to
+/// its size (e.g. shifted by 1e9). Rounding to f32 moves a coordinate $x$
+/// by up to $|x| 2^{-24}$.
+pub fn check_f32_output(mesh: &Mesh) -> Result<(), ConvError> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in &mesh.positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let size = crate::mesh::norm(crate::mesh::sub(hi, lo));
+    let far = (0..3)
+        .map(|k| lo[k].abs().max(hi[k].abs()))
+        .fold(0.0, f64::max);
+    let err = far * f64::powi(2.0, -24);
+    if !(size.is_finite() && far.is_finite()) || err > OUTPUT_PRECISION * size {
+        return Err(ConvError::Model(format!(
+            "the surface lies {far:e} from the origin with a size of {size:e}: mesh files store \
+             f32 coordinates, which would move its points by up to {err:e} ({:.1e} of its size, \
+             limit {OUTPUT_PRECISION:e}); translate the model nearer the origin",
+            err / size
+        )));
+    }
+    Ok(())
+}
