@@ -259,6 +259,9 @@ fn kkt_residual(q: &DMatrix<f64>, c: &DVector<f64>, x: &DVector<f64>) -> f64 {
 fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> (usize, bool) {
     let n = c.len();
     let cmax = c.amax().max(f64::MIN_POSITIVE);
+    // the gradient Qx - c, updated by a column of the symmetric Q whenever
+    // one coordinate moves (recomputed at every optimality test)
+    let mut grad = q * &*x - c;
     for sweep in 0..HILDRETH_MAX_SWEEPS {
         let mut change: f64 = 0.0;
         let mut scale: f64 = 0.0;
@@ -266,11 +269,17 @@ fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> (usize,
             if q[(i, i)] <= 0.0 {
                 continue;
             }
-            let g = q.row(i).dot(&x.transpose()) - c[i];
-            let new = (x[i] - g / q[(i, i)]).max(0.0);
-            change = change.max((new - x[i]).abs());
+            let new = (x[i] - grad[i] / q[(i, i)]).max(0.0);
+            let delta = new - x[i];
+            if delta != 0.0 {
+                grad.axpy(delta, &q.column(i), 1.0);
+            }
+            change = change.max(delta.abs());
             x[i] = new;
             scale = scale.max(new.abs());
+        }
+        if sweep % 8 == 7 {
+            grad = q * &*x - c;
         }
         if change <= SOLVER_STOP * scale.max(1.0)
             || (sweep % 8 == 7 && kkt_residual(q, c, x) <= HILDRETH_KKT_STOP * cmax)

@@ -18,6 +18,7 @@
 
 pub mod bvh;
 pub mod check;
+pub mod check_fast;
 pub mod fit;
 pub mod incremental;
 pub mod kernel;

@@ -170,6 +170,13 @@ impl Model {
     /// [`Self::build`] reusing the sketches of `cache` whose stroke and
     /// options are unchanged (copies and unedited strokes are not refitted).
     pub fn build_cached(&self, cache: &mut SketchCache) -> Result<BuiltModel, ConvError> {
+        let strokes: Vec<&[[f64; 2]]> = self
+            .components
+            .iter()
+            .filter(|c| c.copy_of.is_none())
+            .map(|c| c.stroke.as_slice())
+            .collect();
+        cache.prefetch(&strokes, &self.options);
         let n = self.components.len();
         let mut parent: Vec<usize> = (0..n).collect();
         fn find(p: &mut [usize], i: usize) -> usize {
