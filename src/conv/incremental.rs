@@ -95,7 +95,7 @@ impl SketchCache {
     /// Drops the sketches not used by `keep` (strokes of the current model).
     pub fn retain(&mut self, keep: &[&[[f64; 2]]]) {
         self.entries
-            .retain(|(s, _, _, _)| keep.iter().any(|k| *k == s.as_slice()));
+            .retain(|(s, _, _, _)| keep.contains(&s.as_slice()));
     }
 }
 
