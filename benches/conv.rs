@@ -1,9 +1,15 @@
-//! Benchmarks of the conv family: polygonisation throughput of marching
+//! Benchmarks of the conv family: the whole teddy build (fit + sample +
+//! polygonise) with the narrow-band sampler against the brute-force
+//! sampler at 96 and 160 cells; polygonisation throughput of marching
 //! tetrahedra and surface nets (ours) against the fast-surface-nets crate on
-//! the same sampled field, and the closed-form field against quadrature.
+//! the same sampled field; and the closed-form field against quadrature.
+//!
+//! Run one group: `cargo bench --bench conv -- conv_teddy --warm-up-time 1
+//! --measurement-time 3`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use pdesculpt::conv::model::{Component, Model};
+use pdesculpt::conv::model::{Component, Model, Polygonizer};
+use pdesculpt::conv::sample::Sampler;
 use pdesculpt::conv::{kernel, shapes};
 use pdesculpt::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid};
 
@@ -64,5 +70,33 @@ fn field(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, polygonize, field);
+fn teddy(c: &mut Criterion) {
+    let text = include_str!("../data/conv/teddy.json");
+    let m = Model::from_json(text).expect("teddy");
+    let t = m.options.threshold;
+    let build = |res: usize, sampler: Sampler| {
+        let b = m.build().expect("build");
+        b.polygonize_with(res, t, Polygonizer::MarchingTetrahedra, sampler)
+            .expect("mesh")
+            .triangles
+            .len()
+    };
+    for res in [96usize, 160] {
+        let mut g = c.benchmark_group(format!("conv_teddy_{res}"));
+        g.sample_size(10);
+        g.bench_function("narrow_band", |b| {
+            b.iter(|| build(res, Sampler::NarrowBand))
+        });
+        g.bench_function("brute_force", |b| b.iter(|| build(res, Sampler::Reference)));
+        g.finish();
+    }
+    let mut g = c.benchmark_group("conv_teddy_fit_only");
+    g.sample_size(10);
+    g.bench_function("build", |b| {
+        b.iter(|| m.build().expect("build").groups.len())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, teddy, polygonize, field);
 criterion_main!(benches);

@@ -91,6 +91,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let built = m.build()?;
             let mesh = built.polygonize(resolution, m.options.threshold, method)?;
             let secs = t0.elapsed().as_secs_f64();
+            pdesculpt::conv::sample::check_f32_output(&mesh)?;
             let unit = units.write_input(&mesh, &output)?;
             let topo = report(&mesh);
             let comps: Vec<serde_json::Value> = built
@@ -105,6 +106,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                         "s": c.sketch.s,
                         "fit_max_rel_error": c.sketch.fit.max_rel_error,
                         "fit_rms_rel_error": c.sketch.fit.rms_rel_error,
+                        "fit_iterations": c.sketch.fit.iterations,
+                        "fit_converged": c.sketch.fit.converged,
                     })
                 })
                 .collect();
@@ -130,13 +133,21 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 );
                 for c in &built.components {
                     println!(
-                        "  {}: group {}, depth {:.3}, {} segments, fit |F-T|/T max {:.2e} rms {:.2e}",
+                        "  {}: group {}, depth {:.3}, {} segments, fit |F-T|/T max {:.2e} rms {:.2e}{}",
                         c.name,
                         c.group,
                         c.depth,
                         c.segments.len(),
                         c.sketch.fit.max_rel_error,
-                        c.sketch.fit.rms_rel_error
+                        c.sketch.fit.rms_rel_error,
+                        if c.sketch.fit.converged {
+                            String::new()
+                        } else {
+                            format!(
+                                " (solver stopped at its cap of {} iterations, not converged)",
+                                c.sketch.fit.iterations
+                            )
+                        }
                     );
                 }
             }
@@ -168,6 +179,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let f = seg.field(r, s);
             let (f1, ft) = seg.basis(r, s);
             let grad = seg.gradient(r, s);
+            if !(f.is_finite()
+                && f1.is_finite()
+                && ft.is_finite()
+                && grad.iter().all(|g| g.is_finite()))
+            {
+                bail!(
+                    "the field is not representable for --s {s} at --at {r:?} (s times the distances \
+                     over- or underflows); use s and coordinates with s * |at - segment| between 1e-100 and 1e100"
+                );
+            }
             let quad = kernel::field_by_quadrature(&seg, r, s, 1e-14 * f.abs().max(1e-300));
             if json {
                 super::print_json(&serde_json::json!({

@@ -430,5 +430,6 @@ pub fn checks() -> Vec<Check> {
     weight_checks(&mut out);
     fit_checks(&mut out);
     polygon_checks(&mut out);
+    out.extend(super::check_fast::checks());
     out
 }

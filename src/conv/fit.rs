@@ -8,7 +8,9 @@
 //! $w_0 = T/A(r_p)$, $w_1 = T/B(r_q)$ ([`WeightMode::Paper`], default), then
 //! scales both by $\kappa = T / (w_0 A(r_{mid}) + w_1 B(r_{mid}))$ with
 //! $r_{mid}$ at $(R_p+R_q)/2$ above $(p+q)/2$. [`WeightMode::Exact`] solves
-//! the 2x2 system instead (no $\kappa$). Finally the weight at each
+//! the 2x2 system instead (no $\kappa$), with both weights kept
+//! non-negative ([`nonnegative_endpoint_weights`]: on short segments the
+//! system is nearly singular and its plain solution changes sign). Finally the weight at each
 //! skeletal endpoint is divided by the number of segments meeting there.
 //! The printed weight equations omit the $1/l$ of $F_t$ (ERRATA.md).
 //!
@@ -31,7 +33,7 @@ use nalgebra::{DMatrix, DVector};
 pub enum WeightMode {
     /// The paper's decoupled approximation plus the midpoint scale $\kappa$.
     Paper,
-    /// The exact 2x2 solve of both endpoint conditions.
+    /// The exact 2x2 solve of both endpoint conditions, weights $\ge 0$.
     Exact,
 }
 
@@ -111,9 +113,9 @@ pub fn segment_weights(
             seg.w1 *= kappa;
         }
         WeightMode::Exact => {
-            let det = ap * bq - bp * aq;
-            seg.w0 = threshold * (bq - bp) / det;
-            seg.w1 = threshold * (ap - aq) / det;
+            let [w0, w1] = nonnegative_endpoint_weights([[ap, bp], [aq, bq]], threshold);
+            seg.w0 = w0;
+            seg.w1 = w1;
         }
     }
     if !(seg.w0.is_finite() && seg.w1.is_finite()) {
@@ -123,6 +125,51 @@ pub fn segment_weights(
         )));
     }
     Ok(seg)
+}
+
+/// The exact endpoint weights: $\min_{w \ge 0} \|M w - T\mathbf 1\|$ for
+/// the 2x2 system $M = [[A(r_p), B(r_p)], [A(r_q), B(r_q)]]$ of both
+/// endpoint conditions.
+///
+/// The unconstrained solve is the answer when both weights come out
+/// non-negative. On a segment that is short against its radius (or under
+/// a wide kernel, small $s$) the two rows are nearly equal, the system is
+/// nearly singular and its solution is a large positive weight at one end
+/// and a large negative one at the other: a kernel weight that changes sign
+/// along the segment, so its field is negative on one side. The global fit
+/// ($\lambda \ge 0$) cannot undo that, and a near-circular stroke was
+/// reconstructed with an RMS error of 87 % of $T$ (issue 16). With the sign
+/// constraint the minimum lies on a face $w_0 = 0$ or $w_1 = 0$ (Karush-Kuhn-
+/// Tucker: the unconstrained minimum is infeasible and the problem is
+/// convex), a one-variable least-squares problem each; the better face wins.
+pub fn nonnegative_endpoint_weights(m: [[f64; 2]; 2], threshold: f64) -> [f64; 2] {
+    let [[ap, bp], [aq, bq]] = m;
+    let det = ap * bq - bp * aq;
+    if det != 0.0 {
+        let w0 = threshold * (bq - bp) / det;
+        let w1 = threshold * (ap - aq) / det;
+        if w0 >= 0.0 && w1 >= 0.0 && w0.is_finite() && w1.is_finite() {
+            return [w0, w1];
+        }
+    }
+    // one column at a time: w = T (c . 1) / (c . c), clamped at 0
+    let face = |c0: f64, c1: f64| -> (f64, f64) {
+        let cc = c0 * c0 + c1 * c1;
+        let w = if cc > 0.0 {
+            (threshold * (c0 + c1) / cc).max(0.0)
+        } else {
+            0.0
+        };
+        let r = (c0 * w - threshold).powi(2) + (c1 * w - threshold).powi(2);
+        (w, r)
+    };
+    let (w0, r0) = face(ap, aq);
+    let (w1, r1) = face(bp, bq);
+    if r0 <= r1 {
+        [w0, 0.0]
+    } else {
+        [0.0, w1]
+    }
 }
 
 /// Weights of all segments, divided at joints when `divide_at_joints`.
@@ -156,6 +203,9 @@ pub struct FitReport {
     /// RMS of $(F(r_j) - T)/T$.
     pub rms_rel_error: f64,
     pub iterations: usize,
+    /// The solver met its stopping rule (`false`: it ran into its
+    /// iteration cap and `lambda` is its last iterate).
+    pub converged: bool,
     pub seconds: f64,
 }
 
@@ -185,8 +235,33 @@ pub const HILDRETH_MAX_SWEEPS: usize = 20_000;
 /// Relative change at which the iterative solvers stop.
 pub const SOLVER_STOP: f64 = 1e-12;
 
-fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> usize {
+/// Hildreth-d'Esopo stops when the optimality (Karush-Kuhn-Tucker)
+/// residual of $\min_{x \ge 0} \frac12 x^TQx - c^Tx$, the projected
+/// gradient, is below this fraction of $\max_i |c_i|$.
+pub const HILDRETH_KKT_STOP: f64 = 1e-9;
+
+/// The projected gradient's largest entry: $|g_i|$ where $x_i > 0$,
+/// $\max(0, -g_i)$ where $x_i = 0$, $g = Qx - c$.
+fn kkt_residual(q: &DMatrix<f64>, c: &DVector<f64>, x: &DVector<f64>) -> f64 {
+    let g = q * x - c;
+    (0..x.len())
+        .map(|i| {
+            if x[i] > 0.0 {
+                g[i].abs()
+            } else {
+                (-g[i]).max(0.0)
+            }
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Cyclic projected coordinate descent; (sweeps, converged).
+fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> (usize, bool) {
     let n = c.len();
+    let cmax = c.amax().max(f64::MIN_POSITIVE);
+    // the gradient Qx - c, updated by a column of the symmetric Q whenever
+    // one coordinate moves (recomputed at every optimality test)
+    let mut grad = q * &*x - c;
     for sweep in 0..HILDRETH_MAX_SWEEPS {
         let mut change: f64 = 0.0;
         let mut scale: f64 = 0.0;
@@ -194,25 +269,34 @@ fn hildreth(q: &DMatrix<f64>, c: &DVector<f64>, x: &mut DVector<f64>) -> usize {
             if q[(i, i)] <= 0.0 {
                 continue;
             }
-            let g = q.row(i).dot(&x.transpose()) - c[i];
-            let new = (x[i] - g / q[(i, i)]).max(0.0);
-            change = change.max((new - x[i]).abs());
+            let new = (x[i] - grad[i] / q[(i, i)]).max(0.0);
+            let delta = new - x[i];
+            if delta != 0.0 {
+                grad.axpy(delta, &q.column(i), 1.0);
+            }
+            change = change.max(delta.abs());
             x[i] = new;
             scale = scale.max(new.abs());
         }
-        if change <= SOLVER_STOP * scale.max(1.0) {
-            return sweep + 1;
+        if sweep % 8 == 7 {
+            grad = q * &*x - c;
+        }
+        if change <= SOLVER_STOP * scale.max(1.0)
+            || (sweep % 8 == 7 && kkt_residual(q, c, x) <= HILDRETH_KKT_STOP * cmax)
+        {
+            return (sweep + 1, true);
         }
     }
-    HILDRETH_MAX_SWEEPS
+    (HILDRETH_MAX_SWEEPS, false)
 }
 
-fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
+fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize, bool) {
     let n = a.ncols();
     let mut x = DVector::zeros(n);
     let mut passive = vec![false; n];
     let tol = 1e-12 * a.norm() * b.norm().max(1.0);
     let mut iters = 0;
+    let mut converged = false;
     let ls = |passive: &[bool]| -> DVector<f64> {
         let cols: Vec<usize> = (0..n).filter(|&i| passive[i]).collect();
         let sub = DMatrix::from_fn(a.nrows(), cols.len(), |r, c| a[(r, cols[c])]);
@@ -231,7 +315,10 @@ fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
         let cand = (0..n)
             .filter(|&i| !passive[i] && w[i] > tol)
             .max_by(|&i, &j| w[i].total_cmp(&w[j]));
-        let Some(t) = cand else { break };
+        let Some(t) = cand else {
+            converged = true;
+            break;
+        };
         passive[t] = true;
         loop {
             iters += 1;
@@ -258,16 +345,19 @@ fn lawson_hanson(a: &DMatrix<f64>, b: &DVector<f64>) -> (DVector<f64>, usize) {
             }
         }
     }
-    (x, iters)
+    (x, iters, converged)
 }
 
-fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> usize {
+/// Largest iteration count of the projected Levenberg-Marquardt solver.
+pub const LM_MAX_ITERATIONS: usize = 500;
+
+fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> (usize, bool) {
     let jtj = a.transpose() * a;
     let cost = |x: &DVector<f64>| (a * x - b).norm_squared();
     let mut mu = 1e-3;
     let mut c = cost(x);
     let n = x.len();
-    for it in 0..500 {
+    for it in 0..LM_MAX_ITERATIONS {
         let g = a.transpose() * (a * &*x - b);
         let mut m = jtj.clone();
         for i in 0..n {
@@ -286,16 +376,17 @@ fn projected_lm(a: &DMatrix<f64>, b: &DVector<f64>, x: &mut DVector<f64>) -> usi
             c = ct;
             mu = (mu / 3.0).max(1e-12);
             if done {
-                return it + 1;
+                return (it + 1, true);
             }
         } else {
             mu *= 4.0;
             if mu > 1e12 {
-                return it + 1;
+                // no descent step left: stationary within rounding
+                return (it + 1, true);
             }
         }
     }
-    500
+    (LM_MAX_ITERATIONS, false)
 }
 
 /// Solves the global interpolation for `segments` at `points`.
@@ -313,20 +404,20 @@ pub fn global_fit(
     let f = field_matrix(segments, points, s);
     let tv = DVector::from_element(points.len(), threshold);
     let ones = DVector::from_element(segments.len(), 1.0);
-    let (lambda, iterations) = match solver {
-        Solver::None => (ones, 0),
+    let (lambda, iterations, converged) = match solver {
+        Solver::None => (ones, 0, true),
         Solver::HildrethDEsopo => {
             let q = f.transpose() * &f;
             let c = f.transpose() * &tv;
             let mut x = ones;
-            let it = hildreth(&q, &c, &mut x);
-            (x, it)
+            let (it, ok) = hildreth(&q, &c, &mut x);
+            (x, it, ok)
         }
         Solver::LawsonHanson => lawson_hanson(&f, &tv),
         Solver::ProjectedLm => {
             let mut x = ones;
-            let it = projected_lm(&f, &tv, &mut x);
-            (x, it)
+            let (it, ok) = projected_lm(&f, &tv, &mut x);
+            (x, it, ok)
         }
     };
     let seconds = t0.elapsed().as_secs_f64();
@@ -342,6 +433,7 @@ pub fn global_fit(
         max_rel_error,
         rms_rel_error,
         iterations,
+        converged,
         seconds,
     })
 }

@@ -16,10 +16,15 @@
 //! surface nets). [`model`] places components on planes at depths, merges
 //! and carves them, and reads / writes the compact JSON model file.
 
+pub mod bvh;
 pub mod check;
+pub mod check_fast;
 pub mod fit;
+pub mod incremental;
 pub mod kernel;
 pub mod model;
+pub mod narrow;
+pub mod sample;
 pub mod samples;
 pub mod shapes;
 pub mod silhouette;

@@ -18,11 +18,10 @@
 //! groups). The file stores only strokes, planes, transforms and operations,
 //! so it rebuilds at any resolution.
 
+use super::incremental::SketchCache;
 use super::kernel::Segment;
-use super::sketch::{self, ConvOptions, Sketch};
+use super::sketch::{ConvOptions, Sketch};
 use super::ConvError;
-use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid};
-use crate::mesh::Mesh;
 use serde::{Deserialize, Serialize};
 
 /// View plane of a stroke.
@@ -48,6 +47,7 @@ impl View {
 
 /// A rotation by `degrees` about `axis` (through the component's centroid).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Rotation {
     pub axis: [f64; 3],
     pub degrees: f64,
@@ -55,7 +55,7 @@ pub struct Rotation {
 
 /// One sketched component.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Component {
     pub name: String,
     /// Closed stroke in screen coordinates of its view plane.
@@ -71,7 +71,7 @@ pub struct Component {
 
 /// A modeling operation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "op", rename_all = "lowercase")]
+#[serde(tag = "op", rename_all = "lowercase", deny_unknown_fields)]
 pub enum Operation {
     Merge { a: String, b: String },
     Carve { target: String, tool: String },
@@ -88,7 +88,7 @@ pub enum Polygonizer {
 
 /// The model file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Model {
     pub name: String,
     pub options: ConvOptions,
@@ -164,6 +164,19 @@ impl Model {
 
     /// Reconstructs every component and resolves the operations.
     pub fn build(&self) -> Result<BuiltModel, ConvError> {
+        self.build_cached(&mut SketchCache::default())
+    }
+
+    /// [`Self::build`] reusing the sketches of `cache` whose stroke and
+    /// options are unchanged (copies and unedited strokes are not refitted).
+    pub fn build_cached(&self, cache: &mut SketchCache) -> Result<BuiltModel, ConvError> {
+        let strokes: Vec<&[[f64; 2]]> = self
+            .components
+            .iter()
+            .filter(|c| c.copy_of.is_none())
+            .map(|c| c.stroke.as_slice())
+            .collect();
+        cache.prefetch(&strokes, &self.options);
         let n = self.components.len();
         let mut parent: Vec<usize> = (0..n).collect();
         fn find(p: &mut [usize], i: usize) -> usize {
@@ -204,7 +217,8 @@ impl Model {
                 }
                 None => c,
             };
-            let sk = sketch::build(&src.stroke, &self.options)
+            let sk = cache
+                .sketch(&src.stroke, &self.options)
                 .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
             let frame = src.view.frame();
             let copied_depth = c
@@ -357,8 +371,7 @@ fn depth_from_surface(prev: &[&BuiltComponent], frame: [[f64; 3]; 3], pt: [f64; 
     0.0
 }
 
-/// Largest allowed resolution (cells along the longest axis).
-pub const MAX_RESOLUTION: usize = 512;
+pub use super::sample::MAX_RESOLUTION;
 
 impl BuiltModel {
     /// The field of group `g` at `r`.
@@ -381,109 +394,5 @@ impl BuiltModel {
             }
         }
         out
-    }
-
-    /// Samples the field of group `g` on a grid with `resolution` cells
-    /// along the longest side of a box around its skeleton, grown until the
-    /// surface $F = T$ stays inside. `Ok(None)`: the group only carves
-    /// (every $\lambda \le 0$), so it has no surface of its own.
-    pub fn sample_group(
-        &self,
-        g: usize,
-        resolution: usize,
-        threshold: f64,
-    ) -> Result<Option<ScalarGrid>, ConvError> {
-        if !(4..=MAX_RESOLUTION).contains(&resolution) {
-            return Err(ConvError::Parameter(format!(
-                "resolution {resolution} outside 4..={MAX_RESOLUTION}"
-            )));
-        }
-        let members = self
-            .groups
-            .get(g)
-            .ok_or_else(|| ConvError::Parameter(format!("no group {g}")))?;
-        let comps: Vec<&BuiltComponent> = members.iter().map(|&i| &self.components[i]).collect();
-        if comps
-            .iter()
-            .all(|c| c.segments.iter().all(|s| s.lambda <= 0.0))
-        {
-            return Ok(None);
-        }
-        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        let mut rmax: f64 = 0.0;
-        for c in &comps {
-            rmax = rmax.max(c.max_radius);
-            for s in &c.segments {
-                for p in [s.p, s.q] {
-                    for k in 0..3 {
-                        lo[k] = lo[k].min(p[k]);
-                        hi[k] = hi[k].max(p[k]);
-                    }
-                }
-            }
-        }
-        let mut margin = 1.5 * rmax;
-        for _attempt in 0..4 {
-            let l = lo.map(|x| x - margin);
-            let h = hi.map(|x| x + margin);
-            let side = (0..3).map(|k| h[k] - l[k]).fold(0.0, f64::max);
-            let cell = side / resolution as f64;
-            let dims = [0, 1, 2].map(|k| (((h[k] - l[k]) / cell).ceil() as usize + 1).max(3));
-            let hh = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * cell);
-            let grid = ScalarGrid::sample(l, hh, dims, |r| components_field(&comps, r))?;
-            // does the surface reach the grid boundary? then grow the box
-            let touches = (0..grid.values.len()).any(|i| {
-                let c = [
-                    i % dims[0],
-                    (i / dims[0]) % dims[1],
-                    i / (dims[0] * dims[1]),
-                ];
-                (0..3).any(|k| c[k] == 0 || c[k] + 1 == dims[k]) && grid.values[i] > threshold
-            });
-            if !touches {
-                return Ok(Some(grid));
-            }
-            margin *= 2.0;
-        }
-        Err(ConvError::Numerical(format!(
-            "the surface of group {g} does not close within the box (field unbounded?)"
-        )))
-    }
-
-    /// Polygonises every group with `resolution` cells along the longest
-    /// side of its box and returns one mesh (a group per merged component).
-    pub fn polygonize(
-        &self,
-        resolution: usize,
-        threshold: f64,
-        method: Polygonizer,
-    ) -> Result<Mesh, ConvError> {
-        if !(4..=MAX_RESOLUTION).contains(&resolution) {
-            return Err(ConvError::Parameter(format!(
-                "resolution {resolution} outside 4..={MAX_RESOLUTION}"
-            )));
-        }
-        let mut out: Option<Mesh> = None;
-        for (g, members) in self.groups.iter().enumerate() {
-            let Some(grid) = self.sample_group(g, resolution, threshold)? else {
-                continue;
-            };
-            let mut m = match method {
-                Polygonizer::MarchingTetrahedra => marching_tetrahedra(&grid, threshold),
-                Polygonizer::SurfaceNets => surface_nets(&grid, threshold),
-            };
-            m.groups = vec![self.components[members[0]].name.clone()];
-            match &mut out {
-                None => out = Some(m),
-                Some(o) => o.append(&m),
-            }
-        }
-        let m = out.ok_or_else(|| ConvError::Numerical("the model produced no surface".into()))?;
-        if m.triangles.is_empty() {
-            return Err(ConvError::Numerical(
-                "the surface is empty at this resolution".into(),
-            ));
-        }
-        Ok(m)
     }
 }

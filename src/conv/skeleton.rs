@@ -60,7 +60,7 @@ pub struct SkeletonTriangle {
 
 /// Options of the skeleton extraction.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct SkeletonOptions {
     /// $\beta$ of the pruning criterion; 0 disables pruning.
     pub overlap: f64,

@@ -12,7 +12,7 @@ use super::ConvError;
 
 /// All options of the reconstruction (paper defaults).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct ConvOptions {
     pub stroke: StrokeOptions,
     pub skeleton: SkeletonOptions,
@@ -46,7 +46,11 @@ impl Default for ConvOptions {
 }
 
 impl ConvOptions {
-    /// Validates the numeric options.
+    /// Validates every option against its documented range (threshold and
+    /// $s$ positive and finite, `s_scale` positive, `radius_factor` in
+    /// (0, 2], `skeleton.overlap` in [0, 1], `skeleton.tiny` in [0, 1),
+    /// `skeleton.area_samples` in 4..=1024, `stroke.dp_tolerance` in
+    /// [0, 0.5), `stroke.spacing` in (1e-4, 0.25]) before any work.
     pub fn validate(&self) -> Result<(), ConvError> {
         let bad = |what: &str, v: f64| Err(ConvError::Parameter(format!("{what} = {v}")));
         if !(self.threshold.is_finite() && self.threshold > 0.0) {
@@ -62,6 +66,29 @@ impl ConvOptions {
         }
         if !(self.radius_factor > 0.0 && self.radius_factor <= 2.0) {
             return bad("radius_factor must lie in (0, 2], got", self.radius_factor);
+        }
+        let sk = &self.skeleton;
+        if !(0.0..=1.0).contains(&sk.overlap) {
+            return bad("skeleton.overlap must lie in [0, 1], got", sk.overlap);
+        }
+        if !(0.0..1.0).contains(&sk.tiny) {
+            return bad("skeleton.tiny must lie in [0, 1), got", sk.tiny);
+        }
+        if !(MIN_AREA_SAMPLES..=MAX_AREA_SAMPLES).contains(&sk.area_samples) {
+            return Err(ConvError::Parameter(format!(
+                "skeleton.area_samples must lie in {MIN_AREA_SAMPLES}..={MAX_AREA_SAMPLES}, got {}",
+                sk.area_samples
+            )));
+        }
+        let st = &self.stroke;
+        if !(0.0..0.5).contains(&st.dp_tolerance) {
+            return bad(
+                "stroke.dp_tolerance must lie in [0, 0.5), got",
+                st.dp_tolerance,
+            );
+        }
+        if !(st.spacing > 1e-4 && st.spacing <= 0.25) {
+            return bad("stroke.spacing must lie in (1e-4, 0.25], got", st.spacing);
         }
         Ok(())
     }
@@ -79,6 +106,11 @@ pub struct Sketch {
     pub threshold: f64,
     pub fit: FitReport,
 }
+
+/// Documented range of [`SkeletonOptions::area_samples`].
+pub const MIN_AREA_SAMPLES: usize = 4;
+/// Upper end of the range of [`SkeletonOptions::area_samples`].
+pub const MAX_AREA_SAMPLES: usize = 1024;
 
 /// Nodes closer than this fraction of the smaller of their radii merge.
 const MERGE_FRACTION: f64 = 0.1;

@@ -11,7 +11,7 @@ use super::ConvError;
 
 /// Options of the stroke filter.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct StrokeOptions {
     /// Douglas-Peucker tolerance as a fraction of the bounding-box diagonal.
     pub dp_tolerance: f64,

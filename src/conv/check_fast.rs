@@ -1,0 +1,288 @@
+//! Checks of the fast conv pipeline (issue 16) against the brute-force
+//! reference: the segment hierarchy's field bounds enclose the exact field,
+//! its point values stay within the stated error budget, the narrow-band
+//! surface of every bundled model lies within [`FAST_MESH_TOLERANCE`] of the
+//! reference surface (relative to the model size) with the same topology,
+//! an incremental rebuild equals a full one, and the option sweep's
+//! near-circular ellipse is reconstructed (issue 16).
+
+use super::check::{Lcg, FIT_RMS_TOLERANCE};
+use super::fit::{Solver, WeightMode};
+use super::incremental::{MeshCache, SketchCache};
+use super::kernel::total_field;
+use super::model::{Component, Model, Polygonizer};
+use super::sample::Sampler;
+use super::{shapes, sketch};
+use crate::check::{tol, Check, Kind};
+use crate::mesh::topology::report;
+use crate::mesh::{norm, sub, Mesh};
+
+const FAMILY: &str = "conv";
+const PAPER: &str = "003";
+
+/// Largest distance between the narrow-band and the reference surfaces,
+/// relative to the model size (bounding-box diagonal): 0.1 %.
+pub const FAST_MESH_TOLERANCE: f64 = 1e-3;
+/// Resolution of the fast-against-reference comparison in `verify`.
+pub const COMPARE_RESOLUTION: usize = 32;
+
+const MODELS: [(&str, &str); 4] = [
+    ("blob", include_str!("../../data/conv/blob.json")),
+    ("star", include_str!("../../data/conv/star.json")),
+    ("arm", include_str!("../../data/conv/arm.json")),
+    ("teddy", include_str!("../../data/conv/teddy.json")),
+];
+
+/// Bounding-box diagonal of a mesh.
+pub fn mesh_size(m: &Mesh) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in &m.positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    norm(sub(hi, lo))
+}
+
+/// Distance between two meshes of the same grid and polygoniser: the
+/// largest distance between corresponding vertices (an upper bound of the
+/// Hausdorff distance of the two surfaces, whose triangles correspond), or
+/// infinity when their vertex or triangle lists differ in structure.
+pub fn corresponding_distance(a: &Mesh, b: &Mesh) -> f64 {
+    if a.positions.len() != b.positions.len() || a.triangles != b.triangles {
+        return f64::INFINITY;
+    }
+    a.positions
+        .iter()
+        .zip(&b.positions)
+        .map(|(p, q)| norm(sub(*p, *q)))
+        .fold(0.0, f64::max)
+}
+
+/// Fast against reference: (relative distance, same topology report, note).
+pub fn compare_with_reference(m: &Model, resolution: usize) -> Result<(f64, bool, String), String> {
+    let b = m.build().map_err(|e| e.to_string())?;
+    let t = m.options.threshold;
+    let method = Polygonizer::MarchingTetrahedra;
+    let fast = b
+        .polygonize_with(resolution, t, method, Sampler::NarrowBand)
+        .map_err(|e| e.to_string())?;
+    let refm = b
+        .polygonize_with(resolution, t, method, Sampler::Reference)
+        .map_err(|e| e.to_string())?;
+    let d = corresponding_distance(&fast, &refm) / mesh_size(&refm);
+    let (rf, rr) = (report(&fast), report(&refm));
+    let same =
+        rf.watertight == rr.watertight && rf.manifold == rr.manifold && rf.oriented == rr.oriented;
+    Ok((
+        d,
+        same,
+        format!(
+            "{} / {} triangles; watertight {}, manifold {}, oriented {} (reference {}, {}, {})",
+            fast.triangles.len(),
+            refm.triangles.len(),
+            rf.watertight,
+            rf.manifold,
+            rf.oriented,
+            rr.watertight,
+            rr.manifold,
+            rr.oriented
+        ),
+    ))
+}
+
+fn mesh_checks(out: &mut Vec<Check>) {
+    for (name, text) in MODELS {
+        let (measured, note) = match Model::from_json(text)
+            .map_err(|e| e.to_string())
+            .and_then(|m| compare_with_reference(&m, COMPARE_RESOLUTION))
+        {
+            Ok((d, true, note)) => (d, note),
+            Ok((_, false, note)) => (f64::INFINITY, format!("topology differs: {note}")),
+            Err(e) => (f64::INFINITY, e),
+        };
+        out.push(
+            Check::new(
+                FAMILY,
+                PAPER,
+                "issue 16 narrow band",
+                &format!("conv.fast.{name}_matches_reference"),
+                Kind::Reference,
+                measured,
+                FAST_MESH_TOLERANCE,
+            )
+            .note(format!(
+                "{name} at {COMPARE_RESOLUTION} cells: narrow-band + BVH surface against every node \
+                 by every segment, max vertex distance / model size; {note}"
+            )),
+        );
+    }
+}
+
+fn bound_checks(out: &mut Vec<Check>) {
+    let Ok(m) = Model::from_json(MODELS[3].1) else {
+        return;
+    };
+    let Ok(b) = m.build() else { return };
+    let Ok(bvh) = b.group_bvh(0) else { return };
+    let comps: Vec<_> = b.groups[0].iter().map(|&i| &b.components[i]).collect();
+    let exact = |x: [f64; 3]| -> f64 {
+        comps
+            .iter()
+            .map(|c| total_field(&c.segments, x, c.sketch.s))
+            .sum()
+    };
+    let t = m.options.threshold;
+    let mut rng = Lcg(16);
+    let (mut violation, mut point_ratio) = (0.0f64, 0.0f64);
+    let budget = 1e-3 * t;
+    let mut near = Vec::new();
+    for _ in 0..200 {
+        let c = [0, 1, 2].map(|_| rng.range(-3.0, 3.0));
+        let rho = rng.range(0.0, 0.6);
+        let (lo, hi) = bvh.interval(c, rho, 0.05 * t);
+        let (nlo, nhi) = bvh.near_list(c, rho, budget, &mut near);
+        for _ in 0..5 {
+            // a point of the ball
+            let dir = [0, 1, 2].map(|_| rng.range(-1.0, 1.0));
+            let r = rho * rng.next_f64() / norm(dir).max(1.0);
+            let x = [0, 1, 2].map(|k| c[k] + r * dir[k]);
+            let f = exact(x);
+            violation = violation.max((lo - f).max(f - hi).max(0.0) / t);
+            let approx = 0.5 * (nlo + nhi) + bvh.near_field(&near, x);
+            point_ratio = point_ratio.max((approx - f).abs() / (0.5 * budget));
+        }
+        let f = exact(c);
+        point_ratio = point_ratio.max((bvh.field(c, budget) - f).abs() / (0.5 * budget));
+    }
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 field bounds",
+            "conv.fast.bounds_enclose_field",
+            Kind::Reference,
+            violation,
+            tol::scaled(tol::ROUNDING, 100.0),
+        )
+        .note("teddy: 200 random balls, 5 points each: how far the exact field leaves the hierarchy's bound (/T)"),
+    );
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 error budget",
+            "conv.fast.point_error_within_budget",
+            Kind::Reference,
+            point_ratio,
+            1.0 + tol::scaled(tol::ROUNDING, 1e6),
+        )
+        .note("teddy: |approximate - exact field| / (budget / 2) at points (budget 1e-3 T; interaction lists and single points); must stay <= 1"),
+    );
+}
+
+fn incremental_checks(out: &mut Vec<Check>) {
+    // two separate components (two groups): a body and an arm beside it
+    let mut m = Model {
+        components: vec![
+            Component {
+                name: "body".into(),
+                stroke: shapes::ellipse(1.0, 1.6, 160),
+                ..Default::default()
+            },
+            Component {
+                name: "arm".into(),
+                stroke: shapes::ellipse(1.2, 0.4, 160),
+                translate: [4.0, 0.0, 0.0],
+                ..Default::default()
+            },
+        ],
+        ..Default::default()
+    };
+    let res = 24;
+    let t = m.options.threshold;
+    let method = Polygonizer::MarchingTetrahedra;
+    let (mut sketches, mut meshes) = (SketchCache::default(), MeshCache::default());
+    let run = |m: &Model, sk: &mut SketchCache, me: &mut MeshCache| -> Option<(Mesh, Mesh)> {
+        let inc = me
+            .polygonize(&m.build_cached(sk).ok()?, res, t, method)
+            .ok()?;
+        let full = m.build().ok()?.polygonize(res, t, method).ok()?;
+        Some((inc, full))
+    };
+    let first = run(&m, &mut sketches, &mut meshes);
+    // edit the last stroke: scale it by 1.1 about its first point
+    if let Some(c) = m.components.last_mut() {
+        let o = c.stroke[0];
+        for p in &mut c.stroke {
+            *p = [o[0] + 1.1 * (p[0] - o[0]), o[1] + 1.1 * (p[1] - o[1])];
+        }
+    }
+    let before = (sketches.built, meshes.built);
+    let second = run(&m, &mut sketches, &mut meshes);
+    let (measured, note) = match (first, second) {
+        (Some((a, b)), Some((c, d))) => (
+            corresponding_distance(&a, &b).max(corresponding_distance(&c, &d)),
+            format!(
+                "body and arm at {res} cells, the arm's stroke edited: {} sketch(es) and {} group mesh(es) rebuilt, {} and {} reused",
+                sketches.built - before.0,
+                meshes.built - before.1,
+                sketches.reused,
+                meshes.reused
+            ),
+        ),
+        _ => (f64::INFINITY, "a build failed".into()),
+    };
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 incremental",
+            "conv.fast.incremental_equals_full",
+            Kind::Reference,
+            measured,
+            0.0,
+        )
+        .note(format!(
+            "max vertex distance, incremental against full rebuild; {note}"
+        )),
+    );
+}
+
+fn regression_checks(out: &mut Vec<Check>) {
+    let st = shapes::ellipse(1.1043640902746836, 1.190488019596483, 200);
+    let mut o = sketch::ConvOptions {
+        threshold: 0.5,
+        s_scale: 0.5,
+        radius_factor: 0.5942389110515671,
+        divide_at_joints: true,
+        weights: WeightMode::Exact,
+        solver: Solver::HildrethDEsopo,
+        ..Default::default()
+    };
+    o.skeleton.overlap = 0.0;
+    let measured = sketch::build(&st, &o).map_or(f64::INFINITY, |sk| sk.fit.rms_rel_error);
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "sec 3.3 exact weights",
+            "conv.weights.exact_nonnegative_round_stroke",
+            Kind::Threshold,
+            measured,
+            FIT_RMS_TOLERANCE,
+        )
+        .note("issue 16's sweep case (near-circular ellipse, exact weights): RMS |F-T|/T after the fit; 0.868 when the 2x2 weights could change sign"),
+    );
+}
+
+/// The fast-pipeline checks (registered through `conv::check::checks`).
+pub fn checks() -> Vec<Check> {
+    let mut out = Vec::new();
+    mesh_checks(&mut out);
+    bound_checks(&mut out);
+    incremental_checks(&mut out);
+    regression_checks(&mut out);
+    out
+}
