@@ -131,8 +131,11 @@ pub fn guarded<T: Send + 'static>(
 /// message.
 pub type ParseFn = fn(&[u8]) -> Result<Vec<f64>, String>;
 
+/// A generator of input bytes.
+pub type GenFn = fn(&mut Pick) -> Vec<u8>;
+
 /// In-process parser targets: (name, generator, parser).
-pub fn parser_targets() -> Vec<(&'static str, fn(&mut Pick) -> Vec<u8>, ParseFn)> {
+pub fn parser_targets() -> Vec<(&'static str, GenFn, ParseFn)> {
     vec![
         ("OBJ bytes", gen_bytes, parse_obj),
         ("OBJ documents", gen_obj, parse_obj),
