@@ -180,7 +180,7 @@ pub fn check_cost(
     budget: f64,
     unit: &'static str,
 ) -> Result<(), LimitError> {
-    if !(estimate <= budget) {
+    if estimate.is_nan() || estimate > budget {
         return Err(LimitError::OverBudget {
             param: param.to_string(),
             value: value.to_string(),

@@ -242,9 +242,6 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         } => {
             limits::check("--terms", terms, limits::BODY_TERMS)?;
             limits::check("--anchors", anchors, limits::BODY_ANCHORS)?;
-            if !(0.0..=1.0).contains(&pull) {
-                bail!("--pull {pull}: must lie in [0, 1]");
-            }
             pdesculpt::mesh::io::Format::from_path(&output)?;
             let sampling = if sampling == "anchored" {
                 Sampling::Anchored {

@@ -127,6 +127,13 @@ impl ShapeParams {
         if self.a1 <= 0.0 {
             return Err(Pde4Error::NonPositiveA1(self.a1));
         }
+        if self.a3 <= 0.0 || self.a2 <= -2.0 * (self.a1 * self.a3).sqrt() {
+            return Err(Pde4Error::NotElliptic {
+                a1: self.a1,
+                a2: self.a2,
+                a3: self.a3,
+            });
+        }
         for (what, value) in [("a_t1", self.a1), ("a_t2", self.a2), ("a_t3", self.a3)] {
             if value.abs() > MAX_MAGNITUDE || (what != "a_t2" && value < 1.0 / MAX_MAGNITUDE) {
                 return Err(Pde4Error::Degenerate(format!(
@@ -134,13 +141,6 @@ impl ShapeParams {
                     1.0 / MAX_MAGNITUDE
                 )));
             }
-        }
-        if self.a3 <= 0.0 || self.a2 <= -2.0 * (self.a1 * self.a3).sqrt() {
-            return Err(Pde4Error::NotElliptic {
-                a1: self.a1,
-                a2: self.a2,
-                a3: self.a3,
-            });
         }
         Ok(())
     }

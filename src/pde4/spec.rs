@@ -56,8 +56,25 @@ pub enum Patch {
 }
 
 impl Spec {
-    /// Solves the spec.
+    /// Solves the spec; refuses a solution that is not finite on a 9 x 9
+    /// grid of the patch (non-finite coefficients, e.g. the printed formulas
+    /// at their singular shape parameters, or an overflow).
     pub fn solve(&self) -> Result<Patch, Pde4Error> {
+        let patch = self.solve_unchecked()?;
+        let ts: Vec<f64> = (0..=8).map(|k| k as f64 / 8.0).collect();
+        let pts = patch.grid(&ts, &ts);
+        if let Some(i) = pts.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
+            return Err(Pde4Error::Degenerate(format!(
+                "the solution is not finite at (u, v) = ({}, {}) (method {:?} singular or overflowing for these shape parameters and forces; try method exact or galerkin, or smaller numbers)",
+                ts[i / ts.len()],
+                ts[i % ts.len()],
+                self.method
+            )));
+        }
+        Ok(patch)
+    }
+
+    fn solve_unchecked(&self) -> Result<Patch, Pde4Error> {
         let params = match &self.shape {
             Shape::All(p) => [*p; 3],
             Shape::PerComponent(p) => *p,

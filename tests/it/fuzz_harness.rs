@@ -131,8 +131,11 @@ pub fn guarded<T: Send + 'static>(
 /// message.
 pub type ParseFn = fn(&[u8]) -> Result<Vec<f64>, String>;
 
+/// A generator of input bytes.
+pub type GenFn = fn(&mut Pick) -> Vec<u8>;
+
 /// In-process parser targets: (name, generator, parser).
-pub fn parser_targets() -> Vec<(&'static str, fn(&mut Pick) -> Vec<u8>, ParseFn)> {
+pub fn parser_targets() -> Vec<(&'static str, GenFn, ParseFn)> {
     vec![
         ("OBJ bytes", gen_bytes, parse_obj),
         ("OBJ documents", gen_obj, parse_obj),
@@ -940,7 +943,7 @@ fn run_binary(
 
 /// NaN or inf as a token of `s`, or, when `s` is JSON, a null (serde_json's
 /// spelling of a non-finite float) anywhere but under the optional fields
-/// `tol`, `theta0` and `output`.
+/// `tol`, `theta0`, `output` and `boundary`.
 fn has_non_finite(s: &str) -> bool {
     if let Ok(v) = serde_json::from_str::<serde_json::Value>(s) {
         return json_null(&v, "");
@@ -951,7 +954,7 @@ fn has_non_finite(s: &str) -> bool {
 
 fn json_null(v: &serde_json::Value, key: &str) -> bool {
     match v {
-        serde_json::Value::Null => !matches!(key, "tol" | "theta0" | "output"),
+        serde_json::Value::Null => !matches!(key, "tol" | "theta0" | "output" | "boundary"),
         serde_json::Value::Array(a) => a.iter().any(|x| json_null(x, key)),
         serde_json::Value::Object(o) => o.iter().any(|(k, x)| json_null(x, k)),
         _ => false,

@@ -79,7 +79,7 @@ pub fn parse_csv(text: &str) -> Result<PointsFile, InputError> {
         lines.push(line_no);
     }
     if points.is_empty() {
-        return Err(InputError(format!("no points in the file")));
+        return Err(InputError("no points in the file".into()));
     }
     Ok(PointsFile {
         points,
@@ -99,7 +99,7 @@ pub fn parse_json(text: &str) -> Result<PointsFile, InputError> {
             let arr = o
                 .get("points")
                 .and_then(|p| p.as_array())
-                .ok_or_else(|| InputError(format!("the JSON object needs a \"points\" array")))?;
+                .ok_or_else(|| InputError("the JSON object needs a \"points\" array".into()))?;
             let open = match o.get("closed") {
                 None => false,
                 Some(serde_json::Value::Bool(b)) => !b,
@@ -112,9 +112,9 @@ pub fn parse_json(text: &str) -> Result<PointsFile, InputError> {
             (arr, open)
         }
         _ => {
-            return Err(InputError(format!(
-                "expected a JSON array of points or an object with \"points\""
-            )))
+            return Err(InputError(
+                "expected a JSON array of points or an object with \"points\"".into(),
+            ))
         }
     };
     let mut points = Vec::with_capacity(arr.len());
@@ -144,7 +144,7 @@ pub fn parse_json(text: &str) -> Result<PointsFile, InputError> {
         points.push(q);
     }
     if points.is_empty() {
-        return Err(InputError(format!("no points in the file")));
+        return Err(InputError("no points in the file".into()));
     }
     Ok(PointsFile {
         points,
@@ -180,7 +180,7 @@ pub fn check_magnitudes(g: &super::Gec) -> Result<(), InputError> {
             .chain(&g.centre)
             .chain(&g.frame.origin);
     for x in nums {
-        if !(x.abs() <= MAX_COEFFICIENT) {
+        if x.is_nan() || x.abs() > MAX_COEFFICIENT {
             return Err(InputError(format!(
                 "GEC number {x:e} is larger than {MAX_COEFFICIENT:e} in magnitude (values and derivatives would overflow; rescale the curve)"
             )));
