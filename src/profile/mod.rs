@@ -55,6 +55,7 @@
 //! - `check`: the family's verification checks.
 
 pub mod check;
+mod coverage;
 mod distance;
 mod grid;
 mod json;
