@@ -34,4 +34,5 @@ pub mod pde4;
 pub mod pde6;
 pub mod plate;
 pub mod render;
+pub mod sketch;
 pub mod surface;
