@@ -58,6 +58,16 @@ pub fn families() -> &'static [Family] {
             papers: "003",
             checks: crate::conv::check::checks,
         },
+        Family {
+            name: "sketch",
+            papers: "000",
+            checks: crate::sketch::check::checks,
+        },
+        Family {
+            name: "profile",
+            papers: "000",
+            checks: crate::profile::check::checks,
+        },
     ]
 }
 

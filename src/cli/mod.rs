@@ -16,6 +16,7 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod profile;
 
 use clap::{Parser, Subcommand};
 
@@ -57,6 +58,8 @@ pub enum Command {
     Sketch(sketch::Args),
     /// Character documents: build.
     Character(character::Args),
+    /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
+    Profile(profile::Args),
 }
 
 /// Parses the arguments, runs the command, returns the exit code.
@@ -76,6 +79,7 @@ pub fn main() -> i32 {
         Command::Conv(a) => conv::run(a, json),
         Command::Sketch(a) => sketch::run(a, json),
         Command::Character(a) => character::run(a, json),
+        Command::Profile(a) => profile::run(a, json),
     };
     match result {
         Ok(code) => code,

@@ -1,7 +1,7 @@
 //! Reading profiles and cuts: SVG files (one closed outline path, optional
 //! `cut*` paths), JSON polylines or inline points.
 
-use super::poly::{segments_intersect, validate_outline};
+use super::poly::segments_intersect;
 use super::SketchError;
 use crate::character::doc::ProfileInput;
 use std::path::Path;
@@ -73,7 +73,13 @@ pub fn read_profile(
             }
         }
     };
-    let points = validate_outline(what, &raw)?;
+    let profile = crate::profile::Profile::new(view.profile_view(), raw).map_err(|e| {
+        SketchError::Outline {
+            what: what.into(),
+            message: e.to_string(),
+        }
+    })?;
+    let points = profile.points().to_vec();
     for (id, c) in &cuts {
         validate_cut(id, c, &points)?;
     }
@@ -114,9 +120,24 @@ fn read_svg(
     view: ViewKind,
     tol: f64,
 ) -> Result<(Vec<[f64; 2]>, Vec<(String, Vec<[f64; 2]>)>), SketchError> {
-    let _ = (view, tol);
-    Err(SketchError::File {
-        path: path.display().to_string(),
-        message: "SVG input needs the profile module (not merged yet)".into(),
-    })
+    let sk = crate::profile::read_svg(path, view.profile_view(), tol).map_err(|e| {
+        SketchError::File {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        }
+    })?;
+    Ok((
+        sk.outline.points().to_vec(),
+        sk.cuts.into_iter().map(|c| (c.id, c.points)).collect(),
+    ))
+}
+
+impl ViewKind {
+    /// The profile module's view.
+    pub fn profile_view(self) -> crate::profile::View {
+        match self {
+            ViewKind::Front => crate::profile::View::Front,
+            ViewKind::Side => crate::profile::View::Side,
+        }
+    }
 }

@@ -24,7 +24,7 @@ use super::poly::{gap_tops, slice, top_at, GapTop};
 use super::SketchError;
 
 /// Half-height of a join band, as a fraction of the model height.
-pub const GAP_FRACTION: f64 = 0.025;
+pub const GAP_FRACTION: f64 = 0.015;
 /// The neck base is where the width exceeds this multiple of the neck width.
 pub const NECK_FLARE: f64 = 1.3;
 /// Slices used to find the landmarks.
