@@ -12,3 +12,4 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sketch;
