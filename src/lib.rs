@@ -38,5 +38,6 @@ pub mod pde6;
 pub mod plate;
 pub mod profile;
 pub mod render;
+pub mod sketch;
 pub mod surface;
 pub mod verify;

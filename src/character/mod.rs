@@ -11,4 +11,5 @@
 //! (paper 003). Every step reports what it measured.
 
 pub mod demo;
+pub mod doc;
 pub mod skirt;

@@ -6,6 +6,9 @@ mod convert;
 mod demo;
 mod render;
 mod units;
+
+mod character;
+mod sketch;
 mod verify;
 
 mod conv;
@@ -52,6 +55,10 @@ pub enum Command {
     Ode6(ode6::Args),
     /// Convolution surfaces from sketched silhouettes (paper 003).
     Conv(conv::Args),
+    /// Characters from sketched profiles (paper 000 sec 4.1).
+    Sketch(sketch::Args),
+    /// Character documents: build.
+    Character(character::Args),
     /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
     Profile(profile::Args),
 }
@@ -71,6 +78,8 @@ pub fn main() -> i32 {
         Command::Pde6(a) => pde6::run(a, json),
         Command::Ode6(a) => ode6::run(a, json),
         Command::Conv(a) => conv::run(a, json),
+        Command::Sketch(a) => sketch::run(a, json),
+        Command::Character(a) => character::run(a, json),
         Command::Profile(a) => profile::run(a, json),
     };
     match result {

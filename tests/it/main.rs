@@ -15,3 +15,4 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sketch;

@@ -1,0 +1,362 @@
+//! The character document: a character as its inputs plus what was derived
+//! from them, in one versioned JSON file.
+//!
+//! # Schema (version 1)
+//!
+//! ```json
+//! {
+//!   "version": 1,
+//!   "level": "initial" | "intermediate" | "final",
+//!   "inputs": {
+//!     "front": {"path": "front.svg"} | {"points": [[x, y], ...]},
+//!     "side": null | {"path": "side.svg"} | {"points": [[z, y], ...]},
+//!     "sections": [{"part": "torso", "y": 1.2, "points": [[x, z], ...]}],
+//!     "tolerance": 0.002
+//!   },
+//!   "parts": [ PartSpec ... ],
+//!   "transitions": [ TransitionSpec ... ],
+//!   "removed_parts": [{"name": "hair", "front": {...}, "side": null}],
+//!   "edits": [],
+//!   "cursor": 0
+//! }
+//! ```
+//!
+//! Every object rejects unknown fields. Paths are relative to the document's
+//! directory. `parts` and `transitions` are *derived* from the inputs at the
+//! document's `level` (`sketch build` fills them); when `parts` is empty,
+//! `character build` derives them again, otherwise it builds the stored
+//! parts as they are (so an editor can change a section and rebuild). The
+//! mesh, the transition surfaces and the report are always recomputed.
+//!
+//! Part names are stable: `torso`, `head` (neck and head), `arm_l`, `arm_r`,
+//! `leg_l`, `leg_r` (`_l` is the side of negative model x, the viewer's left
+//! in the front view); transitions are `shoulders` and `hips`.
+//!
+//! A [`PartSpec`] is a tube: its key sections in order along its central
+//! curve (`u` is arc length along the polyline through the section centres),
+//! each a closed curve in the plane spanned by `e1`, `e2` about `centre`
+//! (circle, ellipse or GEC coefficients in that frame), its surface family
+//! and whether its start or end is a free (closed) end.
+//!
+//! `edits` and `cursor` are reserved for the edit log of the local-modeling
+//! issue (an ordered list of typed edits, `cursor` edits applied); version 1
+//! accepts only an empty log.
+
+use crate::mesh::io::write_atomic;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// Current document version.
+pub const VERSION: u32 = 1;
+
+/// Errors reading or writing a document.
+#[derive(Debug, thiserror::Error)]
+pub enum DocError {
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{path}: not a character document: {message}")]
+    Parse { path: PathBuf, message: String },
+    #[error(
+        "{path}: document version {found} is not supported (this build reads version {VERSION})"
+    )]
+    Version { path: PathBuf, found: u32 },
+    #[error("document: {0}")]
+    Invalid(String),
+    #[error("{0}")]
+    Write(#[from] crate::mesh::MeshError),
+}
+
+/// Modeling stage (paper 000 sec 4.1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    /// Circles from the primary (front) profile.
+    #[default]
+    Initial,
+    /// Ellipses from the front and side profiles.
+    Intermediate,
+    /// Key cross-section sketches fitted by GECs replace the ellipses there.
+    Final,
+}
+
+impl std::str::FromStr for Level {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Level, String> {
+        match s {
+            "initial" => Ok(Level::Initial),
+            "intermediate" => Ok(Level::Intermediate),
+            "final" => Ok(Level::Final),
+            _ => Err(format!(
+                "unknown level '{s}' (initial, intermediate, final)"
+            )),
+        }
+    }
+}
+
+impl Level {
+    /// Stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Level::Initial => "initial",
+            Level::Intermediate => "intermediate",
+            Level::Final => "final",
+        }
+    }
+}
+
+/// A profile given by file or inline.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+pub enum ProfileInput {
+    /// An SVG (or JSON polyline) file, relative to the document.
+    Path(String),
+    /// The outline's points in model units (front: (x, y); side: (z, y)).
+    Points(Vec<[f64; 2]>),
+}
+
+/// A key cross-section sketch: a closed curve in the horizontal plane at
+/// height `y`, points as (x, z).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct KeySection {
+    pub part: String,
+    pub y: f64,
+    pub points: Vec<[f64; 2]>,
+}
+
+/// The inputs a character is derived from.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Inputs {
+    pub front: ProfileInput,
+    #[serde(default)]
+    pub side: Option<ProfileInput>,
+    #[serde(default)]
+    pub sections: Vec<KeySection>,
+    /// SVG flattening tolerance in model units.
+    #[serde(default = "default_tolerance")]
+    pub tolerance: f64,
+}
+
+fn default_tolerance() -> f64 {
+    2e-3
+}
+
+/// The curve of one key section in its frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+pub enum SectionShape {
+    /// Radius (0: a collapsed end ring).
+    Circle { r: f64 },
+    /// Semi-axes along `e1` and `e2`, centre offset along `e2`.
+    Ellipse { a: f64, b: f64, offset: f64 },
+    /// GEC coefficients in the section frame (paper 000 eq 16):
+    /// `(x, y)(theta) = centre + sum_j x[j] . (cos, sin)(j theta), ...`.
+    Gec {
+        centre: [f64; 2],
+        x: Vec<[f64; 2]>,
+        y: Vec<[f64; 2]>,
+    },
+}
+
+/// One key section of a part.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionSpec {
+    /// Arc length along the part's central curve.
+    pub u: f64,
+    pub centre: [f64; 3],
+    pub e1: [f64; 3],
+    pub e2: [f64; 3],
+    pub shape: SectionShape,
+}
+
+/// Surface family of a part.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "family", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SurfaceSpec {
+    /// The globally solved C2 sixth-order PDE chain (`pde6::Chain::c2_global`)
+    /// with PDE parameter `a`.
+    Pde6C2 { a: f64 },
+}
+
+/// One part: a C2 tube through its key sections.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PartSpec {
+    pub name: String,
+    pub surface: SurfaceSpec,
+    pub sections: Vec<SectionSpec>,
+    /// The start (`u` = first) is a free end closed by a collapsed ring.
+    pub closed_start: bool,
+    pub closed_end: bool,
+}
+
+/// Which end of a part.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum End {
+    Start,
+    End,
+}
+
+/// A transition joining one end of a parent part to the starts of its
+/// children (ordered by model x). Between consecutive children a seam runs
+/// from the front to the back of the parent's end ring through `apex`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TransitionSpec {
+    pub name: String,
+    pub parent: String,
+    pub parent_end: End,
+    pub children: Vec<String>,
+    /// One apex per seam (children - 1).
+    pub seam_apex: Vec<[f64; 3]>,
+}
+
+/// A part removed from the main profile, to be modeled from its own
+/// profiles (paper 000 sec 4.1). Recorded; not built in version 1.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RemovedPart {
+    pub name: String,
+    pub front: ProfileInput,
+    #[serde(default)]
+    pub side: Option<ProfileInput>,
+}
+
+/// The character document.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CharacterDoc {
+    pub version: u32,
+    #[serde(default)]
+    pub level: Level,
+    pub inputs: Inputs,
+    #[serde(default)]
+    pub parts: Vec<PartSpec>,
+    #[serde(default)]
+    pub transitions: Vec<TransitionSpec>,
+    #[serde(default)]
+    pub removed_parts: Vec<RemovedPart>,
+    /// Reserved for the edit log (typed later); must be empty in version 1.
+    #[serde(default)]
+    pub edits: Vec<serde_json::Value>,
+    #[serde(default)]
+    pub cursor: usize,
+}
+
+impl CharacterDoc {
+    /// A document with only inputs (nothing derived yet).
+    pub fn from_inputs(inputs: Inputs, level: Level) -> CharacterDoc {
+        CharacterDoc {
+            version: VERSION,
+            level,
+            inputs,
+            parts: Vec::new(),
+            transitions: Vec::new(),
+            removed_parts: Vec::new(),
+            edits: Vec::new(),
+            cursor: 0,
+        }
+    }
+
+    /// Parses and validates a document's text (`path` names it in errors).
+    pub fn parse(text: &str, path: &Path) -> Result<CharacterDoc, DocError> {
+        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| DocError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })?;
+        if let Some(found) = v.get("version").and_then(|x| x.as_u64()) {
+            if found != VERSION as u64 {
+                return Err(DocError::Version {
+                    path: path.into(),
+                    found: found as u32,
+                });
+            }
+        }
+        let doc: CharacterDoc = serde_json::from_value(v).map_err(|e| DocError::Parse {
+            path: path.into(),
+            message: e.to_string(),
+        })?;
+        doc.validate()?;
+        Ok(doc)
+    }
+
+    /// Reads a document.
+    pub fn load(path: &Path) -> Result<CharacterDoc, DocError> {
+        let text = std::fs::read_to_string(path).map_err(|e| DocError::Io {
+            path: path.into(),
+            source: e,
+        })?;
+        CharacterDoc::parse(&text, path)
+    }
+
+    /// Writes the document atomically (temporary file, then rename).
+    pub fn save(&self, path: &Path) -> Result<(), DocError> {
+        self.validate()?;
+        let text = serde_json::to_string_pretty(self)
+            .map_err(|e| DocError::Invalid(format!("cannot serialise: {e}")))?;
+        write_atomic(path, text.as_bytes())?;
+        Ok(())
+    }
+
+    /// Structural checks that do not need the geometry.
+    pub fn validate(&self) -> Result<(), DocError> {
+        if self.version != VERSION {
+            return Err(DocError::Invalid(format!(
+                "version {} (expected {VERSION})",
+                self.version
+            )));
+        }
+        if !self.edits.is_empty() || self.cursor != 0 {
+            return Err(DocError::Invalid(
+                "the edit log is reserved in version 1: edits must be empty and cursor 0".into(),
+            ));
+        }
+        if !(self.inputs.tolerance.is_finite() && self.inputs.tolerance > 0.0) {
+            return Err(DocError::Invalid(format!(
+                "inputs.tolerance must be positive, got {}",
+                self.inputs.tolerance
+            )));
+        }
+        let mut names: Vec<&str> = self.parts.iter().map(|p| p.name.as_str()).collect();
+        names.extend(self.transitions.iter().map(|t| t.name.as_str()));
+        let mut sorted = names.clone();
+        sorted.sort_unstable();
+        if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {
+            return Err(DocError::Invalid(format!("name '{}' is used twice", w[0])));
+        }
+        for t in &self.transitions {
+            for n in std::iter::once(&t.parent).chain(&t.children) {
+                if !self.parts.iter().any(|p| &p.name == n) {
+                    return Err(DocError::Invalid(format!(
+                        "transition '{}' names unknown part '{n}'",
+                        t.name
+                    )));
+                }
+            }
+            if t.children.is_empty() || t.seam_apex.len() + 1 != t.children.len() {
+                return Err(DocError::Invalid(format!(
+                    "transition '{}' needs one seam apex fewer than its {} children, got {}",
+                    t.name,
+                    t.children.len(),
+                    t.seam_apex.len()
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// Resolves a profile path against the document's directory.
+    pub fn resolve(doc_path: &Path, p: &str) -> PathBuf {
+        let p = Path::new(p);
+        if p.is_absolute() {
+            return p.into();
+        }
+        doc_path.parent().unwrap_or(Path::new(".")).join(p)
+    }
+}

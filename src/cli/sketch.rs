@@ -1,0 +1,135 @@
+//! `pdesculpt sketch build --front F.svg [--side S.svg] [--sections S.json]
+//! [--level L] -o OUT [--save-doc CHAR.json] [--json]`.
+
+use pdesculpt::character::doc::{CharacterDoc, Inputs, KeySection, Level, ProfileInput};
+use pdesculpt::mesh::io;
+use pdesculpt::sketch::{build_document, Built, Resolution};
+use std::path::{Path, PathBuf};
+
+const CONVENTIONS: &str = "Input conventions: SVG user units are model units; SVG y points down and \
+model y up (model y = -svg y); in a front view svg x is model x, in a side view svg x is model z \
+(the front of the body at +z). Each SVG holds one closed path for the outline (any path commands, \
+flattened with --tolerance); extra paths whose id starts with `cut` are explicit part boundaries and \
+must cross the outline. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
+segmentation expects a standing humanoid seen from the front, arms away from the body and legs apart \
+(parts torso, head, arm_l, arm_r, leg_l, leg_r; _l is negative x). The side outline must have the \
+front's height within 5 %. SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
+\"points\": [[x, z], ...]}]}: closed curves in the horizontal plane at height y, fitted by GECs at \
+the final level.";
+
+/// Arguments of `pdesculpt sketch`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Sub,
+}
+
+/// Sketch subcommands.
+#[derive(clap::Subcommand, Debug)]
+pub enum Sub {
+    /// Build a character from sketched profiles (paper 000 sec 4.1).
+    #[command(after_help = CONVENTIONS)]
+    Build(BuildArgs),
+}
+
+/// Arguments of `sketch build`.
+#[derive(clap::Args, Debug)]
+pub struct BuildArgs {
+    /// Front (primary) profile: SVG or JSON polyline.
+    #[arg(long)]
+    pub front: PathBuf,
+    /// Side (secondary) profile.
+    #[arg(long)]
+    pub side: Option<PathBuf>,
+    /// Key cross-section sketches (JSON).
+    #[arg(long)]
+    pub sections: Option<PathBuf>,
+    /// initial | intermediate | final (default: the most the inputs allow).
+    #[arg(long)]
+    pub level: Option<Level>,
+    /// SVG flattening tolerance in model units.
+    #[arg(long, default_value_t = 2e-3)]
+    pub tolerance: f64,
+    /// Output mesh (.obj, .glb, .stl, .ply).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Also save the character document (with the derived parts).
+    #[arg(long)]
+    pub save_doc: Option<PathBuf>,
+}
+
+fn abs(p: &Path) -> anyhow::Result<String> {
+    Ok(std::path::absolute(p)?.display().to_string())
+}
+
+/// Runs `sketch`.
+pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    let Sub::Build(a) = args.command;
+    io::Format::from_path(&a.output)?;
+    let sections: Vec<KeySection> = match &a.sections {
+        Some(p) => {
+            #[derive(serde::Deserialize)]
+            #[serde(deny_unknown_fields)]
+            struct File {
+                sections: Vec<KeySection>,
+            }
+            let text =
+                std::fs::read_to_string(p).map_err(|e| anyhow::anyhow!("{}: {e}", p.display()))?;
+            serde_json::from_str::<File>(&text)
+                .map_err(|e| anyhow::anyhow!("{}: not a sections file: {e}", p.display()))?
+                .sections
+        }
+        None => Vec::new(),
+    };
+    let level = a.level.unwrap_or(match (&a.side, sections.is_empty()) {
+        (None, _) => Level::Initial,
+        (Some(_), true) => Level::Intermediate,
+        (Some(_), false) => Level::Final,
+    });
+    let inputs = Inputs {
+        front: ProfileInput::Path(abs(&a.front)?),
+        side: a
+            .side
+            .as_deref()
+            .map(abs)
+            .transpose()?
+            .map(ProfileInput::Path),
+        sections,
+        tolerance: a.tolerance,
+    };
+    let doc = CharacterDoc::from_inputs(inputs, level);
+    let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
+    if let Some(p) = &a.save_doc {
+        built.doc.save(p)?;
+        eprintln!("wrote {}", p.display());
+    }
+    finish(&built, &a.output, json)
+}
+
+/// Writes the mesh and prints the report (shared with `character build`).
+pub fn finish(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
+    io::write(&built.model.mesh, output)?;
+    let r = &built.report;
+    eprintln!(
+        "wrote {} ({} vertices, {} triangles; watertight {}, manifold {}, oriented {}; max C1 jump {:.2e})",
+        output.display(),
+        r.topology.vertices,
+        r.topology.triangles,
+        r.topology.watertight,
+        r.topology.manifold,
+        r.topology.oriented,
+        r.max_c1
+    );
+    for p in &r.profile_error {
+        eprintln!(
+            "profile error ({}): max {:.3} %, rms {:.3} % of height",
+            p.view,
+            100.0 * p.max_rel,
+            100.0 * p.rms_rel
+        );
+    }
+    if json {
+        super::print_json(r)?;
+    }
+    Ok(0)
+}

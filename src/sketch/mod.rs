@@ -1,0 +1,60 @@
+//! Characters from sketches: sketch-guided global modeling in three stages
+//! (paper 000 sec 4.1, Figs 5-6).
+//!
+//! 1. **Initial** (sec 4.1.1): the front outline is segmented into parts at
+//!    its concave corners ([`segment`]: armpits, crotch, neck); each part gets
+//!    a central curve and key sections placed where the profile's curvature
+//!    changes, circles whose diameter is the outline's width there
+//!    ([`derive`]); each part is a C2 sixth-order PDE chain through its
+//!    sections ([`part`], paper 002); parts are joined by transition surfaces
+//!    built from the parts' boundary curves and tangents ([`transition`]).
+//! 2. **Intermediate** (sec 4.1.2): with a side outline the sections become
+//!    ellipses, the depth and the centre's z from the side view (not for the
+//!    arms, hidden by the torso in the side view: they keep circles).
+//! 3. **Final** (sec 4.1.3): key cross-section sketches are fitted by GECs
+//!    (`curve::gec`) and replace the section nearest their height.
+//!
+//! Simpler than the paper: sections are always re-placed from the front
+//! profile only; removed parts (hair, tail) are recorded in the document but
+//! not built; the transitions are cubic Hermite blends (C1, not C2); only
+//! standing humanoids (arms away from the body, legs apart) are segmented.
+//!
+//! The whole model is one mesh ([`build`]): every part and transition shares
+//! the vertices of the rings and seams it meets, and orientation is made
+//! consistent and outward; watertightness, manifoldness and orientation are
+//! measured by `mesh::topology`, the join jumps by [`build::JoinReport`] and
+//! the profile error per view by [`report`].
+
+pub mod build;
+pub mod check;
+pub mod derive;
+pub mod input;
+pub mod part;
+pub mod poly;
+pub mod report;
+pub mod segment;
+pub mod transition;
+
+pub use build::{build_model, Model, Resolution};
+pub use report::{build_document, Built, SketchReport};
+
+/// Errors of sketch-based modeling.
+#[derive(Debug, thiserror::Error)]
+pub enum SketchError {
+    #[error("{what}: {message}")]
+    Outline { what: String, message: String },
+    #[error("{path}: {message}")]
+    File { path: String, message: String },
+    #[error("segmentation: {0}")]
+    Segmentation(String),
+    #[error("profiles do not match: {0}")]
+    Mismatch(String),
+    #[error("cut '{id}': {message}")]
+    Cut { id: String, message: String },
+    #[error("key section: {0}")]
+    Section(String),
+    #[error("part '{part}': {message}")]
+    Part { part: String, message: String },
+    #[error("document: {0}")]
+    Document(String),
+}

@@ -1,0 +1,196 @@
+//! From a character document to a model and its JSON report.
+
+use super::build::{build_model, JoinReport, Model, Resolution, SeamReport};
+use super::derive::derive;
+use super::input::{read_profile, Outline, ViewKind};
+use super::SketchError;
+use crate::character::doc::{CharacterDoc, Level, SectionShape};
+use crate::mesh::topology::{report as topology, TopologyReport};
+use serde::Serialize;
+use std::path::Path;
+
+/// One section in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct SectionReport {
+    pub u: f64,
+    pub centre: [f64; 3],
+    pub shape: &'static str,
+}
+
+/// One part in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct PartReport {
+    pub name: String,
+    pub surface: String,
+    pub sections: Vec<SectionReport>,
+    pub closed_end: bool,
+    pub joins: Vec<JoinReport>,
+}
+
+/// One transition in the report.
+#[derive(Clone, Debug, Serialize)]
+pub struct TransitionReport {
+    pub name: String,
+    pub parent: String,
+    pub children: Vec<String>,
+    pub surface: &'static str,
+    pub joins: Vec<JoinReport>,
+    pub seams: Vec<SeamReport>,
+}
+
+/// Model silhouette against a sketched profile, relative to model height.
+#[derive(Clone, Debug, Serialize)]
+pub struct ProfileErrorReport {
+    pub view: &'static str,
+    pub max_rel: f64,
+    pub rms_rel: f64,
+}
+
+/// The JSON report of a build.
+#[derive(Clone, Debug, Serialize)]
+pub struct SketchReport {
+    pub level: Level,
+    pub height: f64,
+    pub parts: Vec<PartReport>,
+    pub transitions: Vec<TransitionReport>,
+    pub topology: TopologyReport,
+    pub profile_error: Vec<ProfileErrorReport>,
+    /// Largest C1 jump of any transition join (relative).
+    pub max_c1: f64,
+    /// Removed parts recorded in the document and not built.
+    pub not_built: Vec<String>,
+}
+
+/// Everything a build produces.
+#[derive(Clone, Debug)]
+pub struct Built {
+    /// The document with its derived parts and transitions filled in.
+    pub doc: CharacterDoc,
+    pub model: Model,
+    pub report: SketchReport,
+    pub front: Outline,
+    pub side: Option<Outline>,
+}
+
+fn shape_name(s: &SectionShape) -> &'static str {
+    match s {
+        SectionShape::Circle { r } if *r == 0.0 => "point",
+        SectionShape::Circle { .. } => "circle",
+        SectionShape::Ellipse { .. } => "ellipse",
+        SectionShape::Gec { .. } => "gec",
+    }
+}
+
+/// Builds a document: reads its profiles (relative to `base`), derives the
+/// parts and transitions when the document has none, builds the mesh and
+/// measures it. `rederive` forces derivation from the inputs.
+pub fn build_document(
+    doc: &CharacterDoc,
+    base: &Path,
+    res: Resolution,
+    rederive: bool,
+) -> Result<Built, SketchError> {
+    doc.validate()
+        .map_err(|e| SketchError::Document(e.to_string()))?;
+    let tol = doc.inputs.tolerance;
+    let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
+    let side = match &doc.inputs.side {
+        Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
+        None => None,
+    };
+    if doc.level != Level::Initial && side.is_none() {
+        return Err(SketchError::Document(format!(
+            "level {} needs a side profile",
+            doc.level.name()
+        )));
+    }
+    if doc.level == Level::Final && doc.inputs.sections.is_empty() {
+        return Err(SketchError::Document(
+            "level final needs key cross-section sketches".into(),
+        ));
+    }
+    let mut out = doc.clone();
+    let (yr, _) = super::poly::bounds(&front.points);
+    let height = yr[1] - yr[0];
+    if rederive || doc.parts.is_empty() {
+        let d = derive(
+            &front.points,
+            side.as_ref().map(|s| s.points.as_slice()),
+            &doc.inputs.sections,
+            doc.level,
+        )?;
+        out.parts = d.parts;
+        out.transitions = d.transitions;
+    }
+    let model = build_model(&out.parts, &out.transitions, height, res)?;
+    let topo = topology(&model.mesh);
+    let parts = out
+        .parts
+        .iter()
+        .map(|p| PartReport {
+            name: p.name.clone(),
+            surface: match p.surface {
+                crate::character::doc::SurfaceSpec::Pde6C2 { a } => {
+                    format!("pde6 C2 chain (a = {a})")
+                }
+            },
+            sections: p
+                .sections
+                .iter()
+                .map(|s| SectionReport {
+                    u: s.u,
+                    centre: s.centre,
+                    shape: shape_name(&s.shape),
+                })
+                .collect(),
+            closed_end: p.closed_end,
+            joins: model
+                .joins
+                .iter()
+                .filter(|j| j.part == p.name)
+                .cloned()
+                .collect(),
+        })
+        .collect();
+    let transitions = out
+        .transitions
+        .iter()
+        .map(|t| TransitionReport {
+            name: t.name.clone(),
+            parent: t.parent.clone(),
+            children: t.children.clone(),
+            surface: "cubic Hermite blend (C1 to the parts)",
+            joins: model
+                .joins
+                .iter()
+                .filter(|j| j.transition == t.name)
+                .cloned()
+                .collect(),
+            seams: model
+                .seams
+                .iter()
+                .filter(|s| s.transition == t.name)
+                .cloned()
+                .collect(),
+        })
+        .collect();
+    let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
+    let profile_error = super::check::profile_errors(&model.mesh, &front, side.as_ref(), height);
+    let report = SketchReport {
+        level: out.level,
+        height,
+        parts,
+        transitions,
+        topology: topo,
+        profile_error,
+        max_c1,
+        not_built: out.removed_parts.iter().map(|r| r.name.clone()).collect(),
+    };
+    Ok(Built {
+        doc: out,
+        model,
+        report,
+        front,
+        side,
+    })
+}
