@@ -35,3 +35,4 @@ pub mod pde6;
 pub mod plate;
 pub mod render;
 pub mod surface;
+pub mod template;

@@ -11,3 +11,4 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod template;
