@@ -21,6 +21,7 @@
 //! | [`ode6`] | 004 | C2 sixth-order ODE surfaces |
 //! | [`conv`] | 003 | convolution surfaces from silhouettes |
 //! | [`character`] | 000 | character documents and assembly |
+//! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
 
 pub mod character;
 pub mod check;
@@ -33,6 +34,7 @@ pub mod ode6;
 pub mod pde4;
 pub mod pde6;
 pub mod plate;
+pub mod profile;
 pub mod render;
 pub mod surface;
 pub mod template;

@@ -58,6 +58,11 @@ pub fn families() -> &'static [Family] {
             papers: "003",
             checks: crate::conv::check::checks,
         },
+        Family {
+            name: "profile",
+            papers: "000",
+            checks: crate::profile::check::checks,
+        },
     ]
 }
 

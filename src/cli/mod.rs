@@ -13,6 +13,7 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod profile;
 
 use clap::{Parser, Subcommand};
 
@@ -50,6 +51,8 @@ pub enum Command {
     Ode6(ode6::Args),
     /// Convolution surfaces from sketched silhouettes (paper 003).
     Conv(conv::Args),
+    /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
+    Profile(profile::Args),
 }
 
 /// Parses the arguments, runs the command, returns the exit code.
@@ -67,6 +70,7 @@ pub fn main() -> i32 {
         Command::Pde6(a) => pde6::run(a, json),
         Command::Ode6(a) => ode6::run(a, json),
         Command::Conv(a) => conv::run(a, json),
+        Command::Profile(a) => profile::run(a, json),
     };
     match result {
         Ok(code) => code,

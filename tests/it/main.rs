@@ -11,4 +11,5 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod profile;
 mod template;

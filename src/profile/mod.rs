@@ -1,0 +1,197 @@
+//! Profiles: closed planar outlines of a character seen in one view (paper
+//! 000 sec 4.1: the primary/front and secondary/side profiles of
+//! sketch-guided modeling; sec 4.2: the template's profile curves).
+//!
+//! A [`Profile`] is a simple closed polygon, counter-clockwise in its own
+//! 2D coordinates (horizontal, vertical), stored without a repeated closing
+//! point. It comes from a sketch ([`read_svg`], [`read_json`]), from a mesh
+//! ([`outline_of_mesh`]), or from code ([`Profile::new`]), and every source
+//! goes through the same validation.
+//!
+//! # Coordinates and conventions
+//!
+//! Model coordinates are right-handed with y up. The 2D profile coordinates
+//! of each [`View`] (see [`View::project`]):
+//!
+//! | view | horizontal | vertical | SVG x | SVG y |
+//! |---|---|---|---|---|
+//! | front | model x | model y | model x | -model y |
+//! | side | model z | model y | model z | -model y |
+//! | top | model x | model z | model x | model z |
+//!
+//! SVG input: **SVG user units are model units**; the root `viewBox` (and
+//! `preserveAspectRatio`) are ignored, `width`/`height` only size the page;
+//! every other transform (groups, `transform` attributes, nested `<svg>`) is
+//! applied. In the front and side views model y = -(SVG y) (SVG y points
+//! down); in the top view SVG y is model z (looking down on the character
+//! from +y, +z, its front, toward the bottom of the page). Any path commands
+//! and the basic shapes (`rect`, `circle`, `ellipse`, `polygon`, `polyline`,
+//! `line`) are accepted; curves are flattened to within a given tolerance
+//! (model units). A file holds **exactly one closed outline** (a shape whose
+//! subpath is closed by `Z` or ends where it starts) plus any number of
+//! **cuts**: paths, lines or polylines whose `id` starts with `cut`, kept as
+//! open polylines in model coordinates ([`Cut`]). Errors: no closed shape
+//! ([`ProfileError::NoOutline`]), an open shape that is not a cut
+//! ([`ProfileError::OpenPath`], naming its id), several closed shapes
+//! ([`ProfileError::SeveralOutlines`], naming their ids), a self-intersecting
+//! outline ([`ProfileError::SelfIntersecting`]: the two segment indices and
+//! the approximate location in model units).
+//!
+//! JSON input: `{"view": "front", "points": [[h, v], ...]}` in profile
+//! coordinates (unknown fields rejected).
+//!
+//! SVG output ([`to_svg`]): one closed `<path>` per profile, id = the view
+//! name, stroke only, with a `viewBox` that fits; reading it back with
+//! [`parse_svg`] gives the same profile up to f32 rounding (usvg parses in
+//! f32).
+//!
+//! # Modules
+//! - `polygon`: [`Profile`] and its validation and measures.
+//! - `grid`: a uniform grid of segments (self-intersection test and distance
+//!   queries in near-linear time).
+//! - `distance`: [`profile_distance`], symmetric Hausdorff and RMS distance.
+//! - `svg`, `json`: file input and output.
+//! - `outline`: the outline of a mesh's orthographic projection.
+//! - `check`: the family's verification checks.
+
+pub mod check;
+mod distance;
+mod grid;
+mod json;
+mod outline;
+mod polygon;
+pub mod shapes;
+mod svg;
+
+pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
+pub use json::{parse_json, read_json, to_json};
+pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
+pub use polygon::Profile;
+pub use svg::{parse_svg, read_svg, to_svg, write_svg, Cut, SvgSketch};
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::str::FromStr;
+use thiserror::Error;
+
+/// A view direction: which two model axes a profile is drawn in.
+#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[serde(rename_all = "lowercase")]
+pub enum View {
+    /// Looking along -z at the character's front: (x, y).
+    Front,
+    /// Looking along -x at its side: (z, y).
+    Side,
+    /// Looking down along -y: (x, z).
+    Top,
+}
+
+impl View {
+    /// Every view.
+    pub const ALL: [View; 3] = [View::Front, View::Side, View::Top];
+
+    /// Indices of the model axes giving (horizontal, vertical).
+    pub fn axes(self) -> (usize, usize) {
+        match self {
+            View::Front => (0, 1),
+            View::Side => (2, 1),
+            View::Top => (0, 2),
+        }
+    }
+
+    /// Orthographic projection of a model point to profile coordinates.
+    pub fn project(self, p: [f64; 3]) -> [f64; 2] {
+        let (h, v) = self.axes();
+        [p[h], p[v]]
+    }
+
+    /// The lowercase name (`"front"`, `"side"`, `"top"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Front => "front",
+            View::Side => "side",
+            View::Top => "top",
+        }
+    }
+
+    /// Whether SVG y is minus the profile's vertical coordinate (front, side)
+    /// rather than equal to it (top).
+    pub fn svg_y_flipped(self) -> bool {
+        !matches!(self, View::Top)
+    }
+}
+
+impl fmt::Display for View {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for View {
+    type Err = ProfileError;
+    fn from_str(s: &str) -> Result<View, ProfileError> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "front" => Ok(View::Front),
+            "side" => Ok(View::Side),
+            "top" => Ok(View::Top),
+            _ => Err(ProfileError::UnknownView { name: s.into() }),
+        }
+    }
+}
+
+/// Errors of profile construction, input and output.
+#[derive(Debug, Error)]
+pub enum ProfileError {
+    #[error("point {index} of the profile has a non-finite coordinate")]
+    NonFinite { index: usize },
+    #[error("a profile needs at least 3 distinct points, got {count}")]
+    TooFewPoints { count: usize },
+    #[error("the profile has zero area (all points on a line)")]
+    ZeroArea,
+    #[error(
+        "the profile intersects itself: segment {a} crosses segment {b} near ({:.6}, {:.6})",
+        at[0],
+        at[1]
+    )]
+    SelfIntersecting { a: usize, b: usize, at: [f64; 2] },
+    #[error("path {id:?} is open: the outline must be closed (end it with Z), or name it cut... to make it a cut")]
+    OpenPath { id: String },
+    #[error("the SVG has no closed outline (one closed path, rect, circle, ellipse or polygon)")]
+    NoOutline,
+    #[error("the SVG has several closed outlines ({}), expected exactly one", ids.join(", "))]
+    SeveralOutlines { ids: Vec<String> },
+    #[error("SVG: {message}")]
+    Svg { message: String },
+    #[error("unknown view {name:?} (expected front, side or top)")]
+    UnknownView { name: String },
+    #[error("expected a {expected} profile, got a {found} one")]
+    WrongView { expected: View, found: View },
+    #[error("invalid parameter: {message}")]
+    InvalidParameter { message: String },
+    #[error(
+        "the mesh's projection covers no sample at resolution {resolution} (thinner than a pixel?)"
+    )]
+    EmptyProjection { resolution: usize },
+    #[error("mesh: {0}")]
+    Mesh(#[from] crate::mesh::MeshError),
+    #[error(
+        "the mesh's projection has {count} separate parts; the largest but one covers {fraction:.3} of the largest (limit {limit})"
+    )]
+    Disconnected {
+        count: usize,
+        fraction: f64,
+        limit: f64,
+    },
+    #[error("{path}: {source}")]
+    Io {
+        path: String,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("{path}: invalid JSON profile: {source}")]
+    Json {
+        path: String,
+        #[source]
+        source: serde_json::Error,
+    },
+}

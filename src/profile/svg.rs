@@ -1,0 +1,277 @@
+//! SVG input (parsed by usvg, curves flattened by kurbo) and output. The
+//! conventions are in the module docs of [`crate::profile`].
+
+use super::{Profile, ProfileError, View};
+use kurbo::{BezPath, PathEl, Point};
+use serde::Serialize;
+use std::fmt::Write as _;
+use std::path::Path;
+use usvg::roxmltree;
+
+/// A sketch read from SVG: the closed outline and the optional cuts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SvgSketch {
+    pub outline: Profile,
+    pub cuts: Vec<Cut>,
+}
+
+/// An open polyline whose SVG id starts with `cut` (an explicit part
+/// boundary), in profile coordinates of the sketch's view.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Cut {
+    pub id: String,
+    pub points: Vec<[f64; 2]>,
+}
+
+/// Reads an SVG sketch; see [`parse_svg`].
+pub fn read_svg(path: &Path, view: View, tolerance: f64) -> Result<SvgSketch, ProfileError> {
+    let text = std::fs::read_to_string(path).map_err(|source| ProfileError::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    parse_svg(&text, view, tolerance)
+}
+
+/// A flattened subpath in model-oriented SVG user units (transforms
+/// applied, y still down).
+struct Subpath {
+    id: String,
+    points: Vec<[f64; 2]>,
+    closed: bool,
+}
+
+/// Parses an SVG sketch drawn in `view`: exactly one closed outline plus
+/// any cuts (ids starting with `cut`); curves flattened to within
+/// `tolerance` model units. Errors: see the module docs.
+pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, ProfileError> {
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(ProfileError::InvalidParameter {
+            message: format!(
+                "the flattening tolerance must be finite and positive, got {tolerance}"
+            ),
+        });
+    }
+    let subpaths = flattened_subpaths(text, tolerance)?;
+    let to_model = |p: [f64; 2]| {
+        if view.svg_y_flipped() {
+            [p[0], -p[1]]
+        } else {
+            p
+        }
+    };
+    let mut cuts = Vec::new();
+    let mut outlines: Vec<Subpath> = Vec::new();
+    for s in subpaths {
+        if s.id.starts_with("cut") {
+            cuts.push(Cut {
+                id: s.id,
+                points: s.points.into_iter().map(to_model).collect(),
+            });
+        } else if s.closed {
+            outlines.push(s);
+        } else {
+            return Err(ProfileError::OpenPath { id: s.id });
+        }
+    }
+    match outlines.len() {
+        0 => Err(ProfileError::NoOutline),
+        1 => {
+            let s = outlines.pop().unwrap_or_else(|| unreachable!());
+            let outline = Profile::new(view, s.points.into_iter().map(to_model).collect())?;
+            Ok(SvgSketch { outline, cuts })
+        }
+        _ => Err(ProfileError::SeveralOutlines {
+            ids: outlines.into_iter().map(|s| s.id).collect(),
+        }),
+    }
+}
+
+/// Every subpath of every shape in document order, flattened, with its
+/// absolute transform applied. Shapes without an id are named
+/// `<shape N>` (N counts shapes from 1); a shape with several subpaths
+/// gives `id (subpath K)`.
+fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, ProfileError> {
+    let svg_err = |e: &dyn std::fmt::Display| ProfileError::Svg {
+        message: e.to_string(),
+    };
+    let xml_opt = || roxmltree::ParsingOptions {
+        allow_dtd: true,
+        ..Default::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, xml_opt()).map_err(|e| svg_err(&e))?;
+    // User units are model units: drop the root viewBox so that usvg maps
+    // user space to the canvas by the identity.
+    let stripped;
+    let doc = match doc
+        .root_element()
+        .attributes()
+        .find(|a| a.name() == "viewBox")
+    {
+        Some(a) => {
+            let r = a.range();
+            stripped = format!(
+                "{}{}{}",
+                &text[..r.start],
+                " ".repeat(r.len()),
+                &text[r.end..]
+            );
+            roxmltree::Document::parse_with_options(&stripped, xml_opt())
+                .map_err(|e| svg_err(&e))?
+        }
+        None => doc,
+    };
+    let tree =
+        usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| svg_err(&e))?;
+    let mut out = Vec::new();
+    let mut shape = 0usize;
+    collect(tree.root(), tolerance, &mut shape, &mut out);
+    Ok(out)
+}
+
+fn collect(g: &usvg::Group, tolerance: f64, shape: &mut usize, out: &mut Vec<Subpath>) {
+    for node in g.children() {
+        match node {
+            usvg::Node::Group(g) => collect(g, tolerance, shape, out),
+            usvg::Node::Path(p) => {
+                *shape += 1;
+                let id = if p.id().is_empty() {
+                    format!("<shape {shape}>")
+                } else {
+                    p.id().to_string()
+                };
+                let subs = flatten(&to_kurbo(p.data(), p.abs_transform()), tolerance);
+                let many = subs.len() > 1;
+                for (k, (points, closed)) in subs.into_iter().enumerate() {
+                    let id = if many {
+                        format!("{id} (subpath {})", k + 1)
+                    } else {
+                        id.clone()
+                    };
+                    out.push(Subpath { id, points, closed });
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The path with the affine transform applied (before flattening, so the
+/// tolerance is in model units).
+fn to_kurbo(path: &usvg::tiny_skia_path::Path, t: usvg::Transform) -> BezPath {
+    use usvg::tiny_skia_path::PathSegment as S;
+    let map = |p: usvg::tiny_skia_path::Point| {
+        let (x, y) = (p.x as f64, p.y as f64);
+        Point::new(
+            t.sx as f64 * x + t.kx as f64 * y + t.tx as f64,
+            t.ky as f64 * x + t.sy as f64 * y + t.ty as f64,
+        )
+    };
+    let mut b = BezPath::new();
+    for s in path.segments() {
+        match s {
+            S::MoveTo(p) => b.move_to(map(p)),
+            S::LineTo(p) => b.line_to(map(p)),
+            S::QuadTo(p, q) => b.quad_to(map(p), map(q)),
+            S::CubicTo(p, q, r) => b.curve_to(map(p), map(q), map(r)),
+            S::Close => b.close_path(),
+        }
+    }
+    b
+}
+
+/// Flattens to polylines: (points, closed). A subpath is closed when it
+/// ends with a close command or its last point equals its first; the
+/// closing copy is not repeated. Subpaths of fewer than 2 points are
+/// dropped.
+fn flatten(b: &BezPath, tolerance: f64) -> Vec<(Vec<[f64; 2]>, bool)> {
+    let mut subs: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
+    let mut cur: Vec<[f64; 2]> = Vec::new();
+    let mut finish = |cur: &mut Vec<[f64; 2]>, closed: bool| {
+        let mut pts = std::mem::take(cur);
+        let mut closed = closed;
+        if pts.len() > 2 && pts.first() == pts.last() {
+            pts.pop();
+            closed = true;
+        }
+        if pts.len() >= 2 {
+            subs.push((pts, closed));
+        }
+    };
+    kurbo::flatten(b.iter(), tolerance, |el| match el {
+        PathEl::MoveTo(p) => {
+            finish(&mut cur, false);
+            cur.push([p.x, p.y]);
+        }
+        PathEl::LineTo(p) => cur.push([p.x, p.y]),
+        PathEl::ClosePath => finish(&mut cur, true),
+        // flatten emits only the three above
+        PathEl::QuadTo(_, p) | PathEl::CurveTo(_, _, p) => cur.push([p.x, p.y]),
+    });
+    finish(&mut cur, false);
+    subs
+}
+
+/// An SVG document with one closed `<path>` per profile (id = the view
+/// name, `-2`, `-3`... appended on repeats), stroke only, with a `viewBox`
+/// (and equal `width`/`height`) fitting every profile with a 5 % margin.
+/// Coordinates follow the module conventions, printed so that they read
+/// back exactly in f64 (usvg itself parses in f32).
+pub fn to_svg(profiles: &[&Profile]) -> String {
+    let svg_pt = |v: View, p: [f64; 2]| if v.svg_y_flipped() { [p[0], -p[1]] } else { p };
+    let mut lo = [f64::INFINITY; 2];
+    let mut hi = [f64::NEG_INFINITY; 2];
+    for pr in profiles {
+        for &p in pr.points() {
+            let q = svg_pt(pr.view(), p);
+            for k in 0..2 {
+                lo[k] = lo[k].min(q[k]);
+                hi[k] = hi[k].max(q[k]);
+            }
+        }
+    }
+    if profiles.is_empty() {
+        lo = [0.0; 2];
+        hi = [1.0; 2];
+    }
+    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    let m = 0.05 * extent;
+    let (x0, y0) = (lo[0] - m, lo[1] - m);
+    let (w, h) = (hi[0] - lo[0] + 2.0 * m, hi[1] - lo[1] + 2.0 * m);
+    let mut s = String::new();
+    let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="{x0} {y0} {w} {h}">"#
+    );
+    let mut used: Vec<View> = Vec::new();
+    for pr in profiles {
+        let v = pr.view();
+        used.push(v);
+        let k = used.iter().filter(|&&u| u == v).count();
+        let id = if k == 1 {
+            v.name().to_string()
+        } else {
+            format!("{}-{k}", v.name())
+        };
+        let _ = write!(
+            s,
+            r#"  <path id="{id}" fill="none" stroke="black" stroke-width="{}" d=""#,
+            extent * 2e-3
+        );
+        for (i, &p) in pr.points().iter().enumerate() {
+            let q = svg_pt(v, p);
+            let _ = write!(s, "{}{} {}", if i == 0 { "M" } else { " L" }, q[0], q[1]);
+        }
+        let _ = writeln!(s, r#" Z"/>"#);
+    }
+    s.push_str("</svg>\n");
+    s
+}
+
+/// Writes [`to_svg`] atomically (temporary file, then rename).
+pub fn write_svg(path: &Path, profiles: &[&Profile]) -> Result<(), ProfileError> {
+    crate::mesh::io::write_atomic(path, to_svg(profiles).as_bytes()).map_err(|e| match e {
+        crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
+        e => ProfileError::Mesh(e),
+    })
+}
