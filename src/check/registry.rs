@@ -63,6 +63,11 @@ pub fn families() -> &'static [Family] {
             papers: "000",
             checks: crate::profile::check::checks,
         },
+        Family {
+            name: "template",
+            papers: "000",
+            checks: crate::template::check::checks,
+        },
     ]
 }
 

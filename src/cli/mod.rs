@@ -14,6 +14,7 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod template;
 
 use clap::{Parser, Subcommand};
 
@@ -51,6 +52,8 @@ pub enum Command {
     Ode6(ode6::Args),
     /// Convolution surfaces from sketched silhouettes (paper 003).
     Conv(conv::Args),
+    /// Template-based global modeling: fit a template to sketched profiles (paper 000 sec 4.2).
+    Template(template::Args),
     /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
     Profile(profile::Args),
 }
@@ -70,6 +73,7 @@ pub fn main() -> i32 {
         Command::Pde6(a) => pde6::run(a, json),
         Command::Ode6(a) => ode6::run(a, json),
         Command::Conv(a) => conv::run(a, json),
+        Command::Template(a) => template::run(a, json),
         Command::Profile(a) => profile::run(a, json),
     };
     match result {

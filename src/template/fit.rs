@@ -11,6 +11,9 @@ use std::time::Instant;
 /// Largest ratio between the arc-length shares of corresponding landmark arcs
 /// on the template and the sketch before the landmarks count as unmatched.
 pub const ARC_RATIO_MAX: f64 = 3.0;
+/// Side-outline stretches steeper than this (|dy/ds|) take their partner
+/// at the same height.
+pub const STEEP: f64 = 0.5;
 
 /// A template: every vertex that moves (`mesh`) and the skin whose outlines
 /// and sections are fitted (`skin`, vertex `i` at `mesh.positions[skin_index[i]]`).
@@ -67,7 +70,7 @@ pub struct Sketch {
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct FitOptions {
-    /// RBF centres on the front outline (default 240).
+    /// RBF centres on the front outline (default 400).
     pub front_centres: usize,
     /// RBF centres on the side outline (default 160).
     pub side_centres: usize,
@@ -88,7 +91,7 @@ pub struct FitOptions {
 impl Default for FitOptions {
     fn default() -> Self {
         FitOptions {
-            front_centres: 240,
+            front_centres: 400,
             side_centres: 160,
             section_points: 32,
             anchors: 240,
@@ -183,6 +186,27 @@ pub fn matched_landmarks(
         }
     }
     Ok((lt, ls))
+}
+
+/// The crossing of the horizontal line at height `y` with the closed
+/// polygon `p` nearest to `near`; `near` itself when the line misses it.
+pub fn level_partner(p: &[[f64; 2]], y: f64, near: f64) -> f64 {
+    let n = p.len();
+    let mut best = near;
+    let mut dist = f64::INFINITY;
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
+            continue;
+        }
+        let t = (y - a[1]) / (b[1] - a[1]);
+        let x = a[0] + t * (b[0] - a[0]);
+        if (x - near).abs() < dist {
+            dist = (x - near).abs();
+            best = x;
+        }
+    }
+    best
 }
 
 fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
@@ -283,7 +307,26 @@ pub fn fit(
     let l_side = outline_of(outline, &low_skin, View::Side)?;
     let (lt, ls) = matched_landmarks(View::Side, opts.side_scheme, &l_side, &side)?;
     let (ca, cb) = correspond(&l_side, &lt, &side, &ls, opts.side_centres);
-    let values: Vec<[f64; 1]> = ca.iter().zip(&cb).map(|(a, b)| [b[0] - a[0]]).collect();
+    // depth only: where the low outline is steep (|dy/ds| >= STEEP) the
+    // partner is the sketch's crossing of the same height nearest to the
+    // arc-length partner; on shallow stretches (soles, the top of the head,
+    // under a belly) the arc-length partner's depth
+    let m = ca.len();
+    let values: Vec<[f64; 1]> = (0..m)
+        .map(|i| {
+            let (a, b) = (ca[i], cb[i]);
+            let (p, q) = (ca[(i + m - 1) % m], ca[(i + 1) % m]);
+            let len = ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2))
+                .sqrt()
+                .max(f64::MIN_POSITIVE);
+            let z = if ((q[1] - p[1]) / len).abs() >= STEEP {
+                level_partner(&side, a[1], b[0])
+            } else {
+                b[0]
+            };
+            [z - a[0]]
+        })
+        .collect();
     let depth =
         Rbf::<2, 1>::fit(&ca, &values, opts.condition).map_err(|source| TemplateError::Rbf {
             stage: "side depth warp",

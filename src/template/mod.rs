@@ -31,6 +31,7 @@
 pub mod check;
 pub mod fit;
 pub mod landmarks;
+pub mod measure;
 pub mod polygon;
 pub mod rbf;
 pub mod sections;
@@ -76,29 +77,7 @@ pub enum TemplateError {
     Mesh(#[from] crate::mesh::MeshError),
 }
 
-/// A view plane: front (x, y), side (z, y).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub enum View {
-    Front,
-    Side,
-}
-
-impl View {
-    /// A 3D point's coordinates in the view plane.
-    pub fn project(self, p: [f64; 3]) -> [f64; 2] {
-        match self {
-            View::Front => [p[0], p[1]],
-            View::Side => [p[2], p[1]],
-        }
-    }
-
-    pub fn name(self) -> &'static str {
-        match self {
-            View::Front => "front",
-            View::Side => "side",
-        }
-    }
-}
+pub use crate::profile::View;
 
 /// How the fit obtains a mesh's outline in a view (the `profile` module's
 /// silhouette in the library; exact outlines of synthetic shapes in tests).

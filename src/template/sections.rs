@@ -25,7 +25,7 @@ use crate::mesh::slice::slice;
 pub const ANCHOR_BAND: f64 = 3e-3;
 /// Anchors closer than this fraction of the height to a section's height
 /// are dropped (the section decides there).
-pub const SECTION_CLEARANCE: f64 = 0.04;
+pub const SECTION_CLEARANCE: f64 = 0.01;
 
 /// One key cross-section: its height and its loops as `(x, z)` points.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]

@@ -146,3 +146,103 @@ fn similarity_of_the_sketch_gives_the_similar_result() {
         "{worst}"
     );
 }
+
+mod cli_tests {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::study::{makehuman_template, CASES};
+    use pdesculpt::template::View;
+    use std::path::Path;
+
+    fn write_profile(path: &Path, view: &str, pts: &[[f64; 2]]) {
+        let v = serde_json::json!({ "view": view, "points": pts });
+        std::fs::write(path, v.to_string()).unwrap();
+    }
+
+    #[test]
+    fn cli_fits_makehuman_to_a_front_profile() {
+        let d = tmpdir("template-fit");
+        let case = CASES.iter().find(|c| c.name == "male->boy").unwrap();
+        let ts: Vec<_> = case
+            .target
+            .iter()
+            .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
+            .collect();
+        let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+        let front = d.join("front.json");
+        write_profile(
+            &front,
+            "front",
+            &mesh_outline(&target, View::Front).unwrap(),
+        );
+        let out = d.join("boy.obj");
+        let o = pdesculpt(&[
+            "--json",
+            "template",
+            "fit",
+            "--template",
+            "makehuman",
+            "--front",
+            front.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let rep: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let err = rep["profile_errors"][0]["max_rel"].as_f64().unwrap();
+        assert!(err < pdesculpt::template::check::PROFILE_REL, "{err}");
+        let written = pdesculpt::mesh::io::read(&out).unwrap();
+        let base = makehuman_template(&[]).unwrap();
+        assert_eq!(written.positions.len(), base.mesh.positions.len());
+        assert_eq!(written.triangles.len(), base.mesh.triangles.len());
+    }
+
+    #[test]
+    fn cli_bad_profiles_fail_cleanly_without_output() {
+        let d = tmpdir("template-bad");
+        let out = d.join("never.obj");
+        let run = |front: &Path, tpl: &str| {
+            pdesculpt(&[
+                "template",
+                "fit",
+                "--template",
+                tpl,
+                "--front",
+                front.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ])
+        };
+        // self-intersecting (a bow tie)
+        let bow = d.join("bow.json");
+        write_profile(
+            &bow,
+            "front",
+            &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]],
+        );
+        assert_clear_error(&run(&bow, "makehuman"), "intersect");
+        // open SVG path
+        let open = d.join("open.svg");
+        std::fs::write(
+            &open,
+            r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 1 0 L 1 -2"/></svg>"#,
+        )
+        .unwrap();
+        assert_clear_error(&run(&open, "makehuman"), "open");
+        // an ellipse: no armpits, no crotch
+        let ell = d.join("ellipse.json");
+        let e: Vec<[f64; 2]> = (0..120)
+            .map(|i| {
+                let t = i as f64 * std::f64::consts::TAU / 120.0;
+                [3.0 * t.cos(), 8.0 + 8.0 * t.sin()]
+            })
+            .collect();
+        write_profile(&ell, "front", &e);
+        assert_clear_error(&run(&ell, "makehuman"), "landmark");
+        // a template seen edge-on in the front view has no closed outline
+        let flat = d.join("flat.obj");
+        std::fs::write(&flat, "v 0 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n").unwrap();
+        assert_clear_error(&run(&ell, flat.to_str().unwrap()), "outline");
+        assert!(!out.exists());
+    }
+}
