@@ -40,4 +40,5 @@ pub mod profile;
 pub mod render;
 pub mod sketch;
 pub mod surface;
+pub mod template;
 pub mod verify;

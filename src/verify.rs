@@ -29,6 +29,7 @@ pub fn families() -> &'static [Family] {
         Family { name: "conv", papers: "003", checks: crate::conv::check::checks },
         Family { name: "profile", papers: "000", checks: crate::profile::check::checks },
         Family { name: "sketch", papers: "000", checks: crate::sketch::check::checks },
+        Family { name: "template", papers: "000", checks: crate::template::check::checks },
         Family { name: "derivatives", papers: "-", checks: derivative_checks },
     ]
 }

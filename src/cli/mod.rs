@@ -18,6 +18,7 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod template;
 
 use clap::{Parser, Subcommand};
 
@@ -59,6 +60,8 @@ pub enum Command {
     Sketch(sketch::Args),
     /// Character documents: build.
     Character(character::Args),
+    /// Template-based global modeling: fit a template to sketched profiles (paper 000 sec 4.2).
+    Template(template::Args),
     /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
     Profile(profile::Args),
 }
@@ -80,6 +83,7 @@ pub fn main() -> i32 {
         Command::Conv(a) => conv::run(a, json),
         Command::Sketch(a) => sketch::run(a, json),
         Command::Character(a) => character::run(a, json),
+        Command::Template(a) => template::run(a, json),
         Command::Profile(a) => profile::run(a, json),
     };
     match result {

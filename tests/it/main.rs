@@ -16,3 +16,4 @@ mod pde6;
 mod plate;
 mod profile;
 mod sketch;
+mod template;

@@ -1,0 +1,147 @@
+//! `pdesculpt template fit`: template-based global modeling (000 sec 4.2).
+//!
+//! `template fit --template makehuman|MESH --front F.svg [--side S.svg]
+//! [--sections SECTIONS.json] -o OUT`: writes the deformed template (every
+//! vertex and face in the template's order) and reports the profile error
+//! per view, the RBF centres and condition per level, and the time.
+
+use anyhow::Context;
+use pdesculpt::mesh::io;
+use pdesculpt::profile::{read_json, read_svg, View};
+use pdesculpt::template::measure::{mesh_outline, profile_errors, ViewError};
+use pdesculpt::template::sections::SectionSketch;
+use pdesculpt::template::study::makehuman_template;
+use pdesculpt::template::{fit, FitOptions, LevelReport, Sketch, Template};
+use std::path::{Path, PathBuf};
+
+const FORMATS: &str = "\
+SECTIONS.json: {\"sections\": [{\"y\": 10.4, \"loops\": [[[x, z], ...], ...]}, ...]}:
+  key cross-sections at heights y, each loop a closed polyline in the
+  horizontal plane (model x, z); loops are GEC-fitted (10 terms).
+Sketches: SVG (see `pdesculpt profile --help`) or JSON profiles.";
+
+/// Arguments of `pdesculpt template`.
+#[derive(clap::Args, Debug)]
+#[command(after_long_help = FORMATS)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// Deform a template so its profiles fit sketched ones (low, medium, high level).
+    #[command(after_long_help = FORMATS)]
+    Fit(FitArgs),
+}
+
+#[derive(clap::Args, Debug)]
+pub struct FitArgs {
+    /// `makehuman` (the bundled base body, every OBJ vertex) or a mesh file.
+    #[arg(long)]
+    pub template: String,
+    /// Front profile (SVG or JSON).
+    #[arg(long)]
+    pub front: PathBuf,
+    /// Side profile (SVG or JSON): medium level.
+    #[arg(long)]
+    pub side: Option<PathBuf>,
+    /// Key cross-sections (JSON): high level (needs --side).
+    #[arg(long)]
+    pub sections: Option<PathBuf>,
+    /// Output mesh (.obj, .glb, .stl, .ply).
+    #[arg(short, long)]
+    pub output: PathBuf,
+}
+
+#[derive(serde::Serialize)]
+struct Report {
+    output: String,
+    vertices: usize,
+    levels: Vec<LevelReport>,
+    profile_errors: Vec<ViewError>,
+    seconds: f64,
+}
+
+fn profile(path: &Path, view: View) -> anyhow::Result<Vec<[f64; 2]>> {
+    let p = if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+    {
+        read_json(path)?
+    } else {
+        read_svg(path, view, 1e-3)?.outline
+    };
+    Ok(p.points().to_vec())
+}
+
+/// Runs a `template` subcommand.
+pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
+    let Command::Fit(a) = args.command;
+    let t0 = std::time::Instant::now();
+    io::Format::from_path(&a.output)?;
+    let template: Template = if a.template == "makehuman" {
+        makehuman_template(&[])?
+    } else {
+        let m = io::read(Path::new(&a.template))?;
+        Template::whole(m)
+    };
+    let mut sketch = Sketch {
+        front: profile(&a.front, View::Front).context("front profile")?,
+        ..Default::default()
+    };
+    if let Some(s) = &a.side {
+        sketch.side = Some(profile(s, View::Side).context("side profile")?);
+    }
+    if let Some(s) = &a.sections {
+        let text = std::fs::read_to_string(s).with_context(|| s.display().to_string())?;
+        #[derive(serde::Deserialize)]
+        struct File {
+            sections: Vec<SectionSketch>,
+        }
+        let f: File = serde_json::from_str(&text)
+            .with_context(|| format!("{}: invalid sections JSON", s.display()))?;
+        sketch.sections = f.sections;
+    }
+    let r = fit(&template, &sketch, &FitOptions::default(), &mesh_outline)?;
+    let errors = profile_errors(&template, r.last(), &sketch)?;
+    let mut out = template.mesh.clone();
+    out.positions = r.last().to_vec();
+    io::write(&out, &a.output)?;
+    let report = Report {
+        output: a.output.display().to_string(),
+        vertices: out.positions.len(),
+        levels: r.levels.iter().map(|(l, _)| l.clone()).collect(),
+        profile_errors: errors,
+        seconds: t0.elapsed().as_secs_f64(),
+    };
+    if json {
+        super::print_json(&report)?;
+    } else {
+        for l in &report.levels {
+            eprintln!(
+                "{:?}: {} centres, condition {}, residual {:.1e}, max move {:.4}, {:.2} s",
+                l.level,
+                l.centres,
+                l.condition.map_or("-".into(), |c| format!("{c:.3e}")),
+                l.residual,
+                l.max_displacement,
+                l.seconds
+            );
+        }
+        for e in &report.profile_errors {
+            eprintln!(
+                "{} profile: max {:.4} ({:.2} % of height), rms {:.4}",
+                e.view.name(),
+                e.distance.max,
+                100.0 * e.distance.max_rel,
+                e.distance.rms
+            );
+        }
+        eprintln!(
+            "wrote {} ({} vertices) in {:.2} s",
+            report.output, report.vertices, report.seconds
+        );
+    }
+    Ok(0)
+}

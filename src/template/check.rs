@@ -1,0 +1,166 @@
+//! The template family's checks (000 sec 4.2): RBF identities, the exact
+//! front fit on a synthetic figure, covariance under similarity transforms,
+//! and the MakeHuman study's profile fits.
+
+use super::fit::{fit, FitOptions, Sketch, Template};
+use super::landmarks::Similarity;
+use super::polygon::hausdorff;
+use super::rbf::Rbf;
+use super::shapes::{figure, prism, refined, Figure};
+use super::study::{run_case, CASES};
+use super::{TemplateError, View};
+use crate::check::{tol, Check, Kind};
+
+/// Profile error allowed by issue 12: 0.5 % of the height.
+pub const PROFILE_REL: f64 = 5e-3;
+
+fn check(eq: &str, name: &str, kind: Kind, measured: f64, tolerance: f64, note: &str) -> Check {
+    let mut c = Check::new("template", "000", eq, name, kind, measured, tolerance);
+    c.note = note.into();
+    c
+}
+
+fn prism_outline(m: &crate::mesh::Mesh, view: View) -> Result<Vec<[f64; 2]>, TemplateError> {
+    let n = m.positions.len() / 2;
+    Ok(m.positions[..n].iter().map(|p| view.project(*p)).collect())
+}
+
+fn rbf_checks(out: &mut Vec<Check>) {
+    let c: Vec<[f64; 3]> = (0..60)
+        .map(|i| {
+            let t = i as f64 * 0.61;
+            [t.cos() * (1.0 + 0.05 * t), t.sin(), (0.37 * t).sin() * 2.0]
+        })
+        .collect();
+    let f = |p: &[f64; 3]| 1.5 * p[0] - 0.25 * p[1] + 2.0 * p[2] + 0.5;
+    let v: Vec<[f64; 1]> = c.iter().map(|p| [f(p)]).collect();
+    let m = match Rbf::<3, 1>::fit(&c, &v, false) {
+        Ok(r) => [0.3, -0.2, 0.9f64]
+            .iter()
+            .map(|&s| {
+                let q = [s, 0.5 * s, -s];
+                (r.eval(&q)[0] - f(&q)).abs()
+            })
+            .fold(0.0, f64::max),
+        Err(_) => f64::INFINITY,
+    };
+    out.push(check("sec 4.2.1", "rbf-reproduces-affine", Kind::Reference, m, tol::SOLVE * 1e3, "3D biharmonic spline with linear part on 60 centres of affine data: max error at 3 off-centre points"));
+    let w: Vec<[f64; 1]> = c
+        .iter()
+        .map(|p| [(2.0 * p[0]).sin() + p[2] * p[1]])
+        .collect();
+    let m = match Rbf::<3, 1>::fit(&c, &w, true) {
+        Ok(r) => c
+            .iter()
+            .zip(&w)
+            .map(|(p, x)| (r.eval(p)[0] - x[0]).abs())
+            .fold(0.0, f64::max),
+        Err(_) => f64::INFINITY,
+    };
+    out.push(check(
+        "sec 4.2.1",
+        "rbf-interpolates-centres",
+        Kind::Residual,
+        m,
+        tol::SOLVE * 1e3,
+        "max |s(c_i) - f_i| over the centres after the dense solve",
+    ));
+}
+
+fn figure_checks(out: &mut Vec<Check>) {
+    let template = Template::whole(prism(&refined(&figure(Figure::default()), 0.1), 1.0));
+    let target = Figure {
+        waist: 2.8,
+        shoulders: 2.5,
+        height: 15.0,
+        reach: 5.5,
+    };
+    let sketch = Sketch {
+        front: refined(&figure(target), 0.05),
+        ..Default::default()
+    };
+    let opts = FitOptions::default();
+    let m = fit(&template, &sketch, &opts, &prism_outline)
+        .and_then(|r| {
+            prism_outline(
+                &crate::mesh::Mesh::new(r.last().to_vec(), vec![]),
+                View::Front,
+            )
+        })
+        .map(|o| hausdorff(&o, &sketch.front, 0.01) / target.height)
+        .unwrap_or(f64::INFINITY);
+    out.push(check("sec 4.2.1", "figure-front-profile", Kind::Threshold, m, PROFILE_REL, "synthetic A-pose figure prism fitted to a wider, shorter one: Hausdorff distance of the fitted outline (exact) to the sketch / height"));
+    let s = Similarity {
+        scale: 1.7,
+        angle: 0.3,
+        translation: [4.0, -2.0],
+    };
+    let moved = Sketch {
+        front: sketch.front.iter().map(|&p| s.apply(p)).collect(),
+        ..Default::default()
+    };
+    let m = match (
+        fit(&template, &sketch, &opts, &prism_outline),
+        fit(&template, &moved, &opts, &prism_outline),
+    ) {
+        (Ok(a), Ok(b)) => {
+            let zc = a.depth_centre;
+            a.last()
+                .iter()
+                .zip(b.last())
+                .map(|(p, q)| {
+                    let r = s.apply([p[0], p[1]]);
+                    let z = s.scale * (p[2] - zc) + zc;
+                    (r[0] - q[0])
+                        .abs()
+                        .max((r[1] - q[1]).abs())
+                        .max((z - q[2]).abs())
+                })
+                .fold(0.0, f64::max)
+                / (s.scale * target.height)
+        }
+        _ => f64::INFINITY,
+    };
+    out.push(check("sec 4.2.1", "similarity-covariance", Kind::Reference, m, tol::SOLVE * 1e3, "fit to a sketch moved by a similarity (s 1.7, 0.3 rad) equals the similarity of the fit (depth scaled about the template's depth centre); max vertex difference / height"));
+}
+
+fn study_checks(out: &mut Vec<Check>) {
+    let mut opts = FitOptions::default();
+    opts.condition = false;
+    for name in ["male->fat", "male->boy", "female->pregnant"] {
+        let Some(case) = CASES.iter().find(|c| c.name == name) else {
+            continue;
+        };
+        let rows = run_case(case, &opts).map(|(r, _)| r).unwrap_or_default();
+        let front_low = rows
+            .iter()
+            .find(|r| r.method == "low")
+            .and_then(|r| r.profiles.iter().find(|p| p.view == View::Front))
+            .map(|p| p.distance.max_rel)
+            .unwrap_or(f64::INFINITY);
+        out.push(check("sec 4.2.1", &format!("study-{name}-low-front-profile"), Kind::Threshold, front_low, PROFILE_REL, "MakeHuman target's front outline as the sketch; the low-level fit's outline (re-extracted) against it, max distance / height"));
+        let side = |m: &str| {
+            rows.iter()
+                .find(|r| r.method == m)
+                .and_then(|r| r.profiles.iter().find(|p| p.view == View::Side))
+                .map(|p| p.distance.max_rel)
+                .unwrap_or(f64::INFINITY)
+        };
+        let (lo, me) = (side("low"), side("medium"));
+        let m = if lo.is_finite() && me.is_finite() {
+            me / lo
+        } else {
+            f64::INFINITY
+        };
+        out.push(check("sec 4.2.2", &format!("study-{name}-medium-improves-side"), Kind::Threshold, m, 1.0, "side-profile max error of the medium level divided by the low level's (below 1: the side warp helps)"));
+    }
+}
+
+/// Every check of the family.
+pub fn checks() -> Vec<Check> {
+    let mut out = Vec::new();
+    rbf_checks(&mut out);
+    figure_checks(&mut out);
+    study_checks(&mut out);
+    out
+}

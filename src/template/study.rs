@@ -1,0 +1,223 @@
+//! The study (issue 12, 000 Fig 7 analogue): MakeHuman's own morph targets
+//! are artist-made ground truth for template fitting. For each case the
+//! template (a young average male or female) is fitted to profiles
+//! extracted from the morphed body, at each level, and compared vertex by
+//! vertex with that body, beside the template scaled to the sketch's
+//! bounding box.
+
+use super::fit::{fit, FitOptions, Level, Sketch, Template};
+use super::measure::{bbox_baseline, mesh_outline, profile_errors, vertex_errors, ViewError};
+use super::sections::SectionSketch;
+use super::{TemplateError, View};
+use crate::makehuman;
+use crate::mesh::slice::slice;
+use crate::mesh::Mesh;
+
+/// Heights of the key cross-sections, as fractions of the body's height
+/// from its lowest point (belly, waist, chest).
+pub const SECTION_HEIGHTS: [f64; 4] = [0.56, 0.61, 0.66, 0.72];
+
+/// One study case: template targets and the morphed body's targets.
+#[derive(Clone, Copy, Debug)]
+pub struct Case {
+    pub name: &'static str,
+    pub template: &'static [&'static str],
+    pub target: &'static [&'static str],
+}
+
+const MALE: &[&str] = &[
+    "caucasian-male-young",
+    "universal-male-young-averagemuscle-averageweight",
+];
+const FEMALE: &[&str] = &[
+    "caucasian-female-young",
+    "universal-female-young-averagemuscle-averageweight",
+];
+
+/// The cases: male and female into fat, child, old; female into pregnant.
+pub const CASES: &[Case] = &[
+    Case {
+        name: "male->fat",
+        template: MALE,
+        target: &[
+            "caucasian-male-young",
+            "universal-male-young-averagemuscle-maxweight",
+        ],
+    },
+    Case {
+        name: "male->boy",
+        template: MALE,
+        target: &[
+            "caucasian-male-child",
+            "universal-male-child-averagemuscle-averageweight",
+        ],
+    },
+    Case {
+        name: "male->old",
+        template: MALE,
+        target: &[
+            "caucasian-male-old",
+            "universal-male-old-averagemuscle-averageweight",
+        ],
+    },
+    Case {
+        name: "female->fat",
+        template: FEMALE,
+        target: &[
+            "caucasian-female-young",
+            "universal-female-young-averagemuscle-maxweight",
+        ],
+    },
+    Case {
+        name: "female->girl",
+        template: FEMALE,
+        target: &[
+            "caucasian-female-child",
+            "universal-female-child-averagemuscle-averageweight",
+        ],
+    },
+    Case {
+        name: "female->old",
+        template: FEMALE,
+        target: &[
+            "caucasian-female-old",
+            "universal-female-old-averagemuscle-averageweight",
+        ],
+    },
+    Case {
+        name: "female->pregnant",
+        template: FEMALE,
+        target: &[
+            "caucasian-female-young",
+            "universal-female-young-averagemuscle-averageweight",
+            "stomach-pregnant-incr",
+        ],
+    },
+];
+
+fn targets(names: &[&str]) -> Result<Vec<(makehuman::Target, f64)>, TemplateError> {
+    names
+        .iter()
+        .map(|n| Ok((makehuman::target(n)?, 1.0)))
+        .collect()
+}
+
+/// The MakeHuman template: every `v` of the base OBJ with `names` applied;
+/// the skin is the `body` group.
+pub fn makehuman_template(names: &[&str]) -> Result<Template, TemplateError> {
+    let ts = targets(names)?;
+    let mut mesh = makehuman::base_mesh()?;
+    for (t, w) in &ts {
+        for &(i, d) in &t.offsets {
+            if let Some(p) = mesh.positions.get_mut(i as usize) {
+                for k in 0..3 {
+                    p[k] += w * d[k];
+                }
+            }
+        }
+    }
+    let (skin, skin_index) = mesh.group_submesh("body").ok_or_else(|| {
+        TemplateError::Mesh(crate::mesh::MeshError::Invalid(
+            "base.obj has no 'body' group".into(),
+        ))
+    })?;
+    Ok(Template {
+        mesh,
+        skin,
+        skin_index,
+    })
+}
+
+/// The torso loop (largest area) of `m` cut at height `y`, as `(x, z)`.
+pub fn torso_section(m: &Mesh, y: f64) -> Option<Vec<[f64; 2]>> {
+    slice(m, [0.0, y, 0.0], [0.0, 1.0, 0.0])
+        .into_iter()
+        .filter(|l| l.closed && l.points.len() >= 8)
+        .map(|l| {
+            l.points
+                .iter()
+                .map(|p| [p[0], p[2]])
+                .collect::<Vec<[f64; 2]>>()
+        })
+        .max_by(|a, b| {
+            super::polygon::signed_area2(a)
+                .abs()
+                .total_cmp(&super::polygon::signed_area2(b).abs())
+        })
+}
+
+/// The sketch a user would draw of `m`: its front and side outlines and its
+/// torso sections at [`SECTION_HEIGHTS`].
+pub fn sketch_of(m: &Mesh) -> Result<Sketch, TemplateError> {
+    let front = mesh_outline(m, View::Front)?;
+    let side = mesh_outline(m, View::Side)?;
+    let (lo, hi) = super::polygon::bbox(&front);
+    let sections = SECTION_HEIGHTS
+        .iter()
+        .filter_map(|f| {
+            let y = lo[1] + f * (hi[1] - lo[1]);
+            torso_section(m, y).map(|l| SectionSketch { y, loops: vec![l] })
+        })
+        .collect();
+    Ok(Sketch {
+        front,
+        side: Some(side),
+        sections,
+    })
+}
+
+/// One row of the study.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Row {
+    pub case: String,
+    /// `"bbox"`, `"low"`, `"medium"`, `"high"`.
+    pub method: String,
+    /// RMS and max vertex distance to the target, relative to its height.
+    pub rms_rel: f64,
+    pub max_rel: f64,
+    pub profiles: Vec<ViewError>,
+    pub seconds: f64,
+}
+
+/// Runs one case: the bounding-box baseline, then every level.
+pub fn run_case(
+    case: &Case,
+    opts: &FitOptions,
+) -> Result<(Vec<Row>, Vec<Vec<[f64; 3]>>), TemplateError> {
+    let template = makehuman_template(case.template)?;
+    let target = makehuman::body(&targets(case.target)?)?.mesh;
+    let sketch = sketch_of(&target)?;
+    let (lo, hi) = super::polygon::bbox(&sketch.front);
+    let h = hi[1] - lo[1];
+    let skin_of = |pos: &[[f64; 3]]| template.skin_at(pos).positions;
+    let bb = bbox_baseline(&template, &sketch);
+    let (rms, mx) = vertex_errors(&skin_of(&bb), &target.positions, h);
+    let mut rows = vec![Row {
+        case: case.name.into(),
+        method: "bbox".into(),
+        rms_rel: rms,
+        max_rel: mx,
+        profiles: profile_errors(&template, &bb, &sketch)?,
+        seconds: 0.0,
+    }];
+    let r = fit(&template, &sketch, opts, &mesh_outline)?;
+    let mut meshes = vec![template.mesh.positions.clone()];
+    for (rep, pos) in &r.levels {
+        let (rms, mx) = vertex_errors(&skin_of(pos), &target.positions, h);
+        rows.push(Row {
+            case: case.name.into(),
+            method: match rep.level {
+                Level::Low => "low",
+                Level::Medium => "medium",
+                Level::High => "high",
+            }
+            .into(),
+            rms_rel: rms,
+            max_rel: mx,
+            profiles: profile_errors(&template, pos, &sketch)?,
+            seconds: rep.seconds,
+        });
+        meshes.push(pos.clone());
+    }
+    Ok((rows, meshes))
+}

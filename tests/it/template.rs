@@ -1,0 +1,248 @@
+//! Template-based global modeling (000 sec 4.2): RBF, landmarks, fits.
+
+use pdesculpt::check::tol;
+use pdesculpt::mesh::Mesh;
+use pdesculpt::template::landmarks::{self, Scheme, Similarity};
+use pdesculpt::template::polygon::{hausdorff, validated};
+use pdesculpt::template::shapes::{figure, prism, refined, Figure};
+use pdesculpt::template::{fit, FitOptions, Rbf, RbfError, Sketch, Template, TemplateError, View};
+
+/// The prism template's outline: its first ring, projected.
+fn prism_outline(m: &Mesh, view: View) -> Result<Vec<[f64; 2]>, TemplateError> {
+    let n = m.positions.len() / 2;
+    Ok(m.positions[..n].iter().map(|p| view.project(*p)).collect())
+}
+
+fn template() -> Template {
+    Template::whole(prism(&refined(&figure(Figure::default()), 0.1), 1.0))
+}
+
+fn sketch_of(f: Figure) -> Vec<[f64; 2]> {
+    refined(&figure(f), 0.05)
+}
+
+#[test]
+fn rbf_reproduces_affine_maps_and_interpolates() {
+    let c: Vec<[f64; 2]> = (0..40)
+        .map(|i| {
+            let t = i as f64 * 0.7;
+            [t.cos() * (1.0 + 0.1 * t), t.sin() * 2.0 + 0.05 * t]
+        })
+        .collect();
+    let affine: Vec<[f64; 2]> = c
+        .iter()
+        .map(|p| [2.0 * p[0] - p[1] + 3.0, 0.5 * p[1] + 1.0])
+        .collect();
+    let r = Rbf::<2, 2>::fit(&c, &affine, true).unwrap();
+    let q = [0.3, -0.7];
+    let v = r.eval(&q);
+    let exact = [2.0 * q[0] - q[1] + 3.0, 0.5 * q[1] + 1.0];
+    assert!(
+        (v[0] - exact[0]).abs() < tol::SOLVE * 1e3 && (v[1] - exact[1]).abs() < tol::SOLVE * 1e3,
+        "{v:?} {exact:?}"
+    );
+    let wiggle: Vec<[f64; 1]> = c.iter().map(|p| [(3.0 * p[0]).sin() * p[1]]).collect();
+    let r = Rbf::<2, 1>::fit(&c, &wiggle, true).unwrap();
+    for (p, w) in c.iter().zip(&wiggle) {
+        assert!((r.eval(p)[0] - w[0]).abs() < tol::SOLVE * 1e3);
+    }
+    assert!(r.condition.unwrap() > 1.0);
+}
+
+#[test]
+fn rbf_rejects_coincident_and_collinear_centres() {
+    let mut c: Vec<[f64; 2]> = (0..10).map(|i| [i as f64, (i * i) as f64]).collect();
+    c.push(c[3]);
+    let v = vec![[0.0]; c.len()];
+    assert!(matches!(
+        Rbf::<2, 1>::fit(&c, &v, false),
+        Err(RbfError::CoincidentCentres { i: 3, j: 10, .. })
+    ));
+    let line: Vec<[f64; 2]> = (0..10).map(|i| [i as f64, 2.0 * i as f64]).collect();
+    assert!(matches!(
+        Rbf::<2, 1>::fit(&line, &v[..10], false),
+        Err(RbfError::Degenerate { .. })
+    ));
+}
+
+#[test]
+fn figure_landmarks_are_found_in_order() {
+    let p = validated("figure", &sketch_of(Figure::default())).unwrap();
+    let m = landmarks::find(&p, Scheme::Human, "figure").unwrap();
+    assert_eq!(m.len(), 8);
+    let crotch = p[m[4]];
+    assert!(
+        crotch[0].abs() < 0.1 && (crotch[1] - 7.0).abs() < 0.1,
+        "{crotch:?}"
+    );
+    // an ellipse has no armpits
+    let e: Vec<[f64; 2]> = (0..100)
+        .map(|i| {
+            let t = i as f64 * std::f64::consts::TAU / 100.0;
+            [3.0 * t.cos(), 8.0 * t.sin()]
+        })
+        .collect();
+    let err = landmarks::find(&e, Scheme::Human, "ellipse").unwrap_err();
+    assert!(
+        err.to_string().contains("armpit") || err.to_string().contains("foot"),
+        "{err}"
+    );
+}
+
+#[test]
+fn low_level_fits_the_front_profile() {
+    let t = template();
+    let target = Figure {
+        waist: 2.8,
+        shoulders: 2.5,
+        height: 15.0,
+        reach: 5.5,
+    };
+    let sketch = Sketch {
+        front: sketch_of(target),
+        ..Default::default()
+    };
+    let r = fit(&t, &sketch, &FitOptions::default(), &prism_outline).unwrap();
+    let out = prism_outline(&Mesh::new(r.last().to_vec(), vec![]), View::Front).unwrap();
+    let d = hausdorff(&out, &sketch.front, 0.01);
+    assert!(d < 5e-3 * 15.0, "front profile off by {d}");
+    assert_eq!(r.last().len(), t.mesh.positions.len());
+}
+
+#[test]
+fn similarity_of_the_sketch_gives_the_similar_result() {
+    let t = template();
+    let target = Figure {
+        waist: 2.6,
+        ..Default::default()
+    };
+    let base = Sketch {
+        front: sketch_of(target),
+        ..Default::default()
+    };
+    let r0 = fit(&t, &base, &FitOptions::default(), &prism_outline).unwrap();
+    let s = Similarity {
+        scale: 1.7,
+        angle: 0.3,
+        translation: [4.0, -2.0],
+    };
+    let moved = Sketch {
+        front: base.front.iter().map(|&p| s.apply(p)).collect(),
+        ..Default::default()
+    };
+    let r1 = fit(&t, &moved, &FitOptions::default(), &prism_outline).unwrap();
+    let zc = r0.depth_centre;
+    let mut worst = 0.0f64;
+    for (a, b) in r0.last().iter().zip(r1.last()) {
+        let q = s.apply([a[0], a[1]]);
+        let z = s.scale * (a[2] - zc) + zc;
+        worst = worst
+            .max((q[0] - b[0]).abs())
+            .max((q[1] - b[1]).abs())
+            .max((z - b[2]).abs());
+    }
+    assert!(
+        worst < tol::scaled(tol::SOLVE * 1e3, 16.0 * s.scale),
+        "{worst}"
+    );
+}
+
+mod cli_tests {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::study::{makehuman_template, CASES};
+    use pdesculpt::template::View;
+    use std::path::Path;
+
+    fn write_profile(path: &Path, view: &str, pts: &[[f64; 2]]) {
+        let v = serde_json::json!({ "view": view, "points": pts });
+        std::fs::write(path, v.to_string()).unwrap();
+    }
+
+    #[test]
+    fn cli_fits_makehuman_to_a_front_profile() {
+        let d = tmpdir("template-fit");
+        let case = CASES.iter().find(|c| c.name == "male->boy").unwrap();
+        let ts: Vec<_> = case
+            .target
+            .iter()
+            .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
+            .collect();
+        let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+        let front = d.join("front.json");
+        write_profile(
+            &front,
+            "front",
+            &mesh_outline(&target, View::Front).unwrap(),
+        );
+        let out = d.join("boy.obj");
+        let o = pdesculpt(&[
+            "--json",
+            "template",
+            "fit",
+            "--template",
+            "makehuman",
+            "--front",
+            front.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let rep: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let err = rep["profile_errors"][0]["max_rel"].as_f64().unwrap();
+        assert!(err < pdesculpt::template::check::PROFILE_REL, "{err}");
+        let written = pdesculpt::mesh::io::read(&out).unwrap();
+        let base = makehuman_template(&[]).unwrap();
+        assert_eq!(written.positions.len(), base.mesh.positions.len());
+        assert_eq!(written.triangles.len(), base.mesh.triangles.len());
+    }
+
+    #[test]
+    fn cli_bad_profiles_fail_cleanly_without_output() {
+        let d = tmpdir("template-bad");
+        let out = d.join("never.obj");
+        let run = |front: &Path, tpl: &str| {
+            pdesculpt(&[
+                "template",
+                "fit",
+                "--template",
+                tpl,
+                "--front",
+                front.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ])
+        };
+        // self-intersecting (a bow tie)
+        let bow = d.join("bow.json");
+        write_profile(
+            &bow,
+            "front",
+            &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]],
+        );
+        assert_clear_error(&run(&bow, "makehuman"), "intersect");
+        // open SVG path
+        let open = d.join("open.svg");
+        std::fs::write(
+            &open,
+            r#"<svg xmlns="http://www.w3.org/2000/svg"><path d="M 0 0 L 1 0 L 1 -2"/></svg>"#,
+        )
+        .unwrap();
+        assert_clear_error(&run(&open, "makehuman"), "open");
+        // an ellipse: no armpits, no crotch
+        let ell = d.join("ellipse.json");
+        let e: Vec<[f64; 2]> = (0..120)
+            .map(|i| {
+                let t = i as f64 * std::f64::consts::TAU / 120.0;
+                [3.0 * t.cos(), 8.0 + 8.0 * t.sin()]
+            })
+            .collect();
+        write_profile(&ell, "front", &e);
+        assert_clear_error(&run(&ell, "makehuman"), "landmark");
+        // a template seen edge-on in the front view has no closed outline
+        let flat = d.join("flat.obj");
+        std::fs::write(&flat, "v 0 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n").unwrap();
+        assert_clear_error(&run(&ell, flat.to_str().unwrap()), "outline");
+        assert!(!out.exists());
+    }
+}
