@@ -111,6 +111,21 @@ pub fn checks() -> Vec<Check> {
             .note("Hausdorff distance (pixels) from the mesh outline to the exact rectangle"),
         );
     }
+    // the same box turned by 0.4 rad about z: its front outline is the
+    // rotated rectangle, with corners off the grid lines (the axis-aligned
+    // box's extreme corners fall on grid lines, so it measures ~0)
+    let (c, s) = (0.4f64.cos(), 0.4f64.sin());
+    let rot = |p: [f64; 3]| [c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]];
+    let mut turned = b.clone();
+    turned.map_positions(rot);
+    let exact: Vec<[f64; 2]> = [[-0.3, 0.1], [0.7, 0.1], [0.7, 1.9], [-0.3, 1.9]]
+        .iter()
+        .map(|p| View::Front.project(rot([p[0], p[1], 0.0])))
+        .collect();
+    out.push(
+        Check::new(F, P, "outline", "profile.outline-turned-box-front", Kind::Reference, outline_error_px(&turned, View::Front, &exact, r), CORNER_PX)
+            .note("Hausdorff distance (pixels) from the front outline of a box turned 0.4 rad about z to the exact rotated rectangle"),
+    );
     let s = sphere([0.1, 0.2, -0.3], 1.0, 96);
     out.push(
         Check::new(F, P, "outline", "profile.outline-sphere-front", Kind::Reference, outline_error_px(&s, View::Front, &hull_outline(&s, View::Front), r), SMOOTH_PX)
