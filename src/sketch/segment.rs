@@ -214,7 +214,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
         });
     }
     for r in &out {
-        if !(r.y1 - r.y0 > 2.0 * g) {
+        if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
             return Err(SketchError::Segmentation(format!(
                 "{}: too short ({:.4} between {:.4} and {:.4})",
                 r.name,
