@@ -125,8 +125,10 @@ fn figure_checks(out: &mut Vec<Check>) {
 }
 
 fn study_checks(out: &mut Vec<Check>) {
-    let mut opts = FitOptions::default();
-    opts.condition = false;
+    let opts = FitOptions {
+        condition: false,
+        ..Default::default()
+    };
     for name in ["male->fat", "male->boy", "female->pregnant"] {
         let Some(case) = CASES.iter().find(|c| c.name == name) else {
             continue;

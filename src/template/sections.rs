@@ -69,12 +69,15 @@ fn from_front(p: &[[f64; 2]], m: usize) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// A model point in 3D and its target `(x, z)`.
+pub type SectionPair = ([f64; 3], [f64; 2]);
+
 /// Pairs of (model point in 3D, target `(x, z)`) for every sketched loop.
 pub fn section_pairs(
     skin: &crate::mesh::Mesh,
     s: &super::sections::SectionSketch,
     opts: &FitOptions,
-) -> Result<Vec<([f64; 3], [f64; 2])>, TemplateError> {
+) -> Result<Vec<SectionPair>, TemplateError> {
     let err = |problem: String| TemplateError::Section { y: s.y, problem };
     let model: Vec<Vec<[f64; 2]>> = slice(skin, [0.0, s.y, 0.0], [0.0, 1.0, 0.0])
         .into_iter()

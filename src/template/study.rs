@@ -179,11 +179,11 @@ pub struct Row {
     pub seconds: f64,
 }
 
+/// A case's rows and the positions of the template and of every level.
+pub type CaseResult = (Vec<Row>, Vec<Vec<[f64; 3]>>);
+
 /// Runs one case: the bounding-box baseline, then every level.
-pub fn run_case(
-    case: &Case,
-    opts: &FitOptions,
-) -> Result<(Vec<Row>, Vec<Vec<[f64; 3]>>), TemplateError> {
+pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateError> {
     let template = makehuman_template(case.template)?;
     let target = makehuman::body(&targets(case.target)?)?.mesh;
     let sketch = sketch_of(&target)?;
