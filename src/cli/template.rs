@@ -96,6 +96,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     if let Some(s) = &a.sections {
         let text = std::fs::read_to_string(s).with_context(|| s.display().to_string())?;
         #[derive(serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
         struct File {
             sections: Vec<SectionSketch>,
         }

@@ -59,6 +59,7 @@ pub fn linear_field<T: Real>(h: T, q: T, l: f64, s: f64, w0: f64, w1: f64) -> T 
 /// A skeletal line segment from `p` to `q` with linear weights `w0` (at `p`)
 /// and `w1` (at `q`) and the control scale `lambda` of the global fit.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Segment {
     pub p: [f64; 3],
     pub q: [f64; 3],

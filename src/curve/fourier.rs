@@ -11,7 +11,13 @@
 use crate::jet::Real;
 
 /// A closed space curve as a finite Fourier series in `theta`.
+///
+/// Read from JSON as `{"c0": [x, y, z], "cos": [[...], ...], "sin": [[...], ...]}`:
+/// unknown keys are refused, and so are `cos` and `sin` lists of different
+/// lengths (pad the shorter with `[0, 0, 0]`), which would otherwise be read
+/// silently as missing harmonics.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(try_from = "Fourier3Json")]
 pub struct Fourier3 {
     /// Constant term (the centre).
     pub c0: [f64; 3],
@@ -19,6 +25,35 @@ pub struct Fourier3 {
     pub cos: Vec<[f64; 3]>,
     /// `sin[n - 1]` multiplies `sin(n theta)`, n = 1..=N.
     pub sin: Vec<[f64; 3]>,
+}
+
+/// The JSON form of [`Fourier3`], checked by `TryFrom`.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Fourier3Json {
+    c0: [f64; 3],
+    #[serde(default)]
+    cos: Vec<[f64; 3]>,
+    #[serde(default)]
+    sin: Vec<[f64; 3]>,
+}
+
+impl TryFrom<Fourier3Json> for Fourier3 {
+    type Error = String;
+    fn try_from(j: Fourier3Json) -> Result<Self, String> {
+        if j.cos.len() != j.sin.len() {
+            return Err(format!(
+                "a Fourier curve has {} cos terms but {} sin terms: give both lists the same length (pad with [0, 0, 0])",
+                j.cos.len(),
+                j.sin.len()
+            ));
+        }
+        Ok(Fourier3 {
+            c0: j.c0,
+            cos: j.cos,
+            sin: j.sin,
+        })
+    }
 }
 
 impl Fourier3 {

@@ -60,6 +60,7 @@ const N_F: usize = 16;
 
 /// The shape control parameters of eq 2.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Params {
     pub rho: f64,
     pub eta: f64,

@@ -353,6 +353,7 @@ pub enum DiffFormula {
 
 /// Positions of the control curves of approach 2.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Approach2 {
     pub u2: f64,
     pub u3: f64,

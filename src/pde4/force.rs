@@ -36,6 +36,7 @@ pub enum ForceKind {
 
 /// A sculpting force: its distribution and its vector magnitude `p_t`.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+// (no deny_unknown_fields: serde does not support it beside `flatten`)
 pub struct Force {
     #[serde(flatten)]
     pub kind: ForceKind,

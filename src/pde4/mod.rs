@@ -85,6 +85,7 @@ pub enum Pde4Error {
 
 /// Shape parameters `(a_t1, a_t2, a_t3)` of one component.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ShapeParams {
     pub a1: f64,
     pub a2: f64,

@@ -54,6 +54,7 @@ const SERIES_SIGMA: f64 = 1e-3;
 /// Boundary curves and u-tangents of a 2-sided patch (sec 5.1), as closed
 /// curves in `theta = 2 pi v`.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Boundary {
     pub curve0: Fourier3,
     pub curve1: Fourier3,

@@ -25,6 +25,7 @@ use std::f64::consts::PI;
 
 /// A cross section at a position u along the chain.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Section {
     pub u: f64,
     pub curve: Fourier3,
@@ -33,6 +34,7 @@ pub struct Section {
 /// A patch used on the global range `[start, end]`, with local parameter
 /// `t = (u - origin) / length`.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Piece {
     pub patch: Patch,
     pub origin: f64,
@@ -55,6 +57,7 @@ pub enum Method {
 
 /// A chain of patches, a surface on `[u_0, u_{M-1}] x [0, 2 pi)`.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Chain {
     pub method: Method,
     /// Pieces in increasing u.

@@ -34,6 +34,7 @@ pub enum Regime {
 
 /// The six basis functions of one harmonic.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ModeBasis {
     pub regime: Regime,
     /// $q = n |a|^{1/6}$ (0 for the quintic).
@@ -329,6 +330,7 @@ pub const MAX_CONDITION: f64 = 1e12;
 
 /// A single harmonic function $A(u) = \sum_j c_j \phi_j(u)$.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Mode {
     pub basis: ModeBasis,
     pub coef: [f64; 6],

@@ -16,6 +16,7 @@ pub type HarmonicCoef = [[[f64; 6]; 2]; 3];
 /// One PDE6 patch on $u \in [0, 1]$, $v \in [0, 2\pi)$:
 /// $S(u, v) = \sum_{n=0}^{N} \sum_j \phi^{(n)}_j(u) \left(\mathbf{c}_{nj} \cos nv + \mathbf{s}_{nj} \sin nv\right)$.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Patch {
     /// The PDE parameter a of eq 2.
     pub a: f64,

@@ -362,30 +362,42 @@ pub fn region_from_lasso(
     Ok(out)
 }
 
+/// A JSON region file (unknown keys refused).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RegionJson {
+    #[serde(default)]
+    vertices: Option<Vec<u32>>,
+    #[serde(default)]
+    lasso: Option<LassoJson>,
+}
+
+/// A lasso: the view direction and a polygon in the view plane.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LassoJson {
+    view: [f64; 3],
+    polygon: Vec<[f64; 2]>,
+}
+
 /// Parses a region file: JSON `{"vertices": [i, ...]}` or
 /// `{"lasso": {"view": [x, y, z], "polygon": [[x, y], ...]}}`, or plain text
 /// vertex indices separated by whitespace or commas (`#` starts a comment).
 pub fn parse_region(text: &str, mesh: &Mesh) -> Result<Vec<u32>, PlateError> {
     let t = text.trim_start();
     if t.starts_with('{') {
-        let v: serde_json::Value =
+        let r: RegionJson =
             serde_json::from_str(t).map_err(|e| PlateError::RegionFile(e.to_string()))?;
-        if let Some(list) = v.get("vertices") {
-            let ids: Vec<u32> = serde_json::from_value(list.clone())
-                .map_err(|e| PlateError::RegionFile(format!("vertices: {e}")))?;
-            return Ok(ids);
-        }
-        if let Some(l) = v.get("lasso") {
-            let view: [f64; 3] = serde_json::from_value(l.get("view").cloned().unwrap_or_default())
-                .map_err(|e| PlateError::RegionFile(format!("lasso.view: {e}")))?;
-            let poly: Vec<[f64; 2]> =
-                serde_json::from_value(l.get("polygon").cloned().unwrap_or_default())
-                    .map_err(|e| PlateError::RegionFile(format!("lasso.polygon: {e}")))?;
-            return region_from_lasso(mesh, view, &poly);
-        }
-        return Err(PlateError::RegionFile(
-            "JSON region needs \"vertices\" or \"lasso\"".into(),
-        ));
+        return match (r.vertices, r.lasso) {
+            (Some(ids), None) => Ok(ids),
+            (None, Some(l)) => region_from_lasso(mesh, l.view, &l.polygon),
+            (Some(_), Some(_)) => Err(PlateError::RegionFile(
+                "give either \"vertices\" or \"lasso\", not both".into(),
+            )),
+            (None, None) => Err(PlateError::RegionFile(
+                "JSON region needs \"vertices\" or \"lasso\"".into(),
+            )),
+        };
     }
     let mut out = Vec::new();
     for line in text.lines() {

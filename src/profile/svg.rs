@@ -18,6 +18,7 @@ pub struct SvgSketch {
 /// An open polyline whose SVG id starts with `cut` (an explicit part
 /// boundary), in profile coordinates of the sketch's view.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Cut {
     pub id: String,
     pub points: Vec<[f64; 2]>,

@@ -29,6 +29,7 @@ pub const SECTION_CLEARANCE: f64 = 0.01;
 
 /// One key cross-section: its height and its loops as `(x, z)` points.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SectionSketch {
     pub y: f64,
     pub loops: Vec<Vec<[f64; 2]>>,

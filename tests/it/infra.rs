@@ -319,3 +319,34 @@ fn demo_pipeline_measures_each_step() {
     assert!(tlo[0] > bhi[0], "the teddy stands beside the body");
     assert!((tlo[1] - blo[1]).abs() < 1e-9 && (thi[1] - tlo[1] - p.height).abs() < 1e-9);
 }
+
+/// Strict documents (issue 18): a Fourier curve whose cos and sin lists
+/// differ in length, or that carries an unknown key, is refused with a
+/// message naming the problem; the well-formed one is read.
+#[test]
+fn fourier_json_refuses_mismatched_lists_and_unknown_keys() {
+    use pdesculpt::curve::Fourier3;
+    let ok: Fourier3 =
+        serde_json::from_str(r#"{"c0": [0, 0, 1], "cos": [[1, 0, 0]], "sin": [[0, 1, 0]]}"#)
+            .expect("well-formed curve");
+    assert_eq!(ok.harmonics(), 1);
+    let e = serde_json::from_str::<Fourier3>(
+        r#"{"c0": [0, 0, 1], "cos": [[1, 0, 0], [0, 0, 0]], "sin": [[0, 1, 0]]}"#,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("2 cos terms but 1 sin terms"), "{e}");
+    let e = serde_json::from_str::<Fourier3>(
+        r#"{"c0": [0, 0, 1], "cos": [[1, 0, 0]], "sin": [[0, 1, 0]], "cosine": []}"#,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("unknown field"), "{e}");
+    let e = serde_json::from_str::<pdesculpt::pde6::Section>(
+        r#"{"u": 0.0, "curve": {"c0": [0, 0, 0], "cos": [], "sin": []}, "extra": 1}"#,
+    )
+    .map(|_| ())
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("unknown field"), "{e}");
+}

@@ -32,6 +32,7 @@ const NEWTON_ITERS: usize = 8;
 
 /// ErM / ErA and companions (see the module doc).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FitErrors {
     pub erm: f64,
     pub era: f64,

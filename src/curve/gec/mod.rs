@@ -122,6 +122,7 @@ pub enum GecError {
 
 /// Where a GEC lives in space: origin and two orthonormal in-plane axes.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Frame {
     pub origin: [f64; 3],
     pub e1: [f64; 3],
@@ -209,6 +210,7 @@ impl Frame {
 
 /// A generalized elliptic curve placed in space.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Gec {
     /// Placement (the papers' $z = z_c$ plane is [`Frame::z_plane`]).
     pub frame: Frame,
