@@ -15,6 +15,7 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod sketch;
 
 use common::{Ctx, Figure};
 
@@ -26,6 +27,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(pde6::figures());
     v.extend(ode6::figures());
     v.extend(conv::figures());
+    v.extend(sketch::figures());
     v.extend(gallery::figures());
     v
 }

@@ -1,0 +1,153 @@
+//! Figures of the sketch family (paper 000 sec 4.1): the analogue of Fig 6,
+//! the three modeling levels of the bundled female drawing side by side
+//! (initial: circles from the front profile; intermediate: ellipses from the
+//! front and side profiles; final: key cross-section sketches fitted by
+//! GECs), each in front and side view with its sketched outline in red and
+//! its profile errors in the caption. All three levels are measured against
+//! both sketched views (the initial level is built without the side view,
+//! so its side error shows what the side profile adds).
+
+use crate::common::{Ctx, Figure};
+use pdesculpt::character::doc::Level;
+use pdesculpt::mesh::topology::report as topology;
+use pdesculpt::mesh::Mesh;
+use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
+use pdesculpt::sketch::check::{bundled, profile_errors};
+use pdesculpt::sketch::{build_document, Built, Resolution};
+use serde_json::json;
+use std::path::Path;
+
+/// The figures of the sketch family.
+pub fn figures() -> Vec<Figure> {
+    vec![Figure {
+        id: "000-fig6",
+        paper: "000",
+        title: "Sketched female: initial, intermediate and final models with profile errors",
+        run: fig6,
+    }]
+}
+
+const W: usize = 260;
+const H: usize = 520;
+const RED: [u8; 4] = [220, 30, 30, 255];
+
+fn outline_overlay(points: &[[f64; 2]], view: View) -> Overlay {
+    Overlay {
+        points: points
+            .iter()
+            .map(|p| match view {
+                // side view: outline x is model z
+                View::Side => [0.0, p[1], p[0]],
+                _ => [p[0], p[1], 0.0],
+            })
+            .collect(),
+        closed: true,
+        colour: RED,
+        depth_test: false,
+    }
+}
+
+fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
+    let levels = [Level::Initial, Level::Intermediate, Level::Final];
+    let mut built: Vec<Built> = Vec::new();
+    for level in levels {
+        let doc = bundled("female", level)
+            .ok_or_else(|| anyhow::anyhow!("the bundled female does not parse"))?;
+        built.push(build_document(
+            &doc,
+            Path::new("."),
+            Resolution::default(),
+            true,
+        )?);
+    }
+    let side = built
+        .iter()
+        .find_map(|b| b.side.clone())
+        .ok_or_else(|| anyhow::anyhow!("no level read the side profile"))?;
+    let mut all = Mesh::default();
+    for b in &built {
+        all.append(&b.model.mesh);
+    }
+    let (lo, hi) = all.bbox();
+    let cams = [View::Front, View::Side].map(|v| (v, Camera::fit_box(lo, hi, v, W, H, 0.04)));
+    let mut panels = Vec::new();
+    let mut captions = Vec::new();
+    let mut rows = Vec::new();
+    for b in &built {
+        let r = &b.report;
+        let errs = profile_errors(&b.model.mesh, &b.front, Some(&side), r.height);
+        let views: Vec<Image> = cams
+            .iter()
+            .map(|(v, cam)| {
+                let pts = match v {
+                    View::Side => &side.points,
+                    _ => &b.front.points,
+                };
+                let o = RenderOptions {
+                    width: W,
+                    height: H,
+                    view: *v,
+                    overlays: vec![outline_overlay(pts, *v)],
+                    ..Default::default()
+                };
+                render_with_camera(&b.model.mesh, &o, cam)
+            })
+            .collect();
+        panels.push(Image::hstack(&views, [255; 4]));
+        let t = topology(&b.model.mesh);
+        let from = match r.level {
+            Level::Initial => "front only",
+            Level::Intermediate => "front + side",
+            Level::Final => "front + side + sections",
+        };
+        let mut cap = format!(
+            "{} (from {from}; {} vertices)",
+            r.level.name(),
+            b.model.mesh.positions.len()
+        );
+        for e in &errs {
+            cap.push_str(&format!(
+                "\n{} error: max {:.2} %, rms {:.2} %",
+                e.view,
+                100.0 * e.max_rel,
+                100.0 * e.rms_rel
+            ));
+        }
+        captions.push(cap);
+        rows.push(json!({
+            "level": r.level,
+            "built_from": from,
+            "vertices": b.model.mesh.positions.len(),
+            "triangles": b.model.mesh.triangles.len(),
+            "watertight": t.watertight,
+            "manifold": t.manifold,
+            "oriented": t.oriented,
+            "max_c1_jump": r.max_c1,
+            "height": r.height,
+            "profile_error_relative_to_height": errs,
+            "parts": r.parts.iter().map(|p| json!({
+                "name": p.name,
+                "sections": p.sections.iter().map(|s| s.shape).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+        }));
+    }
+    let img = Image::hstack(&panels, [255; 4]);
+    let img = crate::ode6::annotate(
+        &img,
+        "Sketched female (paper 000 Fig 6): initial, intermediate, final; red: the sketched outlines",
+        &captions,
+        View::Front,
+        false,
+    )?;
+    ctx.write_bytes("000-fig6.png", &img.encode_png())?;
+    ctx.write_json(
+        "000-fig6.json",
+        &json!({
+            "figure": "000-fig6",
+            "model": "data/sketch/female_*.svg, female_sections.json",
+            "profile_error": "model silhouette (profile::outline_of_mesh) vs the sketched outline, symmetric boundary distance, max and RMS over model height; every level against both views",
+            "levels": rows,
+        }),
+    )?;
+    Ok(())
+}
