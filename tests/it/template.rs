@@ -221,7 +221,10 @@ proptest! {
     /// per height) is either fitted (the fitted outline, exact for the
     /// prism, within check::PROFILE_REL of the height of the sketch, every
     /// coordinate finite) or rejected with an error naming the problem;
-    /// never a panic or a NaN.
+    /// never a panic or a NaN. Known gap (not covered here): larger
+    /// perturbations, e.g. ax = 0.028, ay = 0.048, kx = 2.95, ky = 2.86,
+    /// px = 1.5, py = 0, are fitted without error but 0.51 % of the height
+    /// off, just over PROFILE_REL: `fit` does not check its own result.
     #[test]
     fn perturbed_profiles_are_fitted_or_rejected_cleanly(
         ax in 0.0f64..0.04,
