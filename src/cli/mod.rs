@@ -89,10 +89,25 @@ pub fn main() -> i32 {
     match result {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            eprintln!("error: {}", error_message(&e));
             1
         }
     }
+}
+
+/// The error and its causes on one line, each cause once: library errors
+/// often already carry their source in their own message (`{path}: {source}`),
+/// so a cause whose text the line already holds is not repeated.
+fn error_message(e: &anyhow::Error) -> String {
+    let mut msg = e.to_string();
+    for cause in e.chain().skip(1) {
+        let c = cause.to_string();
+        if !msg.contains(&c) {
+            msg.push_str(": ");
+            msg.push_str(&c);
+        }
+    }
+    msg
 }
 
 /// Prints a serialisable value as pretty JSON on stdout.
