@@ -81,6 +81,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         }
         None => Vec::new(),
     };
+    // key sections are used at the final level only, which needs a side
+    // profile: never drop them silently
+    if !sections.is_empty() && a.side.is_none() {
+        anyhow::bail!(
+            "--sections are used at the final level, which also needs a side profile: give --side SIDE.svg"
+        );
+    }
+    if !sections.is_empty() && a.level.is_some_and(|l| l != Level::Final) {
+        eprintln!("note: --sections are kept in the document but used only at --level final");
+    }
     let level = a.level.unwrap_or(match (&a.side, sections.is_empty()) {
         (None, _) => Level::Initial,
         (Some(_), true) => Level::Intermediate,

@@ -121,9 +121,14 @@ fn read_svg(
     tol: f64,
 ) -> Result<(Vec<[f64; 2]>, Vec<(String, Vec<[f64; 2]>)>), SketchError> {
     let sk = crate::profile::read_svg(path, view.profile_view(), tol).map_err(|e| {
+        // the I/O variant already names the path: keep only its cause
+        let message = match e {
+            crate::profile::ProfileError::Io { source, .. } => source.to_string(),
+            other => other.to_string(),
+        };
         SketchError::File {
             path: path.display().to_string(),
-            message: e.to_string(),
+            message,
         }
     })?;
     Ok((

@@ -57,4 +57,8 @@ pub enum SketchError {
     Part { part: String, message: String },
     #[error("document: {0}")]
     Document(String),
+    /// A document that fails its own validation (its message already says
+    /// "document: ...").
+    #[error(transparent)]
+    Doc(#[from] crate::character::doc::DocError),
 }

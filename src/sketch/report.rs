@@ -90,8 +90,7 @@ pub fn build_document(
     res: Resolution,
     rederive: bool,
 ) -> Result<Built, SketchError> {
-    doc.validate()
-        .map_err(|e| SketchError::Document(e.to_string()))?;
+    doc.validate()?;
     let tol = doc.inputs.tolerance;
     let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
     let side = match &doc.inputs.side {

@@ -204,6 +204,19 @@ fn cli_bad_inputs_get_clear_errors_and_no_file() {
     ]);
     assert_clear_error(&o, "outside the part");
     assert!(!out.exists());
+    // key sections without a side profile would be dropped silently
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        &good,
+        "--sections",
+        &sec,
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_clear_error(&o, "needs a side profile");
+    assert!(!out.exists());
 }
 
 fn perturbed(scale: f64, angle_deg: f64, noise: f64, extra: bool, seed: u64) -> Vec<[f64; 2]> {
