@@ -179,10 +179,19 @@ impl SegmentBvh {
         me
     }
 
-    /// Bounds `(lo, hi)` of the field on the ball of radius `rho` around
-    /// `x`; accepted cluster approximations add at most `budget` to the
-    /// width `hi - lo` (see the module doc).
-    pub fn interval(&self, x: [f64; 3], rho: f64, budget: f64) -> (f64, f64) {
+    /// Walks the hierarchy for the ball of radius `rho` around `x`: a
+    /// cluster whose bounds are within its share of `budget` (or that cannot
+    /// be split further) adds its bounds; a leaf segment that is not accepted
+    /// is handed to `leaf` with its node and its own bounds `(l, h)`, and adds
+    /// what `leaf` returns. Returns the summed `(lo, hi)`.
+    #[inline]
+    fn walk(
+        &self,
+        x: [f64; 3],
+        rho: f64,
+        budget: f64,
+        mut leaf: impl FnMut(&Node, usize, f64, f64) -> (f64, f64),
+    ) -> (f64, f64) {
         if self.nodes.is_empty() {
             return (0.0, 0.0);
         }
@@ -225,21 +234,30 @@ impl SegmentBvh {
                     hi += h;
                 }
                 Err(i) => {
-                    let (seg, s) = &self.segments[i];
-                    let f = seg.field(x, *s);
-                    if rho == 0.0 {
-                        lo += f;
-                        hi += f;
-                    } else {
-                        let d = (point_segment_distance(x, seg.p, seg.q) - rho).max(0.0);
-                        let slope = (node.pos + node.neg) * slope_bound(d, *s);
-                        lo += (f - rho * slope).max(l);
-                        hi += (f + rho * slope).min(h);
-                    }
+                    let (dl, dh) = leaf(node, i, l, h);
+                    lo += dl;
+                    hi += dh;
                 }
             }
         }
         (lo, hi)
+    }
+
+    /// Bounds `(lo, hi)` of the field on the ball of radius `rho` around
+    /// `x`; accepted cluster approximations add at most `budget` to the
+    /// width `hi - lo` (see the module doc).
+    pub fn interval(&self, x: [f64; 3], rho: f64, budget: f64) -> (f64, f64) {
+        self.walk(x, rho, budget, |node, i, l, h| {
+            let (seg, s) = &self.segments[i];
+            let f = seg.field(x, *s);
+            if rho == 0.0 {
+                (f, f)
+            } else {
+                let d = (point_segment_distance(x, seg.p, seg.q) - rho).max(0.0);
+                let slope = (node.pos + node.neg) * slope_bound(d, *s);
+                ((f - rho * slope).max(l), (f + rho * slope).min(h))
+            }
+        })
     }
 
     /// The interaction list of the ball of radius `rho` around `x`: the
@@ -256,51 +274,10 @@ impl SegmentBvh {
         near: &mut Vec<usize>,
     ) -> (f64, f64) {
         near.clear();
-        if self.nodes.is_empty() {
-            return (0.0, 0.0);
-        }
-        let per_mass = if self.total_mass > 0.0 {
-            budget / self.total_mass
-        } else {
-            0.0
-        };
-        let (mut lo, mut hi) = (0.0, 0.0);
-        let mut stack = [0usize; 64];
-        let mut top = 1;
-        while top > 0 {
-            top -= 1;
-            let node = &self.nodes[stack[top]];
-            let dc = norm(sub(x, node.centre));
-            let dmin = (dc - node.radius - rho).max(0.0);
-            let dmax = dc + node.radius + rho;
-            let near_k = (
-                node.pos * kernel(dmin, node.s_min),
-                node.neg * kernel(dmin, node.s_min),
-            );
-            let far_k = (
-                node.pos * kernel(dmax, node.s_max),
-                node.neg * kernel(dmax, node.s_max),
-            );
-            let (l, h) = (far_k.0 - near_k.1, near_k.0 - far_k.1);
-            if h - l <= per_mass * (node.pos + node.neg) {
-                lo += l;
-                hi += h;
-                continue;
-            }
-            match node.kids {
-                Ok([a, b]) if top + 2 <= stack.len() => {
-                    stack[top] = a;
-                    stack[top + 1] = b;
-                    top += 2;
-                }
-                Ok(_) => {
-                    lo += l;
-                    hi += h;
-                }
-                Err(i) => near.push(i),
-            }
-        }
-        (lo, hi)
+        self.walk(x, rho, budget, |_, i, _, _| {
+            near.push(i);
+            (0.0, 0.0)
+        })
     }
 
     /// The exact field at `x` of the segments `list` (from
