@@ -94,7 +94,7 @@ pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
 /// profile along the symmetry plane x = 0.
 pub fn nose(head: &PartSurface) -> Result<AuxSpec, SasmError> {
     let pr = Projector::new(head, View::Front);
-    let (top, tip, bottom, w) = (1.605, 1.548, 1.538, 0.019);
+    let (top, tip, bottom, w) = (1.605, 1.553, 1.535, 0.019);
     let line: Vec<[f64; 2]> = (0..=N)
         .map(|i| {
             let t = i as f64 / N as f64;

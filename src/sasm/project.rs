@@ -9,6 +9,7 @@
 //! first hit from the viewer) is returned.
 
 use super::{depth_axis, SasmError};
+use crate::jet::Jet;
 use crate::profile::View;
 use crate::sketch::part::PartSurface;
 use crate::surface::Surface;
@@ -175,7 +176,8 @@ impl<'a> Projector<'a> {
         let (ha, va) = self.view.axes();
         let s = &self.part.chain;
         for _ in 0..NEWTON_MAX {
-            let p = s.point(u, t);
+            let j = s.eval(Jet::<2, 2>::var_u(u), Jet::<2, 2>::var_v(t));
+            let p = [j[0].c[0][0], j[1].c[0][0], j[2].c[0][0]];
             let r = [p[ha] - q[0], p[va] - q[1]];
             if r[0].hypot(r[1]) <= self.tol {
                 return Some(Hit {
@@ -184,8 +186,8 @@ impl<'a> Projector<'a> {
                     point: p,
                 });
             }
-            let su = s.derivative(u, t, 1, 0);
-            let st = s.derivative(u, t, 0, 1);
+            let su = [j[0].c[1][0], j[1].c[1][0], j[2].c[1][0]];
+            let st = [j[0].c[0][1], j[1].c[0][1], j[2].c[0][1]];
             let (a, b, c, d) = (su[ha], st[ha], su[va], st[va]);
             let det = a * d - b * c;
             if !(det.abs() > 0.0) || !det.is_finite() {

@@ -5,7 +5,7 @@ use super::SasmError;
 use std::f64::consts::PI;
 
 /// Fourier harmonics of the polar radius.
-pub const HARMONICS: usize = 8;
+pub const HARMONICS: usize = 16;
 /// Uniform angle samples of the polygon's radius for the fit.
 pub const FIT_SAMPLES: usize = 512;
 /// Largest accepted deviation of the fitted boundary from the stroke,
