@@ -16,5 +16,6 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sasm;
 mod sketch;
 mod template;
