@@ -41,4 +41,5 @@ pub mod render;
 pub mod sketch;
 pub mod surface;
 pub mod template;
+pub mod tui;
 pub mod verify;

@@ -18,3 +18,5 @@ mod plate;
 mod profile;
 mod sketch;
 mod template;
+mod tui;
+mod tui_e2e;
