@@ -42,4 +42,5 @@ pub mod sasm;
 pub mod sketch;
 pub mod surface;
 pub mod template;
+pub mod tui;
 pub mod verify;

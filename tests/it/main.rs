@@ -19,3 +19,5 @@ mod profile;
 mod sasm;
 mod sketch;
 mod template;
+mod tui;
+mod tui_e2e;
