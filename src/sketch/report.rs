@@ -82,8 +82,11 @@ fn shape_name(s: &SectionShape) -> &'static str {
 }
 
 /// Builds a document: reads its profiles (relative to `base`), derives the
-/// parts and transitions when the document has none, builds the mesh and
-/// measures it. `rederive` forces derivation from the inputs.
+/// parts and transitions when the document has none, replays the active
+/// edits of its log (`character::edit`), builds the mesh and measures it.
+/// `rederive` forces derivation from the inputs. `Built::doc` holds the
+/// derived, unedited parts and the log; the report describes the edited
+/// parts.
 pub fn build_document(
     doc: &CharacterDoc,
     base: &Path,
@@ -121,10 +124,13 @@ pub fn build_document(
         out.parts = d.parts;
         out.transitions = d.transitions;
     }
-    let model = build_model(&out.parts, &out.transitions, height, res)?;
+    // replay the edit log on a copy: `out` keeps the unedited parts and the
+    // log, so saving it and building again never applies an edit twice
+    let edited = crate::character::edit::apply_to_parts(&out.parts, out.active_edits())
+        .map_err(|e| SketchError::Document(e.to_string()))?;
+    let model = build_model(&edited, &out.transitions, height, res)?;
     let topo = topology(&model.mesh);
-    let parts = out
-        .parts
+    let parts = edited
         .iter()
         .map(|p| PartReport {
             name: p.name.clone(),
