@@ -5,12 +5,12 @@ use super::SasmError;
 use std::f64::consts::PI;
 
 /// Fourier harmonics of the polar radius.
-pub const HARMONICS: usize = 16;
+pub const HARMONICS: usize = 32;
 /// Uniform angle samples of the polygon's radius for the fit.
 pub const FIT_SAMPLES: usize = 512;
 /// Largest accepted deviation of the fitted boundary from the stroke,
 /// relative to the mean radius.
-pub const MAX_FIT_DEVIATION: f64 = 0.1;
+pub const MAX_FIT_DEVIATION: f64 = 0.2;
 
 /// A star-shaped region with a smooth boundary.
 #[derive(Clone, Debug, PartialEq)]
