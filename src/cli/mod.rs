@@ -58,7 +58,7 @@ pub enum Command {
     Conv(conv::Args),
     /// Characters from sketched profiles (paper 000 sec 4.1).
     Sketch(sketch::Args),
-    /// Character documents: build.
+    /// Character documents: build, and the edit log (edit, undo, redo, log).
     Character(character::Args),
     /// Template-based global modeling: fit a template to sketched profiles (paper 000 sec 4.2).
     Template(template::Args),

@@ -53,6 +53,7 @@
 pub mod apply;
 pub mod check;
 pub mod demo;
+pub mod edit;
 pub mod feature;
 pub mod project;
 pub mod region;

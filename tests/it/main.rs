@@ -9,6 +9,7 @@ mod strategies;
 mod units;
 
 mod conv;
+mod edit;
 mod gec;
 mod ode6;
 mod pde4;
