@@ -275,12 +275,12 @@ fn sasm_edit_round_trips_replays_and_undoes() {
     // serde_json's default float parsing may differ from the value in the
     // last bit: compare the strokes to rounding
     let back: Edit = serde_json::from_str(&json).unwrap();
-    let (Edit::Sasm(a), Edit::Sasm(b)) = (&back, &e) else {
+    let (Edit::Sasm(a), Edit::Sasm(orig)) = (&back, &e) else {
         panic!("not a sasm edit: {back:?}")
     };
     assert_eq!(
         (a.part.as_str(), a.curve.view, a.profiles.len()),
-        (b.part.as_str(), b.curve.view, b.profiles.len())
+        (orig.part.as_str(), orig.curve.view, orig.profiles.len())
     );
     let pts = |s: &pdesculpt::sasm::SasmSpec| -> Vec<[f64; 2]> {
         s.curve
@@ -292,7 +292,7 @@ fn sasm_edit_round_trips_replays_and_undoes() {
     };
     let diff = pts(a)
         .iter()
-        .zip(pts(b))
+        .zip(pts(orig))
         .map(|(x, y)| (x[0] - y[0]).abs().max((x[1] - y[1]).abs()))
         .fold(0.0, f64::max);
     assert!(diff < tol::ROUNDING, "{diff}");
