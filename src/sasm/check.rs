@@ -140,7 +140,7 @@ pub fn measure(
         if p != q {
             max_rho = max_rho.max(rho);
         }
-        if !(rho < 1.0) {
+        if rho.is_nan() || rho >= 1.0 {
             outside = outside.max(dist(*p, *q));
         }
     }
@@ -161,7 +161,7 @@ pub fn measure(
                 let mut q = c;
                 q[ri] = s;
                 q[1 - ri] = c[1 - ri] - r + 2.0 * r * j as f64 / (CHORD_SAMPLES - 1) as f64;
-                if !(f.region.polar(q).0 < 1.0) {
+                if f.region.polar(q).0.partial_cmp(&1.0) != Some(std::cmp::Ordering::Less) {
                     continue;
                 }
                 if let Some(h) = pr.cast(q) {

@@ -14,15 +14,19 @@ use crate::sketch::part::PartSurface;
 /// The feature of a SASM edit on the part it names (`None` for other
 /// edits).
 pub fn feature_of(e: &Edit, parts: &[PartSurface]) -> Option<Result<Feature, SasmError>> {
-    let (name, build): (&str, &dyn Fn(&PartSurface) -> Result<Feature, SasmError>) = match e {
-        Edit::Sasm(s) => (&s.part, &|p| Feature::from_spec(p, s)),
-        Edit::SasmAux(s) => (&s.part, &|p| Feature::from_aux(p, s)),
+    let name = match e {
+        Edit::Sasm(s) => &s.part,
+        Edit::SasmAux(s) => &s.part,
         _ => return None,
     };
-    Some(match parts.iter().find(|p| p.name == name) {
-        Some(p) => build(p),
-        None => Err(SasmError::UnknownPart(name.into())),
-    })
+    let Some(p) = parts.iter().find(|p| &p.name == name) else {
+        return Some(Err(SasmError::UnknownPart(name.clone())));
+    };
+    match e {
+        Edit::Sasm(s) => Some(Feature::from_spec(p, s)),
+        Edit::SasmAux(s) => Some(Feature::from_aux(p, s)),
+        _ => None,
+    }
 }
 
 /// Applies the SASM edits among `edits` to the mesh, in order.

@@ -212,7 +212,7 @@ pub fn closed_polygon(what: &str, s: &[[f64; 2]]) -> Result<Vec<[f64; 2]>, SasmE
     let len = length(&p);
     let (a, b) = (p[0], p[p.len() - 1]);
     let gap = (a[0] - b[0]).hypot(a[1] - b[1]);
-    if !(len > 0.0) || gap > CLOSE_TOLERANCE * len {
+    if len.is_nan() || len <= 0.0 || gap > CLOSE_TOLERANCE * len {
         return Err(SasmError::Open {
             what: what.into(),
             gap,
