@@ -45,6 +45,10 @@
 //! vertices inside the region are placed on the analytic surface and
 //! displaced, every vertex outside is left bit for bit.
 //!
+//! As edits ([`edit`]): `Edit::Sasm` and `Edit::SasmAux` of the character
+//! log are validated against the built part when pushed and applied to the
+//! built mesh after the plate edits, in log order among themselves.
+//!
 //! Simpler than the paper: the feature is a height field in one view (no
 //! overhangs, no undercut beyond the view direction); the interior is C1
 //! except at the peak, where the rays meet (a point where the profiles'
