@@ -183,7 +183,7 @@ pub fn apply_feature(
         }
         let p = m.positions[v];
         let q = f.view.project(p);
-        if !(f.region.polar(q).0 < 1.0) {
+        if f.region.polar(q).0.partial_cmp(&1.0) != Some(std::cmp::Ordering::Less) {
             continue;
         }
         let Some(hit) = pr.cast(q) else {

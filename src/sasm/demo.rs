@@ -100,7 +100,7 @@ pub fn nose(head: &PartSurface) -> Result<AuxSpec, SasmError> {
             let t = i as f64 / N as f64;
             let y = top + (bottom - top) * t;
             // narrow at the bridge, widest at the wings
-            let x = w * (PI * t).sin().powf(0.6) * (0.35 + 0.65 * t);
+            let x = w * (PI * t).sin().sqrt() * (0.45 + 0.55 * t);
             [x, y]
         })
         .collect();

@@ -260,7 +260,7 @@ impl Feature {
             }
         }
         let peak = rays.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
-        if !(peak > 0.0) {
+        if peak.is_nan() || peak <= 0.0 {
             return Err(SasmError::Shape {
                 what: "profiles".into(),
                 message: "the profiles lie on the part: the feature has zero height".into(),
@@ -303,7 +303,7 @@ impl Feature {
     /// The height at a view-plane point (0 outside the region).
     pub fn height(&self, q: [f64; 2]) -> f64 {
         let (rho, phi) = self.region.polar(q);
-        if !(rho < 1.0) {
+        if rho.is_nan() || rho >= 1.0 {
             return 0.0;
         }
         let (c, s) = (phi.cos(), phi.sin());

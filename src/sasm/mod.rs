@@ -45,6 +45,10 @@
 //! vertices inside the region are placed on the analytic surface and
 //! displaced, every vertex outside is left bit for bit.
 //!
+//! As edits ([`edit`]): `Edit::Sasm` and `Edit::SasmAux` of the character
+//! log are validated against the built part when pushed and applied to the
+//! built mesh after the plate edits, in log order among themselves.
+//!
 //! Simpler than the paper: the feature is a height field in one view (no
 //! overhangs, no undercut beyond the view direction); the interior is C1
 //! except at the peak, where the rays meet (a point where the profiles'
@@ -53,6 +57,7 @@
 pub mod apply;
 pub mod check;
 pub mod demo;
+pub mod edit;
 pub mod feature;
 pub mod project;
 pub mod region;
@@ -211,7 +216,7 @@ pub fn closed_polygon(what: &str, s: &[[f64; 2]]) -> Result<Vec<[f64; 2]>, SasmE
     let len = length(&p);
     let (a, b) = (p[0], p[p.len() - 1]);
     let gap = (a[0] - b[0]).hypot(a[1] - b[1]);
-    if !(len > 0.0) || gap > CLOSE_TOLERANCE * len {
+    if len.is_nan() || len <= 0.0 || gap > CLOSE_TOLERANCE * len {
         return Err(SasmError::Open {
             what: what.into(),
             gap,

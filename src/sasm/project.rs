@@ -190,7 +190,7 @@ impl<'a> Projector<'a> {
             let st = [j[0].c[0][1], j[1].c[0][1], j[2].c[0][1]];
             let (a, b, c, d) = (su[ha], st[ha], su[va], st[va]);
             let det = a * d - b * c;
-            if !(det.abs() > 0.0) || !det.is_finite() {
+            if det == 0.0 || !det.is_finite() {
                 return None;
             }
             let du = (d * r[0] - b * r[1]) / det;

@@ -5,12 +5,12 @@ use super::SasmError;
 use std::f64::consts::PI;
 
 /// Fourier harmonics of the polar radius.
-pub const HARMONICS: usize = 16;
+pub const HARMONICS: usize = 32;
 /// Uniform angle samples of the polygon's radius for the fit.
 pub const FIT_SAMPLES: usize = 512;
 /// Largest accepted deviation of the fitted boundary from the stroke,
 /// relative to the mean radius.
-pub const MAX_FIT_DEVIATION: f64 = 0.1;
+pub const MAX_FIT_DEVIATION: f64 = 0.2;
 
 /// A star-shaped region with a smooth boundary.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,7 +29,10 @@ pub struct Region {
 /// Polar radius of `poly` about `c` at every polygon vertex, with the
 /// polygon made counter-clockwise about `c`; errors when a ray from `c`
 /// would cross it more than once.
-fn polar(poly: &[[f64; 2]], c: [f64; 2]) -> Result<(Vec<[f64; 2]>, Vec<(f64, f64)>), SasmError> {
+/// A polygon and its vertices' (angle, radius).
+type Polar = (Vec<[f64; 2]>, Vec<(f64, f64)>);
+
+fn polar(poly: &[[f64; 2]], c: [f64; 2]) -> Result<Polar, SasmError> {
     let ang = |p: [f64; 2]| (p[1] - c[1]).atan2(p[0] - c[0]);
     let n = poly.len();
     let mut total = 0.0;
@@ -58,7 +61,7 @@ fn polar(poly: &[[f64; 2]], c: [f64; 2]) -> Result<(Vec<[f64; 2]>, Vec<(f64, f64
         return polar(&r, c);
     }
     let p: Vec<[f64; 2]> = poly.to_vec();
-    if let Some(i) = steps.iter().position(|&d| !(d > 0.0)) {
+    if let Some(i) = steps.iter().position(|&d| d.is_nan() || d <= 0.0) {
         return Err(bad(format!(
             "the ray from the centre through stroke point {i} crosses the curve more than once"
         )));
@@ -132,7 +135,7 @@ impl Region {
             .iter()
             .map(|&(phi, r)| (reg.radius(phi) - r).abs() / a0)
             .fold(0.0, f64::max);
-        if !(reg.fit_deviation <= MAX_FIT_DEVIATION) {
+        if reg.fit_deviation.is_nan() || reg.fit_deviation > MAX_FIT_DEVIATION {
             return Err(SasmError::NotStarShaped {
                 centre,
                 message: format!(
@@ -144,7 +147,7 @@ impl Region {
         let rmin = (0..m)
             .map(|k| reg.radius(2.0 * PI * k as f64 / m as f64))
             .fold(f64::INFINITY, f64::min);
-        if !(rmin > 0.05 * a0) {
+        if rmin.is_nan() || rmin <= 0.05 * a0 {
             return Err(SasmError::NotStarShaped {
                 centre,
                 message: "the centre is too close to the curve".into(),

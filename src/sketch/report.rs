@@ -147,6 +147,8 @@ pub fn build_document_with(
     let disp = crate::character::edit::displacements(active).map_err(edit_err)?;
     let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
     crate::character::edit::apply_plates(&mut model.mesh, active).map_err(edit_err)?;
+    crate::sasm::edit::apply_edits(&mut model.mesh, &model.parts, active)
+        .map_err(|e| SketchError::Document(format!("sasm edit: {e}")))?;
     let topo = topology(&model.mesh);
     let parts = edited
         .iter()

@@ -155,13 +155,15 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
             }
             param(e, "radius", *radius, *radius > 0.0, "a positive radius")
         }
+        // strokes are validated against the built part in `check_builds`
+        Edit::Sasm(_) | Edit::SasmAux(_) => Ok(()),
     }
 }
 
 /// Smallest shape parameter of a force edit.
-pub const A_FORCE_MIN: f64 = 1e-3;
+pub const A_FORCE_MIN: f64 = 0.05;
 /// Largest shape parameter of a force edit.
-pub const A_FORCE_MAX: f64 = 1e3;
+pub const A_FORCE_MAX: f64 = 20.0;
 
 /// The parts with `edits` applied in order (spec-level edits; validated as
 /// they are applied; an error names the edit's index in `edits`).
@@ -259,7 +261,7 @@ pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditErro
             reach,
             ..
         } => boundary(p, e, *end, curve.as_ref(), *tangent, *reach),
-        Edit::Plate { .. } => Ok(()),
+        Edit::Plate { .. } | Edit::Sasm(_) | Edit::SasmAux(_) => Ok(()),
     }
 }
 
@@ -338,7 +340,7 @@ fn boundary(
     }
     let after = build(&q)?.section(ue, 1).c0;
     let response = dot(sub(after, before), t) / tt;
-    if !(response.abs() > TANGENT_RESPONSE_MIN) {
+    if response.is_nan() || response.abs() <= TANGENT_RESPONSE_MIN {
         return Err(invalid(format!(
             "the end tangent does not respond to the sections within reach {reach} (response {response:e})"
         )));
@@ -464,6 +466,16 @@ pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError
                     message: format!(
                         "the region centre lies {d:.4} from the part's surface, farther than the radius {radius}"
                     ),
+                });
+            }
+        }
+        Edit::Sasm(_) | Edit::SasmAux(_) => {
+            let f = crate::sasm::edit::feature_of(e, std::slice::from_ref(&built));
+            if let Some(Err(err)) = f {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: name.into(),
+                    message: err.to_string(),
                 });
             }
         }

@@ -21,7 +21,9 @@ use std::path::PathBuf;
 pub const FORCE_TERMS: (usize, usize) = (16, 8);
 
 /// The 2-sided pde4 solution of a force edit (clamped at both ends of its
-/// range: zero boundary curves and tangents).
+/// range: zero boundary curves and tangents), shape parameters
+/// `a1 = 1, a2 = 2 a^2, a3 = a^4` (`ShapeParams::plate_ratio`: scaling all
+/// three alike would only rescale the response).
 pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
     let Edit::Force { force, a, .. } = e else {
         return Err(EditError::Invalid {
@@ -30,7 +32,7 @@ pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
             message: "not a force edit".into(),
         });
     };
-    let p = ShapeParams::uniform(*a);
+    let p = ShapeParams::plate_ratio(*a);
     TwoSided::new(
         [p; 3],
         std::slice::from_ref(force),
