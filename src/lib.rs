@@ -38,6 +38,7 @@ pub mod pde6;
 pub mod plate;
 pub mod profile;
 pub mod render;
+pub mod sasm;
 pub mod sketch;
 pub mod surface;
 pub mod template;

@@ -16,6 +16,7 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sasm;
 mod sketch;
 mod template;
 mod tui;
