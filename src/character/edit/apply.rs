@@ -338,7 +338,7 @@ fn boundary(
     }
     let after = build(&q)?.section(ue, 1).c0;
     let response = dot(sub(after, before), t) / tt;
-    if !(response.abs() > TANGENT_RESPONSE_MIN) {
+    if response.is_nan() || response.abs() <= TANGENT_RESPONSE_MIN {
         return Err(invalid(format!(
             "the end tangent does not respond to the sections within reach {reach} (response {response:e})"
         )));

@@ -8,10 +8,10 @@ use crate::mesh::{dist, Mesh};
 use crate::pde4::two_sided::Method;
 use crate::pde4::{ShapeParams, TwoSided};
 use crate::plate::deformer::{BoundaryMethod, MappingMethod, PlateDeformer, RegionOptions};
-use crate::sketch::build::{Displacement, PartCache};
+use crate::sketch::build::{build_model_with, Displacement, PartCache};
 use crate::sketch::part::PartSurface;
 use crate::sketch::report::build_document_with;
-use crate::sketch::{Built, Resolution, SketchError};
+use crate::sketch::{Built, Model, Resolution, SketchError};
 use crate::surface::Surface;
 use std::f64::consts::PI;
 use std::path::PathBuf;
@@ -152,6 +152,8 @@ pub struct Session {
     pub base: PathBuf,
     pub res: Resolution,
     pub cache: PartCache,
+    /// Model height, read from the front profile at the first build.
+    pub height: Option<f64>,
 }
 
 impl Session {
@@ -162,6 +164,7 @@ impl Session {
             base,
             res,
             cache: PartCache::default(),
+            height: None,
         }
     }
 
