@@ -9,6 +9,7 @@
 mod common;
 
 mod conv;
+mod edit;
 mod gallery;
 mod gec;
 mod ode6;
@@ -29,6 +30,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(ode6::figures());
     v.extend(conv::figures());
     v.extend(sketch::figures());
+    v.extend(edit::figures());
     v.extend(sasm::figures());
     v.extend(gallery::figures());
     v

@@ -4,7 +4,7 @@
 //!   area, combined forces), exact solution.
 //! * `000-fig2`: 4-sided deformations of the MakeHuman body in regions drawn
 //!   as closed curves: small (nose), narrow band (arm), irregular (chest).
-//! * `000-fig8`: a torso from boundary curves and tangents with a sculpting
+//! * `000-fig8-patch` (the character version is `000-fig8` in `edit`): a torso from boundary curves and tangents with a sculpting
 //!   force: shape parameter a = 1.0 and 0.3 (read as the smoothing parameter
 //!   of $a_1 = 1$, $a_2 = 2a^2$, $a_3 = a^4$: scaling all three alike only
 //!   rescales the force response), changed boundary curve, changed tangents.
@@ -44,9 +44,9 @@ pub fn figures() -> Vec<Figure> {
             run: fig2,
         },
         Figure {
-            id: "000-fig8",
+            id: "000-fig8-patch",
             paper: "000",
-            title: "shape parameters, boundary curves and tangents",
+            title: "a synthetic torso patch: shape parameters, boundary curves and tangents",
             run: fig8,
         },
         Figure {
@@ -397,9 +397,9 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
             },
         ));
     }
-    Image::hstack(&panels, WHITE).save_png(&ctx.path("000-fig8.png"))?;
+    Image::hstack(&panels, WHITE).save_png(&ctx.path("000-fig8-patch.png"))?;
     ctx.write_json(
-        "000-fig8.json",
+        "000-fig8-patch.json",
         &serde_json::json!({"terms": [24, 8], "shape": "a1 = 1, a2 = 2 a^2, a3 = a^4", "panels": data}),
     )?;
     Ok(())

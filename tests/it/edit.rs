@@ -6,6 +6,7 @@ use pdesculpt::character::doc::{CharacterDoc, Level};
 use pdesculpt::character::edit::{Edit, EditError, SectionTransform};
 use pdesculpt::sketch::check::bundled;
 use pdesculpt::sketch::{build_document, Resolution};
+use proptest::prelude::*;
 use std::path::Path;
 
 /// Low resolution for tests (each case builds a character).
@@ -220,4 +221,164 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
     let o = pdesculpt(&["character", "undo", bdoc.to_str().unwrap()]);
     assert_clear_error(&o, "cursor 7");
     assert_eq!(std::fs::read_to_string(&bdoc).unwrap(), broken);
+}
+
+#[test]
+fn edit_checks_pass() {
+    let checks = pdesculpt::character::edit::check::checks();
+    assert!(checks.len() >= 10);
+    for c in &checks {
+        assert!(
+            c.passed,
+            "{} measured {} > {}",
+            c.name, c.measured, c.tolerance
+        );
+    }
+}
+
+#[test]
+fn force_boundary_and_plate_edits_refuse_bad_parameters() {
+    let mut d = female();
+    let torso = d.parts[0].clone();
+    let before = d.clone();
+    let good = pdesculpt::character::edit::check::sample_force(&torso, [0.0, 0.0, 1.0]);
+    let Edit::Force { force, .. } = good.clone() else {
+        unreachable!()
+    };
+    let bad = [
+        (
+            Edit::Force {
+                part: "torso".into(),
+                u: [-1.0, 0.2],
+                force,
+                a: 1.0,
+            },
+            "outside the part",
+        ),
+        (
+            Edit::Force {
+                part: "torso".into(),
+                u: [0.1, 0.2],
+                force,
+                a: 0.0,
+            },
+            "a = 0",
+        ),
+        (
+            Edit::Boundary {
+                part: "head".into(),
+                end: pdesculpt::character::doc::End::End,
+                curve: Some(pdesculpt::character::doc::SectionShape::Circle { r: 0.05 }),
+                tangent: None,
+                reach: 0.3,
+            },
+            "closed end",
+        ),
+        (
+            Edit::Boundary {
+                part: "torso".into(),
+                end: pdesculpt::character::doc::End::End,
+                curve: None,
+                tangent: None,
+                reach: 0.3,
+            },
+            "give a new",
+        ),
+        (
+            Edit::Plate {
+                part: "torso".into(),
+                centre: [5.0, 5.0, 5.0],
+                radius: 0.1,
+                d: [0.0, 0.0, 0.01],
+            },
+            "farther than the radius",
+        ),
+        (
+            Edit::Plate {
+                part: "torso".into(),
+                centre: [0.0, 1.0, 0.0],
+                radius: -0.1,
+                d: [0.0, 0.0, 0.01],
+            },
+            "radius = -0.1",
+        ),
+    ];
+    for (e, needle) in bad {
+        let err = d.push_edit(e.clone()).expect_err(needle);
+        assert!(err.to_string().contains(needle), "{needle}: {err}");
+        assert_eq!(d, before, "{e:?} changed the document");
+    }
+    d.push_edit(good).expect("the sample force is valid");
+}
+
+fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
+    let torso = doc.parts[0].clone();
+    let names: Vec<String> = doc.parts.iter().map(|p| p.name.clone()).collect();
+    let c = torso.sections[torso.sections.len() / 2].centre;
+    (
+        0usize..6,
+        proptest::sample::select(names),
+        -1.0f64..1.0,
+        -1.0f64..1.0,
+    )
+        .prop_map(move |(kind, part, x, y)| {
+            Some(match kind {
+                0 => shape(&part, 2.0 * x),
+                1 => gec(
+                    &part,
+                    None,
+                    SectionTransform::Scale {
+                        sx: 1.0 + 0.3 * x,
+                        sy: 1.0 + 0.3 * y,
+                    },
+                ),
+                2 => gec(&part, Some(2), SectionTransform::Rotate { angle: 3.0 * x }),
+                3 => pdesculpt::character::edit::check::sample_force(
+                    &torso,
+                    [0.0, 3.0 * y, 10.0 * x],
+                ),
+                4 => Edit::Boundary {
+                    part,
+                    end: pdesculpt::character::doc::End::End,
+                    curve: None,
+                    tangent: Some([0.1 * x, 0.0, 0.1 * y]),
+                    reach: 0.4,
+                },
+                _ => Edit::Plate {
+                    part: "torso".into(),
+                    centre: [c[0] + 0.05 * x, c[1] + 0.05 * y, c[2] + 0.1],
+                    radius: 0.12,
+                    d: [0.0, 0.01 * y, 0.02 * x],
+                },
+            })
+        })
+}
+
+proptest! {
+    #![proptest_config(crate::strategies::config(6))]
+    #[test]
+    fn random_edits_with_undo_redo_replay_like_incremental(
+        steps in proptest::collection::vec((0usize..4, edit_strategy(&female())), 1..5)
+    ) {
+        use pdesculpt::character::edit::Session;
+        let mut s = Session::new(female(), ".".into(), low());
+        for (what, e) in steps {
+            let before = s.doc.clone();
+            let r = match (what, e) {
+                (0, _) => s.doc.undo(),
+                (1, _) => s.doc.redo(),
+                (_, Some(e)) => s.push(e),
+                (_, None) => Ok(()),
+            };
+            if r.is_err() {
+                prop_assert_eq!(&s.doc, &before);
+            }
+            let inc = s.build().expect("an accepted log builds");
+            prop_assert!(inc.model.mesh.positions.iter().flatten().all(|x| x.is_finite()));
+            let t = &inc.report.topology;
+            prop_assert!(t.watertight && t.manifold && t.oriented, "{:?}", t);
+            let scratch = build_document(&s.doc, Path::new("."), low(), false).expect("replays");
+            prop_assert!(scratch.model.mesh == inc.model.mesh, "replay differs from incremental");
+        }
+    }
 }

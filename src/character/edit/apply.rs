@@ -159,9 +159,9 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
 }
 
 /// Smallest shape parameter of a force edit.
-pub const A_FORCE_MIN: f64 = 1e-3;
+pub const A_FORCE_MIN: f64 = 0.05;
 /// Largest shape parameter of a force edit.
-pub const A_FORCE_MAX: f64 = 1e3;
+pub const A_FORCE_MAX: f64 = 20.0;
 
 /// The parts with `edits` applied in order (spec-level edits; validated as
 /// they are applied; an error names the edit's index in `edits`).
@@ -338,7 +338,7 @@ fn boundary(
     }
     let after = build(&q)?.section(ue, 1).c0;
     let response = dot(sub(after, before), t) / tt;
-    if !(response.abs() > TANGENT_RESPONSE_MIN) {
+    if response.is_nan() || response.abs() <= TANGENT_RESPONSE_MIN {
         return Err(invalid(format!(
             "the end tangent does not respond to the sections within reach {reach} (response {response:e})"
         )));

@@ -28,6 +28,26 @@
 //!   rotation of all sections about their centres, when the sections' frames
 //!   are parallel, scales or rotates every ring of the surface about the
 //!   surface's centre curve (harmonic 0). Checked in `verify` family `edit`.
+//! * [`Edit::Force`] (PDESM sculpting force, sec 5.1, Fig 8): how a force
+//!   acts on a pde6 C2 chain part: the paper's pde4 2-sided patch over a
+//!   u-range of the part (concentrated, line, area or uniform force in the
+//!   patch's coordinates; shape parameters `a1 = 1, a2 = 2a^2, a3 = a^4`),
+//!   clamped at both range ends, is *added to the part as a displacement*.
+//!   It vanishes with its u-derivative at the range ends, so the part stays
+//!   in place and C1 there, and the part's ends (where transitions join)
+//!   never move. The chain is not re-solved. Not done: 4-sided forces inside
+//!   a closed curve on the part.
+//! * [`Edit::Boundary`] (PDESM boundary curves and tangents, sec 5.1): a new
+//!   boundary curve is a new end section (the transition at that end is
+//!   rebuilt from it); a boundary tangent change moves the sections within
+//!   reach of the end by `t (u - u_e)(1 - |u - u_e|/L)^3 / r`, `r` the
+//!   solved chain's measured (linear) response, so the end tangent changes
+//!   by exactly `t` and the end curve stays. Why not the pde4 non-zero
+//!   boundary solution: a part is one C2 chain, not a 2-sided pde4 patch;
+//!   changing it through its sections keeps the transitions C1.
+//! * [`Edit::Plate`] (paper 001, the mesh level of 000 Fig 12): the C1
+//!   plate bending of a region of the built mesh, after every PDE-level
+//!   edit.
 //!
 //! Every edit names its target part ([`Edit::part`]) and validates its
 //! parameters: finite numbers, ranges named in [`EditError::Parameter`], a
@@ -40,7 +60,7 @@ pub mod check;
 mod mesh;
 
 pub use apply::{apply_to_parts, section_gec, validate_params};
-pub use mesh::{apply_plates, displacements, Session, FORCE_TERMS};
+pub use mesh::{apply_plates, displacements, force_field, Session, FORCE_TERMS};
 
 use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
