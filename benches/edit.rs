@@ -1,8 +1,10 @@
 //! One edit of the bundled female plus the rebuild of the affected part only
-//! (an editing `Session` with a part cache: only the edited part's chain is
-//! re-solved; the mesh, transitions and report are rebuilt), beside the
-//! whole-character rebuild of the same edited document (every part solved)
-//! in the same run. Default resolution (160 rings per height).
+//! (`Session::model`: a part cache re-solves only the edited part's chain;
+//! the mesh and transitions are rebuilt, no profile reading or silhouette
+//! report), beside two baselines in the same run: the same model path with
+//! every part solved (no cache), and the whole document build with its
+//! report (`build_document`: profiles read, all parts solved, silhouettes
+//! measured). Default resolution (160 rings per height).
 //!
 //! Each iteration pushes a GEC scale of the left arm with a factor not seen
 //! before, so the cache misses on that part and hits on the others.
@@ -44,7 +46,17 @@ fn bench(c: &mut Criterion) {
             i += 1;
             let mut s = warm.clone();
             s.push(edit(i)).expect("valid");
-            black_box(s.build().expect("builds"))
+            black_box(s.model().expect("builds"))
+        })
+    });
+    let mut k = 0u64;
+    g.bench_function("model_all_parts_solved", |b| {
+        b.iter(|| {
+            k += 1;
+            let mut s = warm.clone();
+            s.cache = Default::default();
+            s.push(edit(k)).expect("valid");
+            black_box(s.model().expect("builds"))
         })
     });
     let mut j = 0u64;

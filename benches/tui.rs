@@ -8,20 +8,27 @@
 //! * `key_redraw_tree`: one key in the part tree: the highlighted part
 //!   changes, so the half-block preview is rendered again by the CPU
 //!   rasteriser, then the full redraw;
-//! * `rebuild_preview`: what an edit costs: the whole document rebuilt at
-//!   the preview resolution (60 rings per height: every change rebuilds
-//!   every part, there is no partial rebuild) plus the preview render;
-//! * baseline `rebuild_export`: the same document at the default
-//!   resolution of `character build` (what an export does), in the same run.
+//! * `edit_part_rebuild_preview`: what applying an edit costs: `push_edit`
+//!   of a new GEC scale of one part (validated on the UI thread, which
+//!   solves that part once), the worker's rebuild at the preview resolution
+//!   (60 rings per height) with its part cache (only the edited part is
+//!   solved again; transitions and mesh are rebuilt whole) and the preview
+//!   render;
+//! * baseline `full_rebuild_preview`: the same document rebuilt from
+//!   scratch at the preview resolution (every part solved) plus the render;
+//! * `full_rebuild_export`: the document at the default resolution of
+//!   `character build` (what an export does), no cache.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use pdesculpt::character::edit::{Edit, SectionTransform};
+use pdesculpt::sketch::build::PartCache;
 use pdesculpt::sketch::Resolution;
 use pdesculpt::tui::app::{App, Effect, Focus};
 use pdesculpt::tui::preview::{self, ViewSet};
 use pdesculpt::tui::term::{open, Options, PREVIEW_RINGS};
 use pdesculpt::tui::view::{draw, PreviewCache};
-use pdesculpt::tui::worker::{build, Job, Outcome, Task};
+use pdesculpt::tui::worker::{build, build_with, Job, Outcome, Task};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 use std::hint::black_box;
@@ -89,23 +96,50 @@ fn bench(c: &mut Criterion) {
         })
     });
     let parts: Vec<String> = app.edited.iter().map(|p| p.name.clone()).collect();
-    let j = job(&mut app, preview_res());
+    let render = |r: &pdesculpt::tui::worker::Rebuilt| {
+        black_box(preview::render(
+            &r.mesh,
+            &parts,
+            Some("arm_l"),
+            ViewSet::Front,
+            82,
+            46,
+        ))
+    };
     g.sample_size(10);
-    g.bench_function("rebuild_preview", |b| {
+    let mut cache = PartCache::default();
+    let mut j = job(&mut app, preview_res());
+    build_with(&j, Some(&mut cache)).expect("builds");
+    let base = j.doc.clone();
+    let mut k = 0u32;
+    g.bench_function("edit_part_rebuild_preview", |b| {
+        b.iter(|| {
+            // a new scale each time: the edited part is never cached
+            k += 1;
+            j.doc = base.clone();
+            j.doc
+                .push_edit(Edit::GecTransform {
+                    part: "arm_l".into(),
+                    section: None,
+                    transform: SectionTransform::Scale {
+                        sx: 1.0 + 1e-4 * k as f64,
+                        sy: 1.0,
+                    },
+                })
+                .expect("valid edit");
+            let r = build_with(&j, Some(&mut cache)).expect("builds");
+            render(&r);
+        })
+    });
+    j.doc = base;
+    g.bench_function("full_rebuild_preview", |b| {
         b.iter(|| {
             let r = build(&j).expect("builds");
-            black_box(preview::render(
-                &r.mesh,
-                &parts,
-                Some("torso"),
-                ViewSet::Front,
-                82,
-                46,
-            ));
+            render(&r);
         })
     });
     let j = job(&mut app, Resolution::default());
-    g.bench_function("rebuild_export", |b| {
+    g.bench_function("full_rebuild_export", |b| {
         b.iter(|| black_box(build(&j).expect("builds")))
     });
     g.finish();

@@ -48,7 +48,7 @@ keys v v v
 wait_for "front | side | top"
 # type a bad value so the screenshot shows the check as typed
 keys Up Up Enter
-tmux send-keys -t "$session" -l "-2"
+tmux send-keys -t "$session" -l -- "-2"
 sleep 0.5
 tmux capture-pane -e -p -t "$session" >"$tmp/screen.ansi"
 python3 - "$tmp/screen.ansi" "$tmp/screen.html" <<'PY'
@@ -98,12 +98,22 @@ for line in text:
         elif part:
             style = "color:%s;background:%s;%s%s" % (fg or FG, bg or BG,
                 "font-weight:bold;" if bold else "", "text-decoration:line-through;" if strike else "")
-            spans.append('<span style="%s">%s</span>' % (style, html.escape(part)))
+            # half blocks as two-colour cells (a glyph leaves gaps between lines)
+            for run in re.split("(\u2580+)", part):
+                if not run:
+                    continue
+                if run[0] == "\u2580":
+                    cell = '<span class="h" style="background:linear-gradient(%s 50%%,%s 50%%)"> </span>' % (
+                        fg or FG, bg or BG)
+                    spans.append(cell * len(run))
+                else:
+                    spans.append('<span style="%s">%s</span>' % (style, html.escape(run)))
     out.append("".join(spans))
 page = """<!doctype html><meta charset="utf-8"><style>
 body{margin:0;background:%s}
 pre{margin:8px;font:14px/17px 'DejaVu Sans Mono',monospace;color:%s;letter-spacing:0}
-span{display:inline}
+span{display:inline-block;height:17px;vertical-align:top;white-space:pre}
+span.h{width:1ch}
 </style><pre>%s</pre>""" % (BG, FG, "\n".join(out))
 open(sys.argv[2], "w", encoding="utf-8").write(page)
 PY

@@ -43,7 +43,7 @@ pub fn figures() -> Vec<Figure> {
 const W: usize = 260;
 const H: usize = 480;
 const VIEW: View = View::Perspective {
-    yaw: 35.0,
+    yaw: 20.0,
     pitch: 10.0,
 };
 
@@ -236,15 +236,15 @@ fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
     let cases = vec![
         ("a: original".to_string(), base.clone()),
         (
-            "b: left leg bent (kappa 0.8)".into(),
+            "b: left leg bent outward (kappa -0.8)".into(),
             with(
                 &doc,
                 &[gec(
                     "leg_l",
                     None,
                     SectionTransform::Bend {
-                        kappa: 0.8,
-                        axis: [1.0, 0.0, 0.0],
+                        kappa: -0.8,
+                        axis: [0.0, 0.0, 1.0],
                     },
                 )],
             )?,
@@ -265,14 +265,14 @@ fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
             with(&doc, &bump)?,
         ),
         (
-            "e: left arm bent (kappa 2)".into(),
+            "e: left arm bent outward (kappa -2)".into(),
             with(
                 &doc,
                 &[gec(
                     "arm_l",
                     None,
                     SectionTransform::Bend {
-                        kappa: 2.0,
+                        kappa: -2.0,
                         axis: [0.0, 0.0, 1.0],
                     },
                 )],

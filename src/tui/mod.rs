@@ -10,9 +10,11 @@
 //!
 //! * [`app`]: the state and its reaction to keys, pure (tests drive it and
 //!   render it on ratatui's `TestBackend`);
-//! * [`worker`]: rebuilds and exports on a worker thread; stale jobs are
-//!   dropped, a panic is caught and the document goes back to its last good
-//!   state;
+//! * [`worker`]: rebuilds and exports on a worker thread, re-solving only
+//!   the parts an edit changed (`sketch::build::PartCache`; transitions and
+//!   the mesh are rebuilt whole, at a lower preview resolution); stale jobs
+//!   are dropped, a panic is caught and the document goes back to its last
+//!   good state;
 //! * [`autosave`]: the `CHAR.json.autosave` sidecar written after every
 //!   change and offered for recovery on the next start;
 //! * [`view`]: drawing; [`term`]: the crossterm event loop.

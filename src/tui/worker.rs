@@ -14,7 +14,9 @@
 
 use crate::character::doc::CharacterDoc;
 use crate::mesh::Mesh;
-use crate::sketch::{build_document, Resolution, SketchReport};
+use crate::sketch::build::PartCache;
+use crate::sketch::report::build_document_with;
+use crate::sketch::{Resolution, SketchReport};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{channel, Receiver, Sender, TryRecvError};
 use std::time::{Duration, Instant};
@@ -85,13 +87,20 @@ impl Outcome {
 
 /// The build function the worker calls (the real one is [`build`]; tests
 /// may pass one that panics).
-pub type BuildFn = dyn Fn(&Job) -> Result<Rebuilt, String> + Send + 'static;
+pub type BuildFn = dyn FnMut(&Job) -> Result<Rebuilt, String> + Send + 'static;
 
 /// Builds a job's document as `character build` reads it from disk.
 pub fn build(job: &Job) -> Result<Rebuilt, String> {
+    build_with(job, None)
+}
+
+/// [`build`] re-solving only the parts not in `cache` (the same mesh, bit
+/// for bit: `sketch::build::PartCache`).
+pub fn build_with(job: &Job, cache: Option<&mut PartCache>) -> Result<Rebuilt, String> {
     let text = serde_json::to_string_pretty(&job.doc).map_err(|e| e.to_string())?;
     let doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
-    let built = build_document(&doc, &job.base, job.res, false).map_err(|e| e.to_string())?;
+    let built =
+        build_document_with(&doc, &job.base, job.res, false, cache).map_err(|e| e.to_string())?;
     Ok(Rebuilt {
         doc: built.doc,
         mesh: built.model.mesh,
@@ -153,9 +162,11 @@ fn panic_message(p: &(dyn std::any::Any + Send)) -> String {
 pub const THREAD_NAME: &str = "pdesculpt-tui-worker";
 
 impl Worker {
-    /// Starts the worker with the real build.
+    /// Starts the worker with the real build; built parts are cached
+    /// across jobs, so an edit of one part re-solves that part only.
     pub fn spawn() -> Worker {
-        Worker::with_build(Box::new(build))
+        let mut cache = PartCache::default();
+        Worker::with_build(Box::new(move |j: &Job| build_with(j, Some(&mut cache))))
     }
 
     /// Starts the worker with a given build function.
@@ -198,14 +209,14 @@ impl Drop for Worker {
     }
 }
 
-fn worker_loop(jobs: Receiver<Job>, out: Sender<Outcome>, f: Box<BuildFn>) {
+fn worker_loop(jobs: Receiver<Job>, out: Sender<Outcome>, mut f: Box<BuildFn>) {
     while let Ok(mut job) = jobs.recv() {
         // coalesce: of queued rebuilds only the newest matters; exports all run
         loop {
             match jobs.try_recv() {
                 Ok(next) => {
                     if matches!(job.task, Task::Export { .. }) {
-                        run_one(&job, &out, &f);
+                        run_one(&job, &out, f.as_mut());
                     }
                     job = next;
                 }
@@ -213,11 +224,11 @@ fn worker_loop(jobs: Receiver<Job>, out: Sender<Outcome>, f: Box<BuildFn>) {
                 Err(TryRecvError::Disconnected) => break,
             }
         }
-        run_one(&job, &out, &f);
+        run_one(&job, &out, f.as_mut());
     }
 }
 
-fn run_one(job: &Job, out: &Sender<Outcome>, f: &BuildFn) {
+fn run_one(job: &Job, out: &Sender<Outcome>, f: &mut BuildFn) {
     let _ = out.send(Outcome::Started { gen: job.gen });
     let t0 = Instant::now();
     let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {

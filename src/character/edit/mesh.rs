@@ -8,10 +8,10 @@ use crate::mesh::{dist, Mesh};
 use crate::pde4::two_sided::Method;
 use crate::pde4::{ShapeParams, TwoSided};
 use crate::plate::deformer::{BoundaryMethod, MappingMethod, PlateDeformer, RegionOptions};
-use crate::sketch::build::{Displacement, PartCache};
+use crate::sketch::build::{build_model_with, Displacement, PartCache};
 use crate::sketch::part::PartSurface;
 use crate::sketch::report::build_document_with;
-use crate::sketch::{Built, Resolution, SketchError};
+use crate::sketch::{Built, Model, Resolution, SketchError};
 use crate::surface::Surface;
 use std::f64::consts::PI;
 use std::path::PathBuf;
@@ -152,6 +152,8 @@ pub struct Session {
     pub base: PathBuf,
     pub res: Resolution,
     pub cache: PartCache,
+    /// Model height, read from the front profile at the first build.
+    pub height: Option<f64>,
 }
 
 impl Session {
@@ -162,6 +164,7 @@ impl Session {
             base,
             res,
             cache: PartCache::default(),
+            height: None,
         }
     }
 
@@ -170,14 +173,48 @@ impl Session {
         self.doc.push_edit(e)
     }
 
-    /// Builds the document's current state, re-solving only changed parts.
+    /// Builds the document's current state, re-solving only changed parts
+    /// (with the report: profiles read, silhouettes measured).
     pub fn build(&mut self) -> Result<Built, SketchError> {
-        build_document_with(
+        let b = build_document_with(
             &self.doc,
             &self.base,
             self.res,
             false,
             Some(&mut self.cache),
-        )
+        )?;
+        self.height = Some(b.report.height);
+        Ok(b)
+    }
+
+    /// The interactive path: only the model (mesh and joins) of the current
+    /// state, re-solving only changed parts, without reading the profiles or
+    /// measuring silhouettes (the mesh equals [`Session::build`]'s bit for
+    /// bit). Needs stored parts; the first call runs [`Session::build`] once
+    /// to learn the height.
+    pub fn model(&mut self) -> Result<Model, SketchError> {
+        let height = match self.height {
+            Some(h) => h,
+            None => self.build()?.report.height,
+        };
+        if self.doc.parts.is_empty() {
+            return Err(SketchError::Document(
+                "the session's document has no stored parts".into(),
+            ));
+        }
+        let active = self.doc.active_edits();
+        let err = |e: EditError| SketchError::Document(e.to_string());
+        let edited = super::apply_to_parts(&self.doc.parts, active).map_err(err)?;
+        let disp = displacements(active).map_err(err)?;
+        let mut model = build_model_with(
+            &edited,
+            &self.doc.transitions,
+            height,
+            self.res,
+            &disp,
+            Some(&mut self.cache),
+        )?;
+        apply_plates(&mut model.mesh, active).map_err(err)?;
+        Ok(model)
     }
 }
