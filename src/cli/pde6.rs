@@ -15,13 +15,11 @@
 //! terms J. Method 1 and 2 need 6 + 3k sections, the global C2 chain 7 + 3k.
 
 use anyhow::{bail, Context};
-use pdesculpt::curve::gec::Gec;
-use pdesculpt::curve::Fourier3;
 use pdesculpt::jet::Jet;
 use pdesculpt::limits;
 use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
 use pdesculpt::pde6::sampling::Sampling;
-use pdesculpt::pde6::{Chain, Method, Mode, ModeSolver, Section};
+use pdesculpt::pde6::{Method, Mode, ModeSolver};
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
 
@@ -86,8 +84,18 @@ pub enum Command {
         #[command(flatten)]
         units: super::units::UnitArgs,
     },
-    /// Reconstructs the MakeHuman body from cross sections.
+    /// Reconstructs one closed body from cross sections (MakeHuman base body,
+    /// a morph of it, or --mesh BODY.obj: a standing humanoid, Y up).
     Body {
+        /// The body to reconstruct (obj, stl, ply, glb); default the bundled MakeHuman body.
+        #[arg(long)]
+        mesh: Option<PathBuf>,
+        /// MakeHuman morph targets applied to the bundled body: NAME=WEIGHT (repeatable).
+        #[arg(long)]
+        morph: Vec<String>,
+        /// The seven separate open parts of paper 002 instead of the closed body.
+        #[arg(long)]
+        open_parts: bool,
         #[arg(long, default_value_t = 10)]
         terms: usize,
         /// PDE parameter a (small |a| keeps the top harmonics from rippling between sections).
@@ -127,58 +135,6 @@ pub enum Command {
     },
 }
 
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SectionFile {
-    sections: Vec<SectionEntry>,
-}
-
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SectionEntry {
-    u: f64,
-    gec: Option<Gec>,
-    fourier: Option<Fourier3>,
-}
-
-fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let f: SectionFile =
-        serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
-    f.sections
-        .into_iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let curve = match (s.gec, s.fourier) {
-                (Some(g), None) => {
-                    let g = Gec::new(g.frame, g.centre, g.x, g.y)
-                        .with_context(|| format!("section {i}"))?;
-                    pdesculpt::curve::gec::input::check_magnitudes(&g)
-                        .with_context(|| format!("section {i}"))?;
-                    g.to_fourier3()
-                }
-                (None, Some(f)) => f,
-                _ => bail!("section {i}: give exactly one of \"gec\" or \"fourier\""),
-            };
-            limits::check(
-                &format!("section {i}: harmonics"),
-                curve.cos.len().max(curve.sin.len()),
-                limits::CURVE_HARMONICS,
-            )?;
-            Ok(Section { u: s.u, curve })
-        })
-        .collect()
-}
-
-fn build(a: f64, method: Method, sections: &[Section], first: usize) -> anyhow::Result<Chain> {
-    Ok(match method {
-        Method::GlobalC2 => Chain::c2_global(a, sections)?,
-        Method::SharedCurves => Chain::method1(a, sections, first)?,
-        Method::CarriedDerivatives => Chain::method2(a, sections, first)?,
-    })
-}
-
 /// Runs `pdesculpt pde6`.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     match args.command {
@@ -196,8 +152,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             limits::check("--nv", nv, limits::TESS_NV)?;
             pdesculpt::mesh::io::Format::from_path(&output)?;
             pdesculpt::mesh::io::refuse_overwriting_input(&[&curves], &output)?;
-            let sections = read_sections(&curves)?;
-            let chain = build(a, method.method(), &sections, first)?;
+            let sections = pdesculpt::pde6::input::read_sections(&curves)?;
+            let chain = pdesculpt::pde6::input::build_chain(a, method.method(), &sections, first)?;
             let nu_total = limits::mul("--nu", nu, chain.pieces.len())?;
             limits::mesh_vertices("--nu/--nv", nu_total, nv)?;
             let mesh = tessellate(&chain, Tessellation { nu: nu_total, nv });
@@ -217,20 +173,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             } else {
                 eprintln!(
                     "wrote {} ({} sections, {} pieces, {:?}, a = {a}): {} triangles, worst condition {:.3e}, join jumps C0/C1/C2 {:.2e} {:.2e} {:.2e}",
-                    output.display(),
-                    sections.len(),
-                    chain.pieces.len(),
-                    chain.method,
-                    mesh.triangles.len(),
-                    chain.max_condition(),
-                    jumps[0],
-                    jumps[1],
-                    jumps[2]
+                    output.display(), sections.len(), chain.pieces.len(), chain.method,
+                    mesh.triangles.len(), chain.max_condition(), jumps[0], jumps[1], jumps[2]
                 );
             }
             Ok(0)
         }
         Command::Body {
+            mesh,
+            morph,
+            open_parts,
             terms,
             a,
             method,
@@ -254,6 +206,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     format!("--sampling {sampling}: expected anchored, chord, centripetal, uniform or polar")
                 })?)
             };
+            if !open_parts {
+                return body_closed(mesh, &morph, terms, a, anchors, pull, &output, units, json);
+            }
             let body = pdesculpt::makehuman::base_body()?;
             eprintln!(
                 "pde6 body: slicing, fitting and solving {} parts",
@@ -274,28 +229,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
                 super::print_json(&out)?;
             } else {
-                let h = 100.0;
-                eprintln!(
-                    "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %",
-                    output.display(),
-                    report.recon_triangles,
-                    report.body_height,
-                    h * report.recon_to_skin_rms_rel,
-                    h * report.recon_to_skin_max_rel,
-                    h * report.skin_to_recon_rms_rel,
-                    h * report.skin_to_recon_max_rel
+                eprint!(
+                    "{}",
+                    pdesculpt::pde6::input::open_parts_summary(&report, &output)
                 );
-                for p in &report.parts {
-                    eprintln!(
-                        "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg",
-                        p.name,
-                        h * p.recon_to_skin_rms_rel,
-                        h * p.recon_to_skin_max_rel,
-                        p.roughness.u,
-                        p.roughness.v,
-                        p.slip_deg
-                    );
-                }
             }
             Ok(0)
         }
@@ -343,4 +280,42 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             Ok(0)
         }
     }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn body_closed(
+    mesh: Option<PathBuf>,
+    morph: &[String],
+    terms: usize,
+    a: f64,
+    anchors: usize,
+    pull: f64,
+    output: &PathBuf,
+    units: super::units::OutputUnitArgs,
+    json: bool,
+) -> anyhow::Result<i32> {
+    use pdesculpt::pde6::body_closed::{load_body, reconstruct_closed, ClosedOptions};
+    let skin = load_body(mesh.as_deref(), morph)?;
+    if let Some(m) = &mesh {
+        pdesculpt::mesh::io::refuse_overwriting_input(&[m], output)?;
+    }
+    eprintln!("pde6 body: finding the layout, tracing, fitting and joining the parts");
+    let opts = ClosedOptions {
+        terms,
+        a,
+        anchors,
+        pull,
+        ..ClosedOptions::default()
+    };
+    let b = reconstruct_closed(&skin, &opts)?;
+    let unit = units.write(&b.model.mesh, output, pdesculpt::mesh::unit::MAKEHUMAN)?;
+    let r = &b.report;
+    if json {
+        let mut out = serde_json::to_value(r)?;
+        out["unit"] = serde_json::json!(unit);
+        super::print_json(&out)?;
+    } else {
+        eprint!("{}", r.summary(output));
+    }
+    Ok(0)
 }

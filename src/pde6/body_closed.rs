@@ -1,0 +1,560 @@
+//! One closed body from PDE surfaces: the parts of [`super::body_layout`]
+//! (torso, two legs, two arms, neck and head) as C2 sixth-order PDE chains
+//! (`Chain::c2_global`, the sketch's [`crate::sketch::part`]), joined at the
+//! hips (crotch) and the shoulders (armpits, neck) by the sketch's
+//! transition surfaces ([`crate::sketch::transition`]: cubic Hermite blends
+//! of the boundary curves and cross tangents of the parts, C1 on the part
+//! boundaries) and assembled with shared vertices by
+//! [`crate::sketch::build_model`] — one implementation for sketched and
+//! reconstructed characters.
+//!
+//! Ends. The crown, the soles and the hands are closed by a collapsed ring:
+//! the last section of the chain is a point (a circle of radius 0) at the
+//! extreme skin point along the part's axis, so the PDE chain itself closes
+//! the part, C2 along u, and the mesh ends in a pole. Hands and feet are
+//! mittens: their sections are the convex hull of every loop the section
+//! plane cuts near the axis (fingers and toes merged), since separate
+//! fingers would need a branching part per finger (transition surfaces
+//! from the palm to five tubes), which the section data of a hand (loops
+//! of a few millimetres) do not support at this resolution. The chin is not
+//! a separate part: the head's horizontal sections run from the neck to the
+//! crown, through the jaw.
+
+use super::body_layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
+use super::sampling::fit_anchored;
+use super::Pde6Error;
+use crate::character::doc::{
+    End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
+};
+use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
+use crate::mesh::topology::{report as topology, TopologyReport};
+use crate::mesh::{add, dot, norm, scale, sub, Mesh};
+use crate::sketch::build::{build_model, JoinReport, Model, Resolution, SeamReport};
+
+/// Options of the closed reconstruction.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct ClosedOptions {
+    /// GEC terms J per section.
+    pub terms: usize,
+    /// PDE parameter a of every part.
+    pub a: f64,
+    /// Sections per tube (7 + 3k, counting the collapsed tip where there is one).
+    pub torso_sections: usize,
+    pub leg_sections: usize,
+    pub arm_sections: usize,
+    pub head_sections: usize,
+    /// Anchored sampling (see [`super::sampling`]).
+    pub anchors: usize,
+    pub samples: usize,
+    pub pull: f64,
+    /// Mesh rings per body height along the parts, rows across a transition.
+    pub rings_per_height: f64,
+    pub transition_rows: usize,
+}
+
+impl Default for ClosedOptions {
+    fn default() -> Self {
+        ClosedOptions {
+            terms: 10,
+            a: super::body::BODY_A,
+            torso_sections: 13,
+            leg_sections: 19,
+            arm_sections: 16,
+            head_sections: 16,
+            anchors: super::body::DEFAULT_ANCHORS,
+            samples: super::body::DEFAULT_SAMPLES,
+            pull: super::body::DEFAULT_PULL,
+            rings_per_height: 160.0,
+            transition_rows: 10,
+        }
+    }
+}
+
+/// Gaps between the landmarks and the part ends, relative to the height.
+pub const CROTCH_GAP: f64 = 0.03;
+pub const ARMPIT_GAP: f64 = 0.02;
+pub const NECK_GAP: f64 = 0.01;
+/// The arm starts this far (relative to the height) along its axis from the
+/// arm loop below the armpit: the shoulder between is the transition's.
+pub const ARM_OFFSET: f64 = 0.06;
+/// Trace step, relative to the height.
+pub const TRACE_STEP: f64 = 0.004;
+
+/// Errors against the input body, relative to its height.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct ClosedReport {
+    pub layout: Layout,
+    pub body_height: f64,
+    pub topology: TopologyReport,
+    pub recon_to_skin: DistanceStats,
+    pub skin_to_recon: DistanceStats,
+    pub recon_to_skin_rms_rel: f64,
+    pub recon_to_skin_max_rel: f64,
+    pub skin_to_recon_rms_rel: f64,
+    pub skin_to_recon_max_rel: f64,
+    /// Largest relative C0 / C1 / C2 jump over every join.
+    pub max_join: [f64; 3],
+    pub joins: Vec<JoinReport>,
+    pub seams: Vec<SeamReport>,
+    /// Sections per part (with tips) and the numbers they store.
+    pub sections: Vec<(String, usize)>,
+    pub gec_numbers: usize,
+    pub skin_vertex_numbers: usize,
+    pub triangles: usize,
+}
+
+/// A closed reconstruction.
+#[derive(Clone, Debug)]
+pub struct ClosedBody {
+    pub model: Model,
+    pub specs: Vec<PartSpec>,
+    pub transitions: Vec<TransitionSpec>,
+    pub report: ClosedReport,
+}
+
+fn fit_section(
+    t: &TraceSample,
+    u: f64,
+    o: &ClosedOptions,
+    what: &str,
+) -> Result<SectionSpec, Pde6Error> {
+    let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
+    let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
+        .map_err(|e| Pde6Error::Body(format!("{what}: {e}")))?;
+    Ok(SectionSpec {
+        u,
+        centre: t.frame.origin,
+        e1: t.frame.e1,
+        e2: t.frame.e2,
+        shape: SectionShape::Gec {
+            centre: g.centre,
+            x: g.x,
+            y: g.y,
+        },
+    })
+}
+
+/// Picks `n` samples evenly in s over [s0, last] (nearest, strictly increasing).
+fn pick(tr: &[TraceSample], s0: f64, n: usize, what: &str) -> Result<Vec<usize>, Pde6Error> {
+    let first = tr.iter().position(|t| t.s >= s0);
+    let last = tr.len().checked_sub(1);
+    let (Some(first), Some(last)) = (first, last) else {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!("{what}: the trace found no sections"),
+        });
+    };
+    if last < first + n {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!(
+                "{what}: the trace found {} sections, {n} needed",
+                last + 1 - first.min(last)
+            ),
+        });
+    }
+    let (a, b) = (tr[first].s, tr[last].s);
+    let mut out: Vec<usize> = Vec::with_capacity(n);
+    for i in 0..n {
+        let s = a + (b - a) * i as f64 / (n - 1) as f64;
+        let mut k = (first..=last)
+            .min_by(|&x, &y| (tr[x].s - s).abs().total_cmp(&(tr[y].s - s).abs()))
+            .unwrap_or(first);
+        if let Some(&p) = out.last() {
+            k = k.max(p + 1);
+        }
+        out.push(k.min(last));
+    }
+    out.dedup();
+    if out.len() < n {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!("{what}: too few distinct sections"),
+        });
+    }
+    Ok(out)
+}
+
+/// The farthest skin point along `d` from `c` within `r` of the axis.
+fn tip(m: &Mesh, c: [f64; 3], d: [f64; 3], r: f64) -> [f64; 3] {
+    let mut best = 0.0f64;
+    for p in &m.positions {
+        let v = sub(*p, c);
+        let a = dot(v, d);
+        let perp = norm(sub(v, scale(d, a)));
+        if perp <= r && a > best {
+            best = a;
+        }
+    }
+    add(c, scale(d, best))
+}
+
+/// Builds a part from a trace: `n` sections (the last a collapsed tip when
+/// `tip_end`).
+#[allow(clippy::too_many_arguments)]
+fn part_from_trace(
+    m: &Mesh,
+    name: &str,
+    tr: &[TraceSample],
+    s0: f64,
+    n: usize,
+    tip_end: bool,
+    o: &ClosedOptions,
+) -> Result<PartSpec, Pde6Error> {
+    let fitted = if tip_end { n - 1 } else { n };
+    let idx = pick(tr, s0, fitted, name)?;
+    if std::env::var_os("PDESCULPT_BODY_DEBUG").is_some() {
+        for &k in &idx {
+            let t = &tr[k];
+            let (ar, c) = crate::curve::gec::fit::polygon_area_centroid(&t.plane);
+            eprintln!(
+                "{name}: s {:.3} r {:.3} n {} area {:.4} c {:?} origin {:?} normal {:?}",
+                t.s,
+                t.radius,
+                t.plane.len(),
+                ar,
+                c,
+                t.frame.origin,
+                t.frame.normal()
+            );
+        }
+    }
+    let mut sections = Vec::with_capacity(n);
+    for (i, &k) in idx.iter().enumerate() {
+        sections.push(fit_section(
+            &tr[k],
+            tr[k].s,
+            o,
+            &format!("{name} section {i}"),
+        )?);
+    }
+    if tip_end {
+        let last = &tr[idx[fitted - 1]];
+        let d = last.frame.normal();
+        let c = last.frame.origin;
+        let p = tip(m, c, d, last.radius);
+        let gap = dot(sub(p, c), d);
+        let gap = gap.max(0.25 * (tr[idx[1]].s - tr[idx[0]].s));
+        sections.push(SectionSpec {
+            u: last.s + gap,
+            centre: add(c, scale(d, gap)),
+            e1: last.frame.e1,
+            e2: last.frame.e2,
+            shape: SectionShape::Circle { r: 0.0 },
+        });
+    }
+    Ok(PartSpec {
+        name: name.into(),
+        surface: SurfaceSpec::Pde6C2 { a: o.a },
+        sections,
+        closed_start: false,
+        closed_end: tip_end,
+    })
+}
+
+fn check_count(what: &str, n: usize) -> Result<(), Pde6Error> {
+    if n < 7 || (n - 7) % 3 != 0 || n > 7 + 3 * 30 {
+        return Err(Pde6Error::Body(format!(
+            "{what} = {n}: the C2 chain needs 7 + 3k sections (k = 0..30)"
+        )));
+    }
+    Ok(())
+}
+
+/// Reconstructs the closed body of `skin` (a standing humanoid, Y up).
+pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, Pde6Error> {
+    check_count("torso sections", o.torso_sections)?;
+    check_count("leg sections", o.leg_sections)?;
+    check_count("arm sections", o.arm_sections)?;
+    check_count("head sections", o.head_sections)?;
+    let lay = find_layout(skin)?;
+    let h = lay.height();
+    let step = TRACE_STEP * h;
+    let centre_at = |y: f64, x_pick: f64| -> Result<([f64; 3], f64), Pde6Error> {
+        let f = super::sampling::section_frame(y)?;
+        let ls = super::body_layout::loops_in_plane(skin, &f);
+        let l = ls
+            .iter()
+            .min_by(|a, b| {
+                (a.centroid[0] - x_pick)
+                    .abs()
+                    .total_cmp(&(b.centroid[0] - x_pick).abs())
+            })
+            .ok_or_else(|| Pde6Error::LayoutNotFound {
+                what: "a section",
+                detail: format!("no loop at y = {y:.3}"),
+            })?;
+        Ok((f.place(l.centroid[0], l.centroid[1]), l.radius))
+    };
+    let straight = |max_len: f64, hull: bool| TraceOptions {
+        step,
+        max_len,
+        follow: false,
+        hull,
+        skip: 0.0,
+        jump: super::body_layout::JUMP,
+    };
+    // torso: crotch + gap up to armpit - gap
+    let y0 = lay.crotch + CROTCH_GAP * h;
+    let y1 = lay.armpit - ARMPIT_GAP * h;
+    let (c, r) = centre_at(y0, 0.0)?;
+    let tt = trace(skin, c, [0.0, 1.0, 0.0], r, straight(y1 - y0, false))?;
+    let torso = part_from_trace(skin, "torso", &tt, 0.0, o.torso_sections, false, o)?;
+    // the torso's start must be its bottom: u increases upwards, fine.
+    let mut specs = vec![torso];
+    // legs: down from crotch - gap
+    let yl = lay.crotch - CROTCH_GAP * h;
+    for (name, x) in [("leg_l", -1.0), ("leg_r", 1.0)] {
+        let f = super::sampling::section_frame(yl)?;
+        let ls = super::body_layout::loops_in_plane(skin, &f);
+        let l = ls
+            .iter()
+            .filter(|l| l.centroid[0] * x > 0.0)
+            .max_by(|a, b| a.radius.total_cmp(&b.radius))
+            .ok_or_else(|| Pde6Error::LayoutNotFound {
+                what: "a leg",
+                detail: format!("{name}: no loop at y = {yl:.3}"),
+            })?;
+        let c = f.place(l.centroid[0], l.centroid[1]);
+        let tr = trace(skin, c, [0.0, -1.0, 0.0], l.radius, straight(h, true))?;
+        specs.push(part_from_trace(
+            skin,
+            name,
+            &tr,
+            0.0,
+            o.leg_sections,
+            true,
+            o,
+        )?);
+    }
+    // arms: from the arm loop under the armpit, following the arm
+    let ya = lay.arm_left[1];
+    for (name, start) in [("arm_l", lay.arm_left), ("arm_r", lay.arm_right)] {
+        let (c0, r0) = centre_at(ya, start[0])?;
+        let (c1, _) = centre_at(ya - 0.04 * h, start[0] + 0.5 * start[0].signum() * 0.04 * h)?;
+        let d = sub(c1, c0);
+        let tr = trace(
+            skin,
+            c0,
+            d,
+            r0,
+            TraceOptions {
+                step,
+                max_len: h,
+                follow: true,
+                hull: true,
+                skip: 0.05 * h,
+                jump: super::body_layout::JUMP,
+            },
+        )?;
+        specs.push(part_from_trace(
+            skin,
+            name,
+            &tr,
+            ARM_OFFSET * h,
+            o.arm_sections,
+            true,
+            o,
+        )?);
+    }
+    // head: from the neck up to the crown
+    let yn = lay.neck + NECK_GAP * h;
+    let (c, r) = centre_at(yn, 0.0)?;
+    let head_trace = TraceOptions {
+        jump: f64::INFINITY,
+        ..straight(h, false)
+    };
+    let tr = trace(skin, c, [0.0, 1.0, 0.0], r, head_trace)?;
+    specs.push(part_from_trace(
+        skin,
+        "head",
+        &tr,
+        0.0,
+        o.head_sections,
+        true,
+        o,
+    )?);
+    let transitions = transitions(skin, &lay, &specs)?;
+    let model = build_model(
+        &specs,
+        &transitions,
+        h,
+        Resolution {
+            rings_per_height: o.rings_per_height,
+            transition_rows: o.transition_rows,
+        },
+    )
+    .map_err(|e| Pde6Error::Body(e.to_string()))?;
+    let report = measure(skin, &lay, &model, &specs, o);
+    Ok(ClosedBody {
+        model,
+        specs,
+        transitions,
+        report,
+    })
+}
+
+/// The hips and shoulders transitions with their seam apexes: the crotch,
+/// and the top of each shoulder halfway between the neck and the outer
+/// shoulder.
+fn transitions(
+    skin: &Mesh,
+    lay: &Layout,
+    specs: &[PartSpec],
+) -> Result<Vec<TransitionSpec>, Pde6Error> {
+    let h = lay.height();
+    let bottom = specs[0].sections[0].centre;
+    let top = specs[0].sections[specs[0].sections.len() - 1].centre;
+    let crotch = [bottom[0], lay.crotch, bottom[2]];
+    let neck_f = super::sampling::section_frame(lay.neck)?;
+    let neck = super::body_layout::loops_in_plane(skin, &neck_f);
+    let neck_x = neck
+        .iter()
+        .min_by(|a, b| a.centroid[0].abs().total_cmp(&b.centroid[0].abs()))
+        .map(|l| l.x_range)
+        .ok_or_else(|| Pde6Error::LayoutNotFound {
+            what: "the neck",
+            detail: format!("no loop at y = {:.3}", lay.neck),
+        })?;
+    let mut apex = Vec::new();
+    for (sign, arm) in [(-1.0, lay.arm_left), (1.0, lay.arm_right)] {
+        let nx = if sign < 0.0 { neck_x.0 } else { neck_x.1 };
+        let x = 0.5 * (nx + arm[0]);
+        let band = 0.01 * h;
+        let y = skin
+            .positions
+            .iter()
+            .filter(|p| (p[0] - x).abs() < band && p[1] < lay.neck && p[1] > lay.armpit)
+            .map(|p| p[1])
+            .fold(f64::NAN, f64::max);
+        if !y.is_finite() {
+            return Err(Pde6Error::LayoutNotFound {
+                what: "a shoulder top",
+                detail: format!("no skin vertex near x = {x:.3} between the armpits and the neck"),
+            });
+        }
+        apex.push([x, y, top[2]]);
+    }
+    Ok(vec![
+        TransitionSpec {
+            name: "hips".into(),
+            parent: "torso".into(),
+            parent_end: End::Start,
+            children: vec!["leg_l".into(), "leg_r".into()],
+            seam_apex: vec![crotch],
+        },
+        TransitionSpec {
+            name: "shoulders".into(),
+            parent: "torso".into(),
+            parent_end: End::End,
+            children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
+            seam_apex: apex,
+        },
+    ])
+}
+
+fn measure(
+    skin: &Mesh,
+    lay: &Layout,
+    model: &Model,
+    specs: &[PartSpec],
+    o: &ClosedOptions,
+) -> ClosedReport {
+    let h = lay.height();
+    let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
+    let s2r = stats(&point_distances(&skin.positions, &model.mesh));
+    let mut max_join = [0.0f64; 3];
+    for j in &model.joins {
+        max_join[0] = max_join[0].max(j.c0);
+        max_join[1] = max_join[1].max(j.c1);
+        max_join[2] = max_join[2].max(j.c2);
+    }
+    let sections: Vec<(String, usize)> = specs
+        .iter()
+        .map(|p| (p.name.clone(), p.sections.len()))
+        .collect();
+    let n_fitted: usize = specs
+        .iter()
+        .flat_map(|p| &p.sections)
+        .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
+        .count();
+    let n_tips = specs.iter().map(|p| p.sections.len()).sum::<usize>() - n_fitted;
+    ClosedReport {
+        layout: *lay,
+        body_height: h,
+        topology: topology(&model.mesh),
+        recon_to_skin: r2s,
+        skin_to_recon: s2r,
+        recon_to_skin_rms_rel: r2s.rms / h,
+        recon_to_skin_max_rel: r2s.max / h,
+        skin_to_recon_rms_rel: s2r.rms / h,
+        skin_to_recon_max_rel: s2r.max / h,
+        max_join,
+        joins: model.joins.clone(),
+        seams: model.seams.clone(),
+        sections,
+        // u, frame (origin + two unit vectors: 9), centre 2, 4 per term;
+        // a tip: u and its point
+        gec_numbers: n_fitted * (1 + 9 + 2 + 4 * o.terms) + n_tips * 4,
+        skin_vertex_numbers: 3 * skin.positions.len(),
+        triangles: model.mesh.triangles.len(),
+    }
+}
+
+/// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
+/// with `morphs` (`NAME=WEIGHT`) applied.
+pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, Pde6Error> {
+    let mesh_err = |e: crate::mesh::MeshError| Pde6Error::Body(e.to_string());
+    if let Some(p) = path {
+        if !morphs.is_empty() {
+            return Err(Pde6Error::Body(
+                "--morph applies to the bundled MakeHuman body, not to --mesh".into(),
+            ));
+        }
+        let m = crate::mesh::io::read(p).map_err(mesh_err)?;
+        m.validate().map_err(mesh_err)?;
+        return Ok(m);
+    }
+    let mut targets = Vec::new();
+    for s in morphs {
+        let (name, w) = s
+            .split_once('=')
+            .ok_or_else(|| Pde6Error::Body(format!("--morph {s:?}: expected NAME=WEIGHT")))?;
+        let w: f64 = w
+            .trim()
+            .parse()
+            .map_err(|_| Pde6Error::Body(format!("--morph {s:?}: weight is not a number")))?;
+        if !w.is_finite() || w.abs() > MORPH_WEIGHT_MAX {
+            return Err(Pde6Error::Body(format!(
+                "--morph {s:?}: weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"
+            )));
+        }
+        targets.push((crate::makehuman::target(name.trim()).map_err(mesh_err)?, w));
+    }
+    Ok(crate::makehuman::body(&targets).map_err(mesh_err)?.mesh)
+}
+
+/// Largest |weight| of a morph target.
+pub const MORPH_WEIGHT_MAX: f64 = 2.0;
+
+impl ClosedReport {
+    /// Text summary (percent of the height).
+    pub fn summary(&self, output: &std::path::Path) -> String {
+        let t = &self.topology;
+        format!(
+            "wrote {} ({} triangles); watertight {} manifold {} oriented {}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n  joins: max C0 {:.2e} C1 {:.2e} C2 {:.2e}\n",
+            output.display(),
+            self.triangles,
+            t.watertight,
+            t.manifold,
+            t.oriented,
+            100.0 * self.recon_to_skin_rms_rel,
+            100.0 * self.recon_to_skin_max_rel,
+            100.0 * self.skin_to_recon_rms_rel,
+            100.0 * self.skin_to_recon_max_rel,
+            self.max_join[0],
+            self.max_join[1],
+            self.max_join[2]
+        )
+    }
+}
