@@ -26,6 +26,7 @@ use super::Pde6Error;
 use crate::character::doc::{
     End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
+use crate::curve::gec::Gec;
 use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::{add, dot, norm, scale, sub, Mesh};
@@ -72,11 +73,11 @@ impl Default for ClosedOptions {
 
 /// Gaps between the landmarks and the part ends, relative to the height.
 pub const CROTCH_GAP: f64 = 0.03;
-pub const ARMPIT_GAP: f64 = 0.02;
-pub const NECK_GAP: f64 = 0.01;
+pub const ARMPIT_GAP: f64 = 0.005;
+pub const NECK_GAP: f64 = 0.0;
 /// The arm starts this far (relative to the height) along its axis from the
 /// arm loop below the armpit: the shoulder between is the transition's.
-pub const ARM_OFFSET: f64 = 0.06;
+pub const ARM_OFFSET: f64 = 0.04;
 /// Trace step, relative to the height.
 pub const TRACE_STEP: f64 = 0.004;
 
@@ -112,15 +113,39 @@ pub struct ClosedBody {
     pub report: ClosedReport,
 }
 
+/// The GEC coefficients of `C(theta + delta)`.
+pub fn shift_phase(g: &Gec, delta: f64) -> Gec {
+    let mut out = g.clone();
+    for n in 0..g.x.len() {
+        let (c, s) = (
+            ((n + 1) as f64 * delta).cos(),
+            ((n + 1) as f64 * delta).sin(),
+        );
+        let [a, b] = g.x[n];
+        out.x[n] = [a * c + b * s, b * c - a * s];
+        let [a, b] = g.y[n];
+        out.y[n] = [a * c - b * s, a * s + b * c];
+    }
+    out
+}
+
+/// Phase of the torso sections: the anchored rule puts theta = 0 at the
+/// front (+z); the transitions cut the parent ring expecting theta = 0 on
+/// the +x side and pi on the -x side (children ordered by x), so the torso
+/// is evaluated at theta + pi / 2.
+pub const TORSO_PHASE: f64 = std::f64::consts::FRAC_PI_2;
+
 fn fit_section(
     t: &TraceSample,
     u: f64,
     o: &ClosedOptions,
     what: &str,
+    phase: f64,
 ) -> Result<SectionSpec, Pde6Error> {
     let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
     let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
         .map_err(|e| Pde6Error::Body(format!("{what}: {e}")))?;
+    let g = shift_phase(&g, phase);
     Ok(SectionSpec {
         u,
         centre: t.frame.origin,
@@ -226,6 +251,7 @@ fn part_from_trace(
             tr[k].s,
             o,
             &format!("{name} section {i}"),
+            if name == "torso" { TORSO_PHASE } else { 0.0 },
         )?);
     }
     if tip_end {
