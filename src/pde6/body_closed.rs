@@ -143,7 +143,13 @@ fn fit_section(
     phase: f64,
 ) -> Result<SectionSpec, Pde6Error> {
     let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
+    // a section whose centroid sees no crossing on the start ray (a
+    // crescent) falls back to its convex hull
     let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
+        .or_else(|_| {
+            let h = super::body_layout::hull(t.plane.clone());
+            fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
+        })
         .map_err(|e| Pde6Error::Body(format!("{what}: {e}")))?;
     let g = shift_phase(&g, phase);
     Ok(SectionSpec {

@@ -311,7 +311,8 @@ pub struct TraceOptions {
     pub jump: f64,
 }
 
-fn hull(mut p: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+/// Convex hull (counter-clockwise) of plane points.
+pub fn hull(mut p: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
     p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
     p.dedup();
     if p.len() < 3 {
