@@ -71,6 +71,20 @@ impl Default for ClosedOptions {
     }
 }
 
+/// Targets of the reconstruction (issue 15), relative to the body height:
+/// RMS and max distance in both directions, and the C1 jump at the joins.
+pub const RMS_MAX_REL: f64 = 0.005;
+pub const MAX_MAX_REL: f64 = 0.03;
+pub const JOIN_C1_MAX: f64 = 1e-6;
+
+/// Bundled MakeHuman morphs whose closed reconstruction is checked.
+pub const CHECKED_MORPHS: &[&str] = &[
+    "caucasian-male-child=1",
+    "universal-male-young-averagemuscle-maxweight=1",
+    "stomach-pregnant-incr=1",
+    "caucasian-male-young=1",
+];
+
 /// Gaps between the landmarks and the part ends, relative to the height.
 pub const CROTCH_GAP: f64 = 0.03;
 pub const ARMPIT_GAP: f64 = 0.005;
@@ -299,6 +313,16 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     check_count("leg sections", o.leg_sections)?;
     check_count("arm sections", o.arm_sections)?;
     check_count("head sections", o.head_sections)?;
+    let topo = topology(skin);
+    if !topo.watertight {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a closed body",
+            detail: format!(
+                "open mesh: {} boundary edges, {} non-manifold edges (the skin must be one closed surface)",
+                topo.boundary_edges, topo.nonmanifold_edges
+            ),
+        });
+    }
     let lay = find_layout(skin)?;
     let h = lay.height();
     let step = TRACE_STEP * h;

@@ -11,6 +11,7 @@ use super::{Chain, Patch, Section, JOIN_SAMPLES};
 use crate::check::{tol, Check, Kind};
 use crate::surface::Joined;
 mod body;
+mod body_closed;
 use crate::curve::Fourier3;
 use crate::jet::Jet;
 use crate::surface::Surface;
@@ -193,5 +194,6 @@ pub fn checks() -> Vec<Check> {
     chain_checks(&mut out);
     printed_form_checks(&mut out);
     body::body_smoothness_checks(&mut out);
+    body_closed::body_closed_checks(&mut out);
     out
 }
