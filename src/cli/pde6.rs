@@ -1,25 +1,20 @@
 //! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
 //!
 //! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
-//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...] [--sampling anchored|chord|...] [--anchors K] [--pull P]`
+//! * `pde6 body [--mesh BODY.obj | --morph NAME=W ...] -o OUT [--terms J] [--a A] [--anchors K] [--pull P]`:
+//!   one closed body; `--open-parts [--method ...] [--sampling ...]`: the seven open parts
 //!
 //! Without the global `--json` a short summary goes to stderr and nothing to
 //! stdout; with it, the report (JSON) goes to stdout.
 //! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
 //!
-//! CURVES.json: `{"sections": [{"u": 0.0, "gec": {...}}, {"u": 1.0,
-//! "fourier": {...}}, ...]}` — each section has its position `u` (strictly
-//! increasing) and either a `gec` (a `curve::gec::Gec`: frame, centre, x, y;
-//! its frame origin carries the z position) or a `fourier` (a
-//! `curve::Fourier3`: c0, cos, sin). All sections need the same number of
-//! terms J. Method 1 and 2 need 6 + 3k sections, the global C2 chain 7 + 3k.
+//! CURVES.json: see the `patch` help below and `pdesculpt::pde6::input`.
 
 use anyhow::{bail, Context};
-use pdesculpt::jet::Jet;
 use pdesculpt::limits;
 use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
 use pdesculpt::pde6::sampling::Sampling;
-use pdesculpt::pde6::{Method, Mode, ModeSolver};
+use pdesculpt::pde6::Method;
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
 
@@ -161,21 +156,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bail!("the surface has non-finite points");
             }
             let unit = units.write_input(&mesh, &output)?;
-            let jumps = pdesculpt::pde6::check::join_jumps(&chain);
-            let summary = serde_json::json!({
-                "sections": sections.len(), "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
-                "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),
-                "join_jumps_c0_c1_c2": jumps, "vertices": mesh.positions.len(), "triangles": mesh.triangles.len(),
-                "output": output.display().to_string(), "unit": unit,
-            });
+            let (summary, line) =
+                pdesculpt::pde6::input::patch_summary(&chain, sections.len(), &mesh, a, &output);
             if json {
+                let mut summary = summary;
+                summary["unit"] = serde_json::json!(unit);
                 super::print_json(&summary)?;
             } else {
-                eprintln!(
-                    "wrote {} ({} sections, {} pieces, {:?}, a = {a}): {} triangles, worst condition {:.3e}, join jumps C0/C1/C2 {:.2e} {:.2e} {:.2e}",
-                    output.display(), sections.len(), chain.pieces.len(), chain.method,
-                    mesh.triangles.len(), chain.max_condition(), jumps[0], jumps[1], jumps[2]
-                );
+                eprintln!("{line}");
             }
             Ok(0)
         }
@@ -237,45 +225,11 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             Ok(0)
         }
         Command::Mode { a, n, values, at } => {
-            if values.len() != 6 {
-                bail!(
-                    "--values needs six comma-separated numbers, got {}",
-                    values.len()
-                );
-            }
-            if !(0.0..=1.0).contains(&at) {
-                bail!("--at {at}: must lie in [0, 1] (the six values sit at u = 0, 0.2, ..., 1)");
-            }
-            limits::check("--n", n, limits::CURVE_HARMONICS)?;
-            let v: [f64; 6] = std::array::from_fn(|i| values[i]);
-            let m = Mode::interpolate(a, n, v)?;
-            let j = m.eval(Jet::<3, 1>::var_u(at));
-            let cond = ModeSolver::new(
-                m.basis,
-                pdesculpt::pde6::mode::method1_conditions(pdesculpt::pde6::mode::NODES_METHOD1),
-            )?
-            .condition_number;
-            let vals = [j.deriv(0, 0), j.deriv(1, 0), j.deriv(2, 0), cond];
-            if vals.iter().chain(&m.coef).any(|x| !x.is_finite()) {
-                bail!("A_{n}({at}) with --a {a} is not finite in double precision (the basis overflows; reduce --n or |--a|)");
-            }
-            let out = serde_json::json!({
-                "a": a, "n": n, "regime": format!("{:?}", m.basis.regime), "q": m.basis.q,
-                "at": at, "value": j.deriv(0, 0), "slope": j.deriv(1, 0), "curvature": j.deriv(2, 0),
-                "coefficients": m.coef, "condition_number": cond,
-            });
+            let (out, line) = pdesculpt::pde6::input::mode_at(a, n, &values, at)?;
             if json {
                 super::print_json(&out)?;
             } else {
-                println!(
-                    "A_{n}({at}) = {:.15e}  A' = {:.6e}  A'' = {:.6e}  ({:?}, q = {:.6}, condition {:.3e})",
-                    j.deriv(0, 0),
-                    j.deriv(1, 0),
-                    j.deriv(2, 0),
-                    m.basis.regime,
-                    m.basis.q,
-                    cond
-                );
+                println!("{line}");
             }
             Ok(0)
         }
@@ -290,7 +244,7 @@ fn body_closed(
     a: f64,
     anchors: usize,
     pull: f64,
-    output: &PathBuf,
+    output: &std::path::Path,
     units: super::units::OutputUnitArgs,
     json: bool,
 ) -> anyhow::Result<i32> {

@@ -157,7 +157,7 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, Pde6Error> {
         return Err(Pde6Error::NotFinite("mesh coordinates".into()));
     }
     let h = ext[1];
-    if !(h > 0.0) || h < ext[0] * 0.9 || h < ext[2] {
+    if h <= 0.0 || h < ext[0] * 0.9 || h < ext[2] {
         return Err(layout_err(
             "a standing humanoid",
             format!(

@@ -42,6 +42,7 @@
 pub mod body;
 pub mod body_closed;
 pub mod body_layout;
+pub mod body_report;
 pub mod chain;
 pub mod check;
 pub mod input;
