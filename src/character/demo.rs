@@ -9,7 +9,7 @@ use crate::pde4::apply::{deform_region, Direction as Pde4Direction};
 use crate::pde4::force::{Force, ForceKind};
 use crate::pde4::four_sided::{self, FourSided};
 use crate::pde4::ShapeParams;
-use crate::pde6::body::{makehuman_parts, reconstruct, BodyOptions, BodyReport};
+use crate::pde6::body_closed::{reconstruct_closed, ClosedOptions, ClosedReport};
 use crate::plate::deformer::{
     BoundaryMethod, Direction as PlateDirection, PlateDeformer, RegionOptions,
 };
@@ -79,7 +79,7 @@ pub struct DemoReport {
     pub edits: Vec<EditReport>,
     /// The plate edit against MakeHuman's pregnancy morph.
     pub belly_vs_morph: BellyComparison,
-    pub reconstruction: BodyReport,
+    pub reconstruction: ClosedReport,
     pub skirt: super::skirt::SkirtReport,
     pub prop: PropReport,
 }
@@ -389,8 +389,9 @@ pub fn build() -> Result<Demo, DemoError> {
             &belly,
         ),
     ];
-    let (_, reconstruction, body_report) =
-        reconstruct(&belly, &makehuman_parts(), &BodyOptions::default())?;
+    // one closed body: parts, mittens, crown and the hips/shoulders transitions
+    let closed = reconstruct_closed(&belly, &ClosedOptions::default())?;
+    let (reconstruction, body_report) = (closed.model.mesh, closed.report);
     let (skirt, skirt_report) =
         super::skirt::skirt(&belly, &super::skirt::SkirtOptions::default())?;
     let (prop, prop_report) = teddy_prop(&belly)?;

@@ -92,12 +92,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     );
     let r = &d.report.reconstruction;
     eprintln!(
-        "  reconstruction (paper 002): {} parts, RMS {:.2} % / max {:.2} % of body height, {} GEC numbers for {} vertex coordinates",
-        r.parts.len(),
+        "  reconstruction (paper 002, closed body): {} parts, watertight {}, RMS {:.2} % / max {:.2} % of body height, {} GEC numbers for {} vertex coordinates",
+        r.sections.len(),
+        r.topology.watertight,
         100.0 * r.recon_to_skin_rms_rel,
         100.0 * r.recon_to_skin_max_rel,
         r.gec_numbers,
-        r.covered_vertex_numbers
+        r.skin_vertex_numbers
     );
     let s = &d.report.skirt;
     eprintln!(

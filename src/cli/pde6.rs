@@ -1,27 +1,20 @@
 //! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
 //!
 //! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
-//! * `pde6 body -o OUT [--terms J] [--a A] [--method ...] [--sampling anchored|chord|...] [--anchors K] [--pull P]`
+//! * `pde6 body [--mesh BODY.obj | --morph NAME=W ...] -o OUT [--terms J] [--a A] [--anchors K] [--pull P]`:
+//!   one closed body; `--open-parts [--method ...] [--sampling ...]`: the seven open parts
 //!
 //! Without the global `--json` a short summary goes to stderr and nothing to
 //! stdout; with it, the report (JSON) goes to stdout.
 //! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
 //!
-//! CURVES.json: `{"sections": [{"u": 0.0, "gec": {...}}, {"u": 1.0,
-//! "fourier": {...}}, ...]}` — each section has its position `u` (strictly
-//! increasing) and either a `gec` (a `curve::gec::Gec`: frame, centre, x, y;
-//! its frame origin carries the z position) or a `fourier` (a
-//! `curve::Fourier3`: c0, cos, sin). All sections need the same number of
-//! terms J. Method 1 and 2 need 6 + 3k sections, the global C2 chain 7 + 3k.
+//! CURVES.json: see the `patch` help below and `pdesculpt::pde6::input`.
 
 use anyhow::{bail, Context};
-use pdesculpt::curve::gec::Gec;
-use pdesculpt::curve::Fourier3;
-use pdesculpt::jet::Jet;
 use pdesculpt::limits;
 use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
 use pdesculpt::pde6::sampling::Sampling;
-use pdesculpt::pde6::{Chain, Method, Mode, ModeSolver, Section};
+use pdesculpt::pde6::Method;
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
 
@@ -86,8 +79,18 @@ pub enum Command {
         #[command(flatten)]
         units: super::units::UnitArgs,
     },
-    /// Reconstructs the MakeHuman body from cross sections.
+    /// Reconstructs one closed body from cross sections (MakeHuman base body,
+    /// a morph of it, or --mesh BODY.obj: a standing humanoid, Y up).
     Body {
+        /// The body to reconstruct (obj, stl, ply, glb); default the bundled MakeHuman body.
+        #[arg(long)]
+        mesh: Option<PathBuf>,
+        /// MakeHuman morph targets applied to the bundled body: NAME=WEIGHT (repeatable).
+        #[arg(long)]
+        morph: Vec<String>,
+        /// The seven separate open parts of paper 002 instead of the closed body.
+        #[arg(long)]
+        open_parts: bool,
         #[arg(long, default_value_t = 10)]
         terms: usize,
         /// PDE parameter a (small |a| keeps the top harmonics from rippling between sections).
@@ -127,58 +130,6 @@ pub enum Command {
     },
 }
 
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SectionFile {
-    sections: Vec<SectionEntry>,
-}
-
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SectionEntry {
-    u: f64,
-    gec: Option<Gec>,
-    fourier: Option<Fourier3>,
-}
-
-fn read_sections(path: &PathBuf) -> anyhow::Result<Vec<Section>> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let f: SectionFile =
-        serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))?;
-    f.sections
-        .into_iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let curve = match (s.gec, s.fourier) {
-                (Some(g), None) => {
-                    let g = Gec::new(g.frame, g.centre, g.x, g.y)
-                        .with_context(|| format!("section {i}"))?;
-                    pdesculpt::curve::gec::input::check_magnitudes(&g)
-                        .with_context(|| format!("section {i}"))?;
-                    g.to_fourier3()
-                }
-                (None, Some(f)) => f,
-                _ => bail!("section {i}: give exactly one of \"gec\" or \"fourier\""),
-            };
-            limits::check(
-                &format!("section {i}: harmonics"),
-                curve.cos.len().max(curve.sin.len()),
-                limits::CURVE_HARMONICS,
-            )?;
-            Ok(Section { u: s.u, curve })
-        })
-        .collect()
-}
-
-fn build(a: f64, method: Method, sections: &[Section], first: usize) -> anyhow::Result<Chain> {
-    Ok(match method {
-        Method::GlobalC2 => Chain::c2_global(a, sections)?,
-        Method::SharedCurves => Chain::method1(a, sections, first)?,
-        Method::CarriedDerivatives => Chain::method2(a, sections, first)?,
-    })
-}
-
 /// Runs `pdesculpt pde6`.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     match args.command {
@@ -196,8 +147,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             limits::check("--nv", nv, limits::TESS_NV)?;
             pdesculpt::mesh::io::Format::from_path(&output)?;
             pdesculpt::mesh::io::refuse_overwriting_input(&[&curves], &output)?;
-            let sections = read_sections(&curves)?;
-            let chain = build(a, method.method(), &sections, first)?;
+            let sections = pdesculpt::pde6::input::read_sections(&curves)?;
+            let chain = pdesculpt::pde6::input::build_chain(a, method.method(), &sections, first)?;
             let nu_total = limits::mul("--nu", nu, chain.pieces.len())?;
             limits::mesh_vertices("--nu/--nv", nu_total, nv)?;
             let mesh = tessellate(&chain, Tessellation { nu: nu_total, nv });
@@ -205,32 +156,21 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bail!("the surface has non-finite points");
             }
             let unit = units.write_input(&mesh, &output)?;
-            let jumps = pdesculpt::pde6::check::join_jumps(&chain);
-            let summary = serde_json::json!({
-                "sections": sections.len(), "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
-                "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),
-                "join_jumps_c0_c1_c2": jumps, "vertices": mesh.positions.len(), "triangles": mesh.triangles.len(),
-                "output": output.display().to_string(), "unit": unit,
-            });
+            let (summary, line) =
+                pdesculpt::pde6::input::patch_summary(&chain, sections.len(), &mesh, a, &output);
             if json {
+                let mut summary = summary;
+                summary["unit"] = serde_json::json!(unit);
                 super::print_json(&summary)?;
             } else {
-                eprintln!(
-                    "wrote {} ({} sections, {} pieces, {:?}, a = {a}): {} triangles, worst condition {:.3e}, join jumps C0/C1/C2 {:.2e} {:.2e} {:.2e}",
-                    output.display(),
-                    sections.len(),
-                    chain.pieces.len(),
-                    chain.method,
-                    mesh.triangles.len(),
-                    chain.max_condition(),
-                    jumps[0],
-                    jumps[1],
-                    jumps[2]
-                );
+                eprintln!("{line}");
             }
             Ok(0)
         }
         Command::Body {
+            mesh,
+            morph,
+            open_parts,
             terms,
             a,
             method,
@@ -254,6 +194,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     format!("--sampling {sampling}: expected anchored, chord, centripetal, uniform or polar")
                 })?)
             };
+            if !open_parts {
+                return body_closed(mesh, &morph, terms, a, anchors, pull, &output, units, json);
+            }
             let body = pdesculpt::makehuman::base_body()?;
             eprintln!(
                 "pde6 body: slicing, fitting and solving {} parts",
@@ -274,73 +217,59 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
                 super::print_json(&out)?;
             } else {
-                let h = 100.0;
-                eprintln!(
-                    "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %",
-                    output.display(),
-                    report.recon_triangles,
-                    report.body_height,
-                    h * report.recon_to_skin_rms_rel,
-                    h * report.recon_to_skin_max_rel,
-                    h * report.skin_to_recon_rms_rel,
-                    h * report.skin_to_recon_max_rel
+                eprint!(
+                    "{}",
+                    pdesculpt::pde6::input::open_parts_summary(&report, &output)
                 );
-                for p in &report.parts {
-                    eprintln!(
-                        "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg",
-                        p.name,
-                        h * p.recon_to_skin_rms_rel,
-                        h * p.recon_to_skin_max_rel,
-                        p.roughness.u,
-                        p.roughness.v,
-                        p.slip_deg
-                    );
-                }
             }
             Ok(0)
         }
         Command::Mode { a, n, values, at } => {
-            if values.len() != 6 {
-                bail!(
-                    "--values needs six comma-separated numbers, got {}",
-                    values.len()
-                );
-            }
-            if !(0.0..=1.0).contains(&at) {
-                bail!("--at {at}: must lie in [0, 1] (the six values sit at u = 0, 0.2, ..., 1)");
-            }
-            limits::check("--n", n, limits::CURVE_HARMONICS)?;
-            let v: [f64; 6] = std::array::from_fn(|i| values[i]);
-            let m = Mode::interpolate(a, n, v)?;
-            let j = m.eval(Jet::<3, 1>::var_u(at));
-            let cond = ModeSolver::new(
-                m.basis,
-                pdesculpt::pde6::mode::method1_conditions(pdesculpt::pde6::mode::NODES_METHOD1),
-            )?
-            .condition_number;
-            let vals = [j.deriv(0, 0), j.deriv(1, 0), j.deriv(2, 0), cond];
-            if vals.iter().chain(&m.coef).any(|x| !x.is_finite()) {
-                bail!("A_{n}({at}) with --a {a} is not finite in double precision (the basis overflows; reduce --n or |--a|)");
-            }
-            let out = serde_json::json!({
-                "a": a, "n": n, "regime": format!("{:?}", m.basis.regime), "q": m.basis.q,
-                "at": at, "value": j.deriv(0, 0), "slope": j.deriv(1, 0), "curvature": j.deriv(2, 0),
-                "coefficients": m.coef, "condition_number": cond,
-            });
+            let (out, line) = pdesculpt::pde6::input::mode_at(a, n, &values, at)?;
             if json {
                 super::print_json(&out)?;
             } else {
-                println!(
-                    "A_{n}({at}) = {:.15e}  A' = {:.6e}  A'' = {:.6e}  ({:?}, q = {:.6}, condition {:.3e})",
-                    j.deriv(0, 0),
-                    j.deriv(1, 0),
-                    j.deriv(2, 0),
-                    m.basis.regime,
-                    m.basis.q,
-                    cond
-                );
+                println!("{line}");
             }
             Ok(0)
         }
     }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn body_closed(
+    mesh: Option<PathBuf>,
+    morph: &[String],
+    terms: usize,
+    a: f64,
+    anchors: usize,
+    pull: f64,
+    output: &std::path::Path,
+    units: super::units::OutputUnitArgs,
+    json: bool,
+) -> anyhow::Result<i32> {
+    use pdesculpt::pde6::body_closed::{load_body, reconstruct_closed, ClosedOptions};
+    let skin = load_body(mesh.as_deref(), morph)?;
+    if let Some(m) = &mesh {
+        pdesculpt::mesh::io::refuse_overwriting_input(&[m], output)?;
+    }
+    eprintln!("pde6 body: finding the layout, tracing, fitting and joining the parts");
+    let opts = ClosedOptions {
+        terms,
+        a,
+        anchors,
+        pull,
+        ..ClosedOptions::default()
+    };
+    let b = reconstruct_closed(&skin, &opts)?;
+    let unit = units.write(&b.model.mesh, output, pdesculpt::mesh::unit::MAKEHUMAN)?;
+    let r = &b.report;
+    if json {
+        let mut out = serde_json::to_value(r)?;
+        out["unit"] = serde_json::json!(unit);
+        super::print_json(&out)?;
+    } else {
+        eprint!("{}", r.summary(output));
+    }
+    Ok(0)
 }

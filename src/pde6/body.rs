@@ -21,9 +21,9 @@
 //! to 43 degrees between head sections; mean slip 12 -> 2 degrees).
 //! [`legacy_options`] keeps the old settings; check `pde6.body_smoothness`.
 //!
-//! Not reconstructed (as in the paper, these need transition surfaces or
-//! other parts): hands, feet, the crotch, the armpits (y between the torso and
-//! shoulder parts) and the chin.
+//! Not reconstructed here (as in the paper; `pde6 body --open-parts`): hands,
+//! feet, the crotch, the armpits and the chin. [`super::body_closed`] builds the
+//! whole closed body.
 
 use super::sampling::{
     angular_slip, fit_anchored, roughness, section_frame, start_angle, Roughness, Sampling,

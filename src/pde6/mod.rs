@@ -40,8 +40,12 @@
 //! refuses matrices with condition number above [`mode::MAX_CONDITION`].
 
 pub mod body;
+pub mod body_closed;
+pub mod body_layout;
+pub mod body_report;
 pub mod chain;
 pub mod check;
+pub mod input;
 pub mod mode;
 pub mod patch;
 pub mod samples;
@@ -87,6 +91,10 @@ pub enum Pde6Error {
     Singular { q: f64 },
     #[error("the 6x6 interpolation matrix has condition number {condition:.3e} (q = {q}): |a| or N too large (or |a| too small but nonzero)")]
     IllConditioned { q: f64, condition: f64 },
+    #[error("body layout: {what} not found: {detail}")]
+    LayoutNotFound { what: &'static str, detail: String },
+    #[error("{0}")]
+    Input(String),
     #[error("body reconstruction: {0}")]
     Body(String),
 }

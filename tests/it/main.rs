@@ -8,6 +8,7 @@ mod registry;
 mod strategies;
 mod units;
 
+mod body;
 mod conv;
 mod edit;
 mod gec;

@@ -11,6 +11,7 @@ use super::{Chain, Patch, Piece, Section, JOIN_SAMPLES};
 use crate::check::{tol, Check, Kind};
 use crate::surface::Joined;
 mod body;
+mod body_closed;
 use crate::curve::Fourier3;
 use crate::jet::Jet;
 use crate::surface::Surface;
@@ -198,5 +199,6 @@ pub fn checks() -> Vec<Check> {
     printed_checks::printed_main_checks(&mut out);
     printed_appendix::printed_appendix_checks(&mut out);
     body::body_smoothness_checks(&mut out);
+    body_closed::body_closed_checks(&mut out);
     out
 }

@@ -1,0 +1,472 @@
+//! One closed body from PDE surfaces: the parts of [`super::body_layout`]
+//! (torso, two legs, two arms, neck and head) as C2 sixth-order PDE chains
+//! (`Chain::c2_global`, the sketch's [`crate::sketch::part`]), joined at the
+//! hips (crotch) and the shoulders (armpits, neck) by the sketch's
+//! transition surfaces ([`crate::sketch::transition`]: cubic Hermite blends
+//! of the boundary curves and cross tangents of the parts, C1 on the part
+//! boundaries) and assembled with shared vertices by
+//! [`crate::sketch::build_model`] — one implementation for sketched and
+//! reconstructed characters.
+//!
+//! Ends. The crown, the soles and the hands are closed by a collapsed ring:
+//! the last section of the chain is a point (a circle of radius 0) at the
+//! extreme skin point along the part's axis, so the PDE chain itself closes
+//! the part, C2 along u, and the mesh ends in a pole. Hands and feet are
+//! mittens: their sections are the convex hull of every loop the section
+//! plane cuts near the axis (fingers and toes merged), since separate
+//! fingers would need a branching part per finger (transition surfaces
+//! from the palm to five tubes), which the section data of a hand (loops
+//! of a few millimetres) do not support at this resolution. The chin is not
+//! a separate part: the head's horizontal sections run from the neck to the
+//! crown, through the jaw.
+
+use super::body_layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
+use super::body_report::measure;
+pub use super::body_report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
+use super::sampling::fit_anchored;
+use super::Pde6Error;
+use crate::character::doc::{
+    End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
+};
+use crate::curve::gec::Gec;
+use crate::mesh::topology::report as topology;
+use crate::mesh::{add, dot, norm, scale, sub, Mesh};
+use crate::sketch::build::{build_model, Model, Resolution};
+
+/// Options of the closed reconstruction.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct ClosedOptions {
+    /// GEC terms J per section.
+    pub terms: usize,
+    /// PDE parameter a of every part.
+    pub a: f64,
+    /// Sections per tube (7 + 3k, counting the collapsed tip where there is one).
+    pub torso_sections: usize,
+    pub leg_sections: usize,
+    pub arm_sections: usize,
+    pub head_sections: usize,
+    /// Anchored sampling (see [`super::sampling`]).
+    pub anchors: usize,
+    pub samples: usize,
+    pub pull: f64,
+    /// Mesh rings per body height along the parts, rows across a transition.
+    pub rings_per_height: f64,
+    pub transition_rows: usize,
+}
+
+impl Default for ClosedOptions {
+    fn default() -> Self {
+        ClosedOptions {
+            terms: 10,
+            a: super::body::BODY_A,
+            torso_sections: 13,
+            leg_sections: 19,
+            arm_sections: 16,
+            head_sections: 16,
+            anchors: super::body::DEFAULT_ANCHORS,
+            samples: super::body::DEFAULT_SAMPLES,
+            pull: super::body::DEFAULT_PULL,
+            rings_per_height: 160.0,
+            transition_rows: 10,
+        }
+    }
+}
+
+/// Targets of the reconstruction (issue 15), relative to the body height:
+/// RMS and max distance in both directions, and the C1 jump at the joins.
+pub const RMS_MAX_REL: f64 = 0.005;
+pub const MAX_MAX_REL: f64 = 0.03;
+pub const JOIN_C1_MAX: f64 = 1e-6;
+
+/// Bundled MakeHuman morphs whose closed reconstruction is checked.
+pub const CHECKED_MORPHS: &[&str] = &[
+    "caucasian-male-child=1",
+    "universal-male-young-averagemuscle-maxweight=1",
+    "stomach-pregnant-incr=1",
+    "caucasian-male-young=1",
+];
+
+/// Gaps between the landmarks and the part ends, relative to the height.
+pub const CROTCH_GAP: f64 = 0.03;
+pub const ARMPIT_GAP: f64 = 0.005;
+pub const NECK_GAP: f64 = 0.0;
+/// The arm starts this far (relative to the height) along its axis from the
+/// arm loop below the armpit: the shoulder between is the transition's.
+pub const ARM_OFFSET: f64 = 0.04;
+/// Trace step, relative to the height.
+pub const TRACE_STEP: f64 = 0.004;
+
+/// A closed reconstruction.
+#[derive(Clone, Debug)]
+pub struct ClosedBody {
+    pub model: Model,
+    pub specs: Vec<PartSpec>,
+    pub transitions: Vec<TransitionSpec>,
+    pub report: ClosedReport,
+}
+
+/// The GEC coefficients of `C(theta + delta)`.
+pub fn shift_phase(g: &Gec, delta: f64) -> Gec {
+    let mut out = g.clone();
+    for n in 0..g.x.len() {
+        let (c, s) = (
+            ((n + 1) as f64 * delta).cos(),
+            ((n + 1) as f64 * delta).sin(),
+        );
+        let [a, b] = g.x[n];
+        out.x[n] = [a * c + b * s, b * c - a * s];
+        let [a, b] = g.y[n];
+        out.y[n] = [a * c - b * s, a * s + b * c];
+    }
+    out
+}
+
+/// Phase of the torso sections: the anchored rule puts theta = 0 at the
+/// front (+z); the transitions cut the parent ring expecting theta = 0 on
+/// the +x side and pi on the -x side (children ordered by x), so the torso
+/// is evaluated at theta + pi / 2.
+pub const TORSO_PHASE: f64 = std::f64::consts::FRAC_PI_2;
+
+fn fit_section(
+    t: &TraceSample,
+    u: f64,
+    o: &ClosedOptions,
+    what: &str,
+    phase: f64,
+) -> Result<SectionSpec, Pde6Error> {
+    let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
+    // a section whose centroid sees no crossing on the start ray (a
+    // crescent) falls back to its convex hull
+    let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
+        .or_else(|_| {
+            let h = super::body_layout::hull(t.plane.clone());
+            fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
+        })
+        .map_err(|e| Pde6Error::Body(format!("{what}: {e}")))?;
+    let g = shift_phase(&g, phase);
+    Ok(SectionSpec {
+        u,
+        centre: t.frame.origin,
+        e1: t.frame.e1,
+        e2: t.frame.e2,
+        shape: SectionShape::Gec {
+            centre: g.centre,
+            x: g.x,
+            y: g.y,
+        },
+    })
+}
+
+/// Picks `n` samples evenly in s over [s0, last] (nearest, strictly increasing).
+fn pick(tr: &[TraceSample], s0: f64, n: usize, what: &str) -> Result<Vec<usize>, Pde6Error> {
+    let first = tr.iter().position(|t| t.s >= s0);
+    let last = tr.len().checked_sub(1);
+    let (Some(first), Some(last)) = (first, last) else {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!("{what}: the trace found no sections"),
+        });
+    };
+    if last < first + n {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!(
+                "{what}: the trace found {} sections, {n} needed",
+                last + 1 - first.min(last)
+            ),
+        });
+    }
+    let (a, b) = (tr[first].s, tr[last].s);
+    let mut out: Vec<usize> = Vec::with_capacity(n);
+    for i in 0..n {
+        let s = a + (b - a) * i as f64 / (n - 1) as f64;
+        let mut k = (first..=last)
+            .min_by(|&x, &y| (tr[x].s - s).abs().total_cmp(&(tr[y].s - s).abs()))
+            .unwrap_or(first);
+        if let Some(&p) = out.last() {
+            k = k.max(p + 1);
+        }
+        out.push(k.min(last));
+    }
+    out.dedup();
+    if out.len() < n {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a limb",
+            detail: format!("{what}: too few distinct sections"),
+        });
+    }
+    Ok(out)
+}
+
+/// The farthest skin point along `d` from `c` within `r` of the axis.
+fn tip(m: &Mesh, c: [f64; 3], d: [f64; 3], r: f64) -> [f64; 3] {
+    let mut best = 0.0f64;
+    for p in &m.positions {
+        let v = sub(*p, c);
+        let a = dot(v, d);
+        let perp = norm(sub(v, scale(d, a)));
+        if perp <= r && a > best {
+            best = a;
+        }
+    }
+    add(c, scale(d, best))
+}
+
+/// Builds a part from a trace: `n` sections (the last a collapsed tip when
+/// `tip_end`).
+#[allow(clippy::too_many_arguments)]
+fn part_from_trace(
+    m: &Mesh,
+    name: &str,
+    tr: &[TraceSample],
+    s0: f64,
+    n: usize,
+    tip_end: bool,
+    o: &ClosedOptions,
+) -> Result<PartSpec, Pde6Error> {
+    let fitted = if tip_end { n - 1 } else { n };
+    let idx = pick(tr, s0, fitted, name)?;
+    let mut sections = Vec::with_capacity(n);
+    for (i, &k) in idx.iter().enumerate() {
+        sections.push(fit_section(
+            &tr[k],
+            tr[k].s,
+            o,
+            &format!("{name} section {i}"),
+            if name == "torso" { TORSO_PHASE } else { 0.0 },
+        )?);
+    }
+    if tip_end {
+        let last = &tr[idx[fitted - 1]];
+        let d = last.frame.normal();
+        let c = last.frame.origin;
+        let p = tip(m, c, d, last.radius);
+        let gap = dot(sub(p, c), d);
+        let gap = gap.max(0.25 * (tr[idx[1]].s - tr[idx[0]].s));
+        sections.push(SectionSpec {
+            u: last.s + gap,
+            centre: add(c, scale(d, gap)),
+            e1: last.frame.e1,
+            e2: last.frame.e2,
+            shape: SectionShape::Circle { r: 0.0 },
+        });
+    }
+    Ok(PartSpec {
+        name: name.into(),
+        surface: SurfaceSpec::Pde6C2 { a: o.a },
+        sections,
+        closed_start: false,
+        closed_end: tip_end,
+    })
+}
+
+fn check_count(what: &str, n: usize) -> Result<(), Pde6Error> {
+    if n < 7 || (n - 7) % 3 != 0 || n > 7 + 3 * 30 {
+        return Err(Pde6Error::Body(format!(
+            "{what} = {n}: the C2 chain needs 7 + 3k sections (k = 0..30)"
+        )));
+    }
+    Ok(())
+}
+
+/// Reconstructs the closed body of `skin` (a standing humanoid, Y up).
+pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, Pde6Error> {
+    check_count("torso sections", o.torso_sections)?;
+    check_count("leg sections", o.leg_sections)?;
+    check_count("arm sections", o.arm_sections)?;
+    check_count("head sections", o.head_sections)?;
+    let topo = topology(skin);
+    if !topo.watertight {
+        return Err(Pde6Error::LayoutNotFound {
+            what: "a closed body",
+            detail: format!(
+                "open mesh: {} boundary edges, {} non-manifold edges (the skin must be one closed surface)",
+                topo.boundary_edges, topo.nonmanifold_edges
+            ),
+        });
+    }
+    let lay = find_layout(skin)?;
+    let h = lay.height();
+    let step = TRACE_STEP * h;
+    let centre_at = |y: f64, x_pick: f64| -> Result<([f64; 3], f64), Pde6Error> {
+        let f = super::sampling::section_frame(y)?;
+        let ls = super::body_layout::loops_in_plane(skin, &f);
+        let l = ls
+            .iter()
+            .min_by(|a, b| {
+                (a.centroid[0] - x_pick)
+                    .abs()
+                    .total_cmp(&(b.centroid[0] - x_pick).abs())
+            })
+            .ok_or_else(|| Pde6Error::LayoutNotFound {
+                what: "a section",
+                detail: format!("no loop at y = {y:.3}"),
+            })?;
+        Ok((f.place(l.centroid[0], l.centroid[1]), l.radius))
+    };
+    let straight = |max_len: f64, hull: bool| TraceOptions {
+        step,
+        max_len,
+        follow: false,
+        hull,
+        skip: 0.0,
+        jump: super::body_layout::JUMP,
+    };
+    // torso: crotch + gap up to armpit - gap
+    let y0 = lay.crotch + CROTCH_GAP * h;
+    let y1 = lay.armpit - ARMPIT_GAP * h;
+    let (c, r) = centre_at(y0, 0.0)?;
+    let tt = trace(skin, c, [0.0, 1.0, 0.0], r, straight(y1 - y0, false))?;
+    let torso = part_from_trace(skin, "torso", &tt, 0.0, o.torso_sections, false, o)?;
+    // the torso's start must be its bottom: u increases upwards, fine.
+    let mut specs = vec![torso];
+    // legs: down from crotch - gap
+    let yl = lay.crotch - CROTCH_GAP * h;
+    for (name, x) in [("leg_l", -1.0), ("leg_r", 1.0)] {
+        let f = super::sampling::section_frame(yl)?;
+        let ls = super::body_layout::loops_in_plane(skin, &f);
+        let l = ls
+            .iter()
+            .filter(|l| l.centroid[0] * x > 0.0)
+            .max_by(|a, b| a.radius.total_cmp(&b.radius))
+            .ok_or_else(|| Pde6Error::LayoutNotFound {
+                what: "a leg",
+                detail: format!("{name}: no loop at y = {yl:.3}"),
+            })?;
+        let c = f.place(l.centroid[0], l.centroid[1]);
+        let tr = trace(skin, c, [0.0, -1.0, 0.0], l.radius, straight(h, true))?;
+        specs.push(part_from_trace(
+            skin,
+            name,
+            &tr,
+            0.0,
+            o.leg_sections,
+            true,
+            o,
+        )?);
+    }
+    // arms: from the arm loop under the armpit, following the arm
+    let ya = lay.arm_left[1];
+    for (name, start) in [("arm_l", lay.arm_left), ("arm_r", lay.arm_right)] {
+        let (c0, r0) = centre_at(ya, start[0])?;
+        let (c1, _) = centre_at(ya - 0.04 * h, start[0] + 0.5 * start[0].signum() * 0.04 * h)?;
+        let d = sub(c1, c0);
+        let tr = trace(
+            skin,
+            c0,
+            d,
+            r0,
+            TraceOptions {
+                step,
+                max_len: h,
+                follow: true,
+                hull: true,
+                skip: 0.05 * h,
+                jump: super::body_layout::JUMP,
+            },
+        )?;
+        specs.push(part_from_trace(
+            skin,
+            name,
+            &tr,
+            ARM_OFFSET * h,
+            o.arm_sections,
+            true,
+            o,
+        )?);
+    }
+    // head: from the neck up to the crown
+    let yn = lay.neck + NECK_GAP * h;
+    let (c, r) = centre_at(yn, 0.0)?;
+    let head_trace = TraceOptions {
+        jump: f64::INFINITY,
+        ..straight(h, false)
+    };
+    let tr = trace(skin, c, [0.0, 1.0, 0.0], r, head_trace)?;
+    specs.push(part_from_trace(
+        skin,
+        "head",
+        &tr,
+        0.0,
+        o.head_sections,
+        true,
+        o,
+    )?);
+    let transitions = transitions(skin, &lay, &specs)?;
+    let model = build_model(
+        &specs,
+        &transitions,
+        h,
+        Resolution {
+            rings_per_height: o.rings_per_height,
+            transition_rows: o.transition_rows,
+        },
+    )
+    .map_err(|e| Pde6Error::Body(e.to_string()))?;
+    let report = measure(skin, &lay, &model, &specs, o);
+    Ok(ClosedBody {
+        model,
+        specs,
+        transitions,
+        report,
+    })
+}
+
+/// The hips and shoulders transitions with their seam apexes: the crotch,
+/// and the top of each shoulder halfway between the neck and the outer
+/// shoulder.
+fn transitions(
+    skin: &Mesh,
+    lay: &Layout,
+    specs: &[PartSpec],
+) -> Result<Vec<TransitionSpec>, Pde6Error> {
+    let h = lay.height();
+    let bottom = specs[0].sections[0].centre;
+    let top = specs[0].sections[specs[0].sections.len() - 1].centre;
+    let crotch = [bottom[0], lay.crotch, bottom[2]];
+    let neck_f = super::sampling::section_frame(lay.neck)?;
+    let neck = super::body_layout::loops_in_plane(skin, &neck_f);
+    let neck_x = neck
+        .iter()
+        .min_by(|a, b| a.centroid[0].abs().total_cmp(&b.centroid[0].abs()))
+        .map(|l| l.x_range)
+        .ok_or_else(|| Pde6Error::LayoutNotFound {
+            what: "the neck",
+            detail: format!("no loop at y = {:.3}", lay.neck),
+        })?;
+    let mut apex = Vec::new();
+    for (sign, arm) in [(-1.0, lay.arm_left), (1.0, lay.arm_right)] {
+        let nx = if sign < 0.0 { neck_x.0 } else { neck_x.1 };
+        let x = 0.5 * (nx + arm[0]);
+        let band = 0.01 * h;
+        let y = skin
+            .positions
+            .iter()
+            .filter(|p| (p[0] - x).abs() < band && p[1] < lay.neck && p[1] > lay.armpit)
+            .map(|p| p[1])
+            .fold(f64::NAN, f64::max);
+        if !y.is_finite() {
+            return Err(Pde6Error::LayoutNotFound {
+                what: "a shoulder top",
+                detail: format!("no skin vertex near x = {x:.3} between the armpits and the neck"),
+            });
+        }
+        apex.push([x, y, top[2]]);
+    }
+    Ok(vec![
+        TransitionSpec {
+            name: "hips".into(),
+            parent: "torso".into(),
+            parent_end: End::Start,
+            children: vec!["leg_l".into(), "leg_r".into()],
+            seam_apex: vec![crotch],
+        },
+        TransitionSpec {
+            name: "shoulders".into(),
+            parent: "torso".into(),
+            parent_end: End::End,
+            children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
+            seam_apex: apex,
+        },
+    ])
+}

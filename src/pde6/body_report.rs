@@ -1,0 +1,142 @@
+//! The report of the closed body ([`super::body_closed`]): topology, errors
+//! against the input skin, join jumps, data size; and loading the body to
+//! reconstruct.
+
+use super::body_closed::ClosedOptions;
+use super::body_layout::Layout;
+use super::Pde6Error;
+use crate::character::doc::{PartSpec, SectionShape};
+use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
+use crate::mesh::topology::{report as topology, TopologyReport};
+use crate::mesh::Mesh;
+use crate::sketch::build::{JoinReport, Model, SeamReport};
+
+/// Errors against the input body, relative to its height.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct ClosedReport {
+    pub layout: Layout,
+    pub body_height: f64,
+    pub topology: TopologyReport,
+    pub recon_to_skin: DistanceStats,
+    pub skin_to_recon: DistanceStats,
+    pub recon_to_skin_rms_rel: f64,
+    pub recon_to_skin_max_rel: f64,
+    pub skin_to_recon_rms_rel: f64,
+    pub skin_to_recon_max_rel: f64,
+    /// Largest relative C0 / C1 / C2 jump over every join.
+    pub max_join: [f64; 3],
+    pub joins: Vec<JoinReport>,
+    pub seams: Vec<SeamReport>,
+    /// Sections per part (with tips) and the numbers they store.
+    pub sections: Vec<(String, usize)>,
+    pub gec_numbers: usize,
+    pub skin_vertex_numbers: usize,
+    pub triangles: usize,
+}
+
+/// Measures a built closed body against its skin.
+pub fn measure(
+    skin: &Mesh,
+    lay: &Layout,
+    model: &Model,
+    specs: &[PartSpec],
+    o: &ClosedOptions,
+) -> ClosedReport {
+    let h = lay.height();
+    let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
+    let s2r = stats(&point_distances(&skin.positions, &model.mesh));
+    let mut max_join = [0.0f64; 3];
+    for j in &model.joins {
+        max_join[0] = max_join[0].max(j.c0);
+        max_join[1] = max_join[1].max(j.c1);
+        max_join[2] = max_join[2].max(j.c2);
+    }
+    let sections: Vec<(String, usize)> = specs
+        .iter()
+        .map(|p| (p.name.clone(), p.sections.len()))
+        .collect();
+    let n_fitted: usize = specs
+        .iter()
+        .flat_map(|p| &p.sections)
+        .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
+        .count();
+    let n_tips = specs.iter().map(|p| p.sections.len()).sum::<usize>() - n_fitted;
+    ClosedReport {
+        layout: *lay,
+        body_height: h,
+        topology: topology(&model.mesh),
+        recon_to_skin: r2s,
+        skin_to_recon: s2r,
+        recon_to_skin_rms_rel: r2s.rms / h,
+        recon_to_skin_max_rel: r2s.max / h,
+        skin_to_recon_rms_rel: s2r.rms / h,
+        skin_to_recon_max_rel: s2r.max / h,
+        max_join,
+        joins: model.joins.clone(),
+        seams: model.seams.clone(),
+        sections,
+        // u, frame (origin + two unit vectors: 9), centre 2, 4 per term;
+        // a tip: u and its point
+        gec_numbers: n_fitted * (1 + 9 + 2 + 4 * o.terms) + n_tips * 4,
+        skin_vertex_numbers: 3 * skin.positions.len(),
+        triangles: model.mesh.triangles.len(),
+    }
+}
+
+/// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
+/// with `morphs` (`NAME=WEIGHT`) applied.
+pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, Pde6Error> {
+    let mesh_err = |e: crate::mesh::MeshError| Pde6Error::Body(e.to_string());
+    if let Some(p) = path {
+        if !morphs.is_empty() {
+            return Err(Pde6Error::Body(
+                "--morph applies to the bundled MakeHuman body, not to --mesh".into(),
+            ));
+        }
+        let m = crate::mesh::io::read(p).map_err(mesh_err)?;
+        m.validate().map_err(mesh_err)?;
+        return Ok(m);
+    }
+    let mut targets = Vec::new();
+    for s in morphs {
+        let (name, w) = s
+            .split_once('=')
+            .ok_or_else(|| Pde6Error::Body(format!("--morph {s:?}: expected NAME=WEIGHT")))?;
+        let w: f64 = w
+            .trim()
+            .parse()
+            .map_err(|_| Pde6Error::Body(format!("--morph {s:?}: weight is not a number")))?;
+        if !w.is_finite() || w.abs() > MORPH_WEIGHT_MAX {
+            return Err(Pde6Error::Body(format!(
+                "--morph {s:?}: weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"
+            )));
+        }
+        targets.push((crate::makehuman::target(name.trim()).map_err(mesh_err)?, w));
+    }
+    Ok(crate::makehuman::body(&targets).map_err(mesh_err)?.mesh)
+}
+
+/// Largest |weight| of a morph target.
+pub const MORPH_WEIGHT_MAX: f64 = 2.0;
+
+impl ClosedReport {
+    /// Text summary (percent of the height).
+    pub fn summary(&self, output: &std::path::Path) -> String {
+        let t = &self.topology;
+        format!(
+            "wrote {} ({} triangles); watertight {} manifold {} oriented {}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n  joins: max C0 {:.2e} C1 {:.2e} C2 {:.2e}\n",
+            output.display(),
+            self.triangles,
+            t.watertight,
+            t.manifold,
+            t.oriented,
+            100.0 * self.recon_to_skin_rms_rel,
+            100.0 * self.recon_to_skin_max_rel,
+            100.0 * self.skin_to_recon_rms_rel,
+            100.0 * self.skin_to_recon_max_rel,
+            self.max_join[0],
+            self.max_join[1],
+            self.max_join[2]
+        )
+    }
+}

@@ -1,0 +1,179 @@
+//! Reading the sections JSON of `pde6 patch`, building a chain by method, and
+//! the text summary of the open-parts body (library side of `src/cli/pde6.rs`).
+
+use super::body::BodyReport;
+use super::{Chain, Method, Pde6Error, Section};
+use crate::curve::gec::Gec;
+use crate::curve::Fourier3;
+use crate::limits;
+use std::path::Path;
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SectionFile {
+    sections: Vec<SectionEntry>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SectionEntry {
+    u: f64,
+    gec: Option<Gec>,
+    fourier: Option<Fourier3>,
+}
+
+/// Reads a sections JSON: `{"sections": [{"u": .., "gec"|"fourier": ..}, ..]}`.
+pub fn read_sections(path: &Path) -> Result<Vec<Section>, Pde6Error> {
+    let what = path.display().to_string();
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Pde6Error::Input(format!("reading {what}: {e}")))?;
+    let f: SectionFile = serde_json::from_str(&text)
+        .map_err(|e| Pde6Error::Input(format!("parsing {what}: {e}")))?;
+    f.sections
+        .into_iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let bad =
+                |e: &dyn std::fmt::Display| Pde6Error::Input(format!("{what}: section {i}: {e}"));
+            let curve = match (s.gec, s.fourier) {
+                (Some(g), None) => {
+                    let g = Gec::new(g.frame, g.centre, g.x, g.y).map_err(|e| bad(&e))?;
+                    crate::curve::gec::input::check_magnitudes(&g).map_err(|e| bad(&e))?;
+                    g.to_fourier3()
+                }
+                (None, Some(f)) => f,
+                _ => return Err(bad(&"give exactly one of \"gec\" or \"fourier\"")),
+            };
+            limits::check(
+                "harmonics",
+                curve.cos.len().max(curve.sin.len()),
+                limits::CURVE_HARMONICS,
+            )
+            .map_err(|e| bad(&e))?;
+            Ok(Section { u: s.u, curve })
+        })
+        .collect()
+}
+
+/// The chain of `method` through `sections` (`first`: method 1 and 2).
+pub fn build_chain(
+    a: f64,
+    method: Method,
+    sections: &[Section],
+    first: usize,
+) -> Result<Chain, Pde6Error> {
+    match method {
+        Method::GlobalC2 => Chain::c2_global(a, sections),
+        Method::SharedCurves => Chain::method1(a, sections, first),
+        Method::CarriedDerivatives => Chain::method2(a, sections, first),
+    }
+}
+
+/// Text summary of the open-parts reconstruction (percent of the height).
+pub fn open_parts_summary(report: &BodyReport, output: &Path) -> String {
+    let h = 100.0;
+    let mut s = format!(
+        "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n",
+        output.display(),
+        report.recon_triangles,
+        report.body_height,
+        h * report.recon_to_skin_rms_rel,
+        h * report.recon_to_skin_max_rel,
+        h * report.skin_to_recon_rms_rel,
+        h * report.skin_to_recon_max_rel
+    );
+    for p in &report.parts {
+        s.push_str(&format!(
+            "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg\n",
+            p.name,
+            h * p.recon_to_skin_rms_rel,
+            h * p.recon_to_skin_max_rel,
+            p.roughness.u,
+            p.roughness.v,
+            p.slip_deg
+        ));
+    }
+    s
+}
+
+/// `pde6 mode`: the single-harmonic function through six values at
+/// u = 0, 0.2, ..., 1, evaluated at `at`: (JSON, one-line summary).
+pub fn mode_at(
+    a: f64,
+    n: usize,
+    values: &[f64],
+    at: f64,
+) -> Result<(serde_json::Value, String), Pde6Error> {
+    use super::{Mode, ModeSolver};
+    use crate::jet::Jet;
+    if values.len() != 6 {
+        return Err(Pde6Error::Input(format!(
+            "--values needs six comma-separated numbers, got {}",
+            values.len()
+        )));
+    }
+    if !(0.0..=1.0).contains(&at) {
+        return Err(Pde6Error::Input(format!(
+            "--at {at}: must lie in [0, 1] (the six values sit at u = 0, 0.2, ..., 1)"
+        )));
+    }
+    limits::check("--n", n, limits::CURVE_HARMONICS)
+        .map_err(|e| Pde6Error::Input(e.to_string()))?;
+    let v: [f64; 6] = std::array::from_fn(|i| values[i]);
+    let m = Mode::interpolate(a, n, v)?;
+    let j = m.eval(Jet::<3, 1>::var_u(at));
+    let cond = ModeSolver::new(
+        m.basis,
+        super::mode::method1_conditions(super::mode::NODES_METHOD1),
+    )?
+    .condition_number;
+    let vals = [j.deriv(0, 0), j.deriv(1, 0), j.deriv(2, 0), cond];
+    if vals.iter().chain(&m.coef).any(|x| !x.is_finite()) {
+        return Err(Pde6Error::Input(format!("A_{n}({at}) with --a {a} is not finite in double precision (the basis overflows; reduce --n or |--a|)")));
+    }
+    let out = serde_json::json!({
+        "a": a, "n": n, "regime": format!("{:?}", m.basis.regime), "q": m.basis.q,
+        "at": at, "value": j.deriv(0, 0), "slope": j.deriv(1, 0), "curvature": j.deriv(2, 0),
+        "coefficients": m.coef, "condition_number": cond,
+    });
+    let line = format!(
+        "A_{n}({at}) = {:.15e}  A' = {:.6e}  A'' = {:.6e}  ({:?}, q = {:.6}, condition {:.3e})",
+        j.deriv(0, 0),
+        j.deriv(1, 0),
+        j.deriv(2, 0),
+        m.basis.regime,
+        m.basis.q,
+        cond
+    );
+    Ok((out, line))
+}
+
+/// `pde6 patch`: (JSON summary without the unit, one-line summary).
+pub fn patch_summary(
+    chain: &Chain,
+    sections: usize,
+    mesh: &crate::mesh::Mesh,
+    a: f64,
+    output: &Path,
+) -> (serde_json::Value, String) {
+    let jumps = super::check::join_jumps(chain);
+    let json = serde_json::json!({
+        "sections": sections, "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
+        "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),
+        "join_jumps_c0_c1_c2": jumps, "vertices": mesh.positions.len(), "triangles": mesh.triangles.len(),
+        "output": output.display().to_string(),
+    });
+    let line = format!(
+        "wrote {} ({} sections, {} pieces, {:?}, a = {a}): {} triangles, worst condition {:.3e}, join jumps C0/C1/C2 {:.2e} {:.2e} {:.2e}",
+        output.display(),
+        sections,
+        chain.pieces.len(),
+        chain.method,
+        mesh.triangles.len(),
+        chain.max_condition(),
+        jumps[0],
+        jumps[1],
+        jumps[2]
+    );
+    (json, line)
+}
