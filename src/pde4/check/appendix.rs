@@ -65,7 +65,52 @@ fn eq12_error() -> f64 {
     e
 }
 
+/// SymPy's line force projections and f3 (`verify/printed_forms.py`).
+const PRINTED_GOLDEN: &str = include_str!("../../../verify/golden/printed_forms.json");
+
+/// (f3_right and c1 f3_right against SymPy's f3 and integral; printed f3
+/// against SymPy's printed f3), NaN when the golden is missing.
+fn f3_vs_sympy() -> (f64, f64) {
+    let g: Value = serde_json::from_str(PRINTED_GOLDEN).unwrap_or_default();
+    let Some(forces) = g["pde4_line_f3"].as_array() else {
+        return (f64::NAN, f64::NAN);
+    };
+    let (mut right, mut printed) = if forces.is_empty() {
+        (f64::NAN, f64::NAN)
+    } else {
+        (0.0f64, 0.0f64)
+    };
+    for f in forces {
+        let (u0, u1) = (
+            f["u0"].as_f64().unwrap_or(f64::NAN),
+            f["u1"].as_f64().unwrap_or(f64::NAN),
+        );
+        let c1 = -2.0 * (u1 - u0) / PI;
+        for row in f["rows"].as_array().into_iter().flatten() {
+            let x = |k: &str| row[k].as_f64().unwrap_or(f64::NAN);
+            let k = x("k");
+            let g = f3_right(u0, u1, k);
+            let e = (g - x("f3_right"))
+                .abs()
+                .max((c1 * g - x("integral")).abs());
+            right = if e.is_nan() { f64::NAN } else { right.max(e) };
+            let e = (f3_printed(u0, u1, k) - x("f3_printed")).abs();
+            printed = if e.is_nan() { f64::NAN } else { printed.max(e) };
+        }
+    }
+    (right, printed)
+}
+
 pub(super) fn appendix_checks(out: &mut Vec<Check>) {
+    let (sym_right, sym_printed) = f3_vs_sympy();
+    out.push(
+        Check::new(F, P, "app A3, A4", "pde4.force.line_f3_vs_sympy", Kind::Reference, sym_right, tol::scaled(tol::ROUNDING, 10.0))
+            .note("c1 (A4) times the right f3 against SymPy's exact 2 int sin(pi (u - u_p0)/L) sin k pi u du, 3 forces, k <= 4 (verify/printed_forms.py)"),
+    );
+    out.push(
+        Check::new(F, P, "app A2", "pde4.force.a2_f3_printed_vs_sympy", Kind::Reference, sym_printed, tol::scaled(tol::ROUNDING, 10.0))
+            .note("A2's printed f3 (as implemented for the paper-literal checks) against SymPy's evaluation of the printed text, which reduces to sin(2 k pi c)/(k^2 L^2 - 1)"),
+    );
     let (mut e3, mut e4) = (0.0f64, 0.0f64);
     for (u0, u1, v0) in [(0.2, 0.7, 0.3), (0.35, 0.85, 0.6), (0.1, 0.4, 0.45)] {
         let f = Force {
