@@ -16,5 +16,8 @@ mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sasm;
 mod sketch;
 mod template;
+mod tui;
+mod tui_e2e;

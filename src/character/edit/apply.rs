@@ -3,10 +3,10 @@
 use super::{
     unknown_part, Edit, EditError, SectionTransform, SCALE_MAX, SECTION_SAMPLES, SIGMA_MAX,
 };
-use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use crate::character::doc::{End, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 use crate::curve::gec::transform::Bend;
 use crate::curve::gec::{Frame, Gec};
-use crate::mesh::{dist, sub};
+use crate::mesh::{add, dist, dot, scale, sub};
 use std::f64::consts::PI;
 
 fn param(
@@ -74,8 +74,94 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 )
             }
         },
+        Edit::Force { u, force, a, .. } => {
+            param(e, "u[0]", u[0], true, "finite")?;
+            param(e, "u[1]", u[1], u[1] > u[0], "u[1] > u[0]")?;
+            param(
+                e,
+                "a",
+                *a,
+                (A_FORCE_MIN..=A_FORCE_MAX).contains(a),
+                &format!("a shape parameter in [{A_FORCE_MIN}, {A_FORCE_MAX}]"),
+            )?;
+            force.validate().map_err(|err| EditError::Invalid {
+                op: e.op(),
+                part: e.part().unwrap_or("").into(),
+                message: format!("force: {err}"),
+            })
+        }
+        Edit::Boundary {
+            curve,
+            tangent,
+            reach,
+            ..
+        } => {
+            param(
+                e,
+                "reach",
+                *reach,
+                *reach > 0.0 && *reach <= 1.0,
+                "in (0, 1]",
+            )?;
+            if curve.is_none() && tangent.is_none() {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: e.part().unwrap_or("").into(),
+                    message: "give a new \"curve\", a \"tangent\" change, or both".into(),
+                });
+            }
+            if let Some(t) = tangent {
+                for (k, name) in ["tangent[0]", "tangent[1]", "tangent[2]"]
+                    .into_iter()
+                    .enumerate()
+                {
+                    param(e, name, t[k], true, "finite")?;
+                }
+            }
+            if let Some(c) = curve {
+                let ok = match c {
+                    SectionShape::Circle { r } => r.is_finite() && *r > 0.0,
+                    SectionShape::Ellipse { a, b, offset } => {
+                        a.is_finite() && b.is_finite() && offset.is_finite() && *a > 0.0 && *b > 0.0
+                    }
+                    SectionShape::Gec { centre, x, y } => centre
+                        .iter()
+                        .chain(x.iter().flatten())
+                        .chain(y.iter().flatten())
+                        .all(|v| v.is_finite()),
+                };
+                if !ok {
+                    return Err(EditError::Invalid {
+                        op: e.op(),
+                        part: e.part().unwrap_or("").into(),
+                        message: "the new curve needs finite numbers and positive radii".into(),
+                    });
+                }
+            }
+            Ok(())
+        }
+        Edit::Plate {
+            centre, radius, d, ..
+        } => {
+            for k in 0..3 {
+                param(
+                    e,
+                    ["centre[0]", "centre[1]", "centre[2]"][k],
+                    centre[k],
+                    true,
+                    "finite",
+                )?;
+                param(e, ["d[0]", "d[1]", "d[2]"][k], d[k], true, "finite")?;
+            }
+            param(e, "radius", *radius, *radius > 0.0, "a positive radius")
+        }
     }
 }
+
+/// Smallest shape parameter of a force edit.
+pub const A_FORCE_MIN: f64 = 1e-3;
+/// Largest shape parameter of a force edit.
+pub const A_FORCE_MAX: f64 = 1e3;
 
 /// The parts with `edits` applied in order (spec-level edits; validated as
 /// they are applied; an error names the edit's index in `edits`).
@@ -152,8 +238,120 @@ pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditErro
             }
             Ok(())
         }
+        Edit::Force { u, .. } => {
+            let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
+            if u[0] < u0 || u[1] > u1 {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: name.into(),
+                    message: format!(
+                        "the force range [{}, {}] lies outside the part's u range [{u0}, {u1}]",
+                        u[0], u[1]
+                    ),
+                });
+            }
+            Ok(())
+        }
+        Edit::Boundary {
+            end,
+            curve,
+            tangent,
+            reach,
+            ..
+        } => boundary(p, e, *end, curve.as_ref(), *tangent, *reach),
+        Edit::Plate { .. } => Ok(()),
     }
 }
+
+fn boundary(
+    p: &mut PartSpec,
+    e: &Edit,
+    end: End,
+    curve: Option<&SectionShape>,
+    tangent: Option<[f64; 3]>,
+    reach: f64,
+) -> Result<(), EditError> {
+    let invalid = |m: String| EditError::Invalid {
+        op: e.op(),
+        part: p.name.clone(),
+        message: m,
+    };
+    let n = p.sections.len();
+    let (ie, closed) = match end {
+        End::Start => (0, p.closed_start),
+        End::End => (n - 1, p.closed_end),
+    };
+    if let Some(c) = curve {
+        if closed {
+            return Err(invalid(format!(
+                "the part's {end:?} is a closed end (a point): it has no boundary curve to replace"
+            )));
+        }
+        let mut s = p.sections[ie].clone();
+        s.shape = c.clone();
+        let g = section_gec(&s).map_err(invalid)?;
+        if let Some((a, b)) =
+            crate::template::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
+        {
+            return Err(EditError::SelfIntersecting {
+                op: e.op(),
+                part: p.name.clone(),
+                section: ie,
+                first: a,
+                second: b,
+            });
+        }
+        p.sections[ie] = s;
+    }
+    let Some(t) = tangent else {
+        return Ok(());
+    };
+    let tt = dot(t, t);
+    if tt == 0.0 {
+        return Ok(());
+    }
+    let ue = p.sections[ie].u;
+    let l = reach * (p.sections[n - 1].u - p.sections[0].u);
+    let phi: Vec<(usize, f64)> = (0..n)
+        .filter(|&k| k != ie)
+        .filter_map(|k| {
+            let x = (p.sections[k].u - ue).abs() / l;
+            (x < 1.0).then(|| (k, (p.sections[k].u - ue) * (1.0 - x).powi(3)))
+        })
+        .collect();
+    if phi.is_empty() {
+        return Err(invalid(format!(
+            "no section lies within reach {reach} of the part's {end:?}"
+        )));
+    }
+    let build = |q: &PartSpec| {
+        crate::sketch::part::build_part(q).map_err(|err| EditError::Build {
+            op: e.op(),
+            part: q.name.clone(),
+            message: err.to_string(),
+        })
+    };
+    let before = build(p)?.section(ue, 1).c0;
+    let mut q = p.clone();
+    for &(k, f) in &phi {
+        q.sections[k].centre = add(q.sections[k].centre, scale(t, f));
+    }
+    let after = build(&q)?.section(ue, 1).c0;
+    let response = dot(sub(after, before), t) / tt;
+    if !(response.abs() > TANGENT_RESPONSE_MIN) {
+        return Err(invalid(format!(
+            "the end tangent does not respond to the sections within reach {reach} (response {response:e})"
+        )));
+    }
+    for &(k, f) in &phi {
+        p.sections[k].centre = add(p.sections[k].centre, scale(t, f / response));
+    }
+    Ok(())
+}
+
+/// Smallest end-tangent response of a boundary tangent edit (per unit
+/// section offset weight) accepted.
+pub const TANGENT_RESPONSE_MIN: f64 = 1e-6;
 
 fn bend_of(p: &PartSpec, e: &Edit, kappa: f64, axis: [f64; 3]) -> Result<Bend, EditError> {
     let (first, last) = (
@@ -248,10 +446,28 @@ pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError
     let Some(p) = parts.iter().find(|p| p.name == name) else {
         return Err(unknown_part(parts, name));
     };
-    crate::sketch::part::build_part(p).map_err(|err| EditError::Build {
+    let built = crate::sketch::part::build_part(p).map_err(|err| EditError::Build {
         op: e.op(),
         part: name.into(),
         message: err.to_string(),
     })?;
+    match e {
+        Edit::Force { .. } => {
+            super::mesh::force_field(e)?;
+        }
+        Edit::Plate { centre, radius, .. } => {
+            let d = super::mesh::distance_to_part(&built, *centre);
+            if d > *radius {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: name.into(),
+                    message: format!(
+                        "the region centre lies {d:.4} from the part's surface, farther than the radius {radius}"
+                    ),
+                });
+            }
+        }
+        _ => {}
+    }
     Ok(())
 }

@@ -36,10 +36,13 @@
 //! ([`EditError::Build`]).
 
 mod apply;
+pub mod check;
+mod mesh;
 
 pub use apply::{apply_to_parts, section_gec, validate_params};
+pub use mesh::{apply_plates, displacements, Session, FORCE_TERMS};
 
-use crate::character::doc::{CharacterDoc, PartSpec};
+use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
 
 /// One edit of the log.
@@ -57,6 +60,52 @@ pub enum Edit {
         section: Option<usize>,
         transform: SectionTransform,
     },
+    /// PDESM sculpting force (sec 5.1): the pde4 2-sided patch over the part
+    /// parameter range `u = [u_a, u_b]` (inside the part), clamped at both
+    /// ends of the range, with `force` in patch coordinates (`u` in `[0, 1]`
+    /// across the range, `v = theta / 2 pi`) and uniform shape parameters
+    /// `a` (default 1); its solution is added to the part as a displacement.
+    Force {
+        part: String,
+        u: [f64; 2],
+        force: crate::pde4::Force,
+        #[serde(default = "one")]
+        a: f64,
+    },
+    /// PDESM boundary change (sec 5.1) at one end of a part: a new boundary
+    /// `curve` (the end section's shape, in its frame) and/or a change
+    /// `tangent` of the end's u-tangent (model units per unit u), made by
+    /// moving the sections within `reach` (a fraction of the part's length,
+    /// default 0.3) of that end so that the solved chain's end tangent
+    /// changes by exactly `tangent` while the end curve stays in place.
+    Boundary {
+        part: String,
+        end: End,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        curve: Option<SectionShape>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        tangent: Option<[f64; 3]>,
+        #[serde(default = "default_reach")]
+        reach: f64,
+    },
+    /// Mesh-level C1 plate bending (paper 001) on the built mesh: the region
+    /// is the part's vertices within `radius` of `centre`, bent as a clamped
+    /// plate so that its peak displacement is `d` (the cursor motion).
+    /// Applied after every PDE-level edit, in log order.
+    Plate {
+        part: String,
+        centre: [f64; 3],
+        radius: f64,
+        d: [f64; 3],
+    },
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+fn default_reach() -> f64 {
+    0.3
 }
 
 /// A GEC coefficient-space transform (paper 000 sec 5.2).
@@ -146,7 +195,11 @@ impl Edit {
     /// The target part, if any.
     pub fn part(&self) -> Option<&str> {
         match self {
-            Edit::ShapeParameter { part, .. } | Edit::GecTransform { part, .. } => Some(part),
+            Edit::ShapeParameter { part, .. }
+            | Edit::GecTransform { part, .. }
+            | Edit::Force { part, .. }
+            | Edit::Boundary { part, .. }
+            | Edit::Plate { part, .. } => Some(part),
         }
     }
 
@@ -155,6 +208,9 @@ impl Edit {
         match self {
             Edit::ShapeParameter { .. } => "shape_parameter",
             Edit::GecTransform { .. } => "gec_transform",
+            Edit::Force { .. } => "force",
+            Edit::Boundary { .. } => "boundary",
+            Edit::Plate { .. } => "plate",
         }
     }
 
@@ -187,6 +243,35 @@ impl Edit {
                 };
                 format!("GEC {t}: {which}")
             }
+            Edit::Force { part, u, force, a } => format!(
+                "force {:?} p = ({}, {}, {}) on {part} over u in [{}, {}], a = {a}",
+                force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1]
+            ),
+            Edit::Boundary {
+                part,
+                end,
+                curve,
+                tangent,
+                ..
+            } => {
+                let mut what = Vec::new();
+                if curve.is_some() {
+                    what.push("new curve".to_string());
+                }
+                if let Some(t) = tangent {
+                    what.push(format!("tangent change ({}, {}, {})", t[0], t[1], t[2]));
+                }
+                format!("boundary of {part} at its {end:?}: {}", what.join(", "))
+            }
+            Edit::Plate {
+                part,
+                centre,
+                radius,
+                d,
+            } => format!(
+                "plate bend of {part} within {radius} of ({}, {}, {}) by ({}, {}, {})",
+                centre[0], centre[1], centre[2], d[0], d[1], d[2]
+            ),
         }
     }
 }
