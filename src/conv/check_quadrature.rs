@@ -161,7 +161,7 @@ pub const ORDER_TOL: f64 = 0.1;
 
 /// All quadrature checks of the definitions.
 pub fn checks() -> Vec<Check> {
-    let mut rng = Lcg(0x003_0_0de5);
+    let mut rng = Lcg(0x0030_0de5);
     let (eps1, eps2) = (0.04, 0.02);
     let (mut err2, mut worst_order, mut outside_total) = (0.0f64, 0.0f64, 0usize);
     let mut n = 0;

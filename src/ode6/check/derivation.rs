@@ -69,6 +69,27 @@ fn trig(x: [f64; 2]) -> Vec<Box<dyn Fn(f64) -> f64>> {
     v
 }
 
+/// SymPy's xi for three cases (`verify/printed_forms.py`).
+const PRINTED_GOLDEN: &str = include_str!("../../../verify/golden/printed_forms.json");
+
+/// xi of eq 15 (restored) against SymPy's roots of the quartic (eq 16).
+fn xi_vs_sympy() -> f64 {
+    let g: serde_json::Value = serde_json::from_str(PRINTED_GOLDEN).unwrap_or_default();
+    let Some(cases) = g["ode6_xi"].as_array() else {
+        return f64::NAN;
+    };
+    let mut e = if cases.is_empty() { f64::NAN } else { 0.0f64 };
+    for c in cases {
+        let f = |k: &str| c[k].as_f64().unwrap_or(f64::NAN);
+        let x = xi(&Params::new(f("rho"), f("eta"), f("lambda")));
+        for k in 0..2 {
+            let want = c["xi"][k].as_f64().unwrap_or(f64::NAN);
+            e = worst(e, (x[k] - want).abs() / want);
+        }
+    }
+    e
+}
+
 pub(super) fn derivation_checks() -> Vec<Check> {
     let (mut e9, mut e10, mut e11, mut e12, mut e13, mut e16, mut e17, mut e18) = (
         0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64,
@@ -151,6 +172,7 @@ pub(super) fn derivation_checks() -> Vec<Check> {
         ck("eq 12", "ode6.derivation.eq12_quartic", Kind::Residual, e12, tol::ROUNDING * 10.0, "rho r^4 + eta r^2 + lambda = 0 at r = +-i xi_1, +-i xi_2 (complex), relative"),
         ck("eq 13", "ode6.derivation.eq13_quadratic", Kind::Residual, e13, tol::ROUNDING * 10.0, "rho q^2 + eta q + lambda = 0 at q = r^2 = -xi_k^2, relative"),
         ck("eq 16", "ode6.derivation.eq16_four_roots", Kind::Reference, e16, tol::ROUNDING * 10.0, "r_{1,2} = +-i xi_1, r_{3,4} = +-i xi_2 (xi from eq 15 restored) against sqrt of the project's roots q of eq 13 (Params::q_roots), relative"),
+        ck("eqs 15, 16", "ode6.derivation.xi_vs_sympy", Kind::Reference, xi_vs_sympy(), tol::ROUNDING, "xi_{1,2} of eq 15 (minus and roots restored) against SymPy's roots +-i xi of the quartic (verify/printed_forms.py, 30 digits), three cases"),
         ck("eq 17", "ode6.derivation.eq17_sbar_form", Kind::Reference, e17, tol::SOLVE, &format!("S'' of a project line is b1 cos xi1 u + b2 sin xi1 u + b3 cos xi2 u + b4 sin xi2 u: least-squares fit on 8 points, max error at 11 others relative to max |S''|, {cases}")),
         ck("eq 18", "ode6.derivation.eq18_s_form", Kind::Reference, e18, tol::SOLVE, "S of a project line is b1 cos xi1 u + ... + b4 sin xi2 u + b5 u + b6: least-squares fit on 10 points, error at 11 others relative to max |S|"),
     ]

@@ -90,7 +90,7 @@ pub(super) fn force_checks(out: &mut Vec<Check>) {
     }
     let names = [
         ("app A3-A4", "pde4.force.appendix_a_line", true),
-        ("app A1-A2", "pde4.force.appendix_a_area", true),
+        ("app A1", "pde4.force.appendix_a_area", true),
         ("app B2", "pde4.force.appendix_b_line", true),
         ("app B1", "pde4.force.appendix_b_area", true),
         ("app A5, B3", "pde4.force.appendix_concentrated", false),

@@ -143,7 +143,7 @@ pub(super) fn four_sided_checks(out: &mut Vec<Check>) {
         Check::paper_literal(
             F,
             P,
-            "eqs 14-15",
+            "eqs 14, 15",
             "pde4.four_sided.eq14_15_vs_plate",
             rel(pr, PLATE_SQUARE_UNIFORM_PRECISE),
             tol::PLATE_THEORY,

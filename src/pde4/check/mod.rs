@@ -16,6 +16,7 @@ use crate::jet::Jet;
 use crate::surface::Surface;
 use serde_json::Value;
 use std::f64::consts::PI;
+mod appendix;
 mod forces;
 use forces::force_checks;
 mod two_sided_patch;
@@ -71,6 +72,7 @@ fn golden() -> Value {
 pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
     force_checks(&mut out);
+    appendix::appendix_checks(&mut out);
     two_sided_checks(&mut out);
     four_sided_checks(&mut out);
     printed_statement_checks(&mut out);

@@ -361,6 +361,8 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
             "eq 13 as printed (every minus sign restored), d2A_wn/du2 and d2B_wn/du2: {basis}"
         )),
     );
+    out.push(Check::new(FAMILY, PAPER, "eqs 11, 13", "pde6.printed.eq11_eq13_vs_sympy", Kind::Reference, eq11_13_vs_sympy(), tol::scaled(tol::ROUNDING, 10.0))
+        .note("eqs 11 and 13 as printed (minus signs restored) for each of the six eq 8 basis functions against SymPy's derivatives at (q, u) = (1.3, 0.4), (4.7, 0.85), (2.2, 1) (verify/printed_forms.py, which also proves the restored formulas equal the derivatives symbolically)"));
     // eq 24: C2 across the joins in the printed local parameters
     let mut e24 = 0.0f64;
     for (lo, hi) in [(p2, p1), (p1, p3)] {
@@ -381,6 +383,36 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
     let e27 = eq27_printed_interpolation_error(p3, &sec);
     out.push(Check::paper_literal(FAMILY, PAPER, "eq 27", &format!("pde6.paper_literal.eq27_constant_z_{name}"), e27, SOLVE_TOL, true)
         .note("eq 27 built as printed for patch 3: z^P3(u, v) = A_z0^P3(0) constant; max distance to the sections C9-C12 it must pass through (the corrected A_z0^P3(u) passes: pde6.method2_interpolates_*)"));
+}
+
+/// SymPy's derivatives of the eq 8 basis (`verify/printed_forms.py`).
+const PRINTED_GOLDEN: &str = include_str!("../../../verify/golden/printed_forms.json");
+
+/// Eqs 11 and 13 as printed (restored) for each unit coefficient vector
+/// against SymPy's derivatives of the eq 8 basis functions; NaN when the
+/// golden is missing or malformed.
+fn eq11_13_vs_sympy() -> f64 {
+    let g: serde_json::Value = serde_json::from_str(PRINTED_GOLDEN).unwrap_or_default();
+    let Some(samples) = g["pde6_basis_derivatives"].as_array() else {
+        return f64::NAN;
+    };
+    let mut e = if samples.is_empty() { f64::NAN } else { 0.0f64 };
+    for smp in samples {
+        let (q, u) = (
+            smp["q"].as_f64().unwrap_or(f64::NAN),
+            smp["u"].as_f64().unwrap_or(f64::NAN),
+        );
+        let (q1, q2) = (0.5 * 3f64.sqrt() * q, 0.5 * q);
+        for j in 0..6 {
+            let mut c = [0.0; 6];
+            c[j] = 1.0;
+            let d1 = smp["d1"][j].as_f64().unwrap_or(f64::NAN);
+            let d2 = smp["d2"][j].as_f64().unwrap_or(f64::NAN);
+            e = worst(e, rel(eq11(&c, q1, q2, u, false), d1));
+            e = worst(e, rel(eq13(&c, q1, q2, u), d2));
+        }
+    }
+    e
 }
 
 /// Tolerance of the printed-formula comparisons: the conversion to the
