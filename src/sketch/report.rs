@@ -59,6 +59,17 @@ pub struct SketchReport {
     pub max_c1: f64,
     /// Removed parts recorded in the document and not built.
     pub not_built: Vec<String>,
+    /// Removed parts built from their own profiles ([`super::removed`]).
+    pub removed: Vec<RemovedReport>,
+}
+
+/// A removed part: a separate closed component, not stitched to the body.
+#[derive(Clone, Debug, Serialize)]
+pub struct RemovedReport {
+    pub name: String,
+    pub stitched: bool,
+    /// Its silhouette against its own profiles.
+    pub profile_error: Vec<ProfileErrorReport>,
 }
 
 /// Everything a build produces.
@@ -108,6 +119,11 @@ pub fn build_document(
             "level final needs key cross-section sketches".into(),
         ));
     }
+    let removed = doc
+        .removed_parts
+        .iter()
+        .map(|r| super::removed::removed_part(r, base, tol))
+        .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
     let (yr, _) = super::poly::bounds(&front.points);
     let height = yr[1] - yr[0];
@@ -116,9 +132,11 @@ pub fn build_document(
             &front.points,
             side.as_ref().map(|s| s.points.as_slice()),
             &doc.inputs.sections,
+            &front.cuts,
             doc.level,
         )?;
         out.parts = d.parts;
+        out.parts.extend(removed.iter().map(|r| r.spec.clone()));
         out.transitions = d.transitions;
     }
     let model = build_model(&out.parts, &out.transitions, height, res)?;
@@ -174,7 +192,10 @@ pub fn build_document(
         })
         .collect();
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
-    let profile_error = super::check::profile_errors(&model.mesh, &front, side.as_ref(), height);
+    let names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    let body = super::check::without_groups(&model.mesh, &names);
+    let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
+    let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
     let report = SketchReport {
         level: out.level,
         height,
@@ -183,7 +204,13 @@ pub fn build_document(
         topology: topo,
         profile_error,
         max_c1,
-        not_built: out.removed_parts.iter().map(|r| r.name.clone()).collect(),
+        not_built: out
+            .removed_parts
+            .iter()
+            .filter(|r| !out.parts.iter().any(|p| p.name == r.name))
+            .map(|r| r.name.clone())
+            .collect(),
+        removed: removed_reports,
     };
     Ok(Built {
         doc: out,
