@@ -257,7 +257,12 @@ fn tilt_top(
         } else {
             iv.first().map(|v| v[0])
         };
-        let Some(xo) = xo else { continue };
+        // the outer point must lie outward of the limb's inner side by at
+        // least its half-width (else the slice is not the shoulder's: keep
+        // the section perpendicular)
+        let Some(xo) = xo.filter(|x| out * (x - inner[0]) >= q.w) else {
+            continue;
+        };
         let outer = [xo, yo];
         let d = [inner[0] - outer[0], inner[1] - outer[1]];
         let len = d[0].hypot(d[1]);
