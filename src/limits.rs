@@ -152,7 +152,7 @@ pub const SKETCH_TOLERANCE: RealRange = RealRange {
 
 /// Checks a finite real `value` of `param` against `range`; returns it.
 pub fn check_real(param: &str, value: f64, range: RealRange) -> Result<f64, LimitError> {
-    if !(value >= range.min && value <= range.max) {
+    if value.is_nan() || value < range.min || value > range.max {
         return Err(LimitError::OutOfRealRange {
             param: param.to_string(),
             value,

@@ -169,6 +169,44 @@ MALE_SIDE = [
 ]
 
 
+# A four-legged animal (a dog), primary profile in the x-y plane: its
+# lateral silhouette, head toward +x (for an animal the primary "front"
+# file is the view along z, which shows the legs and the tail apart); the
+# secondary profile is the view from its front (z, y). Counter-clockwise key
+# points from the tail tip.
+ANIMAL_FRONT = [
+    (-0.66, 0.74), (-0.60, 0.66), (-0.52, 0.58), (-0.44, 0.56),  # tail, rump
+    (-0.30, 0.57), (-0.10, 0.56), (0.10, 0.57), (0.28, 0.60),  # back
+    (0.36, 0.70), (0.40, 0.80), (0.45, 0.86), (0.55, 0.86),  # neck, skull
+    (0.64, 0.80), (0.66, 0.76), (0.60, 0.73), (0.50, 0.72),  # muzzle, jaw
+    (0.46, 0.62), (0.44, 0.50), (0.42, 0.40),  # throat, chest
+    (0.40, 0.20), (0.41, 0.02), (0.44, 0.0), (0.36, 0.0),  # front leg 1
+    (0.355, 0.20), (0.345, 0.32), (0.325, 0.20),  # between the front legs
+    (0.33, 0.02), (0.34, 0.0), (0.27, 0.0), (0.265, 0.20), (0.26, 0.33),  # front leg 2
+    (0.10, 0.34), (-0.10, 0.34), (-0.24, 0.35),  # belly
+    (-0.25, 0.20), (-0.24, 0.02), (-0.21, 0.0), (-0.29, 0.0),  # hind leg 1
+    (-0.30, 0.20), (-0.31, 0.32), (-0.33, 0.20),  # between the hind legs
+    (-0.33, 0.02), (-0.31, 0.0), (-0.39, 0.0), (-0.40, 0.20),  # hind leg 2
+    (-0.42, 0.38), (-0.46, 0.48), (-0.54, 0.53), (-0.62, 0.60),  # haunch, tail
+    (-0.68, 0.70),
+]
+
+ANIMAL_SIDE = [
+    (0.0, 0.86), (0.06, 0.84), (0.07, 0.74), (0.05, 0.66),  # head
+    (0.13, 0.58), (0.14, 0.44), (0.11, 0.36),  # body
+    (0.10, 0.20), (0.10, 0.02), (0.11, 0.0), (0.04, 0.0), (0.045, 0.20), (0.04, 0.32),  # right leg
+    (-0.04, 0.32), (-0.045, 0.20), (-0.04, 0.0), (-0.11, 0.0), (-0.10, 0.02), (-0.10, 0.20),  # left leg
+    (-0.11, 0.36), (-0.14, 0.44), (-0.13, 0.58), (-0.05, 0.66), (-0.07, 0.74), (-0.06, 0.84),
+]
+
+
+def make_animal():
+    front = catmull_rom(list(reversed(ANIMAL_FRONT)), closed=True, per_seg=8)
+    side = catmull_rom(ANIMAL_SIDE, closed=True, per_seg=8)
+    write_svg(os.path.join(HERE, "animal_front.svg"), front)
+    write_svg(os.path.join(HERE, "animal_side.svg"), side)
+
+
 def make(name, front_half, side_keys, sections):
     front = mirror_front(front_half)
     side = catmull_rom(side_keys, closed=True, per_seg=8)
@@ -194,6 +232,7 @@ if __name__ == "__main__":
             ("torso", 0.92, [(-0.25, 0.6, 1.5708)]),
         ],
     )
+    make_animal()
     make(
         "male",
         MALE_FRONT,

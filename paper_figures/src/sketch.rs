@@ -19,17 +19,166 @@ use std::path::Path;
 
 /// The figures of the sketch family.
 pub fn figures() -> Vec<Figure> {
-    vec![Figure {
-        id: "000-fig6",
-        paper: "000",
-        title: "Sketched female: initial, intermediate and final models with profile errors",
-        run: fig6,
-    }]
+    vec![
+        Figure {
+            id: "000-fig5",
+            paper: "000",
+            title:
+                "Sketched female: outline, parts and central curves, key sections, initial model",
+            run: fig5,
+        },
+        Figure {
+            id: "000-fig6",
+            paper: "000",
+            title: "Sketched female: initial, intermediate and final models with profile errors",
+            run: fig6,
+        },
+    ]
+}
+
+const PALETTE: [[u8; 4]; 6] = [
+    [30, 90, 200, 255],
+    [20, 150, 60, 255],
+    [200, 120, 0, 255],
+    [150, 40, 180, 255],
+    [0, 150, 160, 255],
+    [190, 40, 90, 255],
+];
+
+fn flat(points: Vec<[f64; 3]>, closed: bool, colour: [u8; 4]) -> Overlay {
+    Overlay {
+        points,
+        closed,
+        colour,
+        depth_test: false,
+    }
+}
+
+/// Points of a circle or ellipse section (GEC sections are not drawn).
+fn section_points(s: &pdesculpt::character::doc::SectionSpec) -> Option<Vec<[f64; 3]>> {
+    use pdesculpt::character::doc::SectionShape;
+    let (a, b, off) = match s.shape {
+        SectionShape::Circle { r } => (r, r, 0.0),
+        SectionShape::Ellipse { a, b, offset } => (a, b, offset),
+        SectionShape::Gec { .. } => return None,
+    };
+    Some(
+        (0..48)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / 48.0;
+                let (c, sn) = (a * t.cos(), off + b * t.sin());
+                [0, 1, 2].map(|d| s.centre[d] + c * s.e1[d] + sn * s.e2[d])
+            })
+            .collect(),
+    )
+}
+
+/// Paper 000 Fig 5 analogue: the stages of the initial model on the
+/// bundled female's front outline.
+fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
+    let doc = bundled("female", Level::Initial)
+        .ok_or_else(|| anyhow::anyhow!("the bundled female does not parse"))?;
+    let b = build_document(&doc, Path::new("."), Resolution::default(), true)?;
+    let (lo, hi) = b.model.mesh.bbox();
+    let cam = Camera::fit_box(lo, hi, View::Front, W, H, 0.04);
+    let grey = [150, 150, 150, 255];
+    let black = [0, 0, 0, 255];
+    let outline = |c| outline_overlay(&b.front.points, View::Front).with_colour(c);
+    let empty = Mesh::default();
+    let draw = |m: &Mesh, overlays: Vec<Overlay>| {
+        let o = RenderOptions {
+            width: W,
+            height: H,
+            view: View::Front,
+            overlays,
+            ..Default::default()
+        };
+        render_with_camera(m, &o, &cam)
+    };
+    // (b) parts: each part's end sections (its boundaries) and its central
+    // curve (the section centres); (c) every key section
+    let mut parts = vec![outline(grey)];
+    let mut sections = vec![outline(grey)];
+    for (i, p) in b.doc.parts.iter().enumerate() {
+        let col = PALETTE[i % PALETTE.len()];
+        parts.push(flat(
+            p.sections.iter().map(|s| s.centre).collect(),
+            false,
+            col,
+        ));
+        for s in [&p.sections[0], &p.sections[p.sections.len() - 1]] {
+            if let Some(pts) = section_points(s) {
+                parts.push(flat(pts, true, col));
+            }
+        }
+        for s in &p.sections {
+            if let Some(pts) = section_points(s) {
+                sections.push(flat(pts, true, col));
+            }
+        }
+    }
+    let panels = vec![
+        draw(&empty, vec![outline(black)]),
+        draw(&empty, parts),
+        draw(&empty, sections),
+        draw(&b.model.mesh, vec![outline(RED)]),
+    ];
+    let r = &b.report;
+    let n_sections: usize = b.doc.parts.iter().map(|p| p.sections.len()).sum();
+    let front = r.profile_error.first();
+    let captions = vec![
+        format!("a outline ({} points)", b.front.points.len()),
+        format!(
+            "b {} parts: central curves\nand join boundaries",
+            b.doc.parts.len()
+        ),
+        format!("c {n_sections} key sections (circles)"),
+        format!(
+            "d initial model\nfront error max {:.2} %",
+            100.0 * front.map_or(f64::NAN, |e| e.max_rel)
+        ),
+    ];
+    let img = Image::hstack(&panels, [255; 4]);
+    let img = crate::ode6::annotate(
+        &img,
+        "Sketched female (paper 000 Fig 5): segmentation stages of the initial model",
+        &captions,
+        View::Front,
+        false,
+    )?;
+    ctx.write_bytes("000-fig5.png", &img.encode_png())?;
+    ctx.write_json(
+        "000-fig5.json",
+        &json!({
+            "figure": "000-fig5",
+            "model": "data/sketch/female_front.svg",
+            "parts": b.doc.parts.iter().map(|p| json!({
+                "name": p.name,
+                "sections": p.sections.len(),
+                "centres": p.sections.iter().map(|s| s.centre).collect::<Vec<_>>(),
+            })).collect::<Vec<_>>(),
+            "transitions": b.doc.transitions.iter().map(|t| json!({"name": t.name, "parent": t.parent, "children": t.children})).collect::<Vec<_>>(),
+            "profile_error": r.profile_error,
+            "watertight": r.topology.watertight,
+        }),
+    )?;
+    Ok(())
 }
 
 const W: usize = 260;
 const H: usize = 520;
 const RED: [u8; 4] = [220, 30, 30, 255];
+
+trait WithColour {
+    fn with_colour(self, c: [u8; 4]) -> Self;
+}
+
+impl WithColour for Overlay {
+    fn with_colour(mut self, c: [u8; 4]) -> Overlay {
+        self.colour = c;
+        self
+    }
+}
 
 fn outline_overlay(points: &[[f64; 2]], view: View) -> Overlay {
     Overlay {

@@ -32,6 +32,8 @@ pub enum DemoError {
     Skirt(#[from] super::skirt::SkirtError),
     #[error("SketchCo prop")]
     Conv(#[from] crate::conv::ConvError),
+    #[error("sketched female")]
+    Sketch(#[from] crate::sketch::SketchError),
     #[error("{0}")]
     Step(String),
 }
@@ -51,9 +53,52 @@ pub struct EditReport {
     pub max_first_ring_displacement: f64,
 }
 
+/// Step 1: the bundled female built from her sketches (paper 000 sec 4.1,
+/// final level: front and side profiles and key cross sections).
+#[derive(Clone, Debug, Serialize)]
+pub struct SketchStep {
+    pub example: &'static str,
+    pub level: &'static str,
+    pub triangles: usize,
+    pub watertight: bool,
+    /// Max profile error per view, relative to the height.
+    pub profile_error: Vec<(&'static str, f64)>,
+    pub max_c1: f64,
+}
+
+/// Builds the bundled female from her sketches (metres).
+pub fn sketched_female() -> Result<(Mesh, SketchStep), DemoError> {
+    use crate::character::doc::Level;
+    let doc = crate::sketch::check::bundled("female", Level::Final)
+        .ok_or_else(|| DemoError::Step("the bundled female sketch does not parse".into()))?;
+    let b = crate::sketch::build_document(
+        &doc,
+        std::path::Path::new("."),
+        crate::sketch::Resolution::default(),
+        true,
+    )?;
+    let r = &b.report;
+    let step = SketchStep {
+        example: "data/sketch/female_*",
+        level: r.level.name(),
+        triangles: r.topology.triangles,
+        watertight: r.topology.watertight && r.topology.manifold && r.topology.oriented,
+        profile_error: r
+            .profile_error
+            .iter()
+            .map(|p| (p.view, p.max_rel))
+            .collect(),
+        max_c1: r.max_c1,
+    };
+    Ok((b.model.mesh, step))
+}
+
 /// The demo's outputs and measurements.
 #[derive(Clone, Debug)]
 pub struct Demo {
+    /// Step 1: the character built from the bundled female sketches, in
+    /// metres (not the template's unit).
+    pub sketched: Mesh,
     /// Unit of every mesh below: decimetres, the MakeHuman data's unit
     /// ([`unit::MAKEHUMAN`]); writers convert (GLB to metres).
     pub unit: Unit,
@@ -74,6 +119,8 @@ pub struct Demo {
 pub struct DemoReport {
     /// Unit of every length in this report (decimetres, the template's).
     pub unit: Unit,
+    /// Step 1 (its lengths are relative to its height).
+    pub sketched: SketchStep,
     pub template: &'static str,
     pub template_vertices: usize,
     pub edits: Vec<EditReport>,
@@ -369,6 +416,7 @@ pub fn belly_push(
 
 /// Runs the whole demo pipeline.
 pub fn build() -> Result<Demo, DemoError> {
+    let (sketched, sketch_step) = sketched_female()?;
     // the base body: the reconstruction's part layout (pde6::body) is
     // fitted to its proportions
     let base = makehuman::base_body()?;
@@ -399,6 +447,7 @@ pub fn build() -> Result<Demo, DemoError> {
         unit: UNIT,
         report: DemoReport {
             unit: UNIT,
+            sketched: sketch_step,
             template: "MakeHuman hm08 base body (skin group)",
             template_vertices: template.positions.len(),
             edits,
@@ -408,6 +457,7 @@ pub fn build() -> Result<Demo, DemoError> {
             prop: prop_report,
         },
         skirt,
+        sketched,
         sculpted: belly,
         reconstruction,
         prop,

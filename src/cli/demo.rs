@@ -9,7 +9,8 @@
 //! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body with the teddy,
 //! groups `skin` and `teddy`, front and side),
 //! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
-//! part) and `demo.json` (what every step measured). GLBs are metres (a
+//! part), `demo-sketch.glb` (step 1: the bundled female built from her
+//! sketches, paper 000 sec 4.1) and `demo.json` (what every step measured). GLBs are metres (a
 //! 1.67 m body), `demo.obj` is in `--unit` (default metres), `demo.json`'s
 //! lengths are decimetres, the MakeHuman template's unit (`"unit": "dm"`).
 
@@ -43,6 +44,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             args.out.display()
         )
     })?;
+    eprintln!("step 1: the bundled female from her sketches (front, side, key sections)");
     eprintln!("template: the MakeHuman base body");
     eprintln!(
         "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches), sketching a prop (convolution surfaces)..."
@@ -69,6 +71,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         args.out.join("demo-pde6.glb"),
         args.out.join("demo-pde6.png"),
         args.out.join("demo.json"),
+        args.out.join("demo-sketch.glb"),
     ];
     let unit_glb = args.units.write(&scene, &files[0], d.unit)?;
     let unit_obj = args.units.write(&scene, &files[1], d.unit)?;
@@ -76,6 +79,21 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     args.units.write(&d.reconstruction, &files[3], d.unit)?;
     views(&d.reconstruction).save_png(&files[4])?;
     io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
+    args.units
+        .write(&d.sketched, &files[6], pdesculpt::mesh::unit::Unit::M)?;
+    let k = &d.report.sketched;
+    eprintln!(
+        "  sketched female (paper 000 sec 4.1, {} level): {} triangles, closed {}, profile error {}, max C1 jump {:.1e}",
+        k.level,
+        k.triangles,
+        k.watertight,
+        k.profile_error
+            .iter()
+            .map(|(v, e)| format!("{v} {:.2} %", 100.0 * e))
+            .collect::<Vec<_>>()
+            .join(", "),
+        k.max_c1
+    );
     for e in &d.report.edits {
         eprintln!(
             "  {} (paper {}): {} vertices moved, max {:.3} dm, first ring inside the clamped edge {:.3} dm",

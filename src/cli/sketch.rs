@@ -9,10 +9,12 @@ use std::path::{Path, PathBuf};
 const CONVENTIONS: &str = "Input conventions: SVG user units are model units; SVG y points down and \
 model y up (model y = -svg y); in a front view svg x is model x, in a side view svg x is model z \
 (the front of the body at +z). Each SVG holds one closed path for the outline (any path commands, \
-flattened with --tolerance); extra paths whose id starts with `cut` are explicit part boundaries and \
-must cross the outline. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
+flattened with --tolerance, at most 1 % of the drawing's height); extra paths whose id starts with \
+`cut` are explicit part boundaries: drawn across an arm (below the armpit), a leg (below the crotch) \
+or the neck, a cut places that join at its mean height. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
 segmentation expects a standing humanoid seen from the front, arms away from the body and legs apart \
-(parts torso, head, arm_l, arm_r, leg_l, leg_r; _l is negative x). The side outline must have the \
+(parts torso, head, arm_l, arm_r, leg_l, leg_r; _l is negative x); a drawing up to 12 degrees off \
+upright is segmented about its principal axis. The side outline must have the \
 front's height within 5 %. SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
 \"points\": [[x, z], ...]}]}: closed curves in the horizontal plane at height y, fitted by GECs at \
 the final level.";

@@ -148,7 +148,7 @@ impl Alignment {
 /// The rotation of a front outline from upright (see the module docs).
 pub fn alignment(front: &[[f64; 2]]) -> Result<Alignment, SketchError> {
     let ax = axes(front);
-    if !(ax.anisotropy >= MIN_ANISOTROPY) {
+    if ax.anisotropy.is_nan() || ax.anisotropy < MIN_ANISOTROPY {
         return Ok(Alignment::identity());
     }
     let q = std::f64::consts::FRAC_PI_2;

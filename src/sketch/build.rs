@@ -528,8 +528,8 @@ fn measure_seam(b: &Built, j: usize, parts: &[PartSurface]) -> SeamReport {
     }
 }
 
-/// Makes triangle orientation consistent across shared edges (breadth
-/// first) and outward (positive signed volume).
+/// Makes triangle orientation consistent across shared edges (depth
+/// first) and each connected component outward (positive signed volume).
 pub fn orient(m: &mut Mesh) {
     use std::collections::HashMap;
     let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
@@ -547,6 +547,7 @@ pub fn orient(m: &mut Mesh) {
         }
         seen[s] = true;
         let mut stack = vec![s];
+        let mut component = vec![s];
         while let Some(t) = stack.pop() {
             let tr = m.triangles[t];
             for e in 0..3 {
@@ -562,13 +563,22 @@ pub fn orient(m: &mut Mesh) {
                     }
                     seen[o] = true;
                     stack.push(o);
+                    component.push(o);
                 }
             }
         }
-    }
-    if m.signed_volume() < 0.0 {
-        for t in &mut m.triangles {
-            t.swap(1, 2);
+        // each closed component outward (separate removed parts)
+        let vol: f64 = component
+            .iter()
+            .map(|&t| {
+                let [a, b, c] = m.corners(t);
+                crate::mesh::dot(a, cross(b, c))
+            })
+            .sum();
+        if vol < 0.0 {
+            for &t in &component {
+                m.triangles[t].swap(1, 2);
+            }
         }
     }
 }

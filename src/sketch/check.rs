@@ -48,6 +48,42 @@ pub fn profile_errors(
     out
 }
 
+/// The mesh without the triangles of the named groups.
+pub fn without_groups(mesh: &Mesh, names: &[&str]) -> Mesh {
+    if names.is_empty() {
+        return mesh.clone();
+    }
+    let keep: Vec<bool> = mesh
+        .tri_group
+        .iter()
+        .map(|&g| !names.contains(&mesh.groups[g as usize].as_str()))
+        .collect();
+    mesh.filter_triangles(&keep).0
+}
+
+/// Each removed part's silhouette (its own group) against its profiles,
+/// relative to the model height.
+pub fn removed_errors(
+    mesh: &Mesh,
+    removed: &[super::removed::BuiltRemoved],
+    height: f64,
+) -> Vec<super::report::RemovedReport> {
+    removed
+        .iter()
+        .map(|r| {
+            let profile_error = match mesh.group_submesh(&r.spec.name) {
+                Some((m, _)) => profile_errors(&m, &r.front, r.side.as_ref(), height),
+                None => Vec::new(),
+            };
+            super::report::RemovedReport {
+                name: r.spec.name.clone(),
+                stitched: false,
+                profile_error,
+            }
+        })
+        .collect()
+}
+
 /// A bundled example as a document with inline profiles.
 pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
     let (f, s, k) = match name {

@@ -3,6 +3,7 @@
 //! sketches) and the transitions.
 
 use super::align::{alignment, Alignment};
+use super::cuts::{join_heights, CutPath};
 use super::poly::slice;
 use super::segment::{interval, landmarks, regions, shoulder_top, Landmarks, Region};
 use super::SketchError;
@@ -130,7 +131,7 @@ fn side_depth(side: &[[f64; 2]], map: [f64; 2], y: f64) -> Option<(f64, f64)> {
     Some((0.5 * (lo + hi), 0.5 * (hi - lo)))
 }
 
-fn part_from_region(
+pub(super) fn part_from_region(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     r: &Region,
@@ -219,7 +220,7 @@ fn part_from_region(
         tilt_top(front, &s, &idx, out, &mut sections);
     }
     Ok(PartSpec {
-        name: r.name.into(),
+        name: r.name.clone(),
         surface: SurfaceSpec::Pde6C2 { a: 0.0 },
         sections,
         closed_start: false,
@@ -256,7 +257,12 @@ fn tilt_top(
         } else {
             iv.first().map(|v| v[0])
         };
-        let Some(xo) = xo else { continue };
+        // the outer point must lie outward of the limb's inner side by at
+        // least its half-width (else the slice is not the shoulder's: keep
+        // the section perpendicular)
+        let Some(xo) = xo.filter(|x| out * (x - inner[0]) >= q.w) else {
+            continue;
+        };
         let outer = [xo, yo];
         let d = [inner[0] - outer[0], inner[1] - outer[1]];
         let len = d[0].hypot(d[1]);
@@ -287,13 +293,28 @@ pub fn derive(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     sections: &[KeySection],
+    cuts: &[CutPath],
     level: Level,
 ) -> Result<Derived, SketchError> {
+    let ax = super::align::axes(front);
+    if ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
+    {
+        return Err(SketchError::Segmentation(format!(
+            "the front outline is longer than tall (principal axis {:.0} degrees from horizontal), as a four-legged animal's: \
+             the automatic segmentation handles standing humanoids only (arms away from the body, legs apart); \
+             animals (body, neck and head, four legs, tail) are not supported yet",
+            ax.major.to_degrees().abs()
+        )));
+    }
     let al = alignment(front)?;
     if al.is_identity() {
-        return derive_upright(front, side, sections, level);
+        return derive_upright(front, side, sections, cuts, level);
     }
     let up: Vec<[f64; 2]> = front.iter().map(|p| al.to_upright(*p)).collect();
+    let cuts: Vec<CutPath> = cuts
+        .iter()
+        .map(|(id, c)| (id.clone(), c.iter().map(|p| al.to_upright(*p)).collect()))
+        .collect();
     let keys: Vec<KeySection> = sections
         .iter()
         .map(|k| {
@@ -306,7 +327,7 @@ pub fn derive(
             }
         })
         .collect();
-    let mut d = derive_upright(&up, side, &keys, level)?;
+    let mut d = derive_upright(&up, side, &keys, &cuts, level)?;
     for p in &mut d.parts {
         for s in &mut p.sections {
             s.centre = al.point_back(s.centre);
@@ -327,9 +348,14 @@ fn derive_upright(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     sections: &[KeySection],
+    cuts: &[CutPath],
     level: Level,
 ) -> Result<Derived, SketchError> {
-    let lm = landmarks(front)?;
+    let mut lm = landmarks(front)?;
+    let joins = join_heights(front, &lm, cuts)?;
+    if let Some(y) = joins.neck {
+        lm.neck_base = y;
+    }
     if let Some(sd) = side {
         let (ys, _) = super::poly::bounds(sd);
         let hs = ys[1] - ys[0];
@@ -344,7 +370,7 @@ fn derive_upright(
         }
     }
     let side = if level == Level::Initial { None } else { side };
-    let regs = regions(front, &lm)?;
+    let regs = regions(front, &lm, &joins)?;
     let mut parts = regs
         .iter()
         .map(|r| part_from_region(front, side, r))

@@ -10,14 +10,23 @@
 //!    built from the parts' boundary curves and tangents ([`transition`]).
 //! 2. **Intermediate** (sec 4.1.2): with a side outline the sections become
 //!    ellipses, the depth and the centre's z from the side view (not for the
-//!    arms, hidden by the torso in the side view: they keep circles).
+//!    arms, hidden by the torso in the side view: they keep circles), and
+//!    the key sections are re-placed from the curvature of both profiles.
 //! 3. **Final** (sec 4.1.3): key cross-section sketches are fitted by GECs
-//!    (`curve::gec`) and replace the section nearest their height.
+//!    (`curve::gec`) and replace the section nearest their height
+//!    ([`keysection`]).
 //!
-//! Simpler than the paper: sections are always re-placed from the front
-//! profile only; removed parts (hair, tail) are recorded in the document but
-//! not built; the transitions are cubic Hermite blends (C1, not C2); only
-//! standing humanoids (arms away from the body, legs apart) are segmented.
+//! A drawing a few degrees off upright is segmented upright about its
+//! principal axis and the result turned back ([`align`]); cuts drawn in the
+//! front SVG (`cut*` paths) place the joins they cross ([`cuts`]).
+//!
+//! Removed parts (hair, a tail, ears) are built from their own profiles as
+//! separate closed components, not stitched ([`removed`]).
+//!
+//! Simpler than the paper: the transitions are cubic Hermite blends (C1,
+//! not C2); only standing humanoids (arms away from the body, legs apart)
+//! are segmented; a cut only moves a join that the automatic segmentation
+//! finds (it cannot add a part).
 //!
 //! The whole model is one mesh ([`build`]): every part and transition shares
 //! the vertices of the rings and seams it meets, and orientation is made
@@ -28,11 +37,13 @@
 pub mod align;
 pub mod build;
 pub mod check;
+pub mod cuts;
 pub mod derive;
 pub mod input;
 pub mod keysection;
 pub mod part;
 pub mod poly;
+pub mod removed;
 pub mod report;
 pub mod segment;
 pub mod transition;

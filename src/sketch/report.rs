@@ -59,6 +59,17 @@ pub struct SketchReport {
     pub max_c1: f64,
     /// Removed parts recorded in the document and not built.
     pub not_built: Vec<String>,
+    /// Removed parts built from their own profiles ([`super::removed`]).
+    pub removed: Vec<RemovedReport>,
+}
+
+/// A removed part: a separate closed component, not stitched to the body.
+#[derive(Clone, Debug, Serialize)]
+pub struct RemovedReport {
+    pub name: String,
+    pub stitched: bool,
+    /// Its silhouette against its own profiles.
+    pub profile_error: Vec<ProfileErrorReport>,
 }
 
 /// Everything a build produces.
@@ -124,6 +135,11 @@ pub fn build_document_with(
             "level final needs key cross-section sketches".into(),
         ));
     }
+    let removed = doc
+        .removed_parts
+        .iter()
+        .map(|r| super::removed::removed_part(r, base, tol))
+        .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
     let (yr, _) = super::poly::bounds(&front.points);
     let height = yr[1] - yr[0];
@@ -132,9 +148,11 @@ pub fn build_document_with(
             &front.points,
             side.as_ref().map(|s| s.points.as_slice()),
             &doc.inputs.sections,
+            &front.cuts,
             doc.level,
         )?;
         out.parts = d.parts;
+        out.parts.extend(removed.iter().map(|r| r.spec.clone()));
         out.transitions = d.transitions;
     }
     // replay the edit log on a copy: `out` keeps the unedited parts and the
@@ -200,7 +218,10 @@ pub fn build_document_with(
         })
         .collect();
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
-    let profile_error = super::check::profile_errors(&model.mesh, &front, side.as_ref(), height);
+    let names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    let body = super::check::without_groups(&model.mesh, &names);
+    let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
+    let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
     let report = SketchReport {
         level: out.level,
         height,
@@ -209,7 +230,13 @@ pub fn build_document_with(
         topology: topo,
         profile_error,
         max_c1,
-        not_built: out.removed_parts.iter().map(|r| r.name.clone()).collect(),
+        not_built: out
+            .removed_parts
+            .iter()
+            .filter(|r| !out.parts.iter().any(|p| p.name == r.name))
+            .map(|r| r.name.clone())
+            .collect(),
+        removed: removed_reports,
     };
     Ok(Built {
         doc: out,

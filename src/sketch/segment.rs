@@ -20,6 +20,7 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
+use super::cuts::JoinHeights;
 use super::poly::{gap_tops, slice, top_at, GapTop};
 use super::SketchError;
 
@@ -125,7 +126,7 @@ pub enum Pick {
 /// A region of the outline: the part's slices between two heights.
 #[derive(Clone, Debug)]
 pub struct Region {
-    pub name: &'static str,
+    pub name: String,
     pub y0: f64,
     pub y1: f64,
     pub pick: Pick,
@@ -150,14 +151,20 @@ pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
         .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
 }
 
-/// The six regions of a standing humanoid.
-pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, SketchError> {
+/// The six regions of a standing humanoid; a limb starts at its cut when
+/// `cuts` gives one ([`super::cuts`]), else a join band below its armpit or
+/// the crotch.
+pub fn regions(
+    front: &[[f64; 2]],
+    lm: &Landmarks,
+    cuts: &JoinHeights,
+) -> Result<Vec<Region>, SketchError> {
     let g = GAP_FRACTION * lm.height();
     let big = 1e3 * lm.height();
     let ya = lm.armpit_l[1].min(lm.armpit_r[1]);
     let mut out = vec![
         Region {
-            name: "torso",
+            name: "torso".into(),
             y0: lm.crotch[1] + g,
             y1: ya - g,
             pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
@@ -166,7 +173,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
             shoulder: None,
         },
         Region {
-            name: "head",
+            name: "head".into(),
             y0: lm.neck_base,
             y1: lm.y_max,
             pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
@@ -182,7 +189,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
         ("leg_r", lm.crotch[0], lm.armpit_r[0], lm.crotch[1], None),
     ] {
         let pick = Pick::CentreIn(lo, hi);
-        let y1 = top - g;
+        let y1 = cuts.limb(name).unwrap_or(top - g);
         if interval(front, pick, y1).is_none() {
             return Err(SketchError::Segmentation(format!(
                 "{name}: no outline below its join"
@@ -210,7 +217,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
             }
         }
         out.push(Region {
-            name,
+            name: name.into(),
             y0: b,
             y1,
             pick,

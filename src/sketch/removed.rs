@@ -1,0 +1,101 @@
+//! Removed parts (paper 000 sec 4.1, paragraph 3: hair, a tail, ears are
+//! "removed" from the primary profile and modeled from their own profiles,
+//! then composed with the rest).
+//!
+//! A removed part is one closed front outline (and optionally its side
+//! outline) in model coordinates, drawn where the part sits. It is built
+//! like a limb, as one C2 sixth-order PDE chain (`pde6`, [`super::part`]):
+//! the outline is turned so that its principal axis ([`super::align::axes`])
+//! is vertical, sliced into sections placed where its profile's curvature
+//! changes ([`super::derive::part_from_region`]), both ends closed to the
+//! outline's extreme points, and the sections turned back. With a side
+//! outline (used only when the part's axis is already vertical, within
+//! [`super::align::ROTATION_EPS_DEG`]) the sections are ellipses whose depth
+//! comes from it, else circles.
+//!
+//! Composition: the part is a **separate closed component** of the model
+//! mesh (its own group), **not stitched** to the body: it may overlap the
+//! body, as in the paper's composition. It is measured on its own: its
+//! front silhouette against its own outline.
+
+use super::align::{axes, Alignment, ROTATION_EPS_DEG};
+use super::derive::part_from_region;
+use super::input::{read_profile, Outline, ViewKind};
+use super::segment::{Pick, Region};
+use super::SketchError;
+use crate::character::doc::{PartSpec, RemovedPart, SectionShape};
+use std::path::Path;
+
+/// A removed part built into a part spec, with its outlines.
+#[derive(Clone, Debug)]
+pub struct BuiltRemoved {
+    pub spec: PartSpec,
+    pub front: Outline,
+    pub side: Option<Outline>,
+}
+
+/// Builds one removed part from its profiles (relative paths against
+/// `base`).
+pub fn removed_part(rp: &RemovedPart, base: &Path, tol: f64) -> Result<BuiltRemoved, SketchError> {
+    let bad = |m: String| SketchError::Part {
+        part: rp.name.clone(),
+        message: m,
+    };
+    let front =
+        read_profile(&rp.front, base, ViewKind::Front, tol).map_err(|e| bad(e.to_string()))?;
+    let side = match &rp.side {
+        Some(s) => {
+            Some(read_profile(s, base, ViewKind::Side, tol).map_err(|e| bad(e.to_string()))?)
+        }
+        None => None,
+    };
+    let ax = axes(&front.points);
+    // turn the major axis vertical: angle into (-90, 90] degrees
+    let half = std::f64::consts::FRAC_PI_2;
+    let mut turn = half - ax.major;
+    if turn > half {
+        turn -= std::f64::consts::PI;
+    }
+    let al = Alignment {
+        pivot: ax.centroid,
+        angle: -turn,
+    };
+    let up: Vec<[f64; 2]> = front.points.iter().map(|p| al.to_upright(*p)).collect();
+    let upright = turn.abs().to_degrees() < ROTATION_EPS_DEG;
+    let side_pts = if upright {
+        side.as_ref().map(|s| s.points.as_slice())
+    } else {
+        None
+    };
+    let (yr, _) = super::poly::bounds(&up);
+    let big = 1e3 * (yr[1] - yr[0]).max(f64::MIN_POSITIVE);
+    let region = Region {
+        name: rp.name.clone(),
+        y0: yr[0],
+        y1: yr[1],
+        pick: Pick::CentreIn(-big, big),
+        downward: false,
+        tip: true,
+        shoulder: None,
+    };
+    let mut spec = part_from_region(&up, side_pts, &region).map_err(|e| bad(e.to_string()))?;
+    // close the start at the outline's lowest point (in the upright frame)
+    let first = spec.sections[0].centre;
+    spec.sections[0].centre = [first[0], yr[0], first[2]];
+    spec.sections[0].shape = SectionShape::Circle { r: 0.0 };
+    spec.closed_start = true;
+    if !al.is_identity() {
+        for s in &mut spec.sections {
+            s.centre = al.point_back(s.centre);
+            s.e1 = al.vector_back(s.e1);
+            s.e2 = al.vector_back(s.e2);
+        }
+    }
+    let mut u = 0.0;
+    spec.sections[0].u = 0.0;
+    for i in 1..spec.sections.len() {
+        u += crate::mesh::dist(spec.sections[i - 1].centre, spec.sections[i].centre);
+        spec.sections[i].u = u;
+    }
+    Ok(BuiltRemoved { spec, front, side })
+}
