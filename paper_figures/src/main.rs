@@ -16,6 +16,7 @@ mod pde4;
 mod pde6;
 mod plate;
 mod sketch;
+mod template;
 
 use common::{Ctx, Figure};
 
@@ -28,6 +29,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(ode6::figures());
     v.extend(conv::figures());
     v.extend(sketch::figures());
+    v.extend(template::figures());
     v.extend(gallery::figures());
     v
 }

@@ -17,3 +17,5 @@ mod plate;
 mod profile;
 mod sketch;
 mod template;
+mod template_study;
+mod template_tbsm;
