@@ -157,6 +157,29 @@ pub fn front_pass(
     front_warp(positions, &ca, &cb, opts, stats)
 }
 
+/// Exponent of the relative-depth weights of the side residual: a vertex
+/// at relative depth `s` (0 at the back silhouette, 1 at the front, at its
+/// height) takes `s^p` of the front's residual and `(1 - s)^p` of the
+/// back's, so a belly or a bust moves the skin near the front, not the
+/// arms or the torso's sides at mid depth.
+pub const DEPTH_FALLOFF: i32 = 2;
+
+/// The smallest and largest crossing of the horizontal line at height `y`
+/// with the closed polygon `p` (first coordinate), if it crosses.
+pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
+    let n = p.len();
+    let mut span: Option<(f64, f64)> = None;
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
+            continue;
+        }
+        let x = a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+        span = Some(span.map_or((x, x), |(l, h)| (l.min(x), h.max(x))));
+    }
+    span
+}
+
 /// One side (depth-only) pass from `positions`: the side outline of the
 /// fitted skin onto the sketched side profile. Only points where the
 /// outline is steep (|dy/ds| >= [`STEEP`]) are centres, each moving in
@@ -166,7 +189,11 @@ pub fn front_pass(
 /// neighbours: with only three side landmarks (head, heel, toe) their
 /// arc-length partners can be on another part of the body (a boy's chin
 /// partnered with the template's neck), which moved vertices by up to 10 %
-/// of the height in the MakeHuman study.
+/// of the height in the MakeHuman study. The depth change is a
+/// least-squares affine map of depth (the body's overall thickness and
+/// offset) plus the partners' residuals, interpolated along the outline by
+/// a thin-plate spline and applied with [`DEPTH_FALLOFF`] weights of the
+/// vertex's relative depth at its height ([`depth_span`] of the outline).
 pub fn side_pass(
     template: &Template,
     positions: &mut [[f64; 3]],
@@ -197,14 +224,45 @@ pub fn side_pass(
             values.push([level_partner(side, a[1], b[0]) - a[0]]);
         }
     }
-    let depth = Rbf::<2, 1>::fit(&centres, &values, opts.condition).map_err(|source| {
+    // a least-squares affine depth map z -> k z + c of the partners first
+    // (global thickness and offset), then the residuals as a thin-plate
+    // field applied with the vertex's relative depth at its height
+    let n = centres.len().max(1) as f64;
+    let (mz, mt) = centres
+        .iter()
+        .zip(&values)
+        .fold((0.0, 0.0), |(a, b), (c, v)| {
+            (a + c[0] / n, b + (c[0] + v[0]) / n)
+        });
+    let (mut szz, mut szt) = (0.0, 0.0);
+    for (c, v) in centres.iter().zip(&values) {
+        szz += (c[0] - mz).powi(2);
+        szt += (c[0] - mz) * (c[0] + v[0] - mt);
+    }
+    let k = if szz > 0.0 { szt / szz } else { 1.0 };
+    let affine = |z: f64| mt + k * (z - mz) - z;
+    let residual: Vec<[f64; 1]> = centres
+        .iter()
+        .zip(&values)
+        .map(|(c, v)| [v[0] - affine(c[0])])
+        .collect();
+    let depth = Rbf::<2, 1>::fit(&centres, &residual, opts.condition).map_err(|source| {
         TemplateError::Rbf {
             stage: "side depth warp",
             source,
         }
     })?;
     for p in positions.iter_mut() {
-        p[2] += depth.eval(&[p[2], p[1]])[0];
+        let (y, z) = (p[1], p[2]);
+        let r = match depth_span(&o, y) {
+            Some((zb, zf)) if zf > zb => {
+                let s = ((z - zb) / (zf - zb)).clamp(0.0, 1.0);
+                s.powi(DEPTH_FALLOFF) * depth.eval(&[zf, y])[0]
+                    + (1.0 - s).powi(DEPTH_FALLOFF) * depth.eval(&[zb, y])[0]
+            }
+            _ => depth.eval(&[z, y])[0],
+        };
+        p[2] += affine(z) + r;
     }
     stats.add(&depth);
     Ok(())
