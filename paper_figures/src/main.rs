@@ -15,6 +15,7 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod sasm;
 mod sketch;
 mod template;
 
@@ -30,6 +31,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(conv::figures());
     v.extend(sketch::figures());
     v.extend(template::figures());
+    v.extend(sasm::figures());
     v.extend(gallery::figures());
     v
 }

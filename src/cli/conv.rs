@@ -2,7 +2,8 @@
 //! (paper 003).
 //!
 //! * `pdesculpt conv build MODEL.json -o OUT.(obj|glb|stl|ply) [--resolution R]
-//!   [--polygonizer mt|sn]`: rebuilds a model file at any resolution.
+//!   [--polygonizer mt|sn] [--sampler fast|reference]`: rebuilds a model
+//!   file at any resolution.
 //! * `pdesculpt conv field --segment x0,y0,z0,x1,y1,z1 --weights w0,w1 --s S
 //!   --at x,y,z`: the closed-form field (and gradient) of one segment at a
 //!   point, beside the adaptive-quadrature value.
@@ -10,6 +11,7 @@
 use anyhow::{bail, Context};
 use pdesculpt::conv::kernel::{self, Segment};
 use pdesculpt::conv::model::{Model, Polygonizer};
+use pdesculpt::conv::sample::Sampler;
 use pdesculpt::mesh::topology::report;
 
 /// Arguments of `pdesculpt conv`.
@@ -34,6 +36,10 @@ enum Cmd {
         /// Polygoniser: mt (marching tetrahedra, the paper's) or sn (surface nets).
         #[arg(long, default_value = "mt")]
         polygonizer: String,
+        /// Field sampler: fast (narrow band over a segment hierarchy, node
+        /// values within 1e-4 T / 2) or reference (every node, every segment).
+        #[arg(long, default_value = "fast")]
+        sampler: String,
         #[command(flatten)]
         units: super::units::UnitArgs,
     },
@@ -77,6 +83,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             output,
             resolution,
             polygonizer,
+            sampler,
             units,
         } => {
             let method = match polygonizer.as_str() {
@@ -84,12 +91,18 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 "sn" => Polygonizer::SurfaceNets,
                 other => bail!("--polygonizer: expected mt or sn, got {other:?}"),
             };
+            let sampler_kind = match sampler.as_str() {
+                "fast" => Sampler::NarrowBand,
+                "reference" => Sampler::Reference,
+                other => bail!("--sampler: expected fast or reference, got {other:?}"),
+            };
             let text = std::fs::read_to_string(&model)
                 .with_context(|| format!("reading {}", model.display()))?;
             let m = Model::from_json(&text).with_context(|| format!("{}", model.display()))?;
             let t0 = std::time::Instant::now();
             let built = m.build()?;
-            let mesh = built.polygonize(resolution, m.options.threshold, method)?;
+            let mesh =
+                built.polygonize_with(resolution, m.options.threshold, method, sampler_kind)?;
             let secs = t0.elapsed().as_secs_f64();
             pdesculpt::conv::sample::check_f32_output(&mesh)?;
             let unit = units.write_input(&mesh, &output)?;
@@ -118,6 +131,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     "triangles": mesh.triangles.len(),
                     "vertices": mesh.positions.len(),
                     "topology": topo,
+                    "sampler": sampler,
                     "seconds": secs,
                     "components": comps,
                 }))?;

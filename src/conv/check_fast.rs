@@ -277,6 +277,61 @@ fn regression_checks(out: &mut Vec<Check>) {
     );
 }
 
+/// Projected gradient of $\min_{\lambda \ge 0} \|\mathbf F\lambda - T\|^2$
+/// at the fitted `lambda` of a sketch, over $\max_i |(\mathbf F^T T)_i|$,
+/// recomputed from the field matrix (independent of the solver's own test).
+pub fn fit_kkt_residual(sk: &sketch::Sketch) -> f64 {
+    use nalgebra::DVector;
+    let pts: Vec<[f64; 3]> = sk.polygon.iter().map(|p| [p[0], p[1], 0.0]).collect();
+    let f = super::fit::field_matrix(&sk.segments, &pts, sk.s);
+    let x = DVector::from_column_slice(&sk.fit.lambda);
+    let c = f.transpose() * DVector::from_element(pts.len(), sk.threshold);
+    let g = f.transpose() * (&f * &x) - &c;
+    let worst = (0..x.len())
+        .map(|i| {
+            if x[i] > 0.0 {
+                g[i].abs()
+            } else {
+                (-g[i]).max(0.0)
+            }
+        })
+        .fold(0.0, f64::max);
+    worst / c.amax().max(f64::MIN_POSITIVE)
+}
+
+fn hildreth_checks(out: &mut Vec<Check>) {
+    let built = Model::from_json(MODELS[3].1).and_then(|m| m.build());
+    let (measured, note) = match built {
+        Ok(b) => {
+            let mut worst = 0.0f64;
+            let mut notes = Vec::new();
+            for c in &b.components {
+                let f = &c.sketch.fit;
+                let r = fit_kkt_residual(&c.sketch);
+                worst = worst.max(if f.converged { r } else { f64::INFINITY });
+                notes.push(format!("{} {} sweeps {r:.1e}", c.name, f.iterations));
+            }
+            (worst, notes.join(", "))
+        }
+        Err(e) => (f64::INFINITY, e.to_string()),
+    };
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "sec 3.3 Hildreth-d'Esopo",
+            "conv.fit.hildreth_converges_teddy",
+            Kind::Threshold,
+            measured,
+            super::fit::HILDRETH_KKT_STOP,
+        )
+        .note(format!(
+            "teddy strokes: optimality (KKT) residual / max|F^T T| of the fitted lambda, infinite when the \
+             solver hit its sweep cap (5 of 6 strokes before the subspace step, issue 16): {note}"
+        )),
+    );
+}
+
 /// The fast-pipeline checks (registered through `conv::check::checks`).
 pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
@@ -284,5 +339,6 @@ pub fn checks() -> Vec<Check> {
     bound_checks(&mut out);
     incremental_checks(&mut out);
     regression_checks(&mut out);
+    hildreth_checks(&mut out);
     out
 }

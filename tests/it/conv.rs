@@ -626,6 +626,7 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
     for (flag, val, needle) in [
         ("--resolution", "2", "resolution"),
         ("--polygonizer", "xx", "polygonizer"),
+        ("--sampler", "xx", "sampler"),
     ] {
         let out = pdesculpt(&[
             "conv",
@@ -698,6 +699,88 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
         a.extend(args);
         assert_clear_error(&pdesculpt(&a), needle);
     }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// Issue 16: Hildreth-d'Esopo ran into its 20,000-sweep cap on 5 of the 6
+/// distinct teddy strokes (normal equations with condition numbers up to
+/// 3e12). With the subspace step every stroke converges, its optimality
+/// residual recomputed from the field matrix is below the stopping rule,
+/// and the fit is as good as Lawson-Hanson's exact NNLS.
+#[test]
+fn hildreth_converges_on_every_teddy_stroke() {
+    use pdesculpt::conv::check_fast::fit_kkt_residual;
+    use pdesculpt::conv::fit::{Solver, HILDRETH_KKT_STOP, HILDRETH_MAX_SWEEPS};
+    let m = Model::from_json(include_str!("../../data/conv/teddy.json")).expect("teddy");
+    let b = m.build().expect("build");
+    for c in &b.components {
+        let f = &c.sketch.fit;
+        assert_eq!(f.solver, Solver::HildrethDEsopo);
+        assert!(
+            f.converged && f.iterations < HILDRETH_MAX_SWEEPS,
+            "{}: {} sweeps, converged {}",
+            c.name,
+            f.iterations,
+            f.converged
+        );
+        let kkt = fit_kkt_residual(&c.sketch);
+        assert!(kkt <= HILDRETH_KKT_STOP, "{}: KKT residual {kkt:e}", c.name);
+    }
+    // the same optimum as the exact active-set solver
+    let mut lh = m.clone();
+    lh.options.solver = Solver::LawsonHanson;
+    let b2 = lh.build().expect("build (Lawson-Hanson)");
+    for (c, d) in b.components.iter().zip(&b2.components) {
+        let (h, l) = (c.sketch.fit.rms_rel_error, d.sketch.fit.rms_rel_error);
+        assert!(
+            h <= l * (1.0 + pdesculpt::conv::check::SOLVER_SLACK),
+            "{}: Hildreth rms {h:e} above Lawson-Hanson {l:e}",
+            c.name
+        );
+    }
+}
+
+/// `conv build --sampler fast|reference`: both samplers write the same
+/// surface (corresponding vertices within the fast-against-reference
+/// tolerance of the model size) with the same topology report.
+#[test]
+fn cli_build_sampler_flag_fast_matches_reference() {
+    use crate::cli::{pdesculpt, tmpdir};
+    use pdesculpt::conv::check_fast::{corresponding_distance, mesh_size, FAST_MESH_TOLERANCE};
+    let d = tmpdir("conv-sampler");
+    let mut outputs = Vec::new();
+    for sampler in ["fast", "reference"] {
+        let o = d.join(format!("{sampler}.obj"));
+        let out = pdesculpt(&[
+            "--json",
+            "conv",
+            "build",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/data/conv/blob.json"),
+            "-o",
+            o.to_str().expect("utf8"),
+            "--resolution",
+            "24",
+            "--sampler",
+            sampler,
+        ]);
+        assert!(
+            out.status.success(),
+            "{sampler}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+        assert_eq!(v["sampler"], sampler);
+        let mesh = pdesculpt::mesh::io::read(&o).expect("read the written mesh");
+        outputs.push((v["topology"].clone(), mesh));
+    }
+    let (fast, reference) = (&outputs[0], &outputs[1]);
+    assert_eq!(fast.0, reference.0, "topology reports differ");
+    assert_eq!(fast.0["watertight"], true);
+    let dist = corresponding_distance(&fast.1, &reference.1) / mesh_size(&reference.1);
+    assert!(
+        dist <= FAST_MESH_TOLERANCE,
+        "fast and reference meshes {dist:e} apart (relative)"
+    );
     let _ = std::fs::remove_dir_all(&d);
 }
 
