@@ -59,11 +59,9 @@ fn vstack(images: &[Image]) -> Image {
 }
 
 fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
-    let opts = FitOptions {
-        condition: false,
-        on_miss: OnMiss::Report,
-        ..Default::default()
-    };
+    let mut opts = FitOptions::default();
+    opts.condition = false;
+    opts.on_miss = OnMiss::Report;
     let mut rows_img = Vec::new();
     let mut data = Vec::new();
     for name in ["male->fat", "male->boy", "female->pregnant"] {
@@ -112,11 +110,14 @@ fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
                 .collect();
             panels.push(Image::hstack(&views, [255; 4]));
         }
-        let bbox = rows.iter().find(|r| r.method == "bbox");
+        let bbox = rows
+            .iter()
+            .find(|r| r.method == "bbox")
+            .ok_or_else(|| anyhow::anyhow!("{name}: the study has no bbox row"))?;
         let mut captions = vec![format!(
             "template\nbbox baseline: {:.2} / {:.2} %",
-            bbox.map_or(f64::NAN, |r| 100.0 * r.rms_rel),
-            bbox.map_or(f64::NAN, |r| 100.0 * r.max_rel)
+            100.0 * bbox.rms_rel,
+            100.0 * bbox.max_rel
         )];
         for r in rows.iter().filter(|r| r.method != "bbox") {
             let prof: Vec<String> = r

@@ -135,6 +135,11 @@ impl TemplatePart {
                 "the template axis is degenerate or fewer than 2 sections asked".into(),
             ));
         }
+        if !(t0.is_finite() && t1.is_finite() && t0 < t1) {
+            return Err(bad(format!(
+                "section range [{t0}, {t1}] is not an increasing finite range"
+            )));
+        }
         let n = [axis[0] / len, axis[1] / len, axis[2] / len];
         let e1 = sub(
             e1,
@@ -260,7 +265,8 @@ fn gec_section(
 ) -> Result<SectionSpec, TemplateError> {
     let frame = Frame::new(s.centre, s.e1, s.e2).map_err(|e| bad(e.to_string()))?;
     let pts: Vec<[f64; 3]> = plane.iter().map(|p| frame.place(p[0], p[1])).collect();
-    let mut opts = gec::fit::FitOptions::new(terms.clamp(1, (plane.len() - 1) / 2));
+    let most = (plane.len().saturating_sub(1) / 2).max(1);
+    let mut opts = gec::fit::FitOptions::new(terms.clamp(1, most));
     opts.frame = gec::fit::FrameChoice::Given(frame);
     let rep = gec::fit::fit(&pts, &opts).map_err(|e| bad(format!("GEC fit: {e}")))?;
     Ok(SectionSpec {
