@@ -6,15 +6,15 @@
 //! What is timed: the whole low level of [`fit`] (sketch validation,
 //! landmarks on both outlines, the Umeyama similarity, arc-length
 //! correspondence, the dense thin-plate LU solve with its residual, and the
-//! warp of every template vertex). Not timed: extracting the template's and
-//! the target's outlines (done once outside the loop; the fit's outline
-//! callback returns the cached template outline), and the condition number
-//! (off in both).
+//! warp of every template vertex), and the fit's self-check: the template's
+//! outline and the fitted mesh's outline extracted (`mesh_outline`) and
+//! measured against the sketch, plus any correction pass. Not timed: the
+//! target's outline (the sketch), and the condition number (off in both).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::template::measure::mesh_outline;
 use pdesculpt::template::study::{makehuman_template, CASES};
-use pdesculpt::template::{fit, FitOptions, Sketch, TemplateError, View};
+use pdesculpt::template::{fit, FitOptions, Sketch, View};
 use std::hint::black_box;
 
 fn bench(c: &mut Criterion) {
@@ -34,9 +34,6 @@ fn bench(c: &mut Criterion) {
         ..Default::default()
     };
     let t_front = mesh_outline(&template.skin, View::Front).expect("template outline");
-    let cached = |_: &pdesculpt::mesh::Mesh, _: View| -> Result<Vec<[f64; 2]>, TemplateError> {
-        Ok(t_front.clone())
-    };
     let mut ours = FitOptions::default();
     ours.condition = false;
     let mut dense = ours.clone();
@@ -54,10 +51,10 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("template_low_makehuman");
     g.sample_size(10);
     g.bench_function("fit_low_400_centres", |b| {
-        b.iter(|| black_box(fit(&template, &sketch, &ours, &cached).expect("fit")))
+        b.iter(|| black_box(fit(&template, &sketch, &ours, &mesh_outline).expect("fit")))
     });
     g.bench_function("fit_low_all_outline_centres", |b| {
-        b.iter(|| black_box(fit(&template, &sketch, &dense, &cached).expect("fit")))
+        b.iter(|| black_box(fit(&template, &sketch, &dense, &mesh_outline).expect("fit")))
     });
     g.finish();
     // centre-count sweep (same fit), to see where the time goes
@@ -66,10 +63,10 @@ fn bench(c: &mut Criterion) {
     for n in [200, 399, 486, 800] {
         let mut o = ours.clone();
         o.front_centres = n;
-        let r = fit(&template, &sketch, &o, &cached).expect("fit");
+        let r = fit(&template, &sketch, &o, &mesh_outline).expect("fit");
         eprintln!("{n} requested: {:?}", r.levels[0].0);
         g.bench_function(format!("fit_low_{n}"), |b| {
-            b.iter(|| black_box(fit(&template, &sketch, &o, &cached).expect("fit")))
+            b.iter(|| black_box(fit(&template, &sketch, &o, &mesh_outline).expect("fit")))
         });
     }
     g.finish();

@@ -18,6 +18,7 @@ mod pde6;
 mod plate;
 mod sasm;
 mod sketch;
+mod template;
 
 use common::{Ctx, Figure};
 
@@ -30,6 +31,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(ode6::figures());
     v.extend(conv::figures());
     v.extend(sketch::figures());
+    v.extend(template::figures());
     v.extend(sasm::figures());
     v.extend(edit::figures());
     v.extend(gallery::figures());

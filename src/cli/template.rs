@@ -11,7 +11,7 @@ use pdesculpt::profile::{read_json, read_svg, View};
 use pdesculpt::template::measure::{mesh_outline, profile_errors, ViewError};
 use pdesculpt::template::sections::SectionSketch;
 use pdesculpt::template::study::makehuman_template;
-use pdesculpt::template::{fit, FitOptions, LevelReport, Sketch, Template};
+use pdesculpt::template::{fit, FitOptions, LevelReport, OnMiss, Sketch, Template};
 use std::path::{Path, PathBuf};
 
 const FORMATS: &str = "\
@@ -52,6 +52,11 @@ pub struct FitArgs {
     /// Output mesh (.obj, .glb, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Write the mesh even when a fitted profile stays farther than 0.5 % of
+    /// the height from the sketch (default: fail with an error, no output);
+    /// the miss is reported (stderr, and `within: false` in --json).
+    #[arg(long)]
+    pub accept_miss: bool,
 }
 
 #[derive(serde::Serialize)]
@@ -104,7 +109,11 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             .with_context(|| format!("{}: invalid sections JSON", s.display()))?;
         sketch.sections = f.sections;
     }
-    let r = fit(&template, &sketch, &FitOptions::default(), &mesh_outline)?;
+    let mut opts = FitOptions::default();
+    if a.accept_miss {
+        opts.on_miss = OnMiss::Report;
+    }
+    let r = fit(&template, &sketch, &opts, &mesh_outline)?;
     let errors = profile_errors(&template, r.last(), &sketch)?;
     let mut out = template.mesh.clone();
     out.positions = r.last().to_vec();
@@ -116,14 +125,26 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         profile_errors: errors,
         seconds: t0.elapsed().as_secs_f64(),
     };
+    for l in &report.levels {
+        for v in l.profiles.iter().filter(|v| !v.within) {
+            eprintln!(
+                "warning: {} level: {} profile {:.2} % of the height off the sketch (tolerance {:.2} %), written anyway (--accept-miss)",
+                l.level.name(),
+                v.view.name(),
+                100.0 * v.max_rel,
+                100.0 * opts.tolerance
+            );
+        }
+    }
     if json {
         super::print_json(&report)?;
     } else {
         for l in &report.levels {
             eprintln!(
-                "{:?}: {} centres, condition {}, residual {:.1e}, max move {:.4}, {:.2} s",
-                l.level,
+                "{}: {} centres, {} correction passes, condition {}, residual {:.1e}, max move {:.4}, {:.2} s",
+                l.level.name(),
                 l.centres,
+                l.passes,
                 l.condition.map_or("-".into(), |c| format!("{c:.3e}")),
                 l.residual,
                 l.max_displacement,

@@ -13,6 +13,10 @@ use crate::check::{tol, Check, Kind};
 
 /// Profile error allowed by issue 12: 0.5 % of the height.
 pub const PROFILE_REL: f64 = 5e-3;
+/// TBSM round trip on the MakeHuman foot: Hausdorff distance of the new
+/// sections (10-term GECs) from the foot's own, over the largest section's
+/// diameter.
+pub const TBSM_REL: f64 = 0.03;
 
 fn check(eq: &str, name: &str, kind: Kind, measured: f64, tolerance: f64, note: &str) -> Check {
     let mut c = Check::new("template", "000", eq, name, kind, measured, tolerance);
@@ -127,6 +131,7 @@ fn figure_checks(out: &mut Vec<Check>) {
 fn study_checks(out: &mut Vec<Check>) {
     let opts = FitOptions {
         condition: false,
+        on_miss: super::OnMiss::Report,
         ..Default::default()
     };
     for name in ["male->fat", "male->boy", "female->pregnant"] {
@@ -158,9 +163,20 @@ fn study_checks(out: &mut Vec<Check>) {
     }
 }
 
+fn tbsm_checks(out: &mut Vec<Check>) {
+    let m = super::tbsm::makehuman_left_foot()
+        .and_then(|(mesh, a, b)| {
+            super::tbsm::TemplatePart::from_mesh(&mesh, a, b, [1.0, 0.0, 0.0], (0.5, 0.95, 6))
+        })
+        .and_then(|t| super::tbsm::round_trip_error(&t, 10))
+        .unwrap_or(f64::INFINITY);
+    out.push(check("sec 5.4", "tbsm-foot-round-trip", Kind::Threshold, m, TBSM_REL, "MakeHuman left foot, 6 forefoot sections: an ellipse part with their extents, TBSM-replaced by the foot's sections, gets them back (Hausdorff / largest section diameter)"));
+}
+
 /// Every check of the family.
 pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
+    tbsm_checks(&mut out);
     rbf_checks(&mut out);
     figure_checks(&mut out);
     study_checks(&mut out);

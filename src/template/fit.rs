@@ -2,8 +2,8 @@
 
 use super::landmarks::{self, arc_fractions, correspond, Scheme, Similarity};
 use super::polygon::{bbox, validated};
-use super::rbf::Rbf;
-use super::sections::{self, SectionSketch};
+use super::refine::{self, OnMiss, ViewFit, WarpStats};
+use super::sections::{self, SectionMatch, SectionSketch};
 use super::{OutlineFn, TemplateError, View};
 use crate::mesh::Mesh;
 use std::time::Instant;
@@ -86,6 +86,22 @@ pub struct FitOptions {
     pub side_scheme: Scheme,
     /// Measure each RBF system's condition number (default true).
     pub condition: bool,
+    /// Largest profile error allowed, relative to the sketch's height
+    /// (default [`super::check::PROFILE_REL`], 0.5 %).
+    pub tolerance: f64,
+    /// Correction passes per level while a view misses the tolerance
+    /// (default 3; a pass that does not reduce the miss is undone and ends
+    /// the corrections).
+    pub passes: usize,
+    /// What to do when a view still misses after the passes (default
+    /// [`OnMiss::Fail`]).
+    pub on_miss: OnMiss,
+    /// How section points correspond at the high level (default
+    /// [`SectionMatch::Radial`]).
+    pub section_match: SectionMatch,
+    /// Zero-displacement anchors of the high level on skin vertices away
+    /// from the sections' heights (default 300; 0: none).
+    pub band_anchors: usize,
 }
 
 impl Default for FitOptions {
@@ -99,6 +115,11 @@ impl Default for FitOptions {
             front_scheme: Scheme::Human,
             side_scheme: Scheme::Side,
             condition: true,
+            tolerance: super::check::PROFILE_REL,
+            passes: 3,
+            on_miss: OnMiss::Fail,
+            section_match: SectionMatch::Radial,
+            band_anchors: 300,
         }
     }
 }
@@ -110,6 +131,17 @@ pub enum Level {
     Low,
     Medium,
     High,
+}
+
+impl Level {
+    /// Lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Level::Low => "low",
+            Level::Medium => "medium",
+            Level::High => "high",
+        }
+    }
 }
 
 /// What one level did.
@@ -124,6 +156,10 @@ pub struct LevelReport {
     pub residual: f64,
     /// Largest displacement applied at this level.
     pub max_displacement: f64,
+    /// Correction passes run after the level's first warp.
+    pub passes: usize,
+    /// The fitted outlines measured against the sketch after this level.
+    pub profiles: Vec<ViewFit>,
     pub seconds: f64,
 }
 
@@ -209,7 +245,7 @@ pub fn level_partner(p: &[[f64; 2]], y: f64, near: f64) -> f64 {
     best
 }
 
-fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
+pub(crate) fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
     a.iter()
         .zip(b)
         .map(|(p, q)| {
@@ -220,7 +256,11 @@ fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
 
 /// Fits the template to the sketch: the low level always, the medium level
 /// when the sketch has a side profile, the high level when it also has key
-/// cross-sections. `outline` gives a mesh's outline in a view.
+/// cross-sections. `outline` gives a mesh's outline in a view. After every
+/// level the fitted outlines are measured against the sketch and corrected
+/// ([`refine`]); a view that stays off by more than
+/// [`FitOptions::tolerance`] fails the fit unless [`FitOptions::on_miss`]
+/// is [`OnMiss::Report`].
 pub fn fit(
     template: &Template,
     sketch: &Sketch,
@@ -228,6 +268,15 @@ pub fn fit(
     outline: &OutlineFn,
 ) -> Result<FitResult, TemplateError> {
     let t0 = Instant::now();
+    if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
+        return Err(TemplateError::BadProfile {
+            what: "the fit options".into(),
+            problem: format!(
+                "tolerance must be finite and positive, got {}",
+                opts.tolerance
+            ),
+        });
+    }
     let front = validated("the sketched front profile", &sketch.front)?;
     let side = match &sketch.side {
         Some(s) => Some(validated("the sketched side profile", s)?),
@@ -256,16 +305,6 @@ pub fn fit(
     let zc = 0.5 * (blo[0] + bhi[0]);
     let aligned_outline: Vec<[f64; 2]> = t_front.iter().map(|&p| sim.apply(p)).collect();
     let (ca, cb) = correspond(&aligned_outline, &lt, &front, &ls, opts.front_centres);
-    let values: Vec<[f64; 2]> = ca
-        .iter()
-        .zip(&cb)
-        .map(|(a, b)| [b[0] - a[0], b[1] - a[1]])
-        .collect();
-    let warp =
-        Rbf::<2, 2>::fit(&ca, &values, opts.condition).map_err(|source| TemplateError::Rbf {
-            stage: "front warp",
-            source,
-        })?;
     let before: Vec<[f64; 3]> = template
         .mesh
         .positions
@@ -275,97 +314,103 @@ pub fn fit(
             [q[0], q[1], sim.scale * (p[2] - zc) + zc]
         })
         .collect();
-    let low: Vec<[f64; 3]> = before
-        .iter()
-        .map(|p| {
-            let d = warp.eval(&[p[0], p[1]]);
-            [p[0] + d[0], p[1] + d[1], p[2]]
-        })
-        .collect();
+    let mut low = before.clone();
+    let mut stats = WarpStats::default();
+    refine::front_warp(&mut low, &ca, &cb, opts, &mut stats)?;
+    let mut front_err = refine::measure(template, &low, View::Front, &front, outline)?;
+    let mut passes = 0;
+    // correction passes while off; a pass that does not improve is undone
+    while front_err > opts.tolerance && passes < opts.passes {
+        let mut next = low.clone();
+        refine::front_pass(template, &mut next, &front, opts, outline, &mut stats)?;
+        let err = refine::measure(template, &next, View::Front, &front, outline)?;
+        if err >= front_err {
+            break;
+        }
+        (low, front_err) = (next, err);
+        passes += 1;
+    }
+    let front_fit = refine::view_fit(View::Front, front_err, opts);
+    refine::enforce(Level::Low, &[front_fit], passes, opts)?;
     let mut levels = vec![(
         LevelReport {
             level: Level::Low,
-            centres: warp.len(),
-            condition: warp.condition,
-            residual: warp.residual,
+            centres: stats.centres,
+            condition: stats.condition,
+            residual: stats.residual,
             max_displacement: max_norm(&before, &low),
+            passes,
+            profiles: vec![front_fit],
             seconds: t0.elapsed().as_secs_f64(),
         },
         low,
     )];
-    let Some(side) = side else {
-        return Ok(FitResult {
-            alignment: sim,
-            depth_centre: zc,
-            levels,
-        });
+    let done = |levels: Vec<(LevelReport, Vec<[f64; 3]>)>| FitResult {
+        alignment: sim,
+        depth_centre: zc,
+        levels,
     };
-    // medium: depth only, from the side outline of the low-level model
+    let Some(side) = side else {
+        return Ok(done(levels));
+    };
+    // medium: depth only, so the front projection (and its fit) is kept
     let t1 = Instant::now();
     let low = &levels[0].1;
-    let low_skin = template.skin_at(low);
-    let l_side = outline_of(outline, &low_skin, View::Side)?;
-    let (lt, ls) = matched_landmarks(View::Side, opts.side_scheme, &l_side, &side)?;
-    let (ca, cb) = correspond(&l_side, &lt, &side, &ls, opts.side_centres);
-    // depth only: where the low outline is steep (|dy/ds| >= STEEP) the
-    // partner is the sketch's crossing of the same height nearest to the
-    // arc-length partner; on shallow stretches (soles, the top of the head,
-    // under a belly) the arc-length partner's depth
-    let m = ca.len();
-    let values: Vec<[f64; 1]> = (0..m)
-        .map(|i| {
-            let (a, b) = (ca[i], cb[i]);
-            let (p, q) = (ca[(i + m - 1) % m], ca[(i + 1) % m]);
-            let len = ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2))
-                .sqrt()
-                .max(f64::MIN_POSITIVE);
-            let z = if ((q[1] - p[1]) / len).abs() >= STEEP {
-                level_partner(&side, a[1], b[0])
-            } else {
-                b[0]
-            };
-            [z - a[0]]
-        })
-        .collect();
-    let depth =
-        Rbf::<2, 1>::fit(&ca, &values, opts.condition).map_err(|source| TemplateError::Rbf {
-            stage: "side depth warp",
-            source,
-        })?;
-    let medium: Vec<[f64; 3]> = low
-        .iter()
-        .map(|p| [p[0], p[1], p[2] + depth.eval(&[p[2], p[1]])[0]])
-        .collect();
+    let mut medium = low.clone();
+    let mut stats = WarpStats::default();
+    refine::side_pass(template, &mut medium, &side, opts, outline, &mut stats)?;
+    let mut side_err = refine::measure(template, &medium, View::Side, &side, outline)?;
+    let mut passes = 0;
+    while side_err > opts.tolerance && passes < opts.passes {
+        let mut next = medium.clone();
+        refine::side_pass(template, &mut next, &side, opts, outline, &mut stats)?;
+        let err = refine::measure(template, &next, View::Side, &side, outline)?;
+        if err >= side_err {
+            break;
+        }
+        (medium, side_err) = (next, err);
+        passes += 1;
+    }
+    let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
+    refine::enforce(Level::Medium, &fits, passes, opts)?;
     let rep = LevelReport {
         level: Level::Medium,
-        centres: depth.len(),
-        condition: depth.condition,
-        residual: depth.residual,
+        centres: stats.centres,
+        condition: stats.condition,
+        residual: stats.residual,
         max_displacement: max_norm(low, &medium),
+        passes,
+        profiles: fits,
         seconds: t1.elapsed().as_secs_f64(),
     };
     levels.push((rep, medium));
     if sketch.sections.is_empty() {
-        return Ok(FitResult {
-            alignment: sim,
-            depth_centre: zc,
-            levels,
-        });
+        return Ok(done(levels));
     }
     let t2 = Instant::now();
     let medium = &levels[1].1;
     let (rep, high) =
         sections::fit_sections(template, medium, &front, &side, &sketch.sections, opts)?;
+    let fits = vec![
+        refine::view_fit(
+            View::Front,
+            refine::measure(template, &high, View::Front, &front, outline)?,
+            opts,
+        ),
+        refine::view_fit(
+            View::Side,
+            refine::measure(template, &high, View::Side, &side, outline)?,
+            opts,
+        ),
+    ];
+    refine::enforce(Level::High, &fits, 0, opts)?;
     levels.push((
         LevelReport {
+            profiles: fits,
             seconds: t2.elapsed().as_secs_f64(),
             ..rep
         },
         high,
     ));
-    Ok(FitResult {
-        alignment: sim,
-        depth_centre: zc,
-        levels,
-    })
+    Ok(done(levels))
 }

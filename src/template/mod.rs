@@ -34,13 +34,16 @@ pub mod landmarks;
 pub mod measure;
 pub mod polygon;
 pub mod rbf;
+pub mod refine;
 pub mod sections;
 pub mod shapes;
 pub mod study;
+pub mod tbsm;
 
 pub use fit::{fit, FitOptions, FitResult, Level, LevelReport, Sketch, Template};
 pub use landmarks::{Scheme, Similarity};
 pub use rbf::{Rbf, RbfError};
+pub use refine::{OnMiss, ViewFit};
 
 use thiserror::Error;
 
@@ -65,6 +68,14 @@ pub enum TemplateError {
     },
     #[error("the template has no closed outline in the {view} view: {problem}")]
     NoOutline { view: String, problem: String },
+    #[error("the {level} level's {view} profile is {percent:.2} % of the height off the sketch after {passes} correction passes (tolerance {tolerance:.2} %): the sketch is too far from the template for this level")]
+    ProfileMiss {
+        level: &'static str,
+        view: String,
+        percent: f64,
+        tolerance: f64,
+        passes: usize,
+    },
     #[error("cross-section at y = {y}: {problem}")]
     Section { y: f64, problem: String },
     #[error("{stage}: {source}")]

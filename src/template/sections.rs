@@ -4,14 +4,20 @@
 //! Each sketched loop (points in the horizontal plane, `(x, z)`) is fitted by
 //! a generalized elliptic curve ([`crate::curve::gec::fit`]) and sampled; the
 //! model is sliced at the same height ([`crate::mesh::slice`]); each sketched
-//! loop is paired with the model loop whose centroid is nearest, and points
-//! correspond by arc-length fraction from each loop's front-most point
-//! (largest z), both loops counter-clockwise in `(x, z)`. Two 3D biharmonic
-//! splines ($\varphi = r$, linear part) carry the x and z displacements of
-//! the section points to every vertex, with zero x displacement at vertices
-//! on the front silhouette and zero z displacement at vertices on the side
-//! silhouette (away from the sections), so the primary and secondary
-//! profiles stay where the lower levels put them.
+//! loop is paired with the model loop whose centroid is nearest. Points
+//! correspond ([`SectionMatch`]) either radially (default: each model point
+//! moves along the ray from its loop's centroid to where that ray crosses
+//! the sketched loop, so a bulge moves the skin outwards instead of sliding
+//! it around the loop) or by arc-length fraction from each loop's front-most
+//! point (largest z). Two 3D biharmonic splines ($\varphi = r$, linear part)
+//! carry the x and z displacements of the section points to every vertex,
+//! with zero x displacement at vertices on the front silhouette and zero z
+//! displacement at vertices on the side silhouette (away from the
+//! sections), so the primary and secondary profiles stay where the lower
+//! levels put them, and zero displacement at vertices more than
+//! [`BAND_MARGIN`] of the height above or below the outermost sections, so
+//! the key sections only reshape the part they cut (the biharmonic spline
+//! is global: without these anchors a torso section moves head and feet).
 
 use super::fit::{FitOptions, Level, LevelReport, Template};
 use super::polygon::{boundary_distance, cumulative, point_at, validated};
@@ -26,6 +32,61 @@ pub const ANCHOR_BAND: f64 = 3e-3;
 /// Anchors closer than this fraction of the height to a section's height
 /// are dropped (the section decides there).
 pub const SECTION_CLEARANCE: f64 = 0.01;
+/// Vertices farther than this fraction of the height below the lowest or
+/// above the highest section do not move at the high level.
+pub const BAND_MARGIN: f64 = 0.04;
+
+/// How the points of a model section correspond to the sketched loop.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SectionMatch {
+    /// Along rays from the model loop's centroid.
+    Radial,
+    /// By arc-length fraction from each loop's front-most point.
+    ArcLength,
+}
+
+/// Where the ray from `c` through `p` crosses the closed polygon `poly`
+/// (the crossing nearest to `p` along the ray); the nearest point of the
+/// polygon when the ray misses it.
+pub fn ray_partner(poly: &[[f64; 2]], c: [f64; 2], p: [f64; 2]) -> [f64; 2] {
+    let d = [p[0] - c[0], p[1] - c[1]];
+    let n = poly.len();
+    let mut best: Option<(f64, [f64; 2])> = None;
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + 1) % n]);
+        let e = [b[0] - a[0], b[1] - a[1]];
+        let den = d[0] * e[1] - d[1] * e[0];
+        if den.abs() <= f64::EPSILON * (d[0].hypot(d[1]) * e[0].hypot(e[1])) {
+            continue;
+        }
+        let w = [a[0] - c[0], a[1] - c[1]];
+        let t = (w[0] * e[1] - w[1] * e[0]) / den;
+        let u = (w[0] * d[1] - w[1] * d[0]) / den;
+        if t > 0.0
+            && (0.0..=1.0).contains(&u)
+            && best.is_none_or(|(bt, _)| (t - 1.0).abs() < (bt - 1.0).abs())
+        {
+            best = Some((t, [c[0] + t * d[0], c[1] + t * d[1]]));
+        }
+    }
+    if let Some((_, q)) = best {
+        return q;
+    }
+    let mut near = (f64::INFINITY, p);
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + 1) % n]);
+        let e = [b[0] - a[0], b[1] - a[1]];
+        let l2 = (e[0] * e[0] + e[1] * e[1]).max(f64::MIN_POSITIVE);
+        let t = (((p[0] - a[0]) * e[0] + (p[1] - a[1]) * e[1]) / l2).clamp(0.0, 1.0);
+        let q = [a[0] + t * e[0], a[1] + t * e[1]];
+        let dd = (q[0] - p[0]).hypot(q[1] - p[1]);
+        if dd < near.0 {
+            near = (dd, q);
+        }
+    }
+    near.1
+}
 
 /// One key cross-section: its height and its loops as `(x, z)` points.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -125,7 +186,13 @@ pub fn section_pairs(
         }
         used[best] = true;
         let a = from_front(&model[best], opts.section_points);
-        let b = from_front(&target, opts.section_points);
+        let b = match opts.section_match {
+            SectionMatch::ArcLength => from_front(&target, opts.section_points),
+            SectionMatch::Radial => {
+                let c = centroid(&model[best]);
+                a.iter().map(|&p| ray_partner(&target, c, p)).collect()
+            }
+        };
         out.extend(a.iter().zip(&b).map(|(p, q)| ([p[0], s.y, p[1]], *q)));
     }
     Ok(out)
@@ -153,10 +220,32 @@ pub fn fit_sections(
         }
         pairs.extend(section_pairs(&skin, s, opts)?);
     }
+    let (ylo, yhi) = sections
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, u), s| {
+            (l.min(s.y), u.max(s.y))
+        });
+    let banded = opts.band_anchors > 0;
+    let in_band = |y: f64| !banded || (y > ylo - BAND_MARGIN * h && y < yhi + BAND_MARGIN * h);
     let clear = |y: f64| {
-        sections
+        in_band(y)
+            && sections
+                .iter()
+                .all(|s| (y - s.y).abs() > SECTION_CLEARANCE * h)
+    };
+    let band: Vec<[f64; 3]> = if banded {
+        let mut seen = std::collections::HashSet::new();
+        let all: Vec<[f64; 3]> = skin
+            .positions
             .iter()
-            .all(|s| (y - s.y).abs() > SECTION_CLEARANCE * h)
+            .filter(|p| !in_band(p[1]))
+            .filter(|p| seen.insert(p.map(f64::to_bits)))
+            .copied()
+            .collect();
+        let step = all.len().div_ceil(opts.band_anchors).max(1);
+        all.into_iter().step_by(step).collect()
+    } else {
+        Vec::new()
     };
     let anchors = |outline: &[[f64; 2]], proj: fn(&[f64; 3]) -> [f64; 2]| -> Vec<[f64; 3]> {
         let all: Vec<[f64; 3]> = skin
@@ -168,8 +257,10 @@ pub fn fit_sections(
         let step = all.len().div_ceil(opts.anchors.max(1)).max(1);
         all.into_iter().step_by(step).collect()
     };
-    let fa = anchors(front, |p| [p[0], p[1]]);
-    let sa = anchors(side, |p| [p[2], p[1]]);
+    let mut fa = anchors(front, |p| [p[0], p[1]]);
+    let mut sa = anchors(side, |p| [p[2], p[1]]);
+    fa.extend_from_slice(&band);
+    sa.extend_from_slice(&band);
     let field =
         |comp: usize, anch: &[[f64; 3]], stage: &'static str| -> Result<Rbf<3, 1>, TemplateError> {
             let mut c: Vec<[f64; 3]> = pairs.iter().map(|(p, _)| *p).collect();
@@ -204,6 +295,8 @@ pub fn fit_sections(
             condition,
             residual: dx.residual.max(dz.residual),
             max_displacement: maxd,
+            passes: 0,
+            profiles: Vec::new(),
             seconds: 0.0,
         },
         high,

@@ -20,5 +20,7 @@ mod profile;
 mod sasm;
 mod sketch;
 mod template;
+mod template_study;
+mod template_tbsm;
 mod tui;
 mod tui_e2e;
