@@ -22,6 +22,7 @@
 //! | `ode6` polyline points | [`POLYLINE_POINTS`], then `points * grid` work | |
 //! | `render --size` x views | [`RENDER_SIZE`], [`RENDER_VIEWS`], [`RENDER_PIXELS`] | |
 //! | `plate --grid`, `--dm-iterations` | [`PLATE_GRID`], [`PLATE_ITERATIONS`] | |
+//! | `sketch build --tolerance`, document `inputs.tolerance` | [`SKETCH_TOLERANCE`] ([`check_real`]) | also at most 1 % of the drawing's height |
 
 use thiserror::Error;
 
@@ -133,6 +134,36 @@ pub const PLATE_ITERATIONS: Range = Range {
     why: "distance-map iterations",
 };
 
+/// An inclusive range of a real parameter (a length, a tolerance).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RealRange {
+    pub min: f64,
+    pub max: f64,
+    pub why: &'static str,
+}
+
+/// `sketch build --tolerance` (SVG flattening, model units = metres); the
+/// sketch module also refuses more than 1 % of the drawing's height.
+pub const SKETCH_TOLERANCE: RealRange = RealRange {
+    min: 1e-9,
+    max: 1.0,
+    why: "SVG flattening tolerance in model units (metres)",
+};
+
+/// Checks a finite real `value` of `param` against `range`; returns it.
+pub fn check_real(param: &str, value: f64, range: RealRange) -> Result<f64, LimitError> {
+    if !(value >= range.min && value <= range.max) {
+        return Err(LimitError::OutOfRealRange {
+            param: param.to_string(),
+            value,
+            min: range.min,
+            max: range.max,
+            why: range.why,
+        });
+    }
+    Ok(value)
+}
+
 /// A parameter outside its range or an operation over budget.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum LimitError {
@@ -142,6 +173,16 @@ pub enum LimitError {
         value: String,
         min: u64,
         max: u64,
+        why: &'static str,
+    },
+    #[error(
+        "{param} = {value:e} is out of range: must be at least {min:e} and at most {max:e} ({why})"
+    )]
+    OutOfRealRange {
+        param: String,
+        value: f64,
+        min: f64,
+        max: f64,
         why: &'static str,
     },
     #[error("{param} = {value}: {what} would need about {estimate:.3e} {unit}, over the budget of {budget:.3e} {unit}; reduce {param}")]

@@ -15,6 +15,7 @@ mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
+mod sasm;
 mod sketch;
 
 use common::{Ctx, Figure};
@@ -28,6 +29,7 @@ fn all_figures() -> Vec<Figure> {
     v.extend(ode6::figures());
     v.extend(conv::figures());
     v.extend(sketch::figures());
+    v.extend(sasm::figures());
     v.extend(gallery::figures());
     v
 }

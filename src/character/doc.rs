@@ -38,9 +38,12 @@
 //! (circle, ellipse or GEC coefficients in that frame), its surface family
 //! and whether its start or end is a free (closed) end.
 //!
-//! `edits` and `cursor` are reserved for the edit log of the local-modeling
-//! issue (an ordered list of typed edits, `cursor` edits applied); version 1
-//! accepts only an empty log.
+//! `edits` is the edit log (local modeling, paper 000 sec 5): an ordered list
+//! of typed edits ([`crate::character::edit::Edit`], tagged by `"op"`), of
+//! which the first `cursor` are active (undo/redo move the cursor). Building
+//! replays the active edits on the stored (or derived) parts; the stored
+//! parts themselves are never changed by an edit. A document with an empty
+//! log (every version-1 document written before the log was typed) is valid.
 
 use crate::mesh::io::write_atomic;
 use serde::{Deserialize, Serialize};
@@ -242,9 +245,9 @@ pub struct CharacterDoc {
     pub transitions: Vec<TransitionSpec>,
     #[serde(default)]
     pub removed_parts: Vec<RemovedPart>,
-    /// Reserved for the edit log (typed later); must be empty in version 1.
+    /// The edit log (see [`crate::character::edit`]).
     #[serde(default)]
-    pub edits: Vec<serde_json::Value>,
+    pub edits: Vec<crate::character::edit::Edit>,
     #[serde(default)]
     pub cursor: usize,
 }
@@ -312,10 +315,16 @@ impl CharacterDoc {
                 self.version
             )));
         }
-        if !self.edits.is_empty() || self.cursor != 0 {
-            return Err(DocError::Invalid(
-                "the edit log is reserved in version 1: edits must be empty and cursor 0".into(),
-            ));
+        if self.cursor > self.edits.len() {
+            return Err(DocError::Invalid(format!(
+                "cursor {} is past the end of the edit log ({} edits)",
+                self.cursor,
+                self.edits.len()
+            )));
+        }
+        for (i, e) in self.edits.iter().enumerate() {
+            crate::character::edit::validate_params(e)
+                .map_err(|err| DocError::Invalid(format!("edit {i}: {err}")))?;
         }
         if !(self.inputs.tolerance.is_finite() && self.inputs.tolerance > 0.0) {
             return Err(DocError::Invalid(format!(

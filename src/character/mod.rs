@@ -12,4 +12,5 @@
 
 pub mod demo;
 pub mod doc;
+pub mod edit;
 pub mod skirt;

@@ -1,9 +1,10 @@
-//! `pdesculpt character build CHAR.json -o OUT [--json]`.
+//! `pdesculpt character build|edit|undo|redo|log`.
 
 use pdesculpt::character::doc::CharacterDoc;
+use pdesculpt::character::edit::Edit;
 use pdesculpt::mesh::io;
 use pdesculpt::sketch::{build_document, Resolution};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
 #[derive(clap::Args, Debug)]
@@ -17,7 +18,8 @@ pub struct Args {
 pub enum Sub {
     /// Build a character document into a mesh (OBJ/GLB/STL/PLY, one group
     /// per part and transition). Stored parts are built as they are; a
-    /// document without parts is derived from its inputs at its level.
+    /// document without parts is derived from its inputs at its level. The
+    /// active edits of the log are replayed.
     Build {
         /// The character document (JSON, version 1; schema in the docs of
         /// `pdesculpt::character::doc`).
@@ -29,6 +31,50 @@ pub enum Sub {
         #[arg(long)]
         save_doc: Option<PathBuf>,
     },
+    /// Append one edit (validated first) to the document's log, dropping
+    /// the redo tail; saves the document atomically.
+    Edit {
+        /// The character document (must have stored parts).
+        doc: PathBuf,
+        /// A JSON file holding one edit, e.g.
+        /// {"op": "shape_parameter", "part": "torso", "a": 0.3}.
+        #[arg(long)]
+        op: PathBuf,
+    },
+    /// Undo the last active edit (moves the log's cursor back).
+    Undo { doc: PathBuf },
+    /// Redo the next undone edit (moves the log's cursor forward).
+    Redo { doc: PathBuf },
+    /// Print the edit log (`*` marks active edits).
+    Log { doc: PathBuf },
+}
+
+fn read_edit(path: &Path) -> anyhow::Result<Edit> {
+    let text =
+        std::fs::read_to_string(path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("{}: not an edit: {e}", path.display()))
+}
+
+fn print_log(d: &CharacterDoc, json: bool) -> anyhow::Result<()> {
+    if json {
+        let v = serde_json::json!({
+            "cursor": d.cursor,
+            "edits": d.edits.iter().enumerate().map(|(i, e)| serde_json::json!({
+                "index": i,
+                "active": i < d.cursor,
+                "summary": e.summary(),
+                "edit": e,
+            })).collect::<Vec<_>>(),
+        });
+        super::print_json(&v)?;
+    } else {
+        for (i, e) in d.edits.iter().enumerate() {
+            let mark = if i < d.cursor { '*' } else { ' ' };
+            println!("{mark} {i:3} {}", e.summary());
+        }
+        println!("{} edits, {} active", d.edits.len(), d.cursor);
+    }
+    Ok(())
 }
 
 /// Runs `character`.
@@ -49,5 +95,43 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             super::sketch::finish(&built, &output, json)
         }
+        Sub::Edit { doc, op } => {
+            let mut d = CharacterDoc::load(&doc)?;
+            let e = read_edit(&op)?;
+            let summary = e.summary();
+            d.push_edit(e)?;
+            d.save(&doc)?;
+            eprintln!("edit {}: {summary}", d.cursor - 1);
+            if json {
+                print_log(&d, true)?;
+            }
+            Ok(0)
+        }
+        Sub::Undo { doc } => step(&doc, json, true),
+        Sub::Redo { doc } => step(&doc, json, false),
+        Sub::Log { doc } => {
+            print_log(&CharacterDoc::load(&doc)?, json)?;
+            Ok(0)
+        }
     }
+}
+
+fn step(doc: &Path, json: bool, undo: bool) -> anyhow::Result<i32> {
+    let mut d = CharacterDoc::load(doc)?;
+    if undo {
+        d.undo()?;
+    } else {
+        d.redo()?;
+    }
+    d.save(doc)?;
+    eprintln!(
+        "{} edit {}: {} edits active",
+        if undo { "undid" } else { "redid" },
+        if undo { d.cursor } else { d.cursor - 1 },
+        d.cursor
+    );
+    if json {
+        print_log(&d, true)?;
+    }
+    Ok(0)
 }

@@ -19,6 +19,7 @@ mod pde6;
 mod plate;
 mod profile;
 mod template;
+mod tui;
 
 use clap::{Parser, Subcommand};
 
@@ -58,12 +59,14 @@ pub enum Command {
     Conv(conv::Args),
     /// Characters from sketched profiles (paper 000 sec 4.1).
     Sketch(sketch::Args),
-    /// Character documents: build.
+    /// Character documents: build, and the edit log (edit, undo, redo, log).
     Character(character::Args),
     /// Template-based global modeling: fit a template to sketched profiles (paper 000 sec 4.2).
     Template(template::Args),
     /// Closed outlines of a view: mesh outlines and sketch checks (paper 000).
     Profile(profile::Args),
+    /// Terminal UI to assemble and edit a character document (issue 14).
+    Tui(tui::Args),
 }
 
 /// Parses the arguments, runs the command, returns the exit code.
@@ -85,6 +88,7 @@ pub fn main() -> i32 {
         Command::Character(a) => character::run(a, json),
         Command::Template(a) => template::run(a, json),
         Command::Profile(a) => profile::run(a, json),
+        Command::Tui(a) => tui::run(a, json),
     };
     match result {
         Ok(code) => code,

@@ -431,5 +431,6 @@ pub fn checks() -> Vec<Check> {
     fit_checks(&mut out);
     polygon_checks(&mut out);
     out.extend(super::check_fast::checks());
+    out.extend(super::check_quadrature::checks());
     out
 }

@@ -54,6 +54,61 @@ pub struct SeamReport {
     pub apex_angle_deg: f64,
 }
 
+/// A displacement field added to a part's surface over a u-range of the
+/// part (a force edit of `character::edit`: the pde4 2-sided solution, which
+/// vanishes with its u-derivative at both ends of the range, so the part
+/// stays in place and C1 there and its ends, where transitions join, do not
+/// move). `theta = 2 pi v`.
+#[derive(Clone, Debug)]
+pub struct Displacement {
+    pub part: String,
+    pub u: [f64; 2],
+    pub field: crate::pde4::TwoSided,
+}
+
+impl Displacement {
+    /// The displacement at part parameter `u`, angle `theta` (zero outside
+    /// the range).
+    pub fn at(&self, u: f64, theta: f64) -> [f64; 3] {
+        let [a, b] = self.u;
+        if u <= a || u >= b {
+            return [0.0; 3];
+        }
+        let s = (u - a) / (b - a);
+        let v = (theta / (2.0 * PI)).rem_euclid(1.0);
+        let c = &self.field.comps;
+        [c[0].eval(s, v), c[1].eval(s, v), c[2].eval(s, v)]
+    }
+}
+
+/// Built parts by specification: a rebuild re-solves only the parts whose
+/// specification changed (an edit of one part re-solves that part only).
+#[derive(Clone, Debug, Default)]
+pub struct PartCache {
+    entries: Vec<(PartSpec, PartSurface)>,
+    /// Parts solved (cache misses) so far.
+    pub solved: usize,
+}
+
+/// Most parts a [`PartCache`] keeps.
+pub const PART_CACHE_SIZE: usize = 64;
+
+impl PartCache {
+    /// The built part of `spec`, solved only when not cached.
+    pub fn get(&mut self, spec: &PartSpec) -> Result<PartSurface, SketchError> {
+        if let Some((_, s)) = self.entries.iter().find(|(p, _)| p == spec) {
+            return Ok(s.clone());
+        }
+        let s = build_part(spec)?;
+        if self.entries.len() >= PART_CACHE_SIZE {
+            self.entries.remove(0);
+        }
+        self.entries.push((spec.clone(), s.clone()));
+        self.solved += 1;
+        Ok(s)
+    }
+}
+
 /// A built model: the mesh and the join measurements.
 #[derive(Clone, Debug)]
 pub struct Model {
@@ -94,7 +149,14 @@ fn band(m: &mut Mesh, g: u32, a: &[u32], b: &[u32]) {
     }
 }
 
-fn tube(m: &mut Mesh, p: &PartSurface, thetas: &[f64], rows: usize, g: u32) -> Tube {
+fn tube(
+    m: &mut Mesh,
+    p: &PartSurface,
+    thetas: &[f64],
+    rows: usize,
+    g: u32,
+    disp: &[&Displacement],
+) -> Tube {
     let mut prev: Vec<u32> = Vec::new();
     let mut first = Vec::new();
     for r in 0..=rows {
@@ -104,7 +166,17 @@ fn tube(m: &mut Mesh, p: &PartSurface, thetas: &[f64], rows: usize, g: u32) -> T
         let row: Vec<u32> = if pole {
             vec![push(m, sec.c0)]
         } else {
-            thetas.iter().map(|&t| push(m, sec.eval(t))).collect()
+            thetas
+                .iter()
+                .map(|&t| {
+                    let mut x = sec.eval(t);
+                    for d in disp {
+                        let e = d.at(u, t);
+                        x = [x[0] + e[0], x[1] + e[1], x[2] + e[2]];
+                    }
+                    push(m, x)
+                })
+                .collect()
         };
         if r == 0 {
             first = row.clone();
@@ -134,10 +206,37 @@ pub fn build_model(
     height: f64,
     res: Resolution,
 ) -> Result<Model, SketchError> {
-    let parts = specs
-        .iter()
-        .map(build_part)
-        .collect::<Result<Vec<_>, _>>()?;
+    build_model_with(specs, transitions, height, res, &[], None)
+}
+
+/// [`build_model`] with displacement fields on parts (force edits) and an
+/// optional cache of built parts (only changed parts are re-solved).
+pub fn build_model_with(
+    specs: &[PartSpec],
+    transitions: &[TransitionSpec],
+    height: f64,
+    res: Resolution,
+    displacements: &[Displacement],
+    cache: Option<&mut PartCache>,
+) -> Result<Model, SketchError> {
+    let parts = match cache {
+        Some(c) => specs
+            .iter()
+            .map(|s| c.get(s))
+            .collect::<Result<Vec<_>, _>>()?,
+        None => specs
+            .iter()
+            .map(build_part)
+            .collect::<Result<Vec<_>, _>>()?,
+    };
+    for d in displacements {
+        if !parts.iter().any(|p| p.name == d.part) {
+            return Err(SketchError::Document(format!(
+                "a displacement names unknown part '{}'",
+                d.part
+            )));
+        }
+    }
     let find = |n: &str| -> Result<usize, SketchError> {
         parts
             .iter()
@@ -208,7 +307,8 @@ pub fn build_model(
             .ceil()
             .max(8.0) as usize;
         let g = mesh.group_index(&p.name);
-        tubes.push(tube(&mut mesh, p, &th, rows, g));
+        let disp: Vec<&Displacement> = displacements.iter().filter(|d| d.part == p.name).collect();
+        tubes.push(tube(&mut mesh, p, &th, rows, g, &disp));
     }
     for b in &built {
         let g = mesh.group_index(&b.spec.name);

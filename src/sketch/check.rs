@@ -8,10 +8,10 @@ use crate::check::{tol, Check, Kind};
 use crate::mesh::Mesh;
 use crate::profile::{outline_of_mesh, parse_svg, profile_distance, OutlineOptions, Profile, View};
 
-/// Largest front-view profile error met by the bundled examples at the
-/// final level (relative to the height). The issue asks 1 %: the
-/// shoulders' and armpits' transitions miss it by up to 0.4 % of the height.
-pub const PROFILE_FRONT: f64 = 0.015;
+/// Largest front-view profile error at the final level (relative to the
+/// height): the issue's 1 % (bundled female 0.75 %, male 0.67 %, at the
+/// armpit corner and the neck once the arms' top sections are tilted).
+pub const PROFILE_FRONT: f64 = 0.01;
 /// Largest side-view profile error at the final level (the issue's 1 %).
 pub const PROFILE_SIDE: f64 = 0.01;
 /// C1 jump at transition joins (relative): the issue's 1e-6.
@@ -81,9 +81,42 @@ pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
     ))
 }
 
+/// The alignment recovers the rotation of a 2 x 1 rectangle turned by 7
+/// degrees about an arbitrary point (exact polygon moments: to rounding),
+/// and its area and centroid.
+fn alignment_check() -> Check {
+    let a = 7f64.to_radians();
+    let (s, c) = a.sin_cos();
+    let p0 = [0.3, -1.2];
+    let rect: Vec<[f64; 2]> = [[-0.5, -1.0], [0.5, -1.0], [0.5, 1.0], [-0.5, 1.0]]
+        .iter()
+        .map(|q| [p0[0] + c * q[0] - s * q[1], p0[1] + s * q[0] + c * q[1]])
+        .collect();
+    let al = super::align::alignment(&rect);
+    let (area, cen, _) = super::align::moments(&rect);
+    let err = match al {
+        Ok(al) => (al.angle - a)
+            .abs()
+            .max((area - 2.0).abs())
+            .max((cen[0] - p0[0]).abs())
+            .max((cen[1] - p0[1]).abs()),
+        Err(_) => f64::NAN,
+    };
+    Check::new(
+        "sketch",
+        "000",
+        "sec 4.1",
+        "sketch.align.rotated_rectangle",
+        Kind::Reference,
+        err,
+        tol::ROUNDING,
+    )
+    .note("principal-axis rotation (radians), area and centroid of a rotated rectangle against the exact values")
+}
+
 /// Every check of the family.
 pub fn checks() -> Vec<Check> {
-    let mut out = Vec::new();
+    let mut out = vec![alignment_check()];
     for name in ["female", "male"] {
         let c = |n: &str, kind, m: f64, t: f64| {
             Check::new(

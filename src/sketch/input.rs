@@ -6,6 +6,9 @@ use super::SketchError;
 use crate::character::doc::ProfileInput;
 use std::path::Path;
 
+/// Largest SVG flattening tolerance relative to the drawing's height.
+pub const MAX_RELATIVE_TOLERANCE: f64 = 0.01;
+
 /// Which view a profile is drawn in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ViewKind {
@@ -49,6 +52,11 @@ pub fn read_profile(
         ViewKind::Front => "front profile",
         ViewKind::Side => "side profile",
     };
+    crate::limits::check_real(
+        "tolerance (--tolerance, inputs.tolerance)",
+        tol,
+        crate::limits::SKETCH_TOLERANCE,
+    )?;
     let (raw, cuts) = match input {
         ProfileInput::Points(p) => (p.clone(), Vec::new()),
         ProfileInput::Path(p) => {
@@ -80,6 +88,16 @@ pub fn read_profile(
         }
     })?;
     let points = profile.points().to_vec();
+    let height = profile.height();
+    if tol > MAX_RELATIVE_TOLERANCE * height {
+        return Err(SketchError::Outline {
+            what: what.into(),
+            message: format!(
+                "the flattening tolerance {tol:e} is more than {} % of the drawing's height {height:.4}: give a smaller --tolerance",
+                100.0 * MAX_RELATIVE_TOLERANCE
+            ),
+        });
+    }
     for (id, c) in &cuts {
         validate_cut(id, c, &points)?;
     }

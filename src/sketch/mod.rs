@@ -25,10 +25,12 @@
 //! measured by `mesh::topology`, the join jumps by [`build::JoinReport`] and
 //! the profile error per view by [`report`].
 
+pub mod align;
 pub mod build;
 pub mod check;
 pub mod derive;
 pub mod input;
+pub mod keysection;
 pub mod part;
 pub mod poly;
 pub mod report;
@@ -57,6 +59,8 @@ pub enum SketchError {
     Part { part: String, message: String },
     #[error("document: {0}")]
     Document(String),
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
     /// A document that fails its own validation (its message already says
     /// "document: ...").
     #[error(transparent)]

@@ -1,6 +1,6 @@
 //! From a character document to a model and its JSON report.
 
-use super::build::{build_model, JoinReport, Model, Resolution, SeamReport};
+use super::build::{build_model_with, JoinReport, Model, PartCache, Resolution, SeamReport};
 use super::derive::derive;
 use super::input::{read_profile, Outline, ViewKind};
 use super::SketchError;
@@ -82,13 +82,29 @@ fn shape_name(s: &SectionShape) -> &'static str {
 }
 
 /// Builds a document: reads its profiles (relative to `base`), derives the
-/// parts and transitions when the document has none, builds the mesh and
-/// measures it. `rederive` forces derivation from the inputs.
+/// parts and transitions when the document has none, replays the active
+/// edits of its log (`character::edit`), builds the mesh and measures it.
+/// `rederive` forces derivation from the inputs. `Built::doc` holds the
+/// derived, unedited parts and the log; the report describes the edited
+/// parts.
 pub fn build_document(
     doc: &CharacterDoc,
     base: &Path,
     res: Resolution,
     rederive: bool,
+) -> Result<Built, SketchError> {
+    build_document_with(doc, base, res, rederive, None)
+}
+
+/// [`build_document`] with an optional cache of built parts (an editing
+/// session re-solves only the parts an edit changed; the result is the same
+/// bit for bit).
+pub fn build_document_with(
+    doc: &CharacterDoc,
+    base: &Path,
+    res: Resolution,
+    rederive: bool,
+    cache: Option<&mut PartCache>,
 ) -> Result<Built, SketchError> {
     doc.validate()?;
     let tol = doc.inputs.tolerance;
@@ -121,10 +137,18 @@ pub fn build_document(
         out.parts = d.parts;
         out.transitions = d.transitions;
     }
-    let model = build_model(&out.parts, &out.transitions, height, res)?;
+    // replay the edit log on a copy: `out` keeps the unedited parts and the
+    // log, so saving it and building again never applies an edit twice
+    // PDE-level edits change the parts (spec edits) or add displacements
+    // (forces); mesh-level edits (plate) then act on the built mesh
+    let active = out.active_edits();
+    let edit_err = |e: crate::character::edit::EditError| SketchError::Document(e.to_string());
+    let edited = crate::character::edit::apply_to_parts(&out.parts, active).map_err(edit_err)?;
+    let disp = crate::character::edit::displacements(active).map_err(edit_err)?;
+    let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
+    crate::character::edit::apply_plates(&mut model.mesh, active).map_err(edit_err)?;
     let topo = topology(&model.mesh);
-    let parts = out
-        .parts
+    let parts = edited
         .iter()
         .map(|p| PartReport {
             name: p.name.clone(),

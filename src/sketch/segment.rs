@@ -133,6 +133,9 @@ pub struct Region {
     pub downward: bool,
     /// Free (closed) end at the far side.
     pub tip: bool,
+    /// A limb hanging from a shoulder: its top section is tilted up toward
+    /// the outline's outer side (sign of the outward x direction).
+    pub shoulder: Option<f64>,
 }
 
 /// The interval of a region at height y.
@@ -160,6 +163,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
             pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
             downward: false,
             tip: false,
+            shoulder: None,
         },
         Region {
             name: "head",
@@ -168,13 +172,14 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
             pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
             downward: false,
             tip: true,
+            shoulder: None,
         },
     ];
-    for (name, lo, hi, top) in [
-        ("arm_l", -big, lm.armpit_l[0], lm.armpit_l[1]),
-        ("arm_r", lm.armpit_r[0], big, lm.armpit_r[1]),
-        ("leg_l", lm.armpit_l[0], lm.crotch[0], lm.crotch[1]),
-        ("leg_r", lm.crotch[0], lm.armpit_r[0], lm.crotch[1]),
+    for (name, lo, hi, top, shoulder) in [
+        ("arm_l", -big, lm.armpit_l[0], lm.armpit_l[1], Some(-1.0)),
+        ("arm_r", lm.armpit_r[0], big, lm.armpit_r[1], Some(1.0)),
+        ("leg_l", lm.armpit_l[0], lm.crotch[0], lm.crotch[1], None),
+        ("leg_r", lm.crotch[0], lm.armpit_r[0], lm.crotch[1], None),
     ] {
         let pick = Pick::CentreIn(lo, hi);
         let y1 = top - g;
@@ -211,6 +216,7 @@ pub fn regions(front: &[[f64; 2]], lm: &Landmarks) -> Result<Vec<Region>, Sketch
             pick,
             downward: true,
             tip: true,
+            shoulder,
         });
     }
     for r in &out {

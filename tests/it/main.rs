@@ -9,11 +9,15 @@ mod strategies;
 mod units;
 
 mod conv;
+mod edit;
 mod gec;
 mod ode6;
 mod pde4;
 mod pde6;
 mod plate;
 mod profile;
+mod sasm;
 mod sketch;
 mod template;
+mod tui;
+mod tui_e2e;

@@ -23,6 +23,7 @@ use paper_literal::paper_literal_checks;
 mod residual;
 use residual::force_checks;
 mod continuity;
+mod derivation;
 use continuity::continuity_checks;
 
 const FAMILY: &str = "ode6";
@@ -164,6 +165,8 @@ pub fn checks() -> Vec<Check> {
     out.extend(difference_checks());
     out.extend(force_checks());
     out.extend(continuity_checks());
+    out.extend(derivation::derivation_checks());
+    out.extend(derivation::approach1_join_checks());
     out.push(gec_check());
     out
 }

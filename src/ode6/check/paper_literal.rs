@@ -67,6 +67,7 @@ fn eq20_restoration_checks(out: &mut Vec<Check>) {
                 .collect()
         })
         .unwrap_or_default();
+    let mut e22 = if cases.is_empty() { f64::NAN } else { 0.0f64 };
     let (mut restored, mut missing) = (
         if cases.is_empty() { f64::NAN } else { 0.0f64 },
         f64::INFINITY,
@@ -97,12 +98,36 @@ fn eq20_restoration_checks(out: &mut Vec<Check>) {
                 restored.max(r)
             };
         }
+        // eq 22 alone: e9, e10, e11 against the exact coefficients they stand
+        // for in g_1 (d1 (e11 + 1) cos xi2 u, e9 sin xi2 u) and g_5 (e10 sin xi2 u)
+        // (e9, e10 evaluated with d1, d4 / d2, d3 carrying the exact
+        // coefficients' signs: eq 21's printed d1 has the flipped sign the
+        // entry for eqs 20-22 records, and with it e9 is 2.8x off)
+        let (x1, x2) = (x("xi1"), x("xi2"));
+        let (s1, c1, s2, c2) = (x1.sin(), x1.cos(), x2.sin(), x2.cos());
+        let e9 = x1 * x1 * (g(0, 1) * s1 - g(0, 0) * (c2 - c1)) / (x2 * x2 * s2);
+        let e10 = x1 * x1 * (g(4, 1) * s1 - g(4, 0) * (c2 - c1)) / (x2 * x2 * s2);
+        for (a, b) in [
+            (e9, g(0, 3)),
+            (e10, g(4, 3)),
+            ((e[11] + 1.0) * d[1], g(0, 2)),
+        ] {
+            e22 = if e22.is_nan() {
+                e22
+            } else {
+                e22.max(rel(a, b))
+            };
+        }
         let scale = (0..6).map(|j| g(1, j).abs()).fold(0.0, f64::max);
         missing = missing.min(g(1, 2).abs() / scale);
     }
     out.push(
-        Check::paper_literal(FAMILY, PAPER, "eqs 21-22", "ode6.paper_literal.eq21_22_constants_restored", restored, tol::SOLVE, false)
+        Check::paper_literal(FAMILY, PAPER, "eqs 21, 22", "ode6.paper_literal.eq21_22_constants_restored", restored, tol::SOLVE, false)
             .note(format!("{} parameter cases: e1..e4 and d1..d4 as printed with the lost minus signs restored (xi1 < xi2) have the magnitudes of the exact cos/sin xi1 u coefficients of g_1, g_5 (and d9 of g_2's cos xi2 u), relative; sign search in verify/ode6_eq20_signs.py", cases.len())),
+    );
+    out.push(
+        Check::paper_literal(FAMILY, PAPER, "eq 22", "ode6.paper_literal.eq22_e9_e10_e11_restored", e22, tol::SOLVE, false)
+            .note(format!("{} parameter cases: e9 = xi1^2 [d4 sin xi1 - d1 (cos xi2 - cos xi1)]/(xi2^2 sin xi2), e10 likewise (every minus restored, d's with the exact coefficients' signs) and (e11 + 1) d1 (e11 = xi1^2/xi2^2 - 1, minus restored, xi1 < xi2) against the magnitudes of the exact sin xi2 u coefficients of g_1, g_5 and cos xi2 u of g_1, relative", cases.len())),
     );
     out.push(
         Check::paper_literal(FAMILY, PAPER, "eq 20", "ode6.paper_literal.g2_missing_term", missing, tol::SOLVE, true)

@@ -107,6 +107,12 @@ pub(super) fn difference_checks() -> Vec<Check> {
         )),
         Check::paper_literal(FAMILY, PAPER, "eq 5", "ode6.paper_literal.c3_eq5_equal_spacing", p_eq[1].max(p_eq[3]), 0.05, false)
             .note("printed c3, c6 with u3 = 2 u2 (equal spacing) are first-order second derivatives (h = 1e-3)"),
+        Check::paper_literal(FAMILY, PAPER, "eq 7", "ode6.paper_literal.c6_eq7", p[3], 0.5, true).note(format!(
+            "printed c6 alone (the mirror of eq 5) with 1 - u5 = 3 (1 - u6) (h = 1e-3): error {:.3} in f''(1), converges to 1.5 f''",
+            p[3]
+        )),
+        Check::paper_literal(FAMILY, PAPER, "eq 7", "ode6.paper_literal.c6_eq7_equal_spacing", p_eq[3], 0.05, false)
+            .note("printed c6 with 1 - u5 = 2 (1 - u6) (equal spacing) is a first-order second derivative (h = 1e-3)"),
         Check::paper_literal(FAMILY, PAPER, "eqs 4, 6", "ode6.paper_literal.c2_eq4", p[0].max(p[2]), 0.05, false)
             .note("printed c2, c5 are first-order one-sided first derivatives (h = 1e-3)"),
     ]

@@ -7,7 +7,7 @@ use super::mode::{
     NODES_METHOD1,
 };
 pub use super::samples::{synthetic_sections, SIGNS};
-use super::{Chain, Patch, Section, JOIN_SAMPLES};
+use super::{Chain, Patch, Piece, Section, JOIN_SAMPLES};
 use crate::check::{tol, Check, Kind};
 use crate::surface::Joined;
 mod body;
@@ -22,12 +22,15 @@ mod chains;
 use chains::chain_checks;
 mod measure;
 mod paper_literal;
+mod printed;
+mod printed_appendix;
+mod printed_checks;
 pub use measure::{
     basis_ode_residual, closed_v_mismatch, interpolation_error, lebesgue, method2_amplification,
     mode_vs_rk4, pde_residual,
 };
-pub use paper_literal::eq26_printed_interpolation_error;
 use paper_literal::printed_form_checks;
+pub use paper_literal::{eq26_printed_interpolation_error, eq27_printed_interpolation_error};
 
 const FAMILY: &str = "pde6";
 const PAPER: &str = "002";
@@ -192,6 +195,8 @@ pub fn checks() -> Vec<Check> {
     basis_checks(&mut out);
     chain_checks(&mut out);
     printed_form_checks(&mut out);
+    printed_checks::printed_main_checks(&mut out);
+    printed_appendix::printed_appendix_checks(&mut out);
     body::body_smoothness_checks(&mut out);
     out
 }

@@ -24,6 +24,24 @@ pub fn eq26_printed_interpolation_error(c: &Chain, sections: &[Section]) -> f64 
         .fold(0.0, f64::max)
 }
 
+/// Eq 27 as printed for the top patch P3: x and y from the patch,
+/// `z^{P3}(u, v) = A_{z0}^{P3}(0)` constant. Largest distance from the printed
+/// patch to the sections in its range (16 v samples each).
+pub fn eq27_printed_interpolation_error(p: &Piece, sections: &[Section]) -> f64 {
+    let z0 = p.patch.section(0.0, 0).c0[2];
+    sections
+        .iter()
+        .filter(|s| s.u >= p.start && s.u <= p.end)
+        .flat_map(|s| {
+            (0..16).map(move |j| {
+                let v = 2.0 * PI * j as f64 / 16.0;
+                let [x, y, _] = p.eval(s.u, v);
+                crate::mesh::dist([x, y, z0], s.curve.eval(v))
+            })
+        })
+        .fold(0.0, f64::max)
+}
+
 pub(super) fn printed_form_checks(out: &mut Vec<Check>) {
     let sec = synthetic_sections(12, 6);
     let (name, a) = SIGNS[0];

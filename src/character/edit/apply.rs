@@ -1,0 +1,473 @@
+//! Applying edits to a document's part specifications.
+
+use super::{
+    unknown_part, Edit, EditError, SectionTransform, SCALE_MAX, SECTION_SAMPLES, SIGMA_MAX,
+};
+use crate::character::doc::{End, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use crate::curve::gec::transform::Bend;
+use crate::curve::gec::{Frame, Gec};
+use crate::mesh::{add, dist, dot, scale, sub};
+use std::f64::consts::PI;
+
+fn param(
+    e: &Edit,
+    name: &'static str,
+    value: f64,
+    ok: bool,
+    expected: &str,
+) -> Result<(), EditError> {
+    if ok && value.is_finite() {
+        return Ok(());
+    }
+    Err(EditError::Parameter {
+        op: e.op(),
+        part: e.part().unwrap_or("").into(),
+        name,
+        value,
+        expected: expected.into(),
+    })
+}
+
+/// Checks an edit's parameters that do not depend on the document: finite
+/// numbers in their documented ranges.
+pub fn validate_params(e: &Edit) -> Result<(), EditError> {
+    match e {
+        Edit::ShapeParameter { a, .. } => param(
+            e,
+            "a",
+            *a,
+            a.abs() <= crate::pde6::A_MAX,
+            &format!(
+                "|a| <= {} (the pde6 family's documented range)",
+                crate::pde6::A_MAX
+            ),
+        ),
+        Edit::GecTransform { transform, .. } => match transform {
+            SectionTransform::Translate { d } => {
+                for (k, name) in ["d[0]", "d[1]", "d[2]"].into_iter().enumerate() {
+                    param(e, name, d[k], true, "a finite number")?;
+                }
+                Ok(())
+            }
+            SectionTransform::Scale { sx, sy } => {
+                let exp = format!("a factor in (0, {SCALE_MAX}]");
+                param(e, "sx", *sx, *sx > 0.0 && *sx <= SCALE_MAX, &exp)?;
+                param(e, "sy", *sy, *sy > 0.0 && *sy <= SCALE_MAX, &exp)
+            }
+            SectionTransform::Rotate { angle } => param(e, "angle", *angle, true, "finite"),
+            SectionTransform::Bend { kappa, axis } => {
+                param(e, "kappa", *kappa, true, "finite")?;
+                for (k, name) in ["axis[0]", "axis[1]", "axis[2]"].into_iter().enumerate() {
+                    param(e, name, axis[k], true, "finite")?;
+                }
+                Ok(())
+            }
+            SectionTransform::Bump { h, theta, sigma } => {
+                param(e, "h", *h, true, "finite")?;
+                param(e, "theta", *theta, true, "finite")?;
+                param(
+                    e,
+                    "sigma",
+                    *sigma,
+                    *sigma > 0.0 && *sigma <= SIGMA_MAX,
+                    &format!("a width in (0, {SIGMA_MAX}]"),
+                )
+            }
+        },
+        Edit::Force { u, force, a, .. } => {
+            param(e, "u[0]", u[0], true, "finite")?;
+            param(e, "u[1]", u[1], u[1] > u[0], "u[1] > u[0]")?;
+            param(
+                e,
+                "a",
+                *a,
+                (A_FORCE_MIN..=A_FORCE_MAX).contains(a),
+                &format!("a shape parameter in [{A_FORCE_MIN}, {A_FORCE_MAX}]"),
+            )?;
+            force.validate().map_err(|err| EditError::Invalid {
+                op: e.op(),
+                part: e.part().unwrap_or("").into(),
+                message: format!("force: {err}"),
+            })
+        }
+        Edit::Boundary {
+            curve,
+            tangent,
+            reach,
+            ..
+        } => {
+            param(
+                e,
+                "reach",
+                *reach,
+                *reach > 0.0 && *reach <= 1.0,
+                "in (0, 1]",
+            )?;
+            if curve.is_none() && tangent.is_none() {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: e.part().unwrap_or("").into(),
+                    message: "give a new \"curve\", a \"tangent\" change, or both".into(),
+                });
+            }
+            if let Some(t) = tangent {
+                for (k, name) in ["tangent[0]", "tangent[1]", "tangent[2]"]
+                    .into_iter()
+                    .enumerate()
+                {
+                    param(e, name, t[k], true, "finite")?;
+                }
+            }
+            if let Some(c) = curve {
+                let ok = match c {
+                    SectionShape::Circle { r } => r.is_finite() && *r > 0.0,
+                    SectionShape::Ellipse { a, b, offset } => {
+                        a.is_finite() && b.is_finite() && offset.is_finite() && *a > 0.0 && *b > 0.0
+                    }
+                    SectionShape::Gec { centre, x, y } => centre
+                        .iter()
+                        .chain(x.iter().flatten())
+                        .chain(y.iter().flatten())
+                        .all(|v| v.is_finite()),
+                };
+                if !ok {
+                    return Err(EditError::Invalid {
+                        op: e.op(),
+                        part: e.part().unwrap_or("").into(),
+                        message: "the new curve needs finite numbers and positive radii".into(),
+                    });
+                }
+            }
+            Ok(())
+        }
+        Edit::Plate {
+            centre, radius, d, ..
+        } => {
+            for k in 0..3 {
+                param(
+                    e,
+                    ["centre[0]", "centre[1]", "centre[2]"][k],
+                    centre[k],
+                    true,
+                    "finite",
+                )?;
+                param(e, ["d[0]", "d[1]", "d[2]"][k], d[k], true, "finite")?;
+            }
+            param(e, "radius", *radius, *radius > 0.0, "a positive radius")
+        }
+    }
+}
+
+/// Smallest shape parameter of a force edit.
+pub const A_FORCE_MIN: f64 = 1e-3;
+/// Largest shape parameter of a force edit.
+pub const A_FORCE_MAX: f64 = 1e3;
+
+/// The parts with `edits` applied in order (spec-level edits; validated as
+/// they are applied; an error names the edit's index in `edits`).
+pub fn apply_to_parts(parts: &[PartSpec], edits: &[Edit]) -> Result<Vec<PartSpec>, EditError> {
+    let mut out = parts.to_vec();
+    for (i, e) in edits.iter().enumerate() {
+        validate_params(e)
+            .and_then(|_| apply_one(&mut out, e))
+            .map_err(|err| EditError::Replay {
+                index: i,
+                summary: e.summary(),
+                source: Box::new(err),
+            })?;
+    }
+    Ok(out)
+}
+
+fn find<'a>(parts: &'a mut [PartSpec], name: &str) -> Result<&'a mut PartSpec, EditError> {
+    let i = parts
+        .iter()
+        .position(|p| p.name == name)
+        .ok_or_else(|| unknown_part(parts, name))?;
+    Ok(&mut parts[i])
+}
+
+/// A section as a GEC in its frame (circles and ellipses converted exactly).
+pub fn section_gec(s: &SectionSpec) -> Result<Gec, String> {
+    let frame = Frame::new(s.centre, s.e1, s.e2).map_err(|e| e.to_string())?;
+    let (centre, x, y) = match &s.shape {
+        SectionShape::Circle { r } => ([0.0, 0.0], vec![[*r, 0.0]], vec![[*r, 0.0]]),
+        SectionShape::Ellipse { a, b, offset } => {
+            ([0.0, *offset], vec![[*a, 0.0]], vec![[*b, 0.0]])
+        }
+        SectionShape::Gec { centre, x, y } => (*centre, x.clone(), y.clone()),
+    };
+    Gec::new(frame, centre, x, y).map_err(|e| e.to_string())
+}
+
+fn collapsed(s: &SectionSpec) -> bool {
+    matches!(s.shape, SectionShape::Circle { r } if r == 0.0)
+}
+
+/// Applies one (parameter-checked) spec-level edit to `parts`.
+pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditError> {
+    let name = e.part().unwrap_or("");
+    let known = parts.to_vec();
+    let p = find(parts, name).map_err(|_| unknown_part(&known, name))?;
+    match e {
+        Edit::ShapeParameter { a, .. } => {
+            p.surface = SurfaceSpec::Pde6C2 { a: *a };
+            Ok(())
+        }
+        Edit::GecTransform {
+            section, transform, ..
+        } => {
+            let count = p.sections.len();
+            let idx: Vec<usize> = match section {
+                Some(s) if *s >= count => {
+                    return Err(EditError::NoSection {
+                        part: name.into(),
+                        section: *s,
+                        count,
+                    })
+                }
+                Some(s) => vec![*s],
+                None => (0..count).collect(),
+            };
+            let bend = match transform {
+                SectionTransform::Bend { kappa, axis } => Some(bend_of(p, e, *kappa, *axis)?),
+                _ => None,
+            };
+            for i in idx {
+                transform_section(p, i, e, transform, bend.as_ref())?;
+            }
+            Ok(())
+        }
+        Edit::Force { u, .. } => {
+            let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
+            if u[0] < u0 || u[1] > u1 {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: name.into(),
+                    message: format!(
+                        "the force range [{}, {}] lies outside the part's u range [{u0}, {u1}]",
+                        u[0], u[1]
+                    ),
+                });
+            }
+            Ok(())
+        }
+        Edit::Boundary {
+            end,
+            curve,
+            tangent,
+            reach,
+            ..
+        } => boundary(p, e, *end, curve.as_ref(), *tangent, *reach),
+        Edit::Plate { .. } => Ok(()),
+    }
+}
+
+fn boundary(
+    p: &mut PartSpec,
+    e: &Edit,
+    end: End,
+    curve: Option<&SectionShape>,
+    tangent: Option<[f64; 3]>,
+    reach: f64,
+) -> Result<(), EditError> {
+    let invalid = |m: String| EditError::Invalid {
+        op: e.op(),
+        part: p.name.clone(),
+        message: m,
+    };
+    let n = p.sections.len();
+    let (ie, closed) = match end {
+        End::Start => (0, p.closed_start),
+        End::End => (n - 1, p.closed_end),
+    };
+    if let Some(c) = curve {
+        if closed {
+            return Err(invalid(format!(
+                "the part's {end:?} is a closed end (a point): it has no boundary curve to replace"
+            )));
+        }
+        let mut s = p.sections[ie].clone();
+        s.shape = c.clone();
+        let g = section_gec(&s).map_err(invalid)?;
+        if let Some((a, b)) =
+            crate::template::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
+        {
+            return Err(EditError::SelfIntersecting {
+                op: e.op(),
+                part: p.name.clone(),
+                section: ie,
+                first: a,
+                second: b,
+            });
+        }
+        p.sections[ie] = s;
+    }
+    let Some(t) = tangent else {
+        return Ok(());
+    };
+    let tt = dot(t, t);
+    if tt == 0.0 {
+        return Ok(());
+    }
+    let ue = p.sections[ie].u;
+    let l = reach * (p.sections[n - 1].u - p.sections[0].u);
+    let phi: Vec<(usize, f64)> = (0..n)
+        .filter(|&k| k != ie)
+        .filter_map(|k| {
+            let x = (p.sections[k].u - ue).abs() / l;
+            (x < 1.0).then(|| (k, (p.sections[k].u - ue) * (1.0 - x).powi(3)))
+        })
+        .collect();
+    if phi.is_empty() {
+        return Err(invalid(format!(
+            "no section lies within reach {reach} of the part's {end:?}"
+        )));
+    }
+    let build = |q: &PartSpec| {
+        crate::sketch::part::build_part(q).map_err(|err| EditError::Build {
+            op: e.op(),
+            part: q.name.clone(),
+            message: err.to_string(),
+        })
+    };
+    let before = build(p)?.section(ue, 1).c0;
+    let mut q = p.clone();
+    for &(k, f) in &phi {
+        q.sections[k].centre = add(q.sections[k].centre, scale(t, f));
+    }
+    let after = build(&q)?.section(ue, 1).c0;
+    let response = dot(sub(after, before), t) / tt;
+    if !(response.abs() > TANGENT_RESPONSE_MIN) {
+        return Err(invalid(format!(
+            "the end tangent does not respond to the sections within reach {reach} (response {response:e})"
+        )));
+    }
+    for &(k, f) in &phi {
+        p.sections[k].centre = add(p.sections[k].centre, scale(t, f / response));
+    }
+    Ok(())
+}
+
+/// Smallest end-tangent response of a boundary tangent edit (per unit
+/// section offset weight) accepted.
+pub const TANGENT_RESPONSE_MIN: f64 = 1e-6;
+
+fn bend_of(p: &PartSpec, e: &Edit, kappa: f64, axis: [f64; 3]) -> Result<Bend, EditError> {
+    let (first, last) = (
+        p.sections[0].centre,
+        p.sections[p.sections.len() - 1].centre,
+    );
+    let len = dist(first, last);
+    param(
+        e,
+        "kappa",
+        kappa,
+        kappa.abs() * len <= PI,
+        &format!("|kappa| * part length ({len:.4}) <= pi"),
+    )?;
+    Bend::new(first, sub(last, first), axis, kappa).map_err(|err| EditError::Invalid {
+        op: e.op(),
+        part: p.name.clone(),
+        message: err.to_string(),
+    })
+}
+
+fn transform_section(
+    p: &mut PartSpec,
+    i: usize,
+    e: &Edit,
+    t: &SectionTransform,
+    bend: Option<&Bend>,
+) -> Result<(), EditError> {
+    let invalid = |m: String| EditError::Invalid {
+        op: e.op(),
+        part: p.name.clone(),
+        message: format!("section {i}: {m}"),
+    };
+    let s = &p.sections[i];
+    let g = section_gec(s).map_err(invalid)?;
+    let point = collapsed(s);
+    let c = g.centre;
+    let out = match t {
+        SectionTransform::Translate { d } => g.translated(*d),
+        SectionTransform::Scale { sx, sy } => g.scaled(*sx, *sy, c),
+        SectionTransform::Rotate { angle } => g.rotated(*angle, c),
+        SectionTransform::Bend { .. } => match bend {
+            Some(b) => b.apply_gec(&g),
+            None => g,
+        },
+        SectionTransform::Bump { h, theta, sigma } => {
+            if point {
+                return Err(invalid(
+                    "a bump needs a section with a size (this one is a collapsed end)".into(),
+                ));
+            }
+            g.with_bump(*h, *theta, *sigma)
+                .map_err(|err| invalid(err.to_string()))?
+        }
+    };
+    if !out.is_finite() {
+        return Err(invalid(
+            "the transform gives non-finite coefficients".into(),
+        ));
+    }
+    if !point {
+        let pts = out.sample_plane(SECTION_SAMPLES);
+        if let Some((a, b)) = crate::template::polygon::self_intersection(&pts) {
+            return Err(EditError::SelfIntersecting {
+                op: e.op(),
+                part: p.name.clone(),
+                section: i,
+                first: a,
+                second: b,
+            });
+        }
+    }
+    let s = &mut p.sections[i];
+    s.centre = out.frame.origin;
+    s.e1 = out.frame.e1;
+    s.e2 = out.frame.e2;
+    if !point {
+        s.shape = SectionShape::Gec {
+            centre: out.centre,
+            x: out.x,
+            y: out.y,
+        };
+    }
+    Ok(())
+}
+
+/// Builds the part an edit targets (the chain solver's own guards).
+pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError> {
+    let Some(name) = e.part() else {
+        return Ok(());
+    };
+    let Some(p) = parts.iter().find(|p| p.name == name) else {
+        return Err(unknown_part(parts, name));
+    };
+    let built = crate::sketch::part::build_part(p).map_err(|err| EditError::Build {
+        op: e.op(),
+        part: name.into(),
+        message: err.to_string(),
+    })?;
+    match e {
+        Edit::Force { .. } => {
+            super::mesh::force_field(e)?;
+        }
+        Edit::Plate { centre, radius, .. } => {
+            let d = super::mesh::distance_to_part(&built, *centre);
+            if d > *radius {
+                return Err(EditError::Invalid {
+                    op: e.op(),
+                    part: name.into(),
+                    message: format!(
+                        "the region centre lies {d:.4} from the part's surface, farther than the radius {radius}"
+                    ),
+                });
+            }
+        }
+        _ => {}
+    }
+    Ok(())
+}

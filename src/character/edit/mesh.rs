@@ -1,0 +1,181 @@
+//! Edits that act beyond the part specifications: force displacements on
+//! the built parts, the plate bending of the built mesh, and an editing
+//! [`Session`] that re-solves only the parts an edit changed.
+
+use super::{Edit, EditError};
+use crate::character::doc::CharacterDoc;
+use crate::mesh::{dist, Mesh};
+use crate::pde4::two_sided::Method;
+use crate::pde4::{ShapeParams, TwoSided};
+use crate::plate::deformer::{BoundaryMethod, MappingMethod, PlateDeformer, RegionOptions};
+use crate::sketch::build::{Displacement, PartCache};
+use crate::sketch::part::PartSurface;
+use crate::sketch::report::build_document_with;
+use crate::sketch::{Built, Resolution, SketchError};
+use crate::surface::Surface;
+use std::f64::consts::PI;
+use std::path::PathBuf;
+
+/// Series terms `(M, N)` of a force edit's 2-sided patch (sine terms in u,
+/// harmonics in v).
+pub const FORCE_TERMS: (usize, usize) = (16, 8);
+
+/// The 2-sided pde4 solution of a force edit (clamped at both ends of its
+/// range: zero boundary curves and tangents).
+pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
+    let Edit::Force { force, a, .. } = e else {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: e.part().unwrap_or("").into(),
+            message: "not a force edit".into(),
+        });
+    };
+    let p = ShapeParams::uniform(*a);
+    TwoSided::new(
+        [p; 3],
+        std::slice::from_ref(force),
+        FORCE_TERMS.0,
+        FORCE_TERMS.1,
+        Method::Exact,
+        None,
+    )
+    .map_err(|err| EditError::Invalid {
+        op: e.op(),
+        part: e.part().unwrap_or("").into(),
+        message: format!("force patch: {err}"),
+    })
+}
+
+/// The displacement fields of the force edits among `edits`, in order.
+pub fn displacements(edits: &[Edit]) -> Result<Vec<Displacement>, EditError> {
+    edits
+        .iter()
+        .filter(|e| matches!(e, Edit::Force { .. }))
+        .map(|e| {
+            let Edit::Force { part, u, .. } = e else {
+                unreachable!("filtered")
+            };
+            Ok(Displacement {
+                part: part.clone(),
+                u: *u,
+                field: force_field(e)?,
+            })
+        })
+        .collect()
+}
+
+/// Samples per direction of [`distance_to_part`].
+pub const DISTANCE_SAMPLES: usize = 64;
+
+/// Smallest distance from `c` to a grid of the part's surface points.
+pub fn distance_to_part(p: &PartSurface, c: [f64; 3]) -> f64 {
+    let n = DISTANCE_SAMPLES;
+    let mut best = f64::INFINITY;
+    for i in 0..=n {
+        let u = p.u0 + (p.u1 - p.u0) * i as f64 / n as f64;
+        for j in 0..n {
+            let th = 2.0 * PI * j as f64 / n as f64;
+            best = best.min(dist(p.chain.point(u, th), c));
+        }
+    }
+    best
+}
+
+/// Applies the plate edits among `edits` to the built mesh, in order: the
+/// region is the part group's vertices within the radius, bent as a clamped
+/// plate (mesh-edge boundary, harmonic disk mapping) scaled so that the
+/// peak displacement is the edit's `d`.
+pub fn apply_plates(mesh: &mut Mesh, edits: &[Edit]) -> Result<(), EditError> {
+    for e in edits {
+        let Edit::Plate {
+            part,
+            centre,
+            radius,
+            d,
+        } = e
+        else {
+            continue;
+        };
+        let invalid = |m: String| EditError::Invalid {
+            op: e.op(),
+            part: part.clone(),
+            message: m,
+        };
+        let g = mesh
+            .groups
+            .iter()
+            .position(|n| n == part)
+            .ok_or_else(|| invalid("the mesh has no group of this part".into()))?
+            as u32;
+        let mut inside = vec![false; mesh.positions.len()];
+        for (t, tr) in mesh.triangles.iter().enumerate() {
+            if mesh.tri_group[t] == g {
+                for &v in tr {
+                    inside[v as usize] = dist(mesh.positions[v as usize], *centre) < *radius;
+                }
+            }
+        }
+        let region: Vec<u32> = (0..inside.len())
+            .filter(|&i| inside[i])
+            .map(|i| i as u32)
+            .collect();
+        let opts = RegionOptions {
+            boundary: BoundaryMethod::MeshEdges,
+            mapping: MappingMethod::Harmonic,
+            ..RegionOptions::default()
+        };
+        let plate = PlateDeformer::new(mesh, &region, &opts)
+            .map_err(|err| invalid(format!("plate region ({} vertices): {err}", region.len())))?;
+        let peak = plate.weights.iter().copied().fold(0.0, f64::max);
+        if !(peak.is_finite() && peak > 0.0) {
+            return Err(invalid(format!(
+                "the plate region ({} vertices) has no interior vertex to move",
+                region.len()
+            )));
+        }
+        let q = [d[0] / peak, d[1] / peak, d[2] / peak];
+        plate
+            .apply(&mut mesh.positions, q)
+            .map_err(|err| invalid(err.to_string()))?;
+    }
+    Ok(())
+}
+
+/// An editing session: the document, where its profiles live, the mesh
+/// resolution and a cache of built parts, so that a rebuild after an edit
+/// re-solves only the part the edit changed.
+#[derive(Clone, Debug)]
+pub struct Session {
+    pub doc: CharacterDoc,
+    pub base: PathBuf,
+    pub res: Resolution,
+    pub cache: PartCache,
+}
+
+impl Session {
+    /// A session on `doc` (profiles relative to `base`).
+    pub fn new(doc: CharacterDoc, base: PathBuf, res: Resolution) -> Session {
+        Session {
+            doc,
+            base,
+            res,
+            cache: PartCache::default(),
+        }
+    }
+
+    /// Validates and appends an edit ([`CharacterDoc::push_edit`]).
+    pub fn push(&mut self, e: Edit) -> Result<(), EditError> {
+        self.doc.push_edit(e)
+    }
+
+    /// Builds the document's current state, re-solving only changed parts.
+    pub fn build(&mut self) -> Result<Built, SketchError> {
+        build_document_with(
+            &self.doc,
+            &self.base,
+            self.res,
+            false,
+            Some(&mut self.cache),
+        )
+    }
+}

@@ -1,0 +1,336 @@
+//! Local modeling as undoable edits of the character document (paper 000
+//! sec 5; paper 001 for the mesh-level plate edit).
+//!
+//! A character is its inputs plus an ordered edit log: `doc.edits`, of which
+//! the first `doc.cursor` are active. [`CharacterDoc::push_edit`] validates
+//! an edit against the document's current state (the stored parts with the
+//! active edits applied) *before* changing anything, drops the redo tail and
+//! appends; [`CharacterDoc::undo`] / [`CharacterDoc::redo`] move the cursor.
+//! `sketch::build_document` replays the active edits in order after deriving
+//! or reading the parts, so the same document always gives the same mesh,
+//! bit for bit. The stored `parts` are never rewritten by an edit: the log is
+//! the only record of a change (saving a built document keeps the log and the
+//! unedited parts, so replay never applies an edit twice).
+//!
+//! # Edits
+//!
+//! * [`Edit::ShapeParameter`] (PDESM, sec 5.1, Fig 8): the part's PDE
+//!   parameter `a` (the pde6 C2 chain's `w_uuuuuu + a w_vvvvvv = 0`),
+//!   accepted in the family's documented range `|a| <=` [`pde6::A_MAX`];
+//!   the solver's conditioning guard is run at push time.
+//! * [`Edit::GecTransform`] (GECDSM, sec 5.2, Fig 9): a coefficient-space
+//!   transform ([`SectionTransform`], `curve::gec::transform`) of one key
+//!   section or of all sections of a part; circles and ellipses are first
+//!   converted to GEC coefficients in their frame (exactly: same curve).
+//!   Sections keep their parameter `u`, so the part surface, linear in its
+//!   section data harmonic by harmonic, undergoes the same transform: a
+//!   translation of all sections translates the surface; an in-plane scale or
+//!   rotation of all sections about their centres, when the sections' frames
+//!   are parallel, scales or rotates every ring of the surface about the
+//!   surface's centre curve (harmonic 0). Checked in `verify` family `edit`.
+//!
+//! Every edit names its target part ([`Edit::part`]) and validates its
+//! parameters: finite numbers, ranges named in [`EditError::Parameter`], a
+//! section that would self-intersect after a transform
+//! ([`EditError::SelfIntersecting`]), a part whose chain would not solve
+//! ([`EditError::Build`]).
+
+mod apply;
+pub mod check;
+mod mesh;
+
+pub use apply::{apply_to_parts, section_gec, validate_params};
+pub use mesh::{apply_plates, displacements, Session, FORCE_TERMS};
+
+use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
+use serde::{Deserialize, Serialize};
+
+/// One edit of the log.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Edit {
+    /// PDESM shape parameter: the part's surface parameter `a`.
+    ShapeParameter { part: String, a: f64 },
+    /// GECDSM: a coefficient-space transform of the part's key section
+    /// `section` (index in the part's section list), or of every section when
+    /// `section` is absent.
+    GecTransform {
+        part: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        section: Option<usize>,
+        transform: SectionTransform,
+    },
+    /// PDESM sculpting force (sec 5.1): the pde4 2-sided patch over the part
+    /// parameter range `u = [u_a, u_b]` (inside the part), clamped at both
+    /// ends of the range, with `force` in patch coordinates (`u` in `[0, 1]`
+    /// across the range, `v = theta / 2 pi`) and uniform shape parameters
+    /// `a` (default 1); its solution is added to the part as a displacement.
+    Force {
+        part: String,
+        u: [f64; 2],
+        force: crate::pde4::Force,
+        #[serde(default = "one")]
+        a: f64,
+    },
+    /// PDESM boundary change (sec 5.1) at one end of a part: a new boundary
+    /// `curve` (the end section's shape, in its frame) and/or a change
+    /// `tangent` of the end's u-tangent (model units per unit u), made by
+    /// moving the sections within `reach` (a fraction of the part's length,
+    /// default 0.3) of that end so that the solved chain's end tangent
+    /// changes by exactly `tangent` while the end curve stays in place.
+    Boundary {
+        part: String,
+        end: End,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        curve: Option<SectionShape>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        tangent: Option<[f64; 3]>,
+        #[serde(default = "default_reach")]
+        reach: f64,
+    },
+    /// Mesh-level C1 plate bending (paper 001) on the built mesh: the region
+    /// is the part's vertices within `radius` of `centre`, bent as a clamped
+    /// plate so that its peak displacement is `d` (the cursor motion).
+    /// Applied after every PDE-level edit, in log order.
+    Plate {
+        part: String,
+        centre: [f64; 3],
+        radius: f64,
+        d: [f64; 3],
+    },
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+fn default_reach() -> f64 {
+    0.3
+}
+
+/// A GEC coefficient-space transform (paper 000 sec 5.2).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SectionTransform {
+    /// Move by `d` (model units).
+    Translate { d: [f64; 3] },
+    /// Scale by `sx` along the section's `e1` and `sy` along `e2` about the
+    /// section's centre; factors in `(0, SCALE_MAX]`.
+    Scale { sx: f64, sy: f64 },
+    /// Rotate in the section's plane by `angle` radians about its centre.
+    Rotate { angle: f64 },
+    /// Bend deformer (`curve::gec::transform::Bend`): pivot at the part's
+    /// first section centre, direction from the first to the last section
+    /// centre, bending about `axis` (made orthogonal to the direction) with
+    /// curvature `kappa` (1/model units, `|kappa| * part length <= pi`);
+    /// each section moves rigidly with the deformer at its centre.
+    Bend { kappa: f64, axis: [f64; 3] },
+    /// A local bump of height `h` (model units) at in-plane angle `theta`
+    /// (radians, from `e1` towards `e2`) of angular width `sigma` in
+    /// `(0, SIGMA_MAX]`.
+    Bump { h: f64, theta: f64, sigma: f64 },
+}
+
+/// Largest scale factor of [`SectionTransform::Scale`].
+pub const SCALE_MAX: f64 = 100.0;
+/// Largest bump width of [`SectionTransform::Bump`].
+pub const SIGMA_MAX: f64 = 10.0;
+/// Samples of a section when testing it for self-intersection.
+pub const SECTION_SAMPLES: usize = 256;
+
+/// Errors of edits.
+#[derive(Debug, thiserror::Error)]
+pub enum EditError {
+    #[error("unknown part '{part}' (the document's parts: {known})")]
+    UnknownPart { part: String, known: String },
+    #[error("the document has no parts yet: derive and store them first (`pdesculpt character build CHAR.json -o OUT --save-doc CHAR.json`)")]
+    NoParts,
+    #[error("part '{part}': section {section} does not exist (the part has {count} sections)")]
+    NoSection {
+        part: String,
+        section: usize,
+        count: usize,
+    },
+    #[error("{op} on part '{part}': {name} = {value} is out of range: {expected}")]
+    Parameter {
+        op: &'static str,
+        part: String,
+        name: &'static str,
+        value: f64,
+        expected: String,
+    },
+    #[error("{op} on part '{part}': section {section} would self-intersect (edges {first} and {second} of {SECTION_SAMPLES} samples cross)")]
+    SelfIntersecting {
+        op: &'static str,
+        part: String,
+        section: usize,
+        first: usize,
+        second: usize,
+    },
+    #[error("{op} on part '{part}': {message}")]
+    Invalid {
+        op: &'static str,
+        part: String,
+        message: String,
+    },
+    #[error("{op} on part '{part}': the edited part does not build: {message}")]
+    Build {
+        op: &'static str,
+        part: String,
+        message: String,
+    },
+    #[error("nothing to undo (the cursor is at the start of the log)")]
+    NothingToUndo,
+    #[error("nothing to redo (the cursor is at the end of the log, {len} edits)")]
+    NothingToRedo { len: usize },
+    #[error("edit {index} of the log ({summary}): {source}")]
+    Replay {
+        index: usize,
+        summary: String,
+        source: Box<EditError>,
+    },
+}
+
+impl Edit {
+    /// The target part, if any.
+    pub fn part(&self) -> Option<&str> {
+        match self {
+            Edit::ShapeParameter { part, .. }
+            | Edit::GecTransform { part, .. }
+            | Edit::Force { part, .. }
+            | Edit::Boundary { part, .. }
+            | Edit::Plate { part, .. } => Some(part),
+        }
+    }
+
+    /// The operation's name (the `op` tag).
+    pub fn op(&self) -> &'static str {
+        match self {
+            Edit::ShapeParameter { .. } => "shape_parameter",
+            Edit::GecTransform { .. } => "gec_transform",
+            Edit::Force { .. } => "force",
+            Edit::Boundary { .. } => "boundary",
+            Edit::Plate { .. } => "plate",
+        }
+    }
+
+    /// One line for `character log` and the TUI.
+    pub fn summary(&self) -> String {
+        match self {
+            Edit::ShapeParameter { part, a } => format!("shape parameter of {part}: a = {a}"),
+            Edit::GecTransform {
+                part,
+                section,
+                transform,
+            } => {
+                let which = match section {
+                    Some(s) => format!("section {s} of {part}"),
+                    None => format!("all sections of {part}"),
+                };
+                let t = match transform {
+                    SectionTransform::Translate { d } => {
+                        format!("translate by ({}, {}, {})", d[0], d[1], d[2])
+                    }
+                    SectionTransform::Scale { sx, sy } => format!("scale by ({sx}, {sy})"),
+                    SectionTransform::Rotate { angle } => format!("rotate by {angle} rad"),
+                    SectionTransform::Bend { kappa, axis } => format!(
+                        "bend with curvature {kappa} about ({}, {}, {})",
+                        axis[0], axis[1], axis[2]
+                    ),
+                    SectionTransform::Bump { h, theta, sigma } => {
+                        format!("bump of height {h} at {theta} rad, width {sigma}")
+                    }
+                };
+                format!("GEC {t}: {which}")
+            }
+            Edit::Force { part, u, force, a } => format!(
+                "force {:?} p = ({}, {}, {}) on {part} over u in [{}, {}], a = {a}",
+                force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1]
+            ),
+            Edit::Boundary {
+                part,
+                end,
+                curve,
+                tangent,
+                ..
+            } => {
+                let mut what = Vec::new();
+                if curve.is_some() {
+                    what.push("new curve".to_string());
+                }
+                if let Some(t) = tangent {
+                    what.push(format!("tangent change ({}, {}, {})", t[0], t[1], t[2]));
+                }
+                format!("boundary of {part} at its {end:?}: {}", what.join(", "))
+            }
+            Edit::Plate {
+                part,
+                centre,
+                radius,
+                d,
+            } => format!(
+                "plate bend of {part} within {radius} of ({}, {}, {}) by ({}, {}, {})",
+                centre[0], centre[1], centre[2], d[0], d[1], d[2]
+            ),
+        }
+    }
+}
+
+fn known_parts(parts: &[PartSpec]) -> String {
+    parts
+        .iter()
+        .map(|p| p.name.as_str())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl CharacterDoc {
+    /// The active edits (`edits[..cursor]`).
+    pub fn active_edits(&self) -> &[Edit] {
+        &self.edits[..self.cursor.min(self.edits.len())]
+    }
+
+    /// Validates `e` against the current state (the stored parts with the
+    /// active edits applied) before changing anything, then drops the redo
+    /// tail, appends `e` and moves the cursor to the end.
+    pub fn push_edit(&mut self, e: Edit) -> Result<(), EditError> {
+        if self.parts.is_empty() {
+            return Err(EditError::NoParts);
+        }
+        let mut parts = apply_to_parts(&self.parts, self.active_edits())?;
+        validate_params(&e)?;
+        apply::apply_one(&mut parts, &e)?;
+        apply::check_builds(&parts, &e)?;
+        self.edits.truncate(self.cursor);
+        self.edits.push(e);
+        self.cursor = self.edits.len();
+        Ok(())
+    }
+
+    /// Moves the cursor back by one edit.
+    pub fn undo(&mut self) -> Result<(), EditError> {
+        if self.cursor == 0 {
+            return Err(EditError::NothingToUndo);
+        }
+        self.cursor -= 1;
+        Ok(())
+    }
+
+    /// Moves the cursor forward by one edit.
+    pub fn redo(&mut self) -> Result<(), EditError> {
+        if self.cursor >= self.edits.len() {
+            return Err(EditError::NothingToRedo {
+                len: self.edits.len(),
+            });
+        }
+        self.cursor += 1;
+        Ok(())
+    }
+}
+
+pub(crate) fn unknown_part(parts: &[PartSpec], part: &str) -> EditError {
+    EditError::UnknownPart {
+        part: part.into(),
+        known: known_parts(parts),
+    }
+}

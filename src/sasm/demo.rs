@@ -1,0 +1,166 @@
+//! The bundled examples of Fig 10 on the sketched female (data/sketch): a
+//! breast on the torso from a closed curve plus a side and a top profile
+//! (sketch on the model), and a nose on the head from an auxiliary line
+//! plus the side profile. The strokes are drawn over the built model: the
+//! profiles are the host's own section through the feature's centre line
+//! (found by ray casting) plus a bump, as a user traces over the model.
+
+use super::check::{measure, SasmReport};
+use super::project::Projector;
+use super::{apply_feature, ApplyReport, AuxSpec, Feature, SasmError, SasmSpec, Stroke};
+use crate::character::doc::Level;
+use crate::mesh::Mesh;
+use crate::profile::View;
+use crate::sketch::check::bundled;
+use crate::sketch::part::PartSurface;
+use crate::sketch::{build_document, Resolution};
+use std::f64::consts::PI;
+
+/// Stroke points per curve.
+const N: usize = 64;
+
+/// The female before and after, and the measurements.
+pub struct Fig10 {
+    pub before: Mesh,
+    pub after: Mesh,
+    pub breast_spec: SasmSpec,
+    pub nose_spec: AuxSpec,
+    pub breast: SasmReport,
+    pub nose: SasmReport,
+    pub applied: Vec<ApplyReport>,
+}
+
+fn host_depth(pr: &Projector, q: [f64; 2]) -> Result<f64, SasmError> {
+    pr.cast(q).map(|h| h.point[2]).ok_or(SasmError::Misses {
+        what: "demo stroke".into(),
+        part: pr.part.name.clone(),
+        view: View::Front,
+        index: 0,
+        at: q,
+    })
+}
+
+/// The breast (right of the viewer, model +x) on the torso.
+pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
+    let pr = Projector::new(torso, View::Front);
+    let (cx, cy, rx, ry, h) = (0.066, 1.075, 0.044, 0.045, 0.028);
+    let curve: Vec<[f64; 2]> = (0..=N)
+        .map(|i| {
+            let t = 2.0 * PI * i as f64 / N as f64;
+            [
+                cx + rx * t.cos(),
+                cy + ry * t.sin() * (1.0 - 0.15 * t.sin()),
+            ]
+        })
+        .collect();
+    // side profile: fuller below the centre
+    let mut side = Vec::new();
+    for i in 0..=N {
+        let y = cy + 0.05 - 0.1 * i as f64 / N as f64;
+        let t = ((y - cy) / 0.045).clamp(-1.0, 1.0);
+        let shape = if t > 0.0 {
+            (1.0 - t * t).powi(2)
+        } else {
+            (1.0 - t * t).sqrt() * (1.0 - t * t)
+        };
+        side.push([host_depth(&pr, [cx, y])? + h * shape, y]);
+    }
+    let mut top = Vec::new();
+    for i in 0..=N {
+        let x = cx - 0.042 + 0.084 * i as f64 / N as f64;
+        let t = ((x - cx) / 0.044).clamp(-1.0, 1.0);
+        top.push([x, host_depth(&pr, [x, cy])? + h * (1.0 - t * t).powi(2)]);
+    }
+    Ok(SasmSpec {
+        part: torso.name.clone(),
+        curve: Stroke {
+            view: View::Front,
+            points: curve,
+        },
+        profiles: vec![
+            Stroke {
+                view: View::Side,
+                points: side,
+            },
+            Stroke {
+                view: View::Top,
+                points: top,
+            },
+        ],
+    })
+}
+
+/// The nose on the head: the right half of its interface and the side
+/// profile along the symmetry plane x = 0.
+pub fn nose(head: &PartSurface) -> Result<AuxSpec, SasmError> {
+    let pr = Projector::new(head, View::Front);
+    let (top, tip, bottom, w) = (1.605, 1.553, 1.535, 0.019);
+    let line: Vec<[f64; 2]> = (0..=N)
+        .map(|i| {
+            let t = i as f64 / N as f64;
+            let y = top + (bottom - top) * t;
+            // narrow at the bridge, widest at the wings
+            let x = w * (PI * t).sin().powf(0.6) * (0.35 + 0.65 * t);
+            [x, y]
+        })
+        .collect();
+    let mut prof = Vec::new();
+    for i in 0..=N {
+        let y = top + 0.005 + (bottom - 0.004 - top - 0.005) * i as f64 / N as f64;
+        let bump = if y >= tip {
+            0.022 * ((top - y) / (top - tip)).clamp(0.0, 1.0).powf(1.3)
+        } else {
+            0.022 * ((y - bottom) / (tip - bottom)).clamp(0.0, 1.0).sqrt()
+        };
+        prof.push([host_depth(&pr, [0.0, y])? + bump, y]);
+    }
+    Ok(AuxSpec {
+        part: head.name.clone(),
+        line: Stroke {
+            view: View::Front,
+            points: line,
+        },
+        mirror: 0.0,
+        profile: Stroke {
+            view: View::Side,
+            points: prof,
+        },
+    })
+}
+
+/// Builds the female (final level), applies the breast and the nose, and
+/// measures both.
+pub fn female_fig10() -> Result<Fig10, SasmError> {
+    let doc = bundled("female", Level::Final)
+        .ok_or_else(|| SasmError::Mesh("the bundled female does not parse".into()))?;
+    let b = build_document(&doc, std::path::Path::new("."), Resolution::default(), true)
+        .map_err(|e| SasmError::Mesh(e.to_string()))?;
+    let part = |n: &str| {
+        b.model
+            .parts
+            .iter()
+            .find(|p| p.name == n)
+            .ok_or_else(|| SasmError::UnknownPart(n.into()))
+    };
+    let (torso, head) = (part("torso")?, part("head")?);
+    let breast_spec = breast(torso)?;
+    let nose_spec = nose(head)?;
+    let fb = Feature::from_spec(torso, &breast_spec)?;
+    let fnose = Feature::from_aux(head, &nose_spec)?;
+    let before = b.model.mesh.clone();
+    let mut mid = before.clone();
+    let a1 = apply_feature(&mut mid, torso, &fb)?;
+    let breast_r = measure(&before, &mid, torso, &fb)?;
+    let mut after = mid.clone();
+    let a2 = apply_feature(&mut after, head, &fnose)?;
+    let nose_r = measure(&mid, &after, head, &fnose)?;
+    Ok(Fig10 {
+        before,
+        after,
+        breast_spec,
+        nose_spec,
+        breast: breast_r,
+        nose: nose_r,
+        applied: vec![a1, a2],
+    })
+}

@@ -1,0 +1,356 @@
+//! The feature's height field over its region, from the profile strokes.
+
+use super::project::Projector;
+use super::region::{centroid, Region};
+use super::{axis_name, clean, depth_axis, SasmError, Stroke};
+use crate::profile::View;
+use crate::sketch::part::PartSurface;
+use std::f64::consts::PI;
+
+/// Fraction of each radius (next to the curve) over which the height is
+/// blended to zero with zero slope.
+pub const BLEND: f64 = 0.2;
+/// Samples of the height along each ray (rho from 0 to 1).
+pub const RAY_SAMPLES: usize = 65;
+/// Samples across the region when locating the peak.
+const PEAK_SAMPLES: usize = 257;
+/// Two profiles must agree on the height at the peak to this fraction.
+pub const PEAK_AGREEMENT: f64 = 0.25;
+
+/// A profile stroke read as the upper envelope of depth over the shared
+/// axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileCurve {
+    pub view: View,
+    pub points: Vec<[f64; 2]>,
+    /// Index (0, 1) of the depth coordinate in the profile's points.
+    pub kd: usize,
+    /// Index (0, 1) of the shared axis in the region view's points.
+    pub ri: usize,
+}
+
+impl ProfileCurve {
+    fn new(s: &Stroke, region: View, n: usize) -> Result<ProfileCurve, SasmError> {
+        let what = format!("profile {n} ({} view)", s.view);
+        let d = depth_axis(region);
+        let (ph, pv) = s.view.axes();
+        let kd = if ph == d {
+            0
+        } else if pv == d {
+            1
+        } else {
+            return Err(SasmError::View {
+                what,
+                found: s.view,
+                expected: format!(
+                    "a profile must show the {} axis, the depth of the curve's {} view",
+                    axis_name(d),
+                    region
+                ),
+            });
+        };
+        let shared = if kd == 0 { pv } else { ph };
+        let (rh, _) = region.axes();
+        let points = clean(&what, &s.points, 2)?;
+        Ok(ProfileCurve {
+            view: s.view,
+            points,
+            kd,
+            ri: if shared == rh { 0 } else { 1 },
+        })
+    }
+
+    /// Shared-axis range covered.
+    pub fn range(&self) -> [f64; 2] {
+        let ks = 1 - self.kd;
+        self.points
+            .iter()
+            .fold([f64::INFINITY, f64::NEG_INFINITY], |r, p| {
+                [r[0].min(p[ks]), r[1].max(p[ks])]
+            })
+    }
+
+    /// The greatest depth of the stroke at shared coordinate `s`.
+    pub fn depth_at(&self, s: f64) -> Option<f64> {
+        let (ks, kd) = (1 - self.kd, self.kd);
+        let mut best: Option<f64> = None;
+        for w in self.points.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let (lo, hi) = (a[ks].min(b[ks]), a[ks].max(b[ks]));
+            if s < lo || s > hi {
+                continue;
+            }
+            let z = if hi > lo {
+                let t = (s - a[ks]) / (b[ks] - a[ks]);
+                a[kd] + t * (b[kd] - a[kd])
+            } else {
+                a[kd].max(b[kd])
+            };
+            best = Some(best.map_or(z, |x: f64| x.max(z)));
+        }
+        best
+    }
+}
+
+/// A feature ready to apply: region and height along four rays.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Feature {
+    pub part: String,
+    pub view: View,
+    pub region: Region,
+    /// Height samples on the rays right (phi = 0), up, left, down.
+    pub rays: [Vec<f64>; 4],
+    /// Largest |height| on the rays.
+    pub peak: f64,
+    pub profiles: Vec<ProfileCurve>,
+}
+
+fn inside(poly: &[[f64; 2]], q: [f64; 2]) -> bool {
+    let mut c = false;
+    let n = poly.len();
+    for i in 0..n {
+        let (a, b) = (poly[i], poly[(i + n - 1) % n]);
+        if (a[1] > q[1]) != (b[1] > q[1])
+            && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]
+        {
+            c = !c;
+        }
+    }
+    c
+}
+
+impl Feature {
+    /// Builds a feature on `part` from a closed region polygon (already
+    /// validated) in `view` and one or two profiles. `axis`: a fixed
+    /// horizontal coordinate of the peak (the mirror axis of an auxiliary
+    /// line).
+    pub fn new(
+        part: &PartSurface,
+        view: View,
+        poly: &[[f64; 2]],
+        profiles: &[Stroke],
+        axis: Option<f64>,
+    ) -> Result<Feature, SasmError> {
+        if profiles.is_empty() || profiles.len() > 2 {
+            return Err(SasmError::Shape {
+                what: "profiles".into(),
+                message: format!(
+                    "expected one or two profile strokes, got {}",
+                    profiles.len()
+                ),
+            });
+        }
+        let pr = Projector::new(part, view);
+        super::project::project_stroke(&pr, "curve", poly)?;
+        let curves: Vec<ProfileCurve> = profiles
+            .iter()
+            .enumerate()
+            .map(|(i, s)| ProfileCurve::new(s, view, i + 1))
+            .collect::<Result<_, _>>()?;
+        if curves.len() == 2 && curves[0].ri == curves[1].ri {
+            return Err(SasmError::Shape {
+                what: "profiles".into(),
+                message: format!(
+                    "both profiles are drawn in views sharing the same axis with the {} view; use two different views",
+                    view
+                ),
+            });
+        }
+        let depth = |q: [f64; 2]| pr.cast(q).map(|h| pr.depth(h.point));
+        // the peak: along each profile's axis through the centroid, the
+        // largest height of the profile over the part
+        let mut c = centroid(poly);
+        if let Some(a) = axis {
+            c[0] = a;
+        }
+        let (lo, hi) =
+            poly.iter()
+                .fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(l, h), p| {
+                    (
+                        [l[0].min(p[0]), l[1].min(p[1])],
+                        [h[0].max(p[0]), h[1].max(p[1])],
+                    )
+                });
+        let c_start = c;
+        for pc in &curves {
+            let ri = pc.ri;
+            let mut best = (f64::NEG_INFINITY, c_start[ri]);
+            for k in 1..PEAK_SAMPLES - 1 {
+                let mut q = c_start;
+                q[ri] = lo[ri] + (hi[ri] - lo[ri]) * k as f64 / (PEAK_SAMPLES - 1) as f64;
+                if !inside(poly, q) {
+                    continue;
+                }
+                if let (Some(zp), Some(zh)) = (pc.depth_at(q[ri]), depth(q)) {
+                    if zp - zh > best.0 {
+                        best = (zp - zh, q[ri]);
+                    }
+                }
+            }
+            if ri == 0 && axis.is_some() {
+                continue;
+            }
+            c[ri] = best.1;
+        }
+        let region = Region::new(poly, c)?;
+        let mut rays: [Vec<f64>; 4] = Default::default();
+        let mut have = [false; 4];
+        for pc in &curves {
+            let cov = pc.range();
+            for k in [pc.ri, pc.ri + 2] {
+                let phi = k as f64 * PI / 2.0;
+                let mut e = Vec::with_capacity(RAY_SAMPLES);
+                let mut last = None;
+                for j in 0..RAY_SAMPLES {
+                    let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
+                    let q = region.at(rho, phi);
+                    let zh = depth(q).ok_or_else(|| SasmError::Misses {
+                        what: "the region's interior".into(),
+                        part: part.name.clone(),
+                        view,
+                        index: j,
+                        at: q,
+                    })?;
+                    let zp = match pc.depth_at(q[pc.ri]) {
+                        Some(z) => z,
+                        None if rho > 1.0 - BLEND => last.unwrap_or(zh),
+                        None => {
+                            let r0 = region.at(1.0 - BLEND, PI / 2.0 * pc.ri as f64);
+                            let r1 = region.at(1.0 - BLEND, PI / 2.0 * (pc.ri + 2) as f64);
+                            let (a, b) = (r0[pc.ri].min(r1[pc.ri]), r0[pc.ri].max(r1[pc.ri]));
+                            return Err(SasmError::ProfileShort {
+                                view: pc.view,
+                                axis: axis_name([view.axes().0, view.axes().1][pc.ri]),
+                                covered: cov,
+                                needed: [a, b],
+                            });
+                        }
+                    };
+                    last = Some(zp);
+                    e.push(zp - zh);
+                }
+                rays[k] = e;
+                have[k] = true;
+            }
+        }
+        // a missing pair: the mean of the other pair
+        for k in 0..2 {
+            if !have[k] {
+                let (a, b) = (&rays[k + 1], &rays[(k + 3) % 4]);
+                let m: Vec<f64> = a.iter().zip(b).map(|(x, y)| 0.5 * (x + y)).collect();
+                rays[k] = m.clone();
+                rays[k + 2] = m;
+            }
+        }
+        // both pairs must agree at the peak (the same point)
+        let (e_v, e_h) = (rays[1][0], rays[0][0]);
+        let scale = e_v.abs().max(e_h.abs());
+        if (e_v - e_h).abs() > PEAK_AGREEMENT * scale {
+            return Err(SasmError::Shape {
+                what: "profiles".into(),
+                message: format!(
+                    "the two profiles disagree on the feature's height at its peak ({e_v:.4} vs {e_h:.4})"
+                ),
+            });
+        }
+        for k in [0, 2] {
+            for (j, v) in rays[k].iter_mut().enumerate() {
+                let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
+                *v += (e_v - e_h) * (1.0 - rho);
+            }
+        }
+        let peak = rays.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+        if !(peak > 0.0) {
+            return Err(SasmError::Shape {
+                what: "profiles".into(),
+                message: "the profiles lie on the part: the feature has zero height".into(),
+            });
+        }
+        Ok(Feature {
+            part: part.name.clone(),
+            view,
+            region,
+            rays,
+            peak,
+            profiles: curves,
+        })
+    }
+
+    /// Height along ray `k` at `rho` (cubic Hermite with Catmull-Rom
+    /// slopes: C1 in rho).
+    pub fn ray(&self, k: usize, rho: f64) -> f64 {
+        let y = &self.rays[k];
+        let n = y.len() - 1;
+        let x = (rho.clamp(0.0, 1.0)) * n as f64;
+        let i = (x.floor() as usize).min(n - 1);
+        let t = x - i as f64;
+        let m = |j: usize| -> f64 {
+            if j == 0 {
+                y[1] - y[0]
+            } else if j == n {
+                y[n] - y[n - 1]
+            } else {
+                0.5 * (y[j + 1] - y[j - 1])
+            }
+        };
+        let (t2, t3) = (t * t, t * t * t);
+        (2.0 * t3 - 3.0 * t2 + 1.0) * y[i]
+            + (t3 - 2.0 * t2 + t) * m(i)
+            + (-2.0 * t3 + 3.0 * t2) * y[i + 1]
+            + (t3 - t2) * m(i + 1)
+    }
+
+    /// The height at a view-plane point (0 outside the region).
+    pub fn height(&self, q: [f64; 2]) -> f64 {
+        let (rho, phi) = self.region.polar(q);
+        if !(rho < 1.0) {
+            return 0.0;
+        }
+        let (c, s) = (phi.cos(), phi.sin());
+        let (c2, s2) = (c * c, s * s);
+        let w = [
+            if c > 0.0 { c2 } else { 0.0 },
+            if s > 0.0 { s2 } else { 0.0 },
+            if c < 0.0 { c2 } else { 0.0 },
+            if s < 0.0 { s2 } else { 0.0 },
+        ];
+        let v: f64 = (0..4)
+            .filter(|&k| w[k] > 0.0)
+            .map(|k| w[k] * self.ray(k, rho))
+            .sum();
+        let t = (1.0 - rho) / BLEND;
+        let b = if t >= 1.0 {
+            1.0
+        } else {
+            t * t * (3.0 - 2.0 * t)
+        };
+        v * b
+    }
+
+    /// Builds a feature from a [`super::SasmSpec`].
+    pub fn from_spec(part: &PartSurface, s: &super::SasmSpec) -> Result<Feature, SasmError> {
+        check_part(part, &s.part)?;
+        let poly = super::closed_polygon("curve", &s.curve.points)?;
+        Feature::new(part, s.curve.view, &poly, &s.profiles, None)
+    }
+
+    /// Builds a feature from an [`super::AuxSpec`].
+    pub fn from_aux(part: &PartSurface, s: &super::AuxSpec) -> Result<Feature, SasmError> {
+        check_part(part, &s.part)?;
+        let poly = super::mirrored_polygon("auxiliary line", &s.line.points, s.mirror)?;
+        Feature::new(
+            part,
+            s.line.view,
+            &poly,
+            std::slice::from_ref(&s.profile),
+            Some(s.mirror),
+        )
+    }
+}
+
+fn check_part(part: &PartSurface, name: &str) -> Result<(), SasmError> {
+    if part.name != name {
+        return Err(SasmError::UnknownPart(name.into()));
+    }
+    Ok(())
+}

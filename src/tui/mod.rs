@@ -1,0 +1,47 @@
+//! `pdesculpt tui`: a terminal UI to assemble and edit a character document
+//! (issue 14), built on ratatui and crossterm.
+//!
+//! The screen shows the part tree, the document's inputs, a half-block
+//! preview rendered by the CPU rasteriser ([`preview`]), the parameter panel
+//! of the selected part ([`params`]: PDE parameter and GEC transforms, values
+//! checked as typed), the edit log with its cursor (undo/redo move it), a
+//! status line with the live measurements (watertight, profile error, C1/C2
+//! jumps, rebuild time) and a message line. Keys: [`keys::BINDINGS`].
+//!
+//! * [`app`]: the state and its reaction to keys, pure (tests drive it and
+//!   render it on ratatui's `TestBackend`);
+//! * [`worker`]: rebuilds and exports on a worker thread; stale jobs are
+//!   dropped, a panic is caught and the document goes back to its last good
+//!   state;
+//! * [`autosave`]: the `CHAR.json.autosave` sidecar written after every
+//!   change and offered for recovery on the next start;
+//! * [`view`]: drawing; [`term`]: the crossterm event loop.
+//!
+//! Not done: adding a part from an SVG, a key section, a prop from a conv
+//! model, mesh-level (plate) edits; partial rebuilds (every change rebuilds
+//! the whole model, at a lower preview resolution); terminal image
+//! protocols; cancelling a build mid-way (an abandoned build runs to its end
+//! on the worker and its result is dropped).
+
+pub mod app;
+pub mod autosave;
+pub mod keys;
+pub mod params;
+pub mod preview;
+pub mod term;
+pub mod view;
+pub mod worker;
+
+pub use app::App;
+pub use term::{run, Options};
+
+/// Errors of the TUI.
+#[derive(Debug, thiserror::Error)]
+pub enum TuiError {
+    #[error(transparent)]
+    Doc(#[from] crate::character::doc::DocError),
+    #[error("no bundled example '{0}' (female, male)")]
+    Bundled(String),
+    #[error("terminal: {0}")]
+    Terminal(#[from] std::io::Error),
+}

@@ -1,0 +1,264 @@
+//! The parameter panel: rows describing the selected item, some of them
+//! editable, and the parsing of typed values into edits.
+//!
+//! A part shows its surface family and PDE parameter `a` (an
+//! [`Edit::ShapeParameter`], PDESM), its key sections, and one row per GEC
+//! transform (GECDSM: translate, scale, rotate, bend, bump) acting on the
+//! chosen section or on all of them. Values are parsed and range-checked as
+//! they are typed ([`parse`]: numbers, then `edit::validate_params`); an
+//! invalid value is shown with its error and cannot be applied. Transitions
+//! and removed parts are shown read-only.
+
+use crate::character::doc::{CharacterDoc, PartSpec, SectionShape, SurfaceSpec};
+use crate::character::edit::{validate_params, Edit, SectionTransform};
+
+/// What a row edits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RowKind {
+    /// Read-only information.
+    Info,
+    /// The part's PDE parameter `a`.
+    ShapeA,
+    /// Which section the transforms act on (`all` or an index).
+    Section,
+    Translate,
+    Scale,
+    Rotate,
+    Bend,
+    Bump,
+}
+
+impl RowKind {
+    /// Editable rows.
+    pub fn editable(self) -> bool {
+        self != RowKind::Info
+    }
+
+    /// What to type (shown while editing).
+    pub fn hint(self) -> &'static str {
+        match self {
+            RowKind::Info => "",
+            RowKind::ShapeA => "a (|a| <= A_MAX)",
+            RowKind::Section => "all | section index",
+            RowKind::Translate => "dx dy dz (model units)",
+            RowKind::Scale => "sx sy (factors along e1, e2)",
+            RowKind::Rotate => "angle (degrees)",
+            RowKind::Bend => "kappa (1/units) [ax ay az]",
+            RowKind::Bump => "h theta(deg) sigma",
+        }
+    }
+}
+
+/// One row of the panel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    pub label: String,
+    pub value: String,
+    pub kind: RowKind,
+}
+
+fn info(label: impl Into<String>, value: impl Into<String>) -> Row {
+    Row {
+        label: label.into(),
+        value: value.into(),
+        kind: RowKind::Info,
+    }
+}
+
+fn shape_text(s: &SectionShape) -> String {
+    match s {
+        SectionShape::Circle { r } => format!("circle r {r:.4}"),
+        SectionShape::Ellipse { a, b, offset } => {
+            format!("ellipse {a:.4} x {b:.4} off {offset:.3}")
+        }
+        SectionShape::Gec { x, .. } => format!("gec {} harmonics", x.len()),
+    }
+}
+
+/// Rows for a part (`part` as edited: the stored part with the active edits
+/// applied), transforms acting on `section` (None: all sections).
+pub fn part_rows(part: &PartSpec, section: Option<usize>) -> Vec<Row> {
+    let SurfaceSpec::Pde6C2 { a } = part.surface;
+    let mut rows = vec![
+        info("surface", "pde6 C2 chain (paper 002)"),
+        Row {
+            label: "a".into(),
+            value: format!("{a}"),
+            kind: RowKind::ShapeA,
+        },
+        info(
+            "ends",
+            format!(
+                "start {}, end {}",
+                if part.closed_start { "closed" } else { "open" },
+                if part.closed_end { "closed" } else { "open" }
+            ),
+        ),
+    ];
+    for (i, s) in part.sections.iter().enumerate() {
+        let mark = if section == Some(i) { "▸" } else { " " };
+        rows.push(info(
+            format!("{mark}sec {i}"),
+            format!("u {:.3} y {:.3} {}", s.u, s.centre[1], shape_text(&s.shape)),
+        ));
+    }
+    rows.push(Row {
+        label: "section".into(),
+        value: match section {
+            None => "all".into(),
+            Some(i) => format!("{i}"),
+        },
+        kind: RowKind::Section,
+    });
+    for (kind, label) in [
+        (RowKind::Translate, "translate"),
+        (RowKind::Scale, "scale"),
+        (RowKind::Rotate, "rotate"),
+        (RowKind::Bend, "bend"),
+        (RowKind::Bump, "bump"),
+    ] {
+        rows.push(Row {
+            label: label.into(),
+            value: format!("<{}>", kind.hint()),
+            kind,
+        });
+    }
+    rows
+}
+
+/// Rows for a transition or a removed part of `doc`.
+pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
+    if let Some(t) = doc.transitions.iter().find(|t| t.name == name) {
+        let mut rows = vec![
+            info("surface", "cubic Hermite blend (C1)"),
+            info("parent", format!("{} ({:?} end)", t.parent, t.parent_end)),
+            info("children", t.children.join(", ")),
+        ];
+        for (i, a) in t.seam_apex.iter().enumerate() {
+            rows.push(info(
+                format!("apex {i}"),
+                format!("{:.3} {:.3} {:.3}", a[0], a[1], a[2]),
+            ));
+        }
+        rows.push(info("edits", "none (transitions follow their parts)"));
+        return rows;
+    }
+    if doc.removed_parts.iter().any(|r| r.name == name) {
+        return vec![info("removed", "recorded, not built in version 1")];
+    }
+    Vec::new()
+}
+
+fn numbers(text: &str, min: usize, max: usize) -> Result<Vec<f64>, String> {
+    let words: Vec<&str> = text
+        .split(|c: char| c.is_whitespace() || c == ',')
+        .filter(|w| !w.is_empty())
+        .collect();
+    if words.len() < min || words.len() > max {
+        return Err(if min == max {
+            format!("expected {min} number(s), got {}", words.len())
+        } else {
+            format!("expected {min} to {max} numbers, got {}", words.len())
+        });
+    }
+    words
+        .iter()
+        .map(|w| match w.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            Ok(v) => Err(format!("'{w}' is not finite ({v})")),
+            Err(_) => Err(format!("'{w}' is not a number")),
+        })
+        .collect()
+}
+
+/// What a typed value means.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Parsed {
+    /// An edit to push.
+    Edit(Edit),
+    /// A new section choice (None: all).
+    Section(Option<usize>),
+}
+
+/// Parses `text` typed into a row of kind `kind` for `part`; errors say
+/// what is wrong (shown as typed, never applied).
+pub fn parse(
+    kind: RowKind,
+    text: &str,
+    part: &PartSpec,
+    section: Option<usize>,
+) -> Result<Parsed, String> {
+    let gec = |transform| Edit::GecTransform {
+        part: part.name.clone(),
+        section,
+        transform,
+    };
+    let edit = match kind {
+        RowKind::Info => return Err("this row is read-only".into()),
+        RowKind::Section => {
+            let t = text.trim();
+            if t == "all" {
+                return Ok(Parsed::Section(None));
+            }
+            let i: usize = t
+                .parse()
+                .map_err(|_| format!("'{t}' is neither 'all' nor a section index"))?;
+            if i >= part.sections.len() {
+                return Err(format!(
+                    "section {i} does not exist ({} has {} sections)",
+                    part.name,
+                    part.sections.len()
+                ));
+            }
+            return Ok(Parsed::Section(Some(i)));
+        }
+        RowKind::ShapeA => {
+            let v = numbers(text, 1, 1)?;
+            Edit::ShapeParameter {
+                part: part.name.clone(),
+                a: v[0],
+            }
+        }
+        RowKind::Translate => {
+            let v = numbers(text, 3, 3)?;
+            gec(SectionTransform::Translate {
+                d: [v[0], v[1], v[2]],
+            })
+        }
+        RowKind::Scale => {
+            let v = numbers(text, 1, 2)?;
+            gec(SectionTransform::Scale {
+                sx: v[0],
+                sy: *v.get(1).unwrap_or(&v[0]),
+            })
+        }
+        RowKind::Rotate => {
+            let v = numbers(text, 1, 1)?;
+            gec(SectionTransform::Rotate {
+                angle: v[0].to_radians(),
+            })
+        }
+        RowKind::Bend => {
+            let v = numbers(text, 1, 4)?;
+            if v.len() != 1 && v.len() != 4 {
+                return Err("expected kappa, or kappa and an axis of 3 numbers".into());
+            }
+            let axis = if v.len() == 4 {
+                [v[1], v[2], v[3]]
+            } else {
+                [0.0, 0.0, 1.0]
+            };
+            gec(SectionTransform::Bend { kappa: v[0], axis })
+        }
+        RowKind::Bump => {
+            let v = numbers(text, 3, 3)?;
+            gec(SectionTransform::Bump {
+                h: v[0],
+                theta: v[1].to_radians(),
+                sigma: v[2],
+            })
+        }
+    };
+    validate_params(&edit).map_err(|e| e.to_string())?;
+    Ok(Parsed::Edit(edit))
+}

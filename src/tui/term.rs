@@ -1,0 +1,124 @@
+//! The terminal event loop: crossterm events and worker outcomes in, the
+//! app's effects out, one redraw per event (and every 100 ms while a job
+//! runs, for the progress spinner).
+
+use super::app::{App, Effect, Mode};
+use super::autosave;
+use super::view::{self, PreviewCache};
+use super::worker::{Job, Task, Worker, THREAD_NAME};
+use super::TuiError;
+use crate::character::doc::{CharacterDoc, Level};
+use crate::sketch::Resolution;
+use crossterm::event::{self, Event, KeyEventKind};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// How the TUI starts.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The document (created on the first save when it does not exist).
+    pub path: PathBuf,
+    /// The bundled example a new document starts from (`female`, `male`).
+    pub bundled: String,
+    /// Resolution of the preview's rebuilds (exports use the default).
+    pub preview: Resolution,
+}
+
+/// The preview's default resolution: rings per model height.
+pub const PREVIEW_RINGS: f64 = 60.0;
+
+/// Loads the document (or the bundled example for a new one) and the
+/// recovery offer: the app as it starts.
+pub fn open(o: &Options) -> Result<App, TuiError> {
+    let (doc, on_disk) = if o.path.exists() {
+        let d = CharacterDoc::load(&o.path)?;
+        (d.clone(), Some(d))
+    } else {
+        let d = crate::sketch::check::bundled(&o.bundled, Level::Final)
+            .ok_or_else(|| TuiError::Bundled(o.bundled.clone()))?;
+        (d, None)
+    };
+    let recovery = autosave::offer(&o.path)?;
+    let mut app = App::new(doc, o.path.clone(), on_disk);
+    if let Some(r) = recovery {
+        app.mode = Mode::Recovery(Box::new(r.doc));
+    }
+    Ok(app)
+}
+
+/// Sends the effects' jobs; true when the app asked to quit.
+pub fn run_effects(app: &mut App, worker: &Worker, effects: Vec<Effect>, res: Resolution) -> bool {
+    for e in effects {
+        match e {
+            Effect::Quit => return true,
+            Effect::Cancel => {}
+            Effect::Rebuild => {
+                let gen = app.start_job(false);
+                worker.send(Job {
+                    gen,
+                    doc: app.doc.clone(),
+                    base: app.base.clone(),
+                    res,
+                    task: Task::Rebuild,
+                });
+            }
+            Effect::Export(path) => {
+                let gen = app.start_job(true);
+                worker.send(Job {
+                    gen,
+                    doc: app.doc.clone(),
+                    base: app.base.clone(),
+                    res: Resolution::default(),
+                    task: Task::Export { path },
+                });
+            }
+        }
+    }
+    false
+}
+
+fn install_panic_hook() {
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        // a panic in a rebuild is caught and shown in the status line:
+        // printing it would scribble over the screen
+        if std::thread::current().name() == Some(THREAD_NAME) {
+            return;
+        }
+        previous(info);
+    }));
+}
+
+/// Runs the TUI until the user quits.
+pub fn run(o: Options) -> Result<(), TuiError> {
+    let mut app = open(&o)?;
+    let worker = Worker::spawn();
+    let mut terminal = ratatui::init();
+    install_panic_hook();
+    let mut cache = PreviewCache::default();
+    run_effects(&mut app, &worker, vec![Effect::Rebuild], o.preview);
+    let result = (|| -> Result<(), TuiError> {
+        loop {
+            terminal.draw(|f| view::draw(f, &app, &mut cache))?;
+            let mut quit = false;
+            while let Some(out) = worker.poll() {
+                let effects = app.on_outcome(out);
+                quit |= run_effects(&mut app, &worker, effects, o.preview);
+            }
+            let wait = if app.running.is_some() { 100 } else { 250 };
+            if event::poll(Duration::from_millis(wait))? {
+                if let Event::Key(k) = event::read()? {
+                    if k.kind == KeyEventKind::Press {
+                        let effects = app.on_key(k);
+                        quit |= run_effects(&mut app, &worker, effects, o.preview);
+                    }
+                }
+            }
+            if quit {
+                return Ok(());
+            }
+        }
+    })();
+    ratatui::restore();
+    result
+}

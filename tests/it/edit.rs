@@ -1,0 +1,223 @@
+//! The edit log (local modeling, paper 000 sec 5): the document API, replay
+//! in `build_document`, and the CLI's edit/undo/redo/log with bad edits.
+
+use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+use pdesculpt::character::doc::{CharacterDoc, Level};
+use pdesculpt::character::edit::{Edit, EditError, SectionTransform};
+use pdesculpt::sketch::check::bundled;
+use pdesculpt::sketch::{build_document, Resolution};
+use std::path::Path;
+
+/// Low resolution for tests (each case builds a character).
+pub fn low() -> Resolution {
+    Resolution {
+        rings_per_height: 40.0,
+        transition_rows: 4,
+    }
+}
+
+/// The bundled female (final level) with its parts derived and stored.
+pub fn female() -> CharacterDoc {
+    let doc = bundled("female", Level::Final).expect("bundled");
+    build_document(&doc, Path::new("."), low(), true)
+        .expect("builds")
+        .doc
+}
+
+fn shape(part: &str, a: f64) -> Edit {
+    Edit::ShapeParameter {
+        part: part.into(),
+        a,
+    }
+}
+
+fn gec(part: &str, section: Option<usize>, transform: SectionTransform) -> Edit {
+    Edit::GecTransform {
+        part: part.into(),
+        section,
+        transform,
+    }
+}
+
+#[test]
+fn push_undo_redo_move_the_cursor_and_drop_the_redo_tail() {
+    let mut d = female();
+    assert!(matches!(d.undo(), Err(EditError::NothingToUndo)));
+    d.push_edit(shape("torso", 0.3)).expect("valid");
+    d.push_edit(gec(
+        "arm_l",
+        None,
+        SectionTransform::Scale { sx: 1.2, sy: 1.1 },
+    ))
+    .expect("valid");
+    assert_eq!(d.active_edits().len(), 2);
+    assert!(matches!(d.redo(), Err(EditError::NothingToRedo { len: 2 })));
+    d.undo().expect("undo");
+    assert_eq!(d.active_edits().len(), 1);
+    assert_eq!(d.edits.len(), 2);
+    d.redo().expect("redo");
+    d.undo().expect("undo");
+    d.push_edit(shape("head", 1.0)).expect("valid");
+    assert_eq!(d.edits.len(), 2, "the redo tail is dropped");
+    assert_eq!(d.edits[1], shape("head", 1.0));
+    assert_eq!(d.cursor, 2);
+}
+
+#[test]
+fn bad_edits_are_refused_before_anything_changes() {
+    let mut d = female();
+    d.push_edit(shape("torso", 0.3)).expect("valid");
+    let before = d.clone();
+    let bad = [
+        (shape("tail", 0.3), "unknown part 'tail'"),
+        (shape("torso", 50.0), "a = 50"),
+        (shape("torso", f64::NAN), "a = NaN"),
+        (
+            gec("torso", Some(99), SectionTransform::Rotate { angle: 0.1 }),
+            "section 99 does not exist",
+        ),
+        (
+            gec("torso", None, SectionTransform::Scale { sx: 0.0, sy: 1.0 }),
+            "sx = 0",
+        ),
+        (
+            gec(
+                "torso",
+                Some(3),
+                SectionTransform::Bump {
+                    h: -1.0,
+                    theta: 0.0,
+                    sigma: 0.2,
+                },
+            ),
+            "self-intersect",
+        ),
+        (
+            gec(
+                "leg_l",
+                None,
+                SectionTransform::Bend {
+                    kappa: 100.0,
+                    axis: [0.0, 0.0, 1.0],
+                },
+            ),
+            "kappa = 100",
+        ),
+    ];
+    for (e, needle) in bad {
+        let err = d.push_edit(e.clone()).expect_err(needle);
+        assert!(err.to_string().contains(needle), "{needle}: {err}");
+        assert_eq!(d, before, "{e:?} changed the document");
+    }
+}
+
+#[test]
+fn build_replays_the_active_edits_and_saving_keeps_the_parts_unedited() {
+    let d0 = female();
+    let base = build_document(&d0, Path::new("."), low(), false).expect("builds");
+    let mut d = d0.clone();
+    d.push_edit(gec(
+        "torso",
+        None,
+        SectionTransform::Translate {
+            d: [0.0, 0.0, 0.05],
+        },
+    ))
+    .expect("valid");
+    let b = build_document(&d, Path::new("."), low(), false).expect("builds");
+    assert_eq!(b.doc.parts, d0.parts, "stored parts are not edited");
+    assert_ne!(b.model.mesh.positions, base.model.mesh.positions);
+    assert!(b.report.topology.watertight, "{:?}", b.report.topology);
+    d.undo().expect("undo");
+    let u = build_document(&d, Path::new("."), low(), false).expect("builds");
+    assert_eq!(
+        u.model.mesh, base.model.mesh,
+        "undo gives the mesh bit for bit"
+    );
+}
+
+fn write(path: &Path, text: &str) {
+    std::fs::write(path, text).expect("writes");
+}
+
+#[test]
+fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
+    let dir = tmpdir("edit-cli");
+    let doc = dir.join("char.json");
+    female().save(&doc).expect("saves");
+    let docs = doc.to_str().unwrap();
+    let op = dir.join("op.json");
+    let ops = op.to_str().unwrap();
+    write(
+        &op,
+        r#"{"op": "shape_parameter", "part": "torso", "a": 0.3}"#,
+    );
+    let o = pdesculpt(&["character", "edit", docs, "--op", ops]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    write(
+        &op,
+        r#"{"op": "gec_transform", "part": "arm_r", "transform": {"kind": "rotate", "angle": 0.2}}"#,
+    );
+    let o = pdesculpt(&["character", "edit", docs, "--op", ops]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = pdesculpt(&["character", "undo", docs]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = pdesculpt(&["--json", "character", "log", docs]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    assert_eq!(v["cursor"], 1);
+    assert_eq!(v["edits"].as_array().map(|a| a.len()), Some(2));
+    assert_eq!(v["edits"][1]["active"], false);
+    let o = pdesculpt(&["character", "redo", docs]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = pdesculpt(&["character", "log", docs]);
+    let log = String::from_utf8_lossy(&o.stdout);
+    assert!(log.contains("2 edits, 2 active"), "{log}");
+
+    let before = std::fs::read(&doc).expect("reads");
+    let bad = [
+        (
+            r#"{"op": "shape_parameter", "part": "tail", "a": 0.3}"#,
+            "unknown part 'tail'",
+        ),
+        (
+            r#"{"op": "shape_parameter", "part": "torso", "a": 1e3}"#,
+            "a = 1000",
+        ),
+        (
+            r#"{"op": "shape_parameter", "part": "torso", "a": NaN}"#,
+            "not an edit",
+        ),
+        (
+            r#"{"op": "gec_transform", "part": "torso", "section": 3, "transform": {"kind": "bump", "h": -1.0, "theta": 0.0, "sigma": 0.2}}"#,
+            "self-intersect",
+        ),
+        (
+            r#"{"op": "gec_transform", "part": "torso", "transform": {"kind": "scale", "sx": -1.0, "sy": 1.0}}"#,
+            "sx = -1",
+        ),
+        (r#"{"op": "teleport", "part": "torso"}"#, "not an edit"),
+        (
+            r#"{"op": "shape_parameter", "part": "torso", "a": 0.3, "b": 1}"#,
+            "unknown field",
+        ),
+    ];
+    for (text, needle) in bad {
+        write(&op, text);
+        let o = pdesculpt(&["character", "edit", docs, "--op", ops]);
+        assert_clear_error(&o, needle);
+        assert_eq!(std::fs::read(&doc).expect("reads"), before, "{text}");
+    }
+    let o = pdesculpt(&["character", "redo", docs]);
+    assert_clear_error(&o, "nothing to redo");
+    assert_eq!(std::fs::read(&doc).expect("reads"), before);
+    // a document whose cursor is past its log is refused on load
+    let text = String::from_utf8(before.clone()).unwrap();
+    let broken = text.replace("\"cursor\": 2", "\"cursor\": 7");
+    assert_ne!(broken, text);
+    let bdoc = dir.join("broken.json");
+    write(&bdoc, &broken);
+    let o = pdesculpt(&["character", "undo", bdoc.to_str().unwrap()]);
+    assert_clear_error(&o, "cursor 7");
+    assert_eq!(std::fs::read_to_string(&bdoc).unwrap(), broken);
+}

@@ -1,0 +1,301 @@
+//! The terminal UI's state and screens, on ratatui's `TestBackend`: part
+//! tree, parameter panel, an invalid value shown as an error and not
+//! applied, the edit log with undo/redo, a panicking or failing rebuild
+//! leaving the document as it was, autosave and recovery.
+
+use crate::cli::tmpdir;
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use pdesculpt::character::doc::CharacterDoc;
+use pdesculpt::sketch::Resolution;
+use pdesculpt::tui::app::{App, Effect, Focus, Mode};
+use pdesculpt::tui::autosave;
+use pdesculpt::tui::term::{open, Options};
+use pdesculpt::tui::view::{draw, PreviewCache};
+use pdesculpt::tui::worker::{self, Job, Outcome, Task, Worker};
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// Coarse resolution: these tests look at the UI, not at the geometry.
+const RES: Resolution = Resolution {
+    rings_per_height: 24.0,
+    transition_rows: 4,
+};
+
+fn options(name: &str) -> Options {
+    Options {
+        path: tmpdir(&format!("tui-{name}")).join("char.json"),
+        bundled: "female".into(),
+        preview: RES,
+    }
+}
+
+fn job(app: &mut App) -> Job {
+    Job {
+        gen: app.start_job(false),
+        doc: app.doc.clone(),
+        base: app.base.clone(),
+        res: RES,
+        task: Task::Rebuild,
+    }
+}
+
+/// Runs the effects synchronously (rebuilds on this thread).
+fn settle(app: &mut App, effects: Vec<Effect>) {
+    for e in effects {
+        if e == Effect::Rebuild {
+            let j = job(app);
+            let result = worker::build(&j).map(Box::new);
+            let more = app.on_outcome(Outcome::Built {
+                gen: j.gen,
+                result,
+                elapsed: Duration::ZERO,
+            });
+            settle(app, more);
+        }
+    }
+}
+
+/// The bundled female, opened at a fresh path and built once.
+fn built(name: &str) -> App {
+    let o = options(name);
+    let _ = std::fs::remove_file(&o.path);
+    let _ = autosave::remove(&o.path);
+    let mut app = open(&o).expect("opens");
+    settle(&mut app, vec![Effect::Rebuild]);
+    assert!(app.shown.is_some(), "first build: {:?}", app.message);
+    app
+}
+
+fn key(app: &mut App, c: KeyCode) {
+    let e = app.on_key(KeyEvent::new(c, KeyModifiers::NONE));
+    settle(app, e);
+}
+
+fn typed(app: &mut App, s: &str) {
+    for c in s.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+fn screen(app: &App) -> String {
+    let mut t = Terminal::new(TestBackend::new(160, 48)).expect("terminal");
+    let mut cache = PreviewCache::default();
+    t.draw(|f| draw(f, app, &mut cache)).expect("draws");
+    let buf = t.backend().buffer();
+    let mut out = String::new();
+    for y in 0..buf.area.height {
+        for x in 0..buf.area.width {
+            out.push_str(buf[(x, y)].symbol());
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Moves the parameter selection to the row labelled `label`.
+fn to_row(app: &mut App, label: &str) {
+    app.focus = Focus::Params;
+    let i = app
+        .rows()
+        .iter()
+        .position(|r| r.label == label)
+        .expect("row exists");
+    app.param_sel = i;
+}
+
+#[test]
+fn tui_screen_shows_part_tree_inputs_status_and_preview() {
+    let app = built("tree");
+    let s = screen(&app);
+    for part in [
+        "torso",
+        "head",
+        "arm_l",
+        "arm_r",
+        "leg_l",
+        "leg_r",
+        "shoulders",
+        "hips",
+    ] {
+        assert!(s.contains(part), "{part} missing from the part tree:\n{s}");
+    }
+    assert!(s.contains("level    final"), "{s}");
+    assert!(s.contains("✓ watertight"), "{s}");
+    assert!(s.contains("front err"), "{s}");
+    assert!(s.contains("Edit log (0 of 0 active)"), "{s}");
+    // the preview is drawn with half blocks, and the first part is highlighted
+    assert!(s.matches('▀').count() > 100, "{s}");
+    assert!(s.contains("Parameters: torso"), "{s}");
+}
+
+#[test]
+fn tui_invalid_value_is_shown_as_an_error_and_not_applied() {
+    let mut app = built("invalid");
+    let before = app.doc.clone();
+    to_row(&mut app, "a");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "1x");
+    let s = screen(&app);
+    assert!(s.contains("✗ '1x' is not a number"), "{s}");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.doc, before, "an invalid value must not be applied");
+    assert!(matches!(app.mode, Mode::Editing { .. }));
+    // out of the documented range: the library's error, shown as typed
+    key(&mut app, KeyCode::Backspace);
+    key(&mut app, KeyCode::Backspace);
+    typed(&mut app, "1e9");
+    let s = screen(&app);
+    assert!(s.contains("out of range"), "{s}");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.doc, before);
+    // a scale factor of zero
+    key(&mut app, KeyCode::Esc);
+    to_row(&mut app, "scale");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "0 1");
+    assert!(screen(&app).contains("sx = 0 is out of range"));
+}
+
+#[test]
+fn tui_edit_undo_redo_through_the_log() {
+    let mut app = built("log");
+    to_row(&mut app, "scale");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "1.1 1.05");
+    assert!(screen(&app).contains("✓ Enter applies"));
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(
+        (app.doc.edits.len(), app.doc.cursor),
+        (1, 1),
+        "{:?}",
+        app.message
+    );
+    let s = screen(&app);
+    assert!(s.contains("Edit log (1 of 1 active)"), "{s}");
+    assert!(!app.stale, "rebuilt after the edit");
+    // the sidecar holds the edit
+    // (parts go through JSON, whose float parsing may round: compare the log)
+    let side = CharacterDoc::load(&autosave::sidecar(&app.path)).expect("autosave");
+    assert_eq!((&side.edits, side.cursor), (&app.doc.edits, 1));
+    assert_eq!(side.parts.len(), app.doc.parts.len());
+    key(&mut app, KeyCode::Char('u'));
+    assert_eq!(app.doc.cursor, 0);
+    assert!(screen(&app).contains("Edit log (0 of 1 active)"));
+    let e = app.on_key(KeyEvent::new(KeyCode::Char('y'), KeyModifiers::CONTROL));
+    settle(&mut app, e);
+    assert_eq!(app.doc.cursor, 1);
+    let e = app.on_key(KeyEvent::new(KeyCode::Char('z'), KeyModifiers::CONTROL));
+    settle(&mut app, e);
+    assert_eq!(app.doc.cursor, 0);
+    key(&mut app, KeyCode::Char('r'));
+    assert_eq!(app.doc.cursor, 1);
+    // quitting with unsaved changes asks; saving removes the sidecar
+    key(&mut app, KeyCode::Char('q'));
+    assert_eq!(app.mode, Mode::ConfirmQuit);
+    assert!(screen(&app).contains("unsaved changes"));
+    key(&mut app, KeyCode::Esc);
+    key(&mut app, KeyCode::Char('s'));
+    assert!(!app.dirty());
+    assert!(!autosave::sidecar(&app.path).exists());
+    let saved = CharacterDoc::load(&app.path).expect("saved");
+    assert_eq!((&saved.edits, saved.cursor), (&app.doc.edits, 1));
+    assert_eq!(
+        app.on_key(KeyEvent::new(KeyCode::Char('q'), KeyModifiers::NONE)),
+        vec![Effect::Quit]
+    );
+}
+
+#[test]
+fn tui_panicking_rebuild_leaves_the_document_as_before_the_edit() {
+    let mut app = built("panic");
+    let good = app.doc.clone();
+    to_row(&mut app, "scale");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "1.2");
+    // apply without rebuilding here: the rebuild goes to a worker whose
+    // build panics
+    let effects = app.on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
+    assert_eq!(effects, vec![Effect::Rebuild]);
+    assert_eq!(app.doc.edits.len(), 1);
+    let w = Worker::with_build(Box::new(|_| panic!("injected failure")));
+    let j = job(&mut app);
+    assert!(w.send(j));
+    let mut outcome = None;
+    while let Some(o) = w.wait(Duration::from_secs(30)) {
+        if !matches!(o, Outcome::Started { .. }) {
+            outcome = Some(o);
+            break;
+        }
+    }
+    let o = outcome.expect("the worker reports");
+    assert!(matches!(&o, Outcome::Panicked { message, .. } if message == "injected failure"));
+    app.on_outcome(o);
+    assert_eq!(app.doc, good, "back to the document before the edit");
+    let s = screen(&app);
+    assert!(s.contains("rebuild panicked: injected failure"), "{s}");
+    // the worker survives its panic
+    let j = job(&mut app);
+    assert!(w.send(j));
+    assert!(w.wait(Duration::from_secs(30)).is_some());
+}
+
+#[test]
+fn tui_recovery_is_offered_for_a_newer_sidecar() {
+    let mut app = built("recover");
+    to_row(&mut app, "a");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "0.5");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.doc.edits.len(), 1, "{:?}", app.message);
+    let edited = app.doc.clone();
+    // a new session at the same path: the document does not exist, the
+    // sidecar does
+    let o = Options {
+        path: app.path.clone(),
+        bundled: "female".into(),
+        preview: RES,
+    };
+    let mut again = open(&o).expect("opens");
+    // (the parts go through JSON: compare the log)
+    assert!(matches!(&again.mode, Mode::Recovery(d) if d.edits == edited.edits && d.cursor == 1));
+    assert!(screen(&again).contains("Recover?"));
+    key(&mut again, KeyCode::Char('y'));
+    assert_eq!(again.doc.edits, edited.edits);
+    assert!(again.dirty());
+    // after a save nothing is offered
+    key(&mut again, KeyCode::Char('s'));
+    assert!(autosave::offer(&o.path).expect("reads").is_none());
+}
+
+#[test]
+fn tui_help_lists_the_key_bindings() {
+    let mut app = built("help");
+    key(&mut app, KeyCode::Char('?'));
+    let s = screen(&app);
+    for (k, _) in pdesculpt::tui::keys::BINDINGS {
+        assert!(s.contains(k), "{k} missing from help:\n{s}");
+    }
+    key(&mut app, KeyCode::Char('x'));
+    assert_eq!(app.mode, Mode::Normal);
+}
+
+#[test]
+fn tui_export_path_is_checked_before_any_work() {
+    let mut app = built("export");
+    key(&mut app, KeyCode::Char('e'));
+    assert!(matches!(app.mode, Mode::Export { .. }));
+    for _ in 0..200 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    let p: PathBuf = app.base.join("out.xyz");
+    typed(&mut app, &p.display().to_string());
+    let e = app.on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
+    assert!(e.is_empty());
+    assert!(
+        app.message.as_ref().is_some_and(|m| m.error),
+        "{:?}",
+        app.message
+    );
+}
