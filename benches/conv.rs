@@ -5,7 +5,10 @@
 //! the same sampled field; and the closed-form field against quadrature.
 //!
 //! Run one group: `cargo bench --bench conv -- conv_teddy --warm-up-time 1
-//! --measurement-time 3`.
+//! --measurement-time 3`. The brute-force build at 160 cells takes 15-120 s
+//! (idle to loaded machine), too long for criterion's ten samples: with
+//! `CONV_BRUTE_160=1` the 160-cell group times one build of each sampler
+//! in the same process and prints the ratio instead.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::conv::model::{Component, Model, Polygonizer};
@@ -87,8 +90,24 @@ fn teddy(c: &mut Criterion) {
         g.bench_function("narrow_band", |b| {
             b.iter(|| build(res, Sampler::NarrowBand))
         });
-        g.bench_function("brute_force", |b| b.iter(|| build(res, Sampler::Reference)));
+        if res == 96 {
+            g.bench_function("brute_force", |b| b.iter(|| build(res, Sampler::Reference)));
+        }
         g.finish();
+    }
+    if std::env::var_os("CONV_BRUTE_160").is_some() {
+        let time = |sampler: Sampler| {
+            let t0 = std::time::Instant::now();
+            let n = build(160, sampler);
+            (t0.elapsed().as_secs_f64(), n)
+        };
+        let (fast, nf) = time(Sampler::NarrowBand);
+        let (brute, nb) = time(Sampler::Reference);
+        println!(
+            "conv_teddy_160 one build each: narrow_band {fast:.3} s ({nf} triangles), \
+             brute_force {brute:.2} s ({nb} triangles), ratio {:.1}x",
+            brute / fast
+        );
     }
     let mut g = c.benchmark_group("conv_teddy_fit_only");
     g.sample_size(10);

@@ -76,11 +76,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ts += (t2 - t1).as_secs_f64();
             tp += (t3 - t2).as_secs_f64();
             println!(
-                "  res {r} group {g}: sample {:.1} ms ({} nodes, {} evaluated, {:.1} segments per evaluation, {} boxes tested), polygonise {:.1} ms, {} triangles",
+                "  res {r} group {g}: sample {:.1} ms ({} nodes, {} evaluated, {:.1} segments + {:.1} clusters per evaluation, {} boxes tested), polygonise {:.1} ms, {} triangles",
                 1e3 * (t2 - t1).as_secs_f64(),
                 st.nodes,
                 st.evaluated,
                 st.segment_evaluations as f64 / st.evaluated.max(1) as f64,
+                st.cluster_evaluations as f64 / st.evaluated.max(1) as f64,
                 st.boxes_tested,
                 1e3 * (t3 - t2).as_secs_f64(),
                 mesh.triangles.len()

@@ -26,7 +26,18 @@
 //! of the accepted clusters then sum to at most `budget`; at a point
 //! ($\rho = 0$) the segments add no width, so the midpoint of the interval
 //! is within `budget / 2` of the exact field.
+//!
+//! **Interaction lists.** [`SegmentBvh::near_list`] serves every point of
+//! a ball at once: a cluster whose bound over the whole ball is within its
+//! share adds its midpoint (a constant); otherwise, when all its segments
+//! share one kernel width, its second-order expansion
+//! ([`super::farfield::Moments`]) is evaluated at each point if its proven
+//! error there is at most half its share; otherwise it is opened, and
+//! leaf segments are evaluated exactly (one arctangent,
+//! [`super::farfield::SegmentField`]). Every accepted cluster errs by at
+//! most half its share, so the sum is within `budget / 2` of the field.
 
+use super::farfield::{Moments, SegmentField};
 use super::kernel::Segment;
 use crate::mesh::{dot, norm, sub};
 
@@ -83,14 +94,25 @@ struct Node {
     neg: f64,
     s_min: f64,
     s_max: f64,
+    /// Moments about `centre` (for the expansion when `s_min == s_max`).
+    moments: Moments,
     /// Leaf: `Err(segment index)`; inner: `Ok([left, right])`.
     kids: Result<[usize; 2], usize>,
+}
+
+/// What [`SegmentBvh::near_list`] hands back for a ball: the segments to
+/// evaluate exactly and the clusters to evaluate by their expansion.
+#[derive(Clone, Debug, Default)]
+pub struct Interaction {
+    pub segments: Vec<usize>,
+    pub clusters: Vec<usize>,
 }
 
 /// The hierarchy over a group's segments, each with its own kernel width.
 #[derive(Clone, Debug)]
 pub struct SegmentBvh {
     segments: Vec<(Segment, f64)>,
+    fields: Vec<SegmentField>,
     nodes: Vec<Node>,
     total_mass: f64,
 }
@@ -99,8 +121,13 @@ impl SegmentBvh {
     /// Builds the hierarchy over `(segment, s)` pairs (median splits along
     /// the longest axis of the midpoints' box).
     pub fn new(segments: Vec<(Segment, f64)>) -> SegmentBvh {
+        let fields = segments
+            .iter()
+            .map(|(g, s)| SegmentField::new(g, *s))
+            .collect();
         let mut bvh = SegmentBvh {
             segments,
+            fields,
             nodes: Vec::new(),
             total_mass: 0.0,
         };
@@ -151,6 +178,10 @@ impl SegmentBvh {
             let seg = &self.segments[i].0;
             radius = radius.max(norm(sub(seg.p, centre)).max(norm(sub(seg.q, centre))));
         }
+        let mut moments = Moments::default();
+        for &i in idx.iter() {
+            moments.add(&Moments::of_segment(&self.segments[i].0, centre));
+        }
         let me = self.nodes.len();
         self.nodes.push(Node {
             centre,
@@ -159,6 +190,7 @@ impl SegmentBvh {
             neg,
             s_min,
             s_max,
+            moments,
             kids: Err(idx[0]),
         });
         if idx.len() > 1 {
@@ -183,7 +215,10 @@ impl SegmentBvh {
     /// cluster whose bounds are within its share of `budget` (or that cannot
     /// be split further) adds its bounds; a leaf segment that is not accepted
     /// is handed to `leaf` with its node and its own bounds `(l, h)`, and adds
-    /// what `leaf` returns. Returns the summed `(lo, hi)`.
+    /// what `leaf` returns. Before a cluster is opened, `lump` may take it
+    /// (node index, node, distance from `x` to its centre, its share of
+    /// `budget`): then it adds nothing to the bounds. Returns the summed
+    /// `(lo, hi)`.
     #[inline]
     fn walk(
         &self,
@@ -191,6 +226,7 @@ impl SegmentBvh {
         rho: f64,
         budget: f64,
         mut leaf: impl FnMut(&Node, usize, f64, f64) -> (f64, f64),
+        mut lump: impl FnMut(usize, &Node, f64, f64) -> bool,
     ) -> (f64, f64) {
         if self.nodes.is_empty() {
             return (0.0, 0.0);
@@ -205,7 +241,8 @@ impl SegmentBvh {
         let mut top = 1;
         while top > 0 {
             top -= 1;
-            let node = &self.nodes[stack[top]];
+            let id = stack[top];
+            let node = &self.nodes[id];
             let dc = norm(sub(x, node.centre));
             let dmin = (dc - node.radius - rho).max(0.0);
             let dmax = dc + node.radius + rho;
@@ -218,9 +255,13 @@ impl SegmentBvh {
                 node.neg * kernel(dmax, node.s_max),
             );
             let (l, h) = (far.0 - near.1, near.0 - far.1);
-            if h - l <= per_mass * (node.pos + node.neg) {
+            let share = per_mass * (node.pos + node.neg);
+            if h - l <= share {
                 lo += l;
                 hi += h;
+                continue;
+            }
+            if lump(id, node, dc, share) {
                 continue;
             }
             match node.kids {
@@ -247,9 +288,9 @@ impl SegmentBvh {
     /// `x`; accepted cluster approximations add at most `budget` to the
     /// width `hi - lo` (see the module doc).
     pub fn interval(&self, x: [f64; 3], rho: f64, budget: f64) -> (f64, f64) {
-        self.walk(x, rho, budget, |node, i, l, h| {
+        let leaf = |node: &Node, i: usize, l: f64, h: f64| {
             let (seg, s) = &self.segments[i];
-            let f = seg.field(x, *s);
+            let f = self.fields[i].value(x);
             if rho == 0.0 {
                 (f, f)
             } else {
@@ -257,38 +298,60 @@ impl SegmentBvh {
                 let slope = (node.pos + node.neg) * slope_bound(d, *s);
                 ((f - rho * slope).max(l), (f + rho * slope).min(h))
             }
-        })
+        };
+        self.walk(x, rho, budget, leaf, |_, _, _, _| false)
     }
 
     /// The interaction list of the ball of radius `rho` around `x`: the
-    /// segments to evaluate exactly at its points, and bounds `(lo, hi)`,
-    /// valid on the whole ball, of the sum of all other segments, with
-    /// `hi - lo <= budget`. [`Self::near_field`] of the list plus the
-    /// midpoint of the bounds is then the field within `budget / 2`
-    /// anywhere in the ball.
+    /// segments to evaluate exactly and the clusters to evaluate by their
+    /// expansion at its points, and bounds `(lo, hi)`, valid on the whole
+    /// ball, of the sum of all other segments. [`Self::near_field`] of the
+    /// list plus the midpoint of the bounds is then the field within
+    /// `budget / 2` anywhere in the ball (see the module doc).
     pub fn near_list(
         &self,
         x: [f64; 3],
         rho: f64,
         budget: f64,
-        near: &mut Vec<usize>,
+        list: &mut Interaction,
     ) -> (f64, f64) {
-        near.clear();
-        self.walk(x, rho, budget, |_, i, _, _| {
-            near.push(i);
-            (0.0, 0.0)
-        })
+        list.segments.clear();
+        list.clusters.clear();
+        let clusters = &mut list.clusters;
+        let segments = &mut list.segments;
+        self.walk(
+            x,
+            rho,
+            budget,
+            |_, i, _, _| {
+                segments.push(i);
+                (0.0, 0.0)
+            },
+            |id, node, dc, share| {
+                let single = node.s_min == node.s_max;
+                let dmin = (dc - node.radius - rho).max(0.0);
+                let take = single && 2.0 * node.moments.error_bound(node.s_min, dmin) <= share;
+                if take {
+                    clusters.push(id);
+                }
+                take
+            },
+        )
     }
 
-    /// The exact field at `x` of the segments `list` (from
-    /// [`Self::near_list`]).
-    pub fn near_field(&self, list: &[usize], x: [f64; 3]) -> f64 {
-        list.iter()
-            .map(|&i| {
-                let (seg, s) = &self.segments[i];
-                seg.field(x, *s)
-            })
-            .sum()
+    /// The field at `x` of the interaction list `list` (from
+    /// [`Self::near_list`]): exact segments plus cluster expansions.
+    #[inline]
+    pub fn near_field(&self, list: &Interaction, x: [f64; 3]) -> f64 {
+        let mut f = 0.0;
+        for &i in &list.segments {
+            f += self.fields[i].value(x);
+        }
+        for &c in &list.clusters {
+            let n = &self.nodes[c];
+            f += n.moments.expansion(n.centre, n.s_min, x);
+        }
+        f
     }
 
     /// The field at `x` within `budget / 2` (midpoint of [`Self::interval`]

@@ -137,7 +137,7 @@ fn bound_checks(out: &mut Vec<Check>) {
     let mut rng = Lcg(16);
     let (mut violation, mut point_ratio) = (0.0f64, 0.0f64);
     let budget = 1e-3 * t;
-    let mut near = Vec::new();
+    let mut near = super::bvh::Interaction::default();
     for _ in 0..200 {
         let c = [0, 1, 2].map(|_| rng.range(-3.0, 3.0));
         let rho = rng.range(0.0, 0.6);
@@ -179,6 +179,82 @@ fn bound_checks(out: &mut Vec<Check>) {
             1.0 + tol::scaled(tol::ROUNDING, 1e6),
         )
         .note("teddy: |approximate - exact field| / (budget / 2) at points (budget 1e-3 T; interaction lists and single points); must stay <= 1"),
+    );
+}
+
+/// The one-arctangent segment field against the closed form, and the
+/// cluster expansion's error against its proven bound (module doc of
+/// [`super::farfield`]), on random segments, clusters and points.
+fn farfield_checks(out: &mut Vec<Check>) {
+    use super::farfield::{Moments, SegmentField};
+    use super::kernel::Segment;
+    let mut rng = Lcg(1616);
+    let (mut kernel_err, mut bound_ratio) = (0.0f64, 0.0f64);
+    for _ in 0..200 {
+        let cluster: Vec<Segment> = (0..1 + (rng.next_f64() * 6.0) as usize)
+            .map(|_| {
+                let p = [0, 1, 2].map(|_| rng.range(-0.5, 0.5));
+                let q = [0, 1, 2].map(|k| p[k] + rng.range(-0.4, 0.4));
+                Segment {
+                    p,
+                    q,
+                    w0: rng.range(-0.5, 2.0),
+                    w1: rng.range(-0.5, 2.0),
+                    lambda: rng.range(-1.0, 3.0),
+                }
+            })
+            .collect();
+        let s = rng.range(0.3, 4.0);
+        let c = [0, 1, 2].map(|_| rng.range(-0.1, 0.1));
+        let mut m = Moments::default();
+        let mut radius = 0.0f64;
+        for g in &cluster {
+            m.add(&Moments::of_segment(g, c));
+            radius = radius.max(norm(sub(g.p, c))).max(norm(sub(g.q, c)));
+        }
+        for _ in 0..5 {
+            let dir = [0, 1, 2].map(|_| rng.range(-1.0, 1.0));
+            let dist = rng.range(0.0, 6.0);
+            let x = [0, 1, 2].map(|k| c[k] + dist * dir[k] / norm(dir).max(1e-9));
+            let mut exact = 0.0;
+            let mut mass = 0.0;
+            for g in &cluster {
+                let f = g.field(x, s);
+                exact += f;
+                let own = g.lambda.abs() * (g.w0.abs() + g.w1.abs()) * g.length();
+                mass += own;
+                let diff = (SegmentField::new(g, s).value(x) - f).abs();
+                kernel_err = kernel_err.max(diff / own.max(f64::MIN_POSITIVE));
+            }
+            let dmin = (norm(sub(x, c)) - radius).max(0.0);
+            let err = (m.expansion(c, s, x) - exact).abs();
+            let bound = m.error_bound(s, dmin);
+            bound_ratio = bound_ratio.max(err / (bound + tol::ROUNDING * mass));
+        }
+    }
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 one-arctangent field",
+            "conv.fast.segment_field_matches_closed_form",
+            Kind::Reference,
+            kernel_err,
+            tol::scaled(tol::ROUNDING, 100.0),
+        )
+        .note("1000 random segments and points: |one-atan2 field - closed form| / (|lambda| (|w0|+|w1|) l)"),
+    );
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 cluster expansion",
+            "conv.fast.expansion_within_bound",
+            Kind::Reference,
+            bound_ratio,
+            1.0,
+        )
+        .note("200 random clusters (1-6 signed segments), 5 points each at any distance: |second-order expansion - exact| / proven bound; must stay <= 1"),
     );
 }
 
@@ -337,6 +413,7 @@ pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
     mesh_checks(&mut out);
     bound_checks(&mut out);
+    farfield_checks(&mut out);
     incremental_checks(&mut out);
     regression_checks(&mut out);
     hildreth_checks(&mut out);

@@ -20,6 +20,7 @@ pub mod bvh;
 pub mod check;
 pub mod check_fast;
 pub mod check_quadrature;
+pub mod farfield;
 pub mod fit;
 pub mod incremental;
 pub mod kernel;

@@ -14,7 +14,7 @@
 //! cells as with the field sampled everywhere. The work grows with the
 //! surface area, not the volume.
 
-use super::bvh::SegmentBvh;
+use super::bvh::{Interaction, SegmentBvh};
 use crate::mesh::isosurface::ScalarGrid;
 
 /// Cells per side of an octree leaf (evaluated node by node).
@@ -33,6 +33,9 @@ pub struct NarrowStats {
     /// Exact segment evaluations (the segments near a leaf times its
     /// nodes evaluated).
     pub segment_evaluations: usize,
+    /// Cluster expansions evaluated (the clusters near a leaf times its
+    /// nodes evaluated).
+    pub cluster_evaluations: usize,
 }
 
 struct Band<'a> {
@@ -45,7 +48,7 @@ struct Band<'a> {
     values: Vec<f64>,
     exact: Vec<bool>,
     stats: NarrowStats,
-    near: Vec<usize>,
+    near: Interaction,
 }
 
 impl Band<'_> {
@@ -80,7 +83,8 @@ impl Band<'_> {
                             self.values[id] = far + self.bvh.near_field(&near, self.at(i, j, k));
                             self.exact[id] = true;
                             self.stats.evaluated += 1;
-                            self.stats.segment_evaluations += near.len();
+                            self.stats.segment_evaluations += near.segments.len();
+                            self.stats.cluster_evaluations += near.clusters.len();
                         }
                     }
                 }
@@ -168,7 +172,7 @@ pub fn sample(
             nodes: total,
             ..Default::default()
         },
-        near: Vec::new(),
+        near: Interaction::default(),
     };
     band.visit([0; 3], [dims[0] - 1, dims[1] - 1, dims[2] - 1]);
     let stats = band.stats;
