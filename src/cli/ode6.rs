@@ -117,6 +117,11 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let c: [f64; 6] = bc.as_slice().try_into().map_err(|_| {
                 anyhow::anyhow!("--bc needs six values c1,...,c6 (got {})", bc.len())
             })?;
+            if let Some(u) = at.iter().find(|u| !(0.0..=1.0).contains(*u)) {
+                anyhow::bail!(
+                    "--at {u}: must lie in [0, 1] (the parameter of the iso-parametric line)"
+                );
+            }
             let b = Basis::new(Params::new(rho, eta, lambda))?;
             let points = eval_line(&b, &c, &at)?;
             if json {

@@ -74,6 +74,12 @@ pub enum Ode6Error {
     Resonance { kappa2: f64, symbol: f64 },
     #[error("bad boundary data: {0}")]
     BadData(String),
+    #[error("{what} = {value} must lie in {range}")]
+    OutOfRange {
+        what: &'static str,
+        value: f64,
+        range: &'static str,
+    },
     #[error(transparent)]
     Limit(#[from] crate::limits::LimitError),
     #[error("invalid gec curve: {0}")]

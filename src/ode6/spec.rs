@@ -213,10 +213,12 @@ pub fn eval_line(basis: &Basis, c: &[f64; 6], at: &[f64]) -> Result<Vec<LinePoin
             "constraint or parameter value {x} is not finite"
         )));
     }
-    if let Some(u) = at.iter().find(|u| !(0.0..=1.0).contains(*u)) {
-        return Err(Ode6Error::BadData(format!(
-            "u = {u} must lie in [0, 1] (the parameter of the iso-parametric line)"
-        )));
+    if let Some(&u) = at.iter().find(|u| !(0.0..=1.0).contains(*u)) {
+        return Err(Ode6Error::OutOfRange {
+            what: "u",
+            value: u,
+            range: "[0, 1] (the parameter of the iso-parametric line)",
+        });
     }
     let Params { rho, eta, lambda } = basis.params;
     at.iter()
