@@ -8,6 +8,7 @@
 //!
 //! | module | paper | holds |
 //! |---|---|---|
+//! | [`vec3`] | - | `[f64; 3]` helpers and bounding boxes (the bottom) |
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
@@ -43,4 +44,5 @@ pub mod sketch;
 pub mod surface;
 pub mod template;
 pub mod tui;
+pub mod vec3;
 pub mod verify;

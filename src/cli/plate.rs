@@ -38,7 +38,7 @@ pub struct DeformArgs {
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub force: Vec<f64>,
     /// Sensitivity s (q = s d).
-    #[arg(long, default_value_t = 70.0)]
+    #[arg(long, default_value_t = pdesculpt::plate::SENSITIVITY_DEFAULT)]
     pub sensitivity: f64,
     /// Deform along the region normal instead of the cursor direction.
     #[arg(long)]
@@ -58,11 +58,11 @@ pub struct DeformArgs {
     #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub view: Option<Vec<f64>>,
     /// Young's modulus E, Poisson's ratio mu, thickness h.
-    #[arg(long, default_value_t = 1e6)]
+    #[arg(long, default_value_t = Material::default().young)]
     pub young: f64,
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = Material::default().poisson)]
     pub poisson: f64,
-    #[arg(long, default_value_t = 0.1)]
+    #[arg(long, default_value_t = Material::default().thickness)]
     pub thickness: f64,
     /// Output mesh (.obj, .glb, .stl, .ply).
     #[arg(short, long)]
@@ -77,16 +77,16 @@ pub struct CompareArgs {
     #[arg(long)]
     pub shape: String,
     /// Grid cells per side of the sheet.
-    #[arg(long, default_value_t = 60)]
+    #[arg(long, default_value_t = pdesculpt::plate::shapes::COMPARE_GRID_DEFAULT)]
     pub grid: usize,
     /// Delta Mush smoothing iterations.
-    #[arg(long, default_value_t = 40)]
+    #[arg(long, default_value_t = DeltaMushParams::default().iterations)]
     pub dm_iterations: usize,
     /// Delta Mush step length.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = DeltaMushParams::default().step)]
     pub dm_step: f64,
     /// Laplacian handle weight.
-    #[arg(long, default_value_t = 10.0)]
+    #[arg(long, default_value_t = LaplacianParams::default().handle_weight)]
     pub lap_weight: f64,
     /// Uniform instead of cotangent Laplacian weights.
     #[arg(long)]
@@ -112,13 +112,6 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     let d = vec3(&a.force, "--force")?;
     if !a.sensitivity.is_finite() {
         anyhow::bail!("--sensitivity must be finite, got {}", a.sensitivity);
-    }
-    if d.iter().any(|x| !(x * a.sensitivity).is_finite()) {
-        anyhow::bail!(
-            "--force {:?} times --sensitivity {} overflows; reduce --force",
-            d,
-            a.sensitivity
-        );
     }
     let view = a.view.as_deref().map(|v| vec3(v, "--view")).transpose()?;
     io::Format::from_path(&a.output)?;
@@ -153,16 +146,9 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
         Direction::Cursor
     };
     let out = plate.deform(&mesh, d, a.sensitivity, dir)?;
-    if out.positions.iter().flatten().any(|x| !x.is_finite()) {
-        anyhow::bail!(
-            "--force {:?} with --sensitivity {} moves vertices to non-finite positions; reduce --force",
-            d,
-            a.sensitivity
-        );
-    }
     let unit = a.units.write_input(&out, &a.output)?;
-    let peak = plate.weights.iter().fold(0.0f64, |m, w| m.max(*w));
-    let force = plate.force(d, a.sensitivity, dir);
+    let force = plate.checked_force(d, a.sensitivity, dir)?;
+    let max_displacement = plate.max_displacement(force);
     let info = serde_json::json!({
         "output": a.output.display().to_string(),
         "unit": unit,
@@ -172,7 +158,7 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
         "non_star_rays": plate.non_star_rays,
         "rigidity": plate.rigidity,
         "force": force,
-        "max_displacement": peak * pdesculpt::mesh::norm(force),
+        "max_displacement": max_displacement,
     });
     if json {
         super::print_json(&info)?;
@@ -181,7 +167,7 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
             "deformed {} region vertices ({} on the boundary), max displacement {:.4e}; wrote {}",
             plate.region.len(),
             plate.boundary.loop_indices.len(),
-            peak * pdesculpt::mesh::norm(force),
+            max_displacement,
             a.output.display()
         );
         if plate.non_star_rays > 0 {

@@ -150,15 +150,7 @@ impl Mesh {
 
     /// Axis-aligned bounding box `(min, max)` (infinite for an empty mesh).
     pub fn bbox(&self) -> ([f64; 3], [f64; 3]) {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for p in &self.positions {
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        (lo, hi)
+        crate::vec3::bounds(&self.positions).unwrap_or(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]))
     }
 
     /// Length of the bounding-box diagonal.
@@ -180,7 +172,7 @@ impl Mesh {
     /// Unnormalised face normal (twice the area times the unit normal).
     pub fn face_normal_area(&self, t: usize) -> [f64; 3] {
         let [a, b, c] = self.corners(t);
-        crate::surface::cross(sub(b, a), sub(c, a))
+        crate::vec3::cross(sub(b, a), sub(c, a))
     }
 
     /// Area-weighted unit vertex normals (zero for isolated vertices).
@@ -194,7 +186,7 @@ impl Mesh {
                 }
             }
         }
-        n.into_iter().map(crate::surface::normalize).collect()
+        n.into_iter().map(crate::vec3::normalize).collect()
     }
 
     /// Total surface area.
@@ -209,7 +201,7 @@ impl Mesh {
         (0..self.triangles.len())
             .map(|t| {
                 let [a, b, c] = self.corners(t);
-                dot(a, crate::surface::cross(b, c)) / 6.0
+                dot(a, crate::vec3::cross(b, c)) / 6.0
             })
             .sum()
     }
@@ -260,32 +252,4 @@ impl Mesh {
     }
 }
 
-/// `a - b`.
-pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-/// `a + b`.
-pub fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
-/// `s a`.
-pub fn scale(a: [f64; 3], s: f64) -> [f64; 3] {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-
-/// Dot product.
-pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// Euclidean norm.
-pub fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
-}
-
-/// Distance between two points.
-pub fn dist(a: [f64; 3], b: [f64; 3]) -> f64 {
-    norm(sub(a, b))
-}
+pub use crate::vec3::{add, dist, dot, norm, scale, sub};

@@ -23,6 +23,8 @@
 //!   polylines.
 //! * [`force`]: particular solutions for polynomial and sine sculpting forces
 //!   $F(u)$ (left to future work by the paper).
+//! * [`spec`]: the JSON surface spec of `pdesculpt ode6 surface` and the
+//!   one-line evaluation of `ode6 eval`.
 //! * [`surface`]: [`Ode6Surface`] (the [`crate::surface::Surface`] impl, fast
 //!   tensor-product grids), chains of patches in $u$ (eqs 23-25), splits in
 //!   $v$ and [`Grid`]s of patches C2 in both directions (eq 26).
@@ -33,6 +35,7 @@ pub mod check;
 pub mod force;
 pub mod paper;
 pub mod samples;
+pub mod spec;
 pub mod surface;
 
 pub use basis::{Basis, Params, RootCase};
@@ -71,4 +74,14 @@ pub enum Ode6Error {
     Resonance { kappa2: f64, symbol: f64 },
     #[error("bad boundary data: {0}")]
     BadData(String),
+    #[error("{what} = {value} must lie in {range}")]
+    OutOfRange {
+        what: &'static str,
+        value: f64,
+        range: &'static str,
+    },
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
+    #[error("invalid gec curve: {0}")]
+    Gec(#[from] crate::curve::gec::GecError),
 }

@@ -61,9 +61,13 @@ impl<S: Surface, D: Surface> Deformed<S, D> {
                 return Err(Pde4Error::EmptyRange { what, lo, hi });
             }
             if lo < dlo || hi > dhi {
-                return Err(Pde4Error::Degenerate(format!(
-                    "{what} [{lo}, {hi}] lies outside the base domain [{dlo}, {dhi}]"
-                )));
+                return Err(Pde4Error::OutsideDomain {
+                    what,
+                    lo,
+                    hi,
+                    dlo,
+                    dhi,
+                });
             }
         }
         if !scale.is_finite() {
@@ -138,9 +142,7 @@ fn curve_frame(curve: &[[f64; 3]]) -> Result<Frame, Pde4Error> {
     }
     let ln = norm(nn);
     if ln.is_nan() || ln <= 0.0 {
-        return Err(Pde4Error::Degenerate(
-            "the drawn curve encloses no area".into(),
-        ));
+        return Err(Pde4Error::Region("the drawn curve encloses no area".into()));
     }
     let nrm = scale(nn, 1.0 / ln);
     // e1: direction of the farthest curve point, projected
@@ -197,7 +199,7 @@ pub fn deform_region<D: Surface>(
 ) -> Result<RegionDeformation, Pde4Error> {
     use crate::mesh::{dot, sub};
     if curve.len() < 3 {
-        return Err(Pde4Error::Degenerate(format!(
+        return Err(Pde4Error::Region(format!(
             "the closed curve needs at least 3 points, got {}",
             curve.len()
         )));
@@ -209,9 +211,10 @@ pub fn deform_region<D: Surface>(
         });
     }
     if !depth.is_finite() || depth <= 0.0 {
-        return Err(Pde4Error::Degenerate(format!(
-            "depth {depth} must be finite and > 0"
-        )));
+        return Err(Pde4Error::NotPositive {
+            what: "depth",
+            value: depth,
+        });
     }
     let dir = check_motion(direction, drag)?;
     let (c, e1, e2, nrm) = curve_frame(curve)?;
@@ -230,7 +233,7 @@ pub fn deform_region<D: Surface>(
         }
     }
     if region.is_empty() {
-        return Err(Pde4Error::Degenerate(
+        return Err(Pde4Error::Region(
             "the drawn curve encloses no mesh vertex".into(),
         ));
     }
@@ -250,7 +253,7 @@ fn check_motion(direction: Direction, drag: f64) -> Result<Option<[f64; 3]>, Pde
         Direction::Vector(d) => {
             let l = norm(d);
             if l.is_nan() || l <= 0.0 || !l.is_finite() {
-                return Err(Pde4Error::Degenerate(
+                return Err(Pde4Error::Region(
                     "direction vector is zero or not finite".into(),
                 ));
             }
@@ -275,7 +278,7 @@ fn displace<D: Surface>(
         .collect();
     let wmax = w.iter().fold(0.0f64, |a, b| a.max(b.abs()));
     if wmax.is_nan() || wmax <= 0.0 || !wmax.is_finite() {
-        return Err(Pde4Error::Degenerate(
+        return Err(Pde4Error::Region(
             "the deformation vanishes on the region".into(),
         ));
     }
@@ -352,9 +355,7 @@ pub fn deform_part<D: Surface>(
     }
     let len = crate::mesh::dist(a, b);
     if len.is_nan() || len <= 0.0 {
-        return Err(Pde4Error::Degenerate(
-            "the part axis has zero length".into(),
-        ));
+        return Err(Pde4Error::Region("the part axis has zero length".into()));
     }
     let (ua, ub) = u_range;
     if !ua.is_finite() || !ub.is_finite() {
@@ -378,9 +379,10 @@ pub fn deform_part<D: Surface>(
         });
     }
     if radius.is_nan() || radius <= 0.0 {
-        return Err(Pde4Error::Degenerate(format!(
-            "radius {radius} must be > 0"
-        )));
+        return Err(Pde4Error::NotPositive {
+            what: "radius",
+            value: radius,
+        });
     }
     let dir = check_motion(direction, drag)?;
     let region: Vec<(usize, [f64; 2])> = mesh
@@ -393,7 +395,7 @@ pub fn deform_part<D: Surface>(
         })
         .collect();
     if region.is_empty() {
-        return Err(Pde4Error::Degenerate(
+        return Err(Pde4Error::Region(
             "no mesh vertex lies in the u-range of the part axis".into(),
         ));
     }

@@ -26,9 +26,10 @@ pub fn fd_centre(
 ) -> Result<f64, Pde4Error> {
     params.validate()?;
     if n < 4 || n % 2 == 1 || n > 1024 {
-        return Err(Pde4Error::Degenerate(format!(
-            "FD grid n = {n} must be even and in 4..=1024"
-        )));
+        return Err(Pde4Error::Solve {
+            system: "FD grid",
+            reason: format!("n = {n} must be even and in 4..=1024"),
+        });
     }
     let h = 1.0 / n as f64;
     let h4 = h.powi(4);
@@ -76,15 +77,24 @@ pub fn fd_centre(
             }
         }
     }
-    let k = SparseColMat::<usize, f64>::try_new_from_triplets(m * m, m * m, &trip)
-        .map_err(|e| Pde4Error::Degenerate(format!("FD matrix: {e:?}")))?;
-    let llt = k
-        .sp_cholesky(Side::Lower)
-        .map_err(|e| Pde4Error::Degenerate(format!("FD Cholesky: {e:?}")))?;
+    let k =
+        SparseColMat::<usize, f64>::try_new_from_triplets(m * m, m * m, &trip).map_err(|e| {
+            Pde4Error::Solve {
+                system: "FD matrix",
+                reason: format!("{e:?}"),
+            }
+        })?;
+    let llt = k.sp_cholesky(Side::Lower).map_err(|e| Pde4Error::Solve {
+        system: "FD Cholesky",
+        reason: format!("{e:?}"),
+    })?;
     llt.solve_in_place(rhs.as_mut());
     let c = rhs[(id(n / 2, n / 2), 0)];
     if !c.is_finite() {
-        return Err(Pde4Error::Degenerate("FD solution is not finite".into()));
+        return Err(Pde4Error::Solve {
+            system: "FD solve",
+            reason: "the solution is not finite".into(),
+        });
     }
     Ok(c)
 }

@@ -119,11 +119,13 @@ impl Force {
                 });
             }
             if p.abs() > super::MAX_MAGNITUDE {
-                return Err(Pde4Error::Degenerate(format!(
-                    "force component {} = {p:e} is larger than {:e} in magnitude (the displacement would overflow; rescale the forces)",
-                    ["p_x", "p_y", "p_z"][i],
-                    super::MAX_MAGNITUDE
-                )));
+                return Err(Pde4Error::Magnitude {
+                    what: format!("force component {}", ["p_x", "p_y", "p_z"][i]),
+                    value: p,
+                    lo: -super::MAX_MAGNITUDE,
+                    hi: super::MAX_MAGNITUDE,
+                    why: "the displacement would overflow; rescale the forces",
+                });
             }
         }
         match self.kind {

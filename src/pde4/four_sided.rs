@@ -196,10 +196,9 @@ impl FourSided {
                                 }
                             }
                         }
-                        let chol = kmat.cholesky().ok_or_else(|| {
-                            Pde4Error::Degenerate(format!(
-                                "Galerkin stiffness matrix not positive definite (M = {m}, N = {n})"
-                            ))
+                        let chol = kmat.cholesky().ok_or_else(|| Pde4Error::Solve {
+                            system: "Galerkin stiffness matrix",
+                            reason: format!("not positive definite (M = {m}, N = {n})"),
                         })?;
                         factors.push((*p, chol));
                     }
@@ -207,7 +206,10 @@ impl FourSided {
                         .iter()
                         .find(|(q, _)| q == p)
                         .map(|(_, c)| c)
-                        .ok_or_else(|| Pde4Error::Degenerate("missing factorisation".into()))?;
+                        .ok_or_else(|| Pde4Error::Solve {
+                            system: "Galerkin stiffness matrix",
+                            reason: "missing factorisation".into(),
+                        })?;
                     out.push(chol.solve(&rhs).iter().copied().collect());
                 }
                 let mut it = out.into_iter();

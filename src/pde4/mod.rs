@@ -77,8 +77,42 @@ pub enum Pde4Error {
     NoForces,
     #[error("boundary data has {got} harmonics, more than N = {n}")]
     BoundaryHarmonics { got: usize, n: usize },
+    /// A patch type, method and data combination no solver here handles.
     #[error("{0}")]
-    Degenerate(String),
+    Unsupported(&'static str),
+    /// A linear system that could not be factored or solved.
+    #[error("{system}: {reason}")]
+    Solve {
+        system: &'static str,
+        reason: String,
+    },
+    /// A solution that is not finite at a point of the patch.
+    #[error("the solution is not finite at (u, v) = ({u}, {v}) (method {method} singular or overflowing for these shape parameters and forces; try method exact or galerkin, or smaller numbers)")]
+    NonFiniteSolution { u: f64, v: f64, method: String },
+    /// A number too large or too small for the closed forms.
+    #[error("{what} = {value:e} lies outside [{lo:e}, {hi:e}] ({why})")]
+    Magnitude {
+        what: String,
+        value: f64,
+        lo: f64,
+        hi: f64,
+        why: &'static str,
+    },
+    /// A range outside the surface's base domain.
+    #[error("{what} [{lo}, {hi}] lies outside the base domain [{dlo}, {dhi}]")]
+    OutsideDomain {
+        what: &'static str,
+        lo: f64,
+        hi: f64,
+        dlo: f64,
+        dhi: f64,
+    },
+    /// A value that must be finite and positive.
+    #[error("{what} {value} must be finite and > 0")]
+    NotPositive { what: &'static str, value: f64 },
+    /// A drawn curve or part axis that defines no deformation.
+    #[error("{0}")]
+    Region(String),
     #[error(transparent)]
     Limit(#[from] crate::limits::LimitError),
 }
@@ -137,10 +171,13 @@ impl ShapeParams {
         }
         for (what, value) in [("a_t1", self.a1), ("a_t2", self.a2), ("a_t3", self.a3)] {
             if value.abs() > MAX_MAGNITUDE || (what != "a_t2" && value < 1.0 / MAX_MAGNITUDE) {
-                return Err(Pde4Error::Degenerate(format!(
-                    "shape parameter {what} = {value:e} lies outside [{:e}, {MAX_MAGNITUDE:e}] (the solution would overflow or underflow)",
-                    1.0 / MAX_MAGNITUDE
-                )));
+                return Err(Pde4Error::Magnitude {
+                    what: format!("shape parameter {what}"),
+                    value,
+                    lo: 1.0 / MAX_MAGNITUDE,
+                    hi: MAX_MAGNITUDE,
+                    why: "the solution would overflow or underflow",
+                });
             }
         }
         Ok(())

@@ -64,12 +64,11 @@ impl Spec {
         let ts: Vec<f64> = (0..=8).map(|k| k as f64 / 8.0).collect();
         let pts = patch.grid(&ts, &ts);
         if let Some(i) = pts.iter().position(|p| p.iter().any(|x| !x.is_finite())) {
-            return Err(Pde4Error::Degenerate(format!(
-                "the solution is not finite at (u, v) = ({}, {}) (method {:?} singular or overflowing for these shape parameters and forces; try method exact or galerkin, or smaller numbers)",
-                ts[i / ts.len()],
-                ts[i % ts.len()],
-                self.method
-            )));
+            return Err(Pde4Error::NonFiniteSolution {
+                u: ts[i / ts.len()],
+                v: ts[i % ts.len()],
+                method: format!("{:?}", self.method),
+            });
         }
         Ok(patch)
     }
@@ -87,7 +86,7 @@ impl Spec {
                     SpecMethod::Paper => two_sided::Method::Paper,
                     SpecMethod::LeastSquares => two_sided::Method::LeastSquares,
                     SpecMethod::Galerkin => {
-                        return Err(Pde4Error::Degenerate("method 'galerkin' is for four-sided patches (two-sided: exact, paper, least-squares)".into()))
+                        return Err(Pde4Error::Unsupported("method 'galerkin' is for four-sided patches (two-sided: exact, paper, least-squares)"))
                     }
                 };
                 Ok(Patch::Two(TwoSided::new(
@@ -101,16 +100,16 @@ impl Spec {
             }
             (PatchKind::FourSided, meth) => {
                 if self.boundary.is_some() {
-                    return Err(Pde4Error::Degenerate(
-                        "boundary curves are supported for two-sided patches only".into(),
+                    return Err(Pde4Error::Unsupported(
+                        "boundary curves are supported for two-sided patches only",
                     ));
                 }
                 let meth = match meth {
                     SpecMethod::Galerkin => four_sided::Method::Galerkin,
                     SpecMethod::Paper => four_sided::Method::Paper,
                     _ => {
-                        return Err(Pde4Error::Degenerate(
-                            "four-sided patches take method 'galerkin' or 'paper'".into(),
+                        return Err(Pde4Error::Unsupported(
+                            "four-sided patches take method 'galerkin' or 'paper'",
                         ))
                     }
                 };

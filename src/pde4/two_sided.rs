@@ -219,8 +219,9 @@ impl Mode {
             a[(2, j)] = b0[j].c[1][0];
             a[(3, j)] = b1[j].c[1][0];
         }
-        let sol = a.lu().solve(&rhs).ok_or_else(|| {
-            Pde4Error::Degenerate(format!("singular boundary system for mode omega = {omega}"))
+        let sol = a.lu().solve(&rhs).ok_or_else(|| Pde4Error::Solve {
+            system: "boundary system",
+            reason: format!("singular for mode omega = {omega}"),
         })?;
         Ok(Mode {
             h: [sol[0], sol[1], sol[2], sol[3]],
@@ -283,9 +284,10 @@ pub fn least_squares(p: &ShapeParams, omega: f64, f: &[f64]) -> Result<Vec<f64>,
         }
     }
     let svd = a.svd(true, true);
-    let c = svd
-        .solve(&b, 1e-14)
-        .map_err(|e| Pde4Error::Degenerate(format!("least squares failed: {e}")))?;
+    let c = svd.solve(&b, 1e-14).map_err(|e| Pde4Error::Solve {
+        system: "least squares",
+        reason: e.to_string(),
+    })?;
     Ok(c.iter().copied().collect())
 }
 
@@ -346,8 +348,8 @@ impl TwoSided {
         }
         if let Some(b) = boundary {
             if method != Method::Exact {
-                return Err(Pde4Error::Degenerate(
-                    "non-zero boundary curves need method 'exact' (eqs 7-9 assume clamped zero boundaries)".into(),
+                return Err(Pde4Error::Unsupported(
+                    "non-zero boundary curves need method 'exact' (eqs 7-9 assume clamped zero boundaries)",
                 ));
             }
             if !b.is_finite() {
@@ -410,9 +412,10 @@ impl TwoSided {
             }
             comps.push(Component { params: *p, modes });
         }
-        let comps: [Component; 3] = comps
-            .try_into()
-            .map_err(|_| Pde4Error::Degenerate("component count".into()))?;
+        let comps: [Component; 3] = comps.try_into().map_err(|_| Pde4Error::Solve {
+            system: "boundary components",
+            reason: "not three components".into(),
+        })?;
         Ok(TwoSided {
             m,
             n,

@@ -134,21 +134,12 @@ pub fn alpha_shape(points: &[[f64; 2]], alpha0: f64) -> Result<Boundary, PlateEr
         .fold(f64::INFINITY, f64::min);
     let alpha = d_p * alpha0;
     let mut triangles = Vec::new();
-    let mut edge_count: HashMap<(usize, usize), (usize, [usize; 2])> = HashMap::new();
     for f in dt.inner_faces() {
         let v = f.vertices().map(|h| h.data().index);
         if (0..3).any(|k| d(v[k], v[(k + 1) % 3]) > 2.0 * alpha) {
             continue;
         }
         triangles.push(v);
-        for k in 0..3 {
-            let (a, b) = (v[k], v[(k + 1) % 3]);
-            let e = edge_count
-                .entry((a.min(b), a.max(b)))
-                .or_insert((0, [a, b]));
-            e.0 += 1;
-            e.1 = [a, b];
-        }
     }
     if triangles.is_empty() {
         return Err(PlateError::BoundaryNotClosed {

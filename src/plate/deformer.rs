@@ -96,6 +96,160 @@ pub struct PlateDeformer {
     max_index: usize,
 }
 
+/// The region's vertices in first-seen order without repeats, and a mask
+/// over the mesh; refuses fewer than 4 vertices, out-of-range indices and
+/// non-finite positions.
+fn validated_region(mesh: &Mesh, region: &[u32]) -> Result<(Vec<u32>, Vec<bool>), PlateError> {
+    let nv = mesh.positions.len();
+    if region.len() < 4 {
+        return Err(PlateError::TooFewVertices(region.len(), 4));
+    }
+    let mut sel = vec![false; nv];
+    let mut order: Vec<u32> = Vec::with_capacity(region.len());
+    for &v in region {
+        let vi = v as usize;
+        if vi >= nv {
+            return Err(PlateError::VertexOutOfBounds(vi, nv));
+        }
+        if !mesh.positions[vi].iter().all(|c| c.is_finite()) {
+            return Err(PlateError::NonFinite(vi));
+        }
+        if !sel[vi] {
+            sel[vi] = true;
+            order.push(v);
+        }
+    }
+    Ok((order, sel))
+}
+
+/// The local frame at the region's centroid facing `view` (default: the
+/// region normal) and the region's projected local coordinates (eqs 13-14).
+fn project_region(
+    mesh: &Mesh,
+    sel: &[bool],
+    rest: &[[f64; 3]],
+    view: Option<[f64; 3]>,
+) -> Result<(LocalFrame, Vec<[f64; 2]>), PlateError> {
+    let n = rest.len() as f64;
+    let mut centroid3 = [0.0; 3];
+    for p in rest {
+        for k in 0..3 {
+            centroid3[k] += p[k] / n;
+        }
+    }
+    let rn = region_normal(mesh, sel);
+    let view = match view {
+        Some(v) => v,
+        None if norm(rn) > 0.0 => rn,
+        None => {
+            return Err(PlateError::DegenerateProjection(
+                "region has no triangles to define a normal; give a view direction".into(),
+            ))
+        }
+    };
+    let plane = ViewPlane::through(centroid3, view)?;
+    let frame = LocalFrame::new(centroid3, view)?;
+    let local = rest
+        .iter()
+        .map(|&p| {
+            let l = frame.to_local(project(&plane, p));
+            [l[0], l[1]]
+        })
+        .collect();
+    Ok((frame, local))
+}
+
+/// Paper limit 1: the projection overlaps when region triangles flip
+/// orientation in the view plane.
+fn check_no_overlap(local: &[[f64; 2]], tris: &[[usize; 3]]) -> Result<(), PlateError> {
+    let (mut plus, mut minus) = (0usize, 0usize);
+    for &[a, b, c] in tris {
+        let (pa, pb, pc) = (local[a], local[b], local[c]);
+        let s = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pc[0] - pa[0]) * (pb[1] - pa[1]);
+        if s > 0.0 {
+            plus += 1;
+        } else if s < 0.0 {
+            minus += 1;
+        }
+    }
+    if plus.min(minus) > 0 {
+        return Err(PlateError::OverlappingProjection(plus.min(minus)));
+    }
+    Ok(())
+}
+
+/// Coincident projections (seam duplicates, poles) share one site.
+struct Sites {
+    /// The distinct projected points.
+    unique: Vec<[f64; 2]>,
+    /// Site of each region vertex.
+    rep: Vec<usize>,
+    /// First region vertex of each site.
+    first: Vec<usize>,
+}
+
+impl Sites {
+    fn of(local: &[[f64; 2]]) -> Sites {
+        let mut rep = Vec::with_capacity(local.len());
+        let mut unique: Vec<[f64; 2]> = Vec::new();
+        let mut first: Vec<usize> = Vec::new();
+        let mut seen: HashMap<(u64, u64), usize> = HashMap::new();
+        for (i, p) in local.iter().enumerate() {
+            let key = ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits());
+            let u = *seen.entry(key).or_insert_with(|| {
+                unique.push(*p);
+                first.push(i);
+                unique.len() - 1
+            });
+            rep.push(u);
+        }
+        Sites { unique, rep, first }
+    }
+}
+
+/// Disk coordinates of the sites (eq 16, or the harmonic map) and the number
+/// of rays from the centroid that cross the boundary more than once.
+fn map_to_disk(
+    unique: &[[f64; 2]],
+    local: &[[f64; 2]],
+    boundary: &Boundary,
+    mapping: MappingMethod,
+) -> Result<(Vec<DiskPoint>, usize), PlateError> {
+    match mapping {
+        MappingMethod::LengthBased => {
+            let n = local.len() as f64;
+            let mut c2 = [0.0; 2];
+            for p in local {
+                c2[0] += p[0] / n;
+                c2[1] += p[1] / n;
+            }
+            let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| unique[i]).collect();
+            let mut disk_map = DiskMapping::new(polygon, c2)?;
+            let on_loop: HashMap<usize, usize> = boundary
+                .loop_indices
+                .iter()
+                .enumerate()
+                .map(|(k, &i)| (i, k))
+                .collect();
+            let ud: Vec<DiskPoint> = unique
+                .iter()
+                .enumerate()
+                .map(|(i, &p)| disk_map.map_point(p, on_loop.get(&i).copied()))
+                .collect();
+            Ok((ud, disk_map.non_star_rays))
+        }
+        MappingMethod::Harmonic => Ok((
+            harmonic_disk(
+                unique.len(),
+                &boundary.triangles,
+                &boundary.loop_indices,
+                unique,
+            )?,
+            0,
+        )),
+    }
+}
+
 /// Area-weighted normal of the triangles whose three vertices are in `sel`.
 pub fn region_normal(mesh: &Mesh, sel: &[bool]) -> [f64; 3] {
     let mut n = [0.0; 3];
@@ -116,142 +270,37 @@ impl PlateDeformer {
     /// Detects the paper's limits (overlapping projection, centroid outside).
     pub fn new(mesh: &Mesh, region: &[u32], opts: &RegionOptions) -> Result<Self, PlateError> {
         let rigidity = opts.material.rigidity()?;
-        let nv = mesh.positions.len();
-        if region.len() < 4 {
-            return Err(PlateError::TooFewVertices(region.len(), 4));
-        }
-        let mut sel = vec![false; nv];
-        let mut order: Vec<u32> = Vec::with_capacity(region.len());
-        for &v in region {
-            let vi = v as usize;
-            if vi >= nv {
-                return Err(PlateError::VertexOutOfBounds(vi, nv));
-            }
-            if !mesh.positions[vi].iter().all(|c| c.is_finite()) {
-                return Err(PlateError::NonFinite(vi));
-            }
-            if !sel[vi] {
-                sel[vi] = true;
-                order.push(v);
-            }
-        }
+        let (order, sel) = validated_region(mesh, region)?;
         let rest: Vec<[f64; 3]> = order.iter().map(|&v| mesh.positions[v as usize]).collect();
-        let n = rest.len() as f64;
-        let mut centroid3 = [0.0; 3];
-        for p in &rest {
-            for k in 0..3 {
-                centroid3[k] += p[k] / n;
-            }
-        }
-        let rn = region_normal(mesh, &sel);
-        let view = match opts.view {
-            Some(v) => v,
-            None if norm(rn) > 0.0 => rn,
-            None => {
-                return Err(PlateError::DegenerateProjection(
-                    "region has no triangles to define a normal; give a view direction".into(),
-                ))
-            }
-        };
-        let plane = ViewPlane::through(centroid3, view)?;
-        let frame = LocalFrame::new(centroid3, view)?;
-        let local: Vec<[f64; 2]> = rest
-            .iter()
-            .map(|&p| {
-                let l = frame.to_local(project(&plane, p));
-                [l[0], l[1]]
-            })
-            .collect();
-        // limit 1: overlapping projection = region triangles flipping orientation
+        let (frame, local) = project_region(mesh, &sel, &rest, opts.view)?;
+        // position of each mesh vertex in the region order
         let pos: HashMap<u32, usize> = order.iter().enumerate().map(|(k, &v)| (v, k)).collect();
-        let (mut plus, mut minus) = (0usize, 0usize);
-        for tri in &mesh.triangles {
-            if let (Some(&a), Some(&b), Some(&c)) =
-                (pos.get(&tri[0]), pos.get(&tri[1]), pos.get(&tri[2]))
-            {
-                let (pa, pb, pc) = (local[a], local[b], local[c]);
-                let s = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pc[0] - pa[0]) * (pb[1] - pa[1]);
-                if s > 0.0 {
-                    plus += 1;
-                } else if s < 0.0 {
-                    minus += 1;
-                }
-            }
-        }
-        if plus.min(minus) > 0 {
-            return Err(PlateError::OverlappingProjection(plus.min(minus)));
-        }
-        // coincident projections (seam duplicates, poles) share one site
-        let mut rep = Vec::with_capacity(local.len());
-        let mut unique: Vec<[f64; 2]> = Vec::new();
-        let mut first: Vec<usize> = Vec::new();
-        let mut seen: HashMap<(u64, u64), usize> = HashMap::new();
-        for (i, p) in local.iter().enumerate() {
-            let key = ((p[0] + 0.0).to_bits(), (p[1] + 0.0).to_bits());
-            let u = *seen.entry(key).or_insert_with(|| {
-                unique.push(*p);
-                first.push(i);
-                unique.len() - 1
-            });
-            rep.push(u);
-        }
-        let boundary = match opts.boundary {
-            BoundaryMethod::AlphaShape => alpha_shape(&unique, opts.alpha0)?,
+        let region_tris: Vec<[usize; 3]> = mesh
+            .triangles
+            .iter()
+            .filter_map(|t| Some([*pos.get(&t[0])?, *pos.get(&t[1])?, *pos.get(&t[2])?]))
+            .collect();
+        check_no_overlap(&local, &region_tris)?;
+        let sites = Sites::of(&local);
+        let mut boundary = match opts.boundary {
+            BoundaryMethod::AlphaShape => alpha_shape(&sites.unique, opts.alpha0)?,
             BoundaryMethod::MeshEdges => {
-                let tris: Vec<[usize; 3]> = mesh
-                    .triangles
+                let tris: Vec<[usize; 3]> = region_tris
                     .iter()
-                    .filter_map(|t| {
-                        let (a, b, c) = (pos.get(&t[0])?, pos.get(&t[1])?, pos.get(&t[2])?);
-                        Some([rep[*a], rep[*b], rep[*c]])
-                    })
+                    .map(|t| t.map(|k| sites.rep[k]))
                     .collect();
-                mesh_edge_boundary(&unique, &tris)?
+                mesh_edge_boundary(&sites.unique, &tris)?
             }
         };
-        let polygon: Vec<[f64; 2]> = boundary.loop_indices.iter().map(|&i| unique[i]).collect();
-        let (unique_disk, non_star_rays) = match opts.mapping {
-            MappingMethod::LengthBased => {
-                let c2 = {
-                    let mut c = [0.0; 2];
-                    for p in &local {
-                        c[0] += p[0] / n;
-                        c[1] += p[1] / n;
-                    }
-                    c
-                };
-                let mut mapping = DiskMapping::new(polygon, c2)?;
-                let on_loop: HashMap<usize, usize> = boundary
-                    .loop_indices
-                    .iter()
-                    .enumerate()
-                    .map(|(k, &i)| (i, k))
-                    .collect();
-                let ud: Vec<DiskPoint> = unique
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &p)| mapping.map_point(p, on_loop.get(&i).copied()))
-                    .collect();
-                (ud, mapping.non_star_rays)
-            }
-            MappingMethod::Harmonic => (
-                harmonic_disk(
-                    unique.len(),
-                    &boundary.triangles,
-                    &boundary.loop_indices,
-                    &unique,
-                )?,
-                0,
-            ),
-        };
-        let disk: Vec<DiskPoint> = rep.iter().map(|&u| unique_disk[u]).collect();
+        let (unique_disk, non_star_rays) =
+            map_to_disk(&sites.unique, &local, &boundary, opts.mapping)?;
+        let disk: Vec<DiskPoint> = sites.rep.iter().map(|&u| unique_disk[u]).collect();
         // boundary indices refer to region vertices (first of each site)
-        let mut boundary = boundary;
         for i in boundary.loop_indices.iter_mut() {
-            *i = first[*i];
+            *i = sites.first[*i];
         }
         for t in boundary.triangles.iter_mut() {
-            *t = t.map(|i| first[i]);
+            *t = t.map(|i| sites.first[i]);
         }
         let weights = disk
             .iter()
@@ -310,7 +359,37 @@ impl PlateDeformer {
         Ok(())
     }
 
-    /// Deformed copy of `mesh` for cursor motion `d`.
+    /// The force of [`Self::force`], refused when the motion or the
+    /// sensitivity is not finite or their product overflows.
+    pub fn checked_force(
+        &self,
+        d: [f64; 3],
+        sensitivity: f64,
+        direction: Direction,
+    ) -> Result<[f64; 3], PlateError> {
+        if !(sensitivity.is_finite() && d.iter().all(|c| c.is_finite())) {
+            return Err(PlateError::NonFiniteForce { d, sensitivity });
+        }
+        let f = self.force(d, sensitivity, direction);
+        if f.iter().any(|x| !x.is_finite()) {
+            return Err(PlateError::ForceTooLarge {
+                d,
+                sensitivity,
+                what: "overflows",
+            });
+        }
+        Ok(f)
+    }
+
+    /// Largest displacement of a region vertex under `force`: the peak
+    /// eq-12 weight times the force's length.
+    pub fn max_displacement(&self, force: [f64; 3]) -> f64 {
+        let peak = self.weights.iter().fold(0.0f64, |m, w| m.max(*w));
+        peak * crate::mesh::norm(force)
+    }
+
+    /// Deformed copy of `mesh` for cursor motion `d`; refuses a motion that
+    /// would move a vertex to a non-finite position.
     pub fn deform(
         &self,
         mesh: &Mesh,
@@ -318,15 +397,20 @@ impl PlateDeformer {
         sensitivity: f64,
         direction: Direction,
     ) -> Result<Mesh, PlateError> {
-        if !(sensitivity.is_finite() && d.iter().all(|c| c.is_finite())) {
-            return Err(PlateError::Parameter {
-                name: "force",
-                value: f64::NAN,
-                range: "finite cursor motion and sensitivity",
+        let force = self.checked_force(d, sensitivity, direction)?;
+        let mut out = mesh.clone();
+        self.apply(&mut out.positions, force)?;
+        if self
+            .region
+            .iter()
+            .any(|&v| out.positions[v as usize].iter().any(|x| !x.is_finite()))
+        {
+            return Err(PlateError::ForceTooLarge {
+                d,
+                sensitivity,
+                what: "moves vertices to non-finite positions",
             });
         }
-        let mut out = mesh.clone();
-        self.apply(&mut out.positions, self.force(d, sensitivity, direction))?;
         Ok(out)
     }
 }

@@ -82,7 +82,18 @@ pub enum PlateError {
     Solve(String),
     #[error("malformed region file: {0}")]
     RegionFile(String),
+    #[error("cursor motion {d:?} with sensitivity {sensitivity} is not finite")]
+    NonFiniteForce { d: [f64; 3], sensitivity: f64 },
+    #[error("cursor motion {d:?} times sensitivity {sensitivity} {what}; reduce the motion")]
+    ForceTooLarge {
+        d: [f64; 3],
+        sensitivity: f64,
+        what: &'static str,
+    },
 }
+
+/// The cursor-to-force sensitivity $s$ of the CLI and the demo ($q = s d$).
+pub const SENSITIVITY_DEFAULT: f64 = 70.0;
 
 /// Material and thickness of the plate (eq 3).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]

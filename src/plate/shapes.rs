@@ -153,6 +153,9 @@ fn errors(method: &'static str, w: &[f64], truth: &[f64]) -> MethodError {
     }
 }
 
+/// Grid cells per side of the comparison sheet of `pdesculpt plate compare`.
+pub const COMPARE_GRID_DEFAULT: usize = 60;
+
 /// Runs the comparison of Figs 11-12 on a `grid` x `grid` sheet.
 pub fn compare(
     shape: Shape,

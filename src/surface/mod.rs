@@ -119,24 +119,7 @@ impl<S: Surface + Send + Sync> DynSurface for S {
     }
 }
 
-/// Cross product.
-pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-/// `a / |a|`, or zero for a zero vector.
-pub fn normalize(a: [f64; 3]) -> [f64; 3] {
-    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    if n > 0.0 {
-        [a[0] / n, a[1] / n, a[2] / n]
-    } else {
-        [0.0; 3]
-    }
-}
+pub use crate::vec3::{cross, normalize};
 
 /// A surface of revolution about the y axis, `(r(u) cos 2 pi v, u, r(u) sin
 /// 2 pi v)` with `r(u) = r0 + r1 sin(pi u)`: closed in v, used by the

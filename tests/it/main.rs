@@ -4,6 +4,7 @@ mod cli;
 mod fuzz;
 mod fuzz_harness;
 mod infra;
+mod layers;
 mod registry;
 mod strategies;
 mod units;

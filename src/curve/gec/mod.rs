@@ -61,6 +61,7 @@ pub mod check;
 pub mod fit;
 pub mod input;
 pub mod metrics;
+pub mod pipeline;
 pub mod samples;
 pub mod study;
 pub mod transform;

@@ -1,0 +1,108 @@
+//! The import graph has no arrow from a lower layer to a higher one
+//! (issue 19): the ground (`vec3`, `check`, `jet`, `mesh`, `surface`) names
+//! no equation family, no character module and no CLI; `vec3` names nothing
+//! of the crate at all. Doc comments may link anywhere.
+
+use std::path::{Path, PathBuf};
+
+/// Modules above the ground.
+const UPPER: &[&str] = &[
+    "curve",
+    "pde4",
+    "pde6",
+    "ode6",
+    "plate",
+    "conv",
+    "profile",
+    "sketch",
+    "template",
+    "character",
+    "tui",
+    "render",
+    "makehuman",
+    "verify",
+    "cli",
+];
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    if dir.extension().is_some_and(|e| e == "rs") {
+        out.push(dir.to_path_buf());
+        return;
+    }
+    for e in std::fs::read_dir(dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display())) {
+        let p = e.expect("directory entry").path();
+        if p.is_dir() || p.extension().is_some_and(|e| e == "rs") {
+            rust_files(&p, out);
+        }
+    }
+}
+
+/// `(file, line)` of every non-comment line of the files under `roots`
+/// naming `crate::<m>` for one of `modules`.
+fn arrows(roots: &[&str], modules: &[&str]) -> Vec<String> {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    for r in roots {
+        rust_files(&src.join(r), &mut files);
+    }
+    assert!(!files.is_empty(), "no files under {roots:?}");
+    arrows_in(&files, modules)
+}
+
+fn arrows_in(files: &[PathBuf], modules: &[&str]) -> Vec<String> {
+    let mut found = Vec::new();
+    for f in files {
+        let text = std::fs::read_to_string(&f).expect("readable source");
+        for (i, line) in text.lines().enumerate() {
+            let code = line.trim_start();
+            if code.starts_with("//") {
+                continue;
+            }
+            for m in modules {
+                for prefix in ["crate::", "pdesculpt::", "super::super::"] {
+                    let needle = format!("{prefix}{m}");
+                    let hit = code.match_indices(&needle).any(|(k, _)| {
+                        !code[k + needle.len()..]
+                            .starts_with(|c: char| c.is_alphanumeric() || c == '_')
+                    });
+                    if hit {
+                        found.push(format!("{}:{}: {code}", f.display(), i + 1));
+                    }
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn ground_names_no_upper_module() {
+    let bad = arrows(&["vec3.rs", "check", "jet", "mesh", "surface"], UPPER);
+    assert!(bad.is_empty(), "upward imports:\n{}", bad.join("\n"));
+}
+
+#[test]
+fn vec3_is_the_bottom() {
+    let mut all: Vec<&str> = UPPER.to_vec();
+    all.extend(["check", "jet", "mesh", "surface", "limits"]);
+    let bad = arrows(&["vec3.rs"], &all);
+    assert!(bad.is_empty(), "vec3 imports:\n{}", bad.join("\n"));
+}
+
+#[test]
+fn the_scan_sees_an_upward_import() {
+    // The scanner itself: a line naming a family is found, a doc comment and
+    // a longer name (`crate::pde4x`) are not.
+    let dir = std::env::temp_dir().join(format!("pdesculpt-layers-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let f = dir.join("probe.rs");
+    std::fs::write(
+        &f,
+        "//! [`crate::pde4`]\nuse crate::pde4x::A;\nuse crate::pde6::B;\n",
+    )
+    .expect("write probe");
+    let hits = arrows_in(std::slice::from_ref(&f), UPPER);
+    std::fs::remove_dir_all(&dir).ok();
+    assert_eq!(hits.len(), 1, "{hits:?}");
+    assert!(hits[0].contains(":3: use crate::pde6::B;"), "{hits:?}");
+}
