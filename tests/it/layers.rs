@@ -52,7 +52,7 @@ fn arrows(roots: &[&str], modules: &[&str]) -> Vec<String> {
 fn arrows_in(files: &[PathBuf], modules: &[&str]) -> Vec<String> {
     let mut found = Vec::new();
     for f in files {
-        let text = std::fs::read_to_string(&f).expect("readable source");
+        let text = std::fs::read_to_string(f).expect("readable source");
         for (i, line) in text.lines().enumerate() {
             let code = line.trim_start();
             if code.starts_with("//") {
