@@ -7,6 +7,7 @@ use pdesculpt::pde6::body_closed::{
     RMS_MAX_REL,
 };
 use pdesculpt::pde6::Pde6Error;
+use pdesculpt::profile::shapes::box_mesh;
 use proptest::prelude::*;
 
 fn assert_closed(name: &str, skin: &Mesh, o: &ClosedOptions, errors: bool) {
@@ -66,30 +67,6 @@ proptest! {
             Err(e) => prop_assert!(matches!(e, Pde6Error::LayoutNotFound { .. }) && !e.to_string().is_empty(), "{:?}: {}", morphs, e),
         }
     }
-}
-
-fn box_mesh(lo: [f64; 3], hi: [f64; 3]) -> Mesh {
-    let p = |i: usize| {
-        [
-            if i & 1 == 0 { lo[0] } else { hi[0] },
-            if i & 2 == 0 { lo[1] } else { hi[1] },
-            if i & 4 == 0 { lo[2] } else { hi[2] },
-        ]
-    };
-    let positions = (0..8).map(p).collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let triangles = quads
-        .iter()
-        .flat_map(|q: &[u32; 4]| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
-        .collect();
-    Mesh::new(positions, triangles)
 }
 
 #[test]
