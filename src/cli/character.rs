@@ -1,7 +1,7 @@
 //! `pdesculpt character build|edit|undo|redo|log`.
 
 use pdesculpt::character::doc::CharacterDoc;
-use pdesculpt::character::edit::Edit;
+use pdesculpt::character::edit::{push_checked, Edit};
 use pdesculpt::mesh::io;
 use pdesculpt::sketch::{build_document, Resolution};
 use std::path::{Path, PathBuf};
@@ -99,7 +99,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let mut d = CharacterDoc::load(&doc)?;
             let e = read_edit(&op)?;
             let summary = e.summary();
-            d.push_edit(e)?;
+            let base = doc.parent().map(PathBuf::from).unwrap_or_default();
+            push_checked(&mut d, e, &base)?;
             d.save(&doc)?;
             eprintln!("edit {}: {summary}", d.cursor - 1);
             if json {

@@ -7,7 +7,6 @@
 //! near-circular ellipse is reconstructed (issue 16).
 
 use super::check::{Lcg, FIT_RMS_TOLERANCE};
-use super::fit::{Solver, WeightMode};
 use super::incremental::{MeshCache, SketchCache};
 use super::kernel::total_field;
 use super::model::{Component, Model, Polygonizer};
@@ -327,17 +326,7 @@ fn incremental_checks(out: &mut Vec<Check>) {
 }
 
 fn regression_checks(out: &mut Vec<Check>) {
-    let st = shapes::ellipse(1.1043640902746836, 1.190488019596483, 200);
-    let mut o = sketch::ConvOptions {
-        threshold: 0.5,
-        s_scale: 0.5,
-        radius_factor: 0.5942389110515671,
-        divide_at_joints: true,
-        weights: WeightMode::Exact,
-        solver: Solver::HildrethDEsopo,
-        ..Default::default()
-    };
-    o.skeleton.overlap = 0.0;
+    let (st, o) = super::samples::near_circular_ellipse_case();
     let measured = sketch::build(&st, &o).map_or(f64::INFINITY, |sk| sk.fit.rms_rel_error);
     out.push(
         Check::new(

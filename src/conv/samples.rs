@@ -49,3 +49,21 @@ pub fn random_case(rng: &mut Lcg) -> (Segment, [f64; 3], f64) {
     ];
     (seg, r, rng.range(0.3, 4.0))
 }
+
+/// The option sweep's failing case of issue 16: a near-circular ellipse
+/// with exact 2x2 weights, division at joints and Hildreth-d'Esopo (rms
+/// 0.868 before the fix). Shared by the regression check and its test.
+pub fn near_circular_ellipse_case() -> (Vec<[f64; 2]>, super::sketch::ConvOptions) {
+    let st = super::shapes::ellipse(1.1043640902746836, 1.190488019596483, 200);
+    let mut o = super::sketch::ConvOptions {
+        threshold: 0.5,
+        s_scale: 0.5,
+        radius_factor: 0.5942389110515671,
+        divide_at_joints: true,
+        weights: super::fit::WeightMode::Exact,
+        solver: super::fit::Solver::HildrethDEsopo,
+        ..Default::default()
+    };
+    o.skeleton.overlap = 0.0;
+    (st, o)
+}

@@ -139,6 +139,15 @@ pub fn apply_plates(mesh: &mut Mesh, edits: &[Edit]) -> Result<(), EditError> {
         plate
             .apply(&mut mesh.positions, q)
             .map_err(|err| invalid(err.to_string()))?;
+        if plate
+            .region
+            .iter()
+            .any(|&v| mesh.positions[v as usize].iter().any(|x| !x.is_finite()))
+        {
+            return Err(invalid(format!(
+                "the motion d = {d:?} moves vertices to non-finite positions; reduce it"
+            )));
+        }
     }
     Ok(())
 }
@@ -217,4 +226,23 @@ impl Session {
         apply_plates(&mut model.mesh, active).map_err(err)?;
         Ok(model)
     }
+}
+
+/// Pushes `e` and keeps it only when the document still builds as
+/// `character build` builds it (default resolution, profiles read from
+/// `base`): [`CharacterDoc::push_edit`] validates an edit against the parts,
+/// but a mesh-level edit (a plate region whose projection overlaps, a
+/// motion that overflows) can only be judged on the built mesh. On error
+/// `doc` is unchanged.
+pub fn push_checked(
+    doc: &mut CharacterDoc,
+    e: Edit,
+    base: &std::path::Path,
+) -> Result<Built, SketchError> {
+    let mut next = doc.clone();
+    next.push_edit(e)
+        .map_err(|err| SketchError::Document(err.to_string()))?;
+    let built = crate::sketch::build_document(&next, base, Resolution::default(), false)?;
+    *doc = next;
+    Ok(built)
 }

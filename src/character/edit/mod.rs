@@ -60,7 +60,7 @@ pub mod check;
 mod mesh;
 
 pub use apply::{apply_to_parts, section_gec, validate_params};
-pub use mesh::{apply_plates, displacements, force_field, Session, FORCE_TERMS};
+pub use mesh::{apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS};
 
 use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
