@@ -270,6 +270,18 @@ pub struct TransitionSpec {
     /// Empty: the fixed angles `pi - j pi / k` (`sketch::transition`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub cut_angles: Vec<f64>,
+    /// Factor on the Hermite tangent length (the loop-to-ring centroid
+    /// distance); 1 by default.
+    #[serde(default = "unit_scale", skip_serializing_if = "is_unit_scale")]
+    pub tangent_scale: f64,
+}
+
+fn unit_scale() -> f64 {
+    1.0
+}
+
+fn is_unit_scale(x: &f64) -> bool {
+    *x == 1.0
 }
 
 /// A part removed from the main profile, to be modeled from its own

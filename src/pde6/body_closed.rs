@@ -461,6 +461,7 @@ fn transitions(
             children: vec!["leg_l".into(), "leg_r".into()],
             seam_apex: vec![crotch],
             cut_angles: Vec::new(),
+            tangent_scale: 1.0,
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -469,6 +470,7 @@ fn transitions(
             children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
             seam_apex: apex,
             cut_angles: Vec::new(),
+            tangent_scale: 1.0,
         },
     ])
 }

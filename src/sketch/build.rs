@@ -261,6 +261,12 @@ pub fn build_model_with(
             .map(|&c| parts[c].section(parts[c].u0, 0).c0)
             .collect();
         let cuts = cut_table(k, &t.cut_angles);
+        if !(t.tangent_scale.is_finite() && t.tangent_scale > 0.0) {
+            return Err(SketchError::Document(format!(
+                "transition '{}': tangent_scale must be positive and finite, got {}",
+                t.name, t.tangent_scale
+            )));
+        }
         if !t.cut_angles.is_empty() && cuts.is_empty() {
             return Err(SketchError::Document(format!(
                 "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing",
@@ -277,7 +283,16 @@ pub fn build_model_with(
                     parts[idx].name, t.name
                 )));
             }
-            let ct = child_transition(c, k, &parts[pi], t.parent_end, &parts[idx], &seams, &cuts);
+            let ct = child_transition(
+                c,
+                k,
+                &parts[pi],
+                t.parent_end,
+                &parts[idx],
+                &seams,
+                &cuts,
+                t.tangent_scale,
+            );
             if thetas[idx].is_some() {
                 return Err(SketchError::Document(format!(
                     "part '{}' is the child of two transitions",

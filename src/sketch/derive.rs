@@ -479,6 +479,7 @@ fn derive_upright(
             children: vec!["leg_l".into(), "leg_r".into()],
             seam_apex: vec![[lm.crotch[0], lm.crotch[1], bot_c[2]]],
             cut_angles: Vec::new(),
+            tangent_scale: 1.0,
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -487,6 +488,7 @@ fn derive_upright(
             children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
             seam_apex: vec![apex(-1.0), apex(1.0)],
             cut_angles: Vec::new(),
+            tangent_scale: 1.0,
         },
     ];
     Ok(Derived {

@@ -288,6 +288,7 @@ pub fn child_transition(
     child: &PartSurface,
     seams: &[Seam],
     cuts: &[(usize, usize)],
+    tangent_scale: f64,
 ) -> ChildTransition {
     let runs = loop_runs(c, k, cuts);
     let n = loop_len(&runs);
@@ -315,7 +316,7 @@ pub fn child_transition(
     let cl = centroid(&pts);
     let q = child.section(child.u0, 0);
     let cq = q.c0;
-    ct.ell = dist(cl, cq).max(1e-9);
+    ct.ell = dist(cl, cq).max(1e-9) * tangent_scale;
     let mut best = (f64::INFINITY, 0.0, 1.0);
     for sigma in [1.0, -1.0] {
         for a in 0..720 {
