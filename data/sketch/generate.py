@@ -215,7 +215,7 @@ def make_animal():
     # belly and a ridge along the spine
     secs = [
         {"part": "body", "y": y, "points": section(front, side, y, 0.0, bumps)}
-        for (y, bumps) in [(0.52, [(0.2, 0.5, 1.5708)]), (0.43, [])]
+        for (y, bumps) in [(0.50, [(0.08, 0.6, 1.5708)])]
     ]
     with open(os.path.join(HERE, "animal_sections.json"), "w") as f:
         json.dump({"sections": secs}, f, indent=1)

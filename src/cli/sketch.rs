@@ -14,7 +14,13 @@ flattened with --tolerance, at most 1 % of the drawing's height); extra paths wh
 or the neck, a cut places that join at its mean height. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
 segmentation expects a standing humanoid seen from the front, arms away from the body and legs apart \
 (parts torso, head, arm_l, arm_r, leg_l, leg_r; _l is negative x); a drawing up to 12 degrees off \
-upright is segmented about its principal axis. The side outline must have the \
+upright is segmented about its principal axis. A four-legged animal (--body-plan quadruped, or \
+auto: an outline longer than tall) is drawn in the same files: the front file holds its lateral \
+silhouette (model x-y, head toward +x or -x, legs apart: 2, or all 4 in a walking pose), the side file \
+the animal seen head-on (model z-y, left and right legs apart in z); parts body, head (neck and head), \
+tail, back (a domed back between tail and withers, when drawn), legs leg_fl/fr/bl/br (4: the outer \
+leg of each pair is the near one, at +z) or leg_f/leg_b (2); the tail and head must rise above the back. \
+The side outline must have the \
 front's height within 5 %. SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
 \"points\": [[x, z], ...]}]}: closed curves in the horizontal plane at height y, fitted by GECs at \
 the final level.";
