@@ -41,6 +41,13 @@ pub enum Mode {
     Export {
         buffer: String,
     },
+    /// Typing a command's input ([`super::commands`]); `error`: why the
+    /// last Enter was refused.
+    Prompt {
+        kind: super::commands::PromptKind,
+        buffer: String,
+        error: Option<String>,
+    },
     Help,
     /// Quit with unsaved changes: save, discard or stay.
     ConfirmQuit,
@@ -66,6 +73,7 @@ pub enum ItemKind {
     Part,
     Transition,
     Removed,
+    Prop,
 }
 
 /// One entry of the part tree.
@@ -176,11 +184,16 @@ impl App {
 
     /// The part tree.
     pub fn tree(&self) -> Vec<TreeItem> {
+        let removed = |n: &str| self.doc.removed_parts.iter().any(|r| r.name == n);
         let mut out: Vec<TreeItem> = self
             .edited
             .iter()
             .map(|p| TreeItem {
-                kind: ItemKind::Part,
+                kind: if removed(&p.name) {
+                    ItemKind::Removed
+                } else {
+                    ItemKind::Part
+                },
                 name: p.name.clone(),
                 detail: format!("{} sections", p.sections.len()),
             })
@@ -190,10 +203,21 @@ impl App {
             name: t.name.clone(),
             detail: format!("{} -> {}", t.parent, t.children.join(", ")),
         }));
-        out.extend(self.doc.removed_parts.iter().map(|r| TreeItem {
-            kind: ItemKind::Removed,
-            name: r.name.clone(),
-            detail: "removed, not built".into(),
+        out.extend(
+            self.doc
+                .removed_parts
+                .iter()
+                .filter(|r| !self.edited.iter().any(|p| p.name == r.name))
+                .map(|r| TreeItem {
+                    kind: ItemKind::Removed,
+                    name: r.name.clone(),
+                    detail: "removed, not built".into(),
+                }),
+        );
+        out.extend(self.doc.props.iter().map(|p| TreeItem {
+            kind: ItemKind::Prop,
+            name: p.name.clone(),
+            detail: format!("conv model x{}", p.scale),
         }));
         out
     }
@@ -466,6 +490,7 @@ impl App {
                 _ => Vec::new(),
             },
             Mode::Editing { row, buffer } => self.on_edit_key(k, row, buffer),
+            Mode::Prompt { kind, buffer, .. } => self.on_prompt_key(k, kind, buffer),
             Mode::Normal => self.on_normal_key(k, ctrl),
         }
     }

@@ -2,6 +2,7 @@
 //! and in the README is [`BINDINGS`]).
 
 use super::app::{App, Effect, Focus, Mode};
+use super::commands::PromptKind;
 use super::params::{self, Parsed};
 use crossterm::event::{KeyCode, KeyEvent};
 
@@ -23,6 +24,19 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ("u, Ctrl-Z", "undo the last active edit"),
     ("r, Ctrl-Y", "redo"),
     ("v", "preview view: front, side, top, all three"),
+    (
+        "a",
+        "add a part from an SVG/JSON outline (a separate component)",
+    ),
+    (
+        "x",
+        "add a key section to the selected part (ellipse or curve file)",
+    ),
+    (
+        "p",
+        "attach a prop from a conv model file (data/conv/*.json)",
+    ),
+    ("Tab (in a prompt)", "complete the file path"),
     ("b", "rebuild now"),
     (
         "e",
@@ -117,6 +131,9 @@ impl App {
                 Vec::new()
             }
             KeyCode::Char('b') => vec![Effect::Rebuild],
+            KeyCode::Char('a') => self.prompt(PromptKind::AddPart),
+            KeyCode::Char('x') => self.prompt(PromptKind::KeySection),
+            KeyCode::Char('p') => self.prompt(PromptKind::AddProp),
             KeyCode::Char('e') => {
                 let stem = self
                     .path

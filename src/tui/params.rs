@@ -143,6 +143,17 @@ pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
         rows.push(info("edits", "none (transitions follow their parts)"));
         return rows;
     }
+    if let Some(p) = doc.props.iter().find(|p| p.name == name) {
+        return vec![
+            info("prop", "conv model (paper 003), not stitched"),
+            info("model", p.model.clone()),
+            info(
+                "translate",
+                format!("{} {} {}", p.translate[0], p.translate[1], p.translate[2]),
+            ),
+            info("scale", format!("{}", p.scale)),
+        ];
+    }
     if doc.removed_parts.iter().any(|r| r.name == name) {
         return vec![info("removed", "recorded, not built in version 1")];
     }
