@@ -20,7 +20,7 @@ const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
 /// A tail: an ellipse 0.4 x 0.06 turned 30 degrees beside the legs, as an
 /// SVG path in model units (front view: SVG y is minus model y).
-fn tail_svg(dir: &Path) -> PathBuf {
+pub(crate) fn tail_svg(dir: &Path) -> PathBuf {
     let (s, c) = 30f64.to_radians().sin_cos();
     let d: Vec<String> = (0..200)
         .map(|i| {
