@@ -62,6 +62,9 @@ pub enum Effect {
     Rebuild,
     /// Build at export resolution and write to the path.
     Export(PathBuf),
+    /// Push an edit that is kept only when the document still builds
+    /// (`character::edit::push_checked`, on the worker).
+    Check(crate::character::edit::Edit),
     /// Abandon the running job.
     Cancel,
     Quit,
@@ -374,6 +377,15 @@ impl App {
                 }
                 Vec::new()
             }
+            Outcome::Checked {
+                edit,
+                result,
+                elapsed,
+                ..
+            } => {
+                self.running = None;
+                self.checked(*edit, result, elapsed)
+            }
             Outcome::Panicked { message, .. } => {
                 self.running = None;
                 self.failed(format!("rebuild panicked: {message}"))
@@ -381,7 +393,7 @@ impl App {
         }
     }
 
-    fn built(&mut self, r: Rebuilt, elapsed: Duration) -> Vec<Effect> {
+    pub(super) fn built(&mut self, r: Rebuilt, elapsed: Duration) -> Vec<Effect> {
         let mut effects = Vec::new();
         if self.doc.parts.is_empty() {
             // the first build derived the parts: the document keeps them

@@ -353,6 +353,34 @@ pub fn add_prop(
 }
 
 impl App {
+    /// Takes the outcome of a checked edit ([`Effect::Check`]): push it
+    /// when the document built with it, else say why (the document is
+    /// unchanged).
+    pub(super) fn checked(
+        &mut self,
+        edit: crate::character::edit::Edit,
+        result: Result<Box<super::worker::Rebuilt>, String>,
+        elapsed: std::time::Duration,
+    ) -> Vec<Effect> {
+        let summary = edit.summary();
+        let r = match result {
+            Ok(r) => r,
+            Err(e) => {
+                self.say(format!("not applied: {e}"), true);
+                return Vec::new();
+            }
+        };
+        if let Err(e) = self.doc.push_edit(edit) {
+            self.say(format!("not applied: {e}"), true);
+            return Vec::new();
+        }
+        self.log_sel = self.doc.cursor;
+        // autosave; the build with the edit is at hand (no second rebuild)
+        let _ = self.changed();
+        self.say(format!("applied: {summary}"), false);
+        self.built(*r, elapsed)
+    }
+
     /// Opens the prompt of a command.
     pub(super) fn prompt(&mut self, kind: PromptKind) -> Vec<Effect> {
         self.mode = Mode::Prompt {

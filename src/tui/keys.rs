@@ -4,6 +4,7 @@
 use super::app::{App, Effect, Focus, Mode};
 use super::commands::PromptKind;
 use super::params::{self, Parsed};
+use crate::character::edit::Edit;
 use crossterm::event::{KeyCode, KeyEvent};
 
 /// Every key binding: keys, what they do.
@@ -257,7 +258,16 @@ impl App {
                     }
                     Ok(Parsed::Edit(e)) => {
                         self.mode = Mode::Normal;
-                        self.push(e)
+                        if matches!(
+                            e,
+                            Edit::Force { .. } | Edit::Boundary { .. } | Edit::Plate { .. }
+                        ) {
+                            // judged on the built mesh, on the worker
+                            self.say(format!("checking: {}", e.summary()), false);
+                            vec![Effect::Check(e)]
+                        } else {
+                            self.push(e)
+                        }
                     }
                 }
             }

@@ -44,7 +44,23 @@ pub(crate) fn job(app: &mut App) -> Job {
 /// Runs the effects synchronously (rebuilds on this thread).
 pub(crate) fn settle(app: &mut App, effects: Vec<Effect>) {
     for e in effects {
-        if e == Effect::Rebuild {
+        if let Effect::Check(edit) = e {
+            let j = Job {
+                gen: app.start_job(false),
+                doc: app.doc.clone(),
+                base: app.base.clone(),
+                res: RES,
+                task: Task::Check { edit: edit.clone() },
+            };
+            let result = worker::build(&j).map(Box::new);
+            let more = app.on_outcome(Outcome::Checked {
+                gen: j.gen,
+                edit: Box::new(edit),
+                result,
+                elapsed: Duration::ZERO,
+            });
+            settle(app, more);
+        } else if e == Effect::Rebuild {
             let j = job(app);
             let result = worker::build(&j).map(Box::new);
             let more = app.on_outcome(Outcome::Built {
@@ -95,7 +111,7 @@ pub(crate) fn screen(app: &App) -> String {
 }
 
 /// Moves the parameter selection to the row labelled `label`.
-fn to_row(app: &mut App, label: &str) {
+pub(crate) fn to_row(app: &mut App, label: &str) {
     app.focus = Focus::Params;
     let i = app
         .rows()

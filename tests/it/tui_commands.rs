@@ -4,7 +4,7 @@
 //! unchanged; a document with a prop builds the same through the TUI's
 //! export and through `character build`.
 
-use super::tui::{built, key, screen, typed};
+use super::tui::{built, key, screen, to_row, typed};
 use crate::cli::pdesculpt;
 use crossterm::event::KeyCode;
 use pdesculpt::character::doc::{CharacterDoc, SectionShape};
@@ -317,4 +317,80 @@ fn documents_without_props_load_and_save_without_the_field() {
     v["props"] = serde_json::json!([{"name": "torso", "model": "m.json"}]);
     let e = CharacterDoc::parse(&v.to_string(), Path::new("x.json")).expect_err("refused");
     assert!(e.to_string().contains("used twice"), "{e}");
+}
+
+/// Types `value` into the row labelled `row` and presses Enter.
+fn form(app: &mut App, row: &str, value: &str) {
+    to_row(app, row);
+    key(app, KeyCode::Enter);
+    typed(app, value);
+    key(app, KeyCode::Enter);
+}
+
+#[test]
+fn tui_force_boundary_plate_forms_check_numbers_and_refuse_bad_edits() {
+    let mut app = built("cmd-forms");
+    let torso = app.doc.parts[0].clone();
+    let len = torso.sections.last().expect("sections").u;
+    let before = app.doc.clone();
+    // checked as typed: shown on screen, Enter does nothing
+    to_row(&mut app, "force");
+    key(&mut app, KeyCode::Enter);
+    typed(&mut app, "0.3 0.1 0 0 1");
+    assert!(screen(&app).contains("u[1] > u[0]"), "{}", screen(&app));
+    key(&mut app, KeyCode::Enter);
+    assert!(matches!(app.mode, Mode::Editing { .. }));
+    assert_eq!(app.doc, before);
+    key(&mut app, KeyCode::Esc);
+    form(&mut app, "force", &format!("0 {} 0 0 1", 2.0 * len));
+    assert!(matches!(app.mode, Mode::Editing { .. }));
+    assert!(
+        screen(&app).contains("not inside the part"),
+        "{}",
+        screen(&app)
+    );
+    key(&mut app, KeyCode::Esc);
+    form(&mut app, "boundary", "middle 0 0 1");
+    assert!(
+        screen(&app).contains("'start' or 'end'"),
+        "{}",
+        screen(&app)
+    );
+    key(&mut app, KeyCode::Esc);
+    form(&mut app, "plate", "0 1 0 -0.1 0 0 0.01");
+    assert!(screen(&app).contains("radius = -0.1"), "{}", screen(&app));
+    key(&mut app, KeyCode::Esc);
+    assert_eq!(app.doc, before);
+    // parsed, but refused when pushed (a region with no vertex of the part):
+    // the document is unchanged and the reason shown
+    form(&mut app, "plate", "5 5 5 0.1 0 0 0.01");
+    assert_eq!(app.mode, Mode::Normal);
+    assert_eq!(app.doc, before);
+    let m = app.message.clone().expect("a message");
+    assert!(
+        m.error && m.text.contains("farther than the radius"),
+        "{m:?}"
+    );
+    // valid edits go through push_checked and land in the log
+    form(
+        &mut app,
+        "force",
+        &format!("{} {} 0 0 0.5", 0.2 * len, 0.8 * len),
+    );
+    assert_eq!(app.doc.edits.len(), 1, "{:?}", app.message);
+    form(&mut app, "boundary", "start 0 0 0.05");
+    assert_eq!(app.doc.edits.len(), 2, "{:?}", app.message);
+    let c = torso.sections[torso.sections.len() / 2].centre;
+    form(
+        &mut app,
+        "plate",
+        &format!("{} {} {} 0.12 0 0 0.01", c[0], c[1], c[2] + 0.1),
+    );
+    assert_eq!(app.doc.edits.len(), 3, "{:?}", app.message);
+    let ops: Vec<&str> = app.doc.edits.iter().map(|e| e.op()).collect();
+    assert_eq!(ops, ["force", "boundary", "plate"]);
+    assert!(!app.stale);
+    let t = &app.shown.as_ref().expect("built").report.topology;
+    assert!(t.watertight && t.manifold, "{t:?}");
+    assert!(screen(&app).contains("Edit log (3 of 3 active)"));
 }
