@@ -152,6 +152,7 @@ pub fn build_document_with(
             &doc.inputs.sections,
             &front.cuts,
             doc.level,
+            doc.inputs.body_plan,
         )?;
         out.parts = d.parts;
         out.parts.extend(removed.iter().map(|r| r.spec.clone()));

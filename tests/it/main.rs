@@ -20,6 +20,7 @@ mod plate;
 mod profile;
 mod sasm;
 mod sketch;
+mod sketch_animal;
 mod template;
 mod template_study;
 mod template_tbsm;
