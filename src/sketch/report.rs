@@ -161,15 +161,16 @@ pub fn build_document_with(
     // replay the edit log on a copy: `out` keeps the unedited parts and the
     // log, so saving it and building again never applies an edit twice
     // PDE-level edits change the parts (spec edits) or add displacements
-    // (forces); mesh-level edits (plate) then act on the built mesh
+    // (forces); mesh-level edits (plate, SASM) then act on the built mesh,
+    // in log order
     let active = out.active_edits();
     let edit_err = |e: crate::character::edit::EditError| SketchError::Document(e.to_string());
+    crate::character::edit::check_order(&out.transitions, active).map_err(edit_err)?;
     let edited = crate::character::edit::apply_to_parts(&out.parts, active).map_err(edit_err)?;
     let disp = crate::character::edit::displacements(active).map_err(edit_err)?;
     let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
-    crate::character::edit::apply_plates(&mut model.mesh, active).map_err(edit_err)?;
-    crate::sasm::edit::apply_edits(&mut model.mesh, &model.parts, active)
-        .map_err(|e| SketchError::Document(format!("sasm edit: {e}")))?;
+    crate::character::edit::apply_mesh_edits(&mut model.mesh, &model.parts, active)
+        .map_err(edit_err)?;
     let props =
         crate::character::props::compose(&mut model.mesh, &doc.props, base, res.rings_per_height)
             .map_err(|e| SketchError::Document(e.to_string()))?;
