@@ -160,13 +160,13 @@ fn prewarm(
 /// (asked before the build, between parts and props, and after the build).
 pub fn build_cancellable(
     job: &Job,
-    mut cache: Option<&mut PartCache>,
+    cache: Option<&mut PartCache>,
     cancelled: &dyn Fn() -> bool,
 ) -> Result<Rebuilt, String> {
     if cancelled() {
         return Err(CANCELLED.into());
     }
-    let r = build_inner(job, cache.as_deref_mut(), cancelled)?;
+    let r = build_inner(job, cache, cancelled)?;
     if cancelled() {
         return Err(CANCELLED.into());
     }
