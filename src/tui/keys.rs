@@ -150,7 +150,7 @@ impl App {
             KeyCode::Esc => {
                 if self.running.take().is_some() {
                     self.say(
-                        "abandoned the running job (the document is unchanged)",
+                        "cancelled the running job (the document is unchanged)",
                         false,
                     );
                     vec![Effect::Cancel]

@@ -51,7 +51,8 @@ pub fn run_effects(app: &mut App, worker: &Worker, effects: Vec<Effect>, res: Re
     for e in effects {
         match e {
             Effect::Quit => return true,
-            Effect::Cancel => {}
+            // every job sent so far (only the newest can be running)
+            Effect::Cancel => worker.cancel(app.next_gen.saturating_sub(1)),
             Effect::Rebuild => {
                 let gen = app.start_job(false);
                 worker.send(Job {

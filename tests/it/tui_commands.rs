@@ -394,3 +394,67 @@ fn tui_force_boundary_plate_forms_check_numbers_and_refuse_bad_edits() {
     assert!(t.watertight && t.manifold, "{t:?}");
     assert!(screen(&app).contains("Edit log (3 of 3 active)"));
 }
+
+#[test]
+fn tui_cancelled_build_stops_between_parts_and_leaves_the_document() {
+    use pdesculpt::sketch::build::PartCache;
+    use std::cell::Cell;
+    let mut app = built("cmd-cancel");
+    let j = Job {
+        gen: 1,
+        doc: app.doc.clone(),
+        base: app.base.clone(),
+        res: Resolution::default(),
+        task: Task::Export {
+            path: app.base.join("never.glb"),
+        },
+    };
+    // cancelled after the third question: two parts solved, then stopped
+    let asked = Cell::new(0);
+    let mut cache = PartCache::default();
+    let r = worker::build_cancellable(&j, Some(&mut cache), &|| {
+        asked.set(asked.get() + 1);
+        asked.get() > 3
+    });
+    assert_eq!(r.err().as_deref(), Some(worker::CANCELLED));
+    assert_eq!(cache.solved, 2, "stopped between parts");
+    assert!(app.doc.parts.len() > 2);
+    // not cancelled: the same call builds (and finds the two parts cached)
+    let r = worker::build_cancellable(&j, Some(&mut cache), &|| false);
+    assert!(r.is_ok());
+    assert_eq!(cache.solved, app.doc.parts.len());
+    // through the app and the real worker: Esc while exporting cancels it,
+    // nothing is written and the document is unchanged
+    let before = app.doc.clone();
+    let w = pdesculpt::tui::worker::Worker::spawn();
+    key(&mut app, KeyCode::Char('e'));
+    key(&mut app, KeyCode::Enter);
+    assert!(app.running.is_none(), "the test runs effects itself");
+    let out = app.base.join("cancelled.glb");
+    let gen = app.start_job(true);
+    w.cancel(gen);
+    assert!(w.send(Job {
+        gen,
+        doc: app.doc.clone(),
+        base: app.base.clone(),
+        res: Resolution::default(),
+        task: Task::Export { path: out.clone() },
+    }));
+    let effects = app.on_key(crossterm::event::KeyEvent::new(
+        KeyCode::Esc,
+        crossterm::event::KeyModifiers::NONE,
+    ));
+    assert_eq!(effects, vec![pdesculpt::tui::app::Effect::Cancel]);
+    loop {
+        let o = w
+            .wait(std::time::Duration::from_secs(60))
+            .expect("the worker reports");
+        if let pdesculpt::tui::worker::Outcome::Exported { result, .. } = o {
+            assert_eq!(result.err().as_deref(), Some(worker::CANCELLED));
+            break;
+        }
+    }
+    assert!(!out.exists(), "a cancelled export wrote its file");
+    assert_eq!(app.doc, before);
+    assert!(screen(&app).contains("cancelled the running job"));
+}
