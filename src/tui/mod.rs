@@ -27,6 +27,7 @@
 
 pub mod app;
 pub mod autosave;
+pub mod commands;
 pub mod keys;
 pub mod params;
 pub mod preview;

@@ -62,6 +62,16 @@ pub fn run_effects(app: &mut App, worker: &Worker, effects: Vec<Effect>, res: Re
                     task: Task::Rebuild,
                 });
             }
+            Effect::Check(edit) => {
+                let gen = app.start_job(false);
+                worker.send(Job {
+                    gen,
+                    doc: app.doc.clone(),
+                    base: app.base.clone(),
+                    res: Resolution::default(),
+                    task: Task::Check { edit },
+                });
+            }
             Effect::Export(path) => {
                 let gen = app.start_job(true);
                 worker.send(Job {

@@ -13,6 +13,7 @@
 //! `character build` makes of the saved file.
 
 use crate::character::doc::CharacterDoc;
+use crate::character::edit::Edit;
 use crate::mesh::Mesh;
 use crate::sketch::build::PartCache;
 use crate::sketch::report::build_document_with;
@@ -29,6 +30,10 @@ pub enum Task {
     /// Build at `res` and write the mesh (format from the extension: OBJ,
     /// GLB, STL, PLY) or a PNG of the front, side and top views.
     Export { path: PathBuf },
+    /// Push `edit` through `character::edit::push_checked` (kept only when
+    /// the document still builds as `character build` builds it); the
+    /// result is the build with the edit.
+    Check { edit: Edit },
 }
 
 /// A job for the worker.
@@ -67,6 +72,14 @@ pub enum Outcome {
         result: Result<PathBuf, String>,
         elapsed: Duration,
     },
+    /// A [`Task::Check`]: `result` is the build with `edit` pushed, or why
+    /// the edit was refused.
+    Checked {
+        gen: u64,
+        edit: Box<Edit>,
+        result: Result<Box<Rebuilt>, String>,
+        elapsed: Duration,
+    },
     Panicked {
         gen: u64,
         message: String,
@@ -80,6 +93,7 @@ impl Outcome {
             Outcome::Started { gen }
             | Outcome::Built { gen, .. }
             | Outcome::Exported { gen, .. }
+            | Outcome::Checked { gen, .. }
             | Outcome::Panicked { gen, .. } => *gen,
         }
     }
@@ -98,7 +112,16 @@ pub fn build(job: &Job) -> Result<Rebuilt, String> {
 /// for bit: `sketch::build::PartCache`).
 pub fn build_with(job: &Job, cache: Option<&mut PartCache>) -> Result<Rebuilt, String> {
     let text = serde_json::to_string_pretty(&job.doc).map_err(|e| e.to_string())?;
-    let doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
+    let mut doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
+    if let Task::Check { edit } = &job.task {
+        let built = crate::character::edit::push_checked(&mut doc, edit.clone(), &job.base)
+            .map_err(|e| e.to_string())?;
+        return Ok(Rebuilt {
+            doc: built.doc,
+            mesh: built.model.mesh,
+            report: built.report,
+        });
+    }
     let built =
         build_document_with(&doc, &job.base, job.res, false, cache).map_err(|e| e.to_string())?;
     Ok(Rebuilt {
@@ -253,6 +276,12 @@ fn run_one(job: &Job, out: &Sender<Outcome>, f: &mut BuildFn) {
             Task::Export { path } => Outcome::Exported {
                 gen: job.gen,
                 result: result.map(|_| path.clone()),
+                elapsed,
+            },
+            Task::Check { edit } => Outcome::Checked {
+                gen: job.gen,
+                edit: Box::new(edit.clone()),
+                result: result.map(Box::new),
                 elapsed,
             },
         },

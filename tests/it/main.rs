@@ -25,4 +25,5 @@ mod template;
 mod template_study;
 mod template_tbsm;
 mod tui;
+mod tui_commands;
 mod tui_e2e;
