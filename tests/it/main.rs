@@ -13,6 +13,7 @@ mod body;
 mod conv;
 mod edit;
 mod gec;
+mod gec_correct;
 mod ode6;
 mod pde4;
 mod pde6;
