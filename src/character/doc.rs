@@ -17,7 +17,8 @@
 //!   "transitions": [ TransitionSpec ... ],
 //!   "removed_parts": [{"name": "hair", "front": {...}, "side": null}],
 //!   "edits": [],
-//!   "cursor": 0
+//!   "cursor": 0,
+//!   "props": [{"name": "ball", "model": "ball.json", "translate": [0, 0, 0], "scale": 1}]
 //! }
 //! ```
 //!
@@ -314,6 +315,10 @@ pub struct CharacterDoc {
     pub edits: Vec<crate::character::edit::Edit>,
     #[serde(default)]
     pub cursor: usize,
+    /// Props: conv models composed as separate components
+    /// ([`crate::character::props`]); absent in older documents.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub props: Vec<crate::character::props::PropSpec>,
 }
 
 impl CharacterDoc {
@@ -328,6 +333,7 @@ impl CharacterDoc {
             removed_parts: Vec::new(),
             edits: Vec::new(),
             cursor: 0,
+            props: Vec::new(),
         }
     }
 
@@ -398,6 +404,17 @@ impl CharacterDoc {
         }
         let mut names: Vec<&str> = self.parts.iter().map(|p| p.name.as_str()).collect();
         names.extend(self.transitions.iter().map(|t| t.name.as_str()));
+        names.extend(self.props.iter().map(|p| p.name.as_str()));
+        if self.props.len() > crate::character::props::MAX_PROPS {
+            return Err(DocError::Invalid(format!(
+                "{} props (at most {})",
+                self.props.len(),
+                crate::character::props::MAX_PROPS
+            )));
+        }
+        for p in &self.props {
+            p.validate().map_err(|e| DocError::Invalid(e.to_string()))?;
+        }
         let mut sorted = names.clone();
         sorted.sort_unstable();
         if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {

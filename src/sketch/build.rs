@@ -58,12 +58,12 @@ pub struct SeamReport {
 /// part (a force edit of `character::edit`: the pde4 2-sided solution, which
 /// vanishes with its u-derivative at both ends of the range, so the part
 /// stays in place and C1 there and its ends, where transitions join, do not
-/// move). `theta = 2 pi v`.
+/// move; or the 4-sided one inside an angle range too).
 #[derive(Clone, Debug)]
 pub struct Displacement {
     pub part: String,
     pub u: [f64; 2],
-    pub field: crate::pde4::TwoSided,
+    pub field: crate::character::edit::ForceField,
 }
 
 impl Displacement {
@@ -74,10 +74,7 @@ impl Displacement {
         if u <= a || u >= b {
             return [0.0; 3];
         }
-        let s = (u - a) / (b - a);
-        let v = (theta / (2.0 * PI)).rem_euclid(1.0);
-        let c = &self.field.comps;
-        [c[0].eval(s, v), c[1].eval(s, v), c[2].eval(s, v)]
+        self.field.at((u - a) / (b - a), theta)
     }
 }
 
