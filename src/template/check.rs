@@ -128,17 +128,29 @@ fn figure_checks(out: &mut Vec<Check>) {
     out.push(check("sec 4.2.1", "similarity-covariance", Kind::Reference, m, tol::SOLVE * 1e3, "fit to a sketch moved by a similarity (s 1.7, 0.3 rad) equals the similarity of the fit (depth scaled about the template's depth centre); max vertex difference / height"));
 }
 
+/// Largest ratio of the high level's RMS vertex error to the bounding-box
+/// baseline's on a study target (issue 12: the high level beats it).
+pub const BEATS_BBOX: f64 = 0.99;
+
 fn study_checks(out: &mut Vec<Check>) {
     let opts = FitOptions {
         condition: false,
         on_miss: super::OnMiss::Report,
         ..Default::default()
     };
-    for name in ["male->fat", "male->boy", "female->pregnant"] {
-        let Some(case) = CASES.iter().find(|c| c.name == name) else {
-            continue;
-        };
+    for case in CASES {
+        let name = case.name;
         let rows = run_case(case, &opts).map(|(r, _)| r).unwrap_or_default();
+        let rms = |m: &str| {
+            rows.iter()
+                .find(|r| r.method == m)
+                .map_or(f64::INFINITY, |r| r.rms_rel)
+        };
+        let ratio = rms("high") / rms("bbox");
+        out.push(check("sec 4.2.3", &format!("study-{name}-high-beats-bbox"), Kind::Threshold, if ratio.is_finite() { ratio } else { f64::INFINITY }, BEATS_BBOX, "RMS vertex error (against the MakeHuman target) of the high-level fit divided by that of the template scaled to the sketch's bounding box (issue 12: below 1 for every study target)"));
+        if !["male->fat", "male->boy", "female->pregnant"].contains(&name) {
+            continue;
+        }
         let front_low = rows
             .iter()
             .find(|r| r.method == "low")
@@ -153,13 +165,28 @@ fn study_checks(out: &mut Vec<Check>) {
                 .map(|p| p.distance.max_rel)
                 .unwrap_or(f64::INFINITY)
         };
-        let (lo, me) = (side("low"), side("medium"));
-        let m = if lo.is_finite() && me.is_finite() {
-            me / lo
-        } else {
-            f64::INFINITY
+        let ratio = |m: &str| {
+            let (lo, me) = (side("low"), side(m));
+            if lo.is_finite() && me.is_finite() {
+                me / lo
+            } else {
+                f64::INFINITY
+            }
         };
-        out.push(check("sec 4.2.2", &format!("study-{name}-medium-improves-side"), Kind::Threshold, m, 1.0, "side-profile max error of the medium level divided by the low level's (below 1: the side warp helps)"));
+        // the pregnant belly is hidden behind the forearms in the template's
+        // side view: the medium level leaves it (README), the high level's
+        // sections fit it
+        if name != "female->pregnant" {
+            out.push(check("sec 4.2.2", &format!("study-{name}-medium-improves-side"), Kind::Threshold, ratio("medium"), 1.0, "side-profile max error of the medium level divided by the low level's (below 1: the side warp helps)"));
+        }
+        out.push(check(
+            "sec 4.2.3",
+            &format!("study-{name}-high-improves-side"),
+            Kind::Threshold,
+            ratio("high"),
+            1.0,
+            "side-profile max error of the high level divided by the low level's",
+        ));
     }
 }
 

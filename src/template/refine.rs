@@ -211,9 +211,33 @@ pub fn side_pass(
             problem: e.to_string(),
         }
     })?;
-    let (lo, ls) = matched_landmarks(View::Side, opts.side_scheme, &o, side)?;
-    let (ca, cb) = correspond(&o, &lo, side, &ls, opts.side_centres);
+    // with the envelope partners and `side_trunk`, the trunk's outline
+    // (arms left out: a forearm in front of the belly hides it in the side
+    // view)
+    let arms = match opts.side_partner {
+        SidePartner::Envelope if opts.side_trunk => arm_mask(template, positions, opts, outline),
+        _ => None,
+    };
+    let trunk = arms.as_ref().and_then(|mask| {
+        let skin = template.skin_at(positions);
+        let keep: Vec<bool> = skin
+            .triangles
+            .iter()
+            .map(|t| {
+                t.iter()
+                    .all(|&i| !mask[template.skin_index[i as usize] as usize])
+            })
+            .collect();
+        let (tm, _) = skin.filter_triangles(&keep);
+        let t = outline(&tm, View::Side).ok()?;
+        super::polygon::validated("the trunk's side outline", &t).ok()
+    });
+    let arms = if trunk.is_some() { arms } else { None };
+    let ot: &[[f64; 2]] = trunk.as_deref().unwrap_or(&o);
+    let (lo, ls) = matched_landmarks(View::Side, opts.side_scheme, ot, side)?;
+    let (ca, cb) = correspond(ot, &lo, side, &ls, opts.side_centres);
     let m = ca.len();
+    let eps = ENVELOPE_EPS * template.height().max(f64::MIN_POSITIVE);
     let (mut centres, mut values) = (Vec::with_capacity(m), Vec::with_capacity(m));
     for i in 0..m {
         let (a, b) = (ca[i], cb[i]);
@@ -222,11 +246,15 @@ pub fn side_pass(
             .sqrt()
             .max(f64::MIN_POSITIVE);
         let dy = (q[1] - p[1]) / len;
-        if dy.abs() >= STEEP {
-            let z = match opts.side_partner {
-                SidePartner::ArcLength => level_partner(side, a[1], b[0]),
-                SidePartner::Heading => heading_partner(side, a[1], a[0], dy > 0.0),
-            };
+        if dy.abs() < STEEP {
+            continue;
+        }
+        let z = match opts.side_partner {
+            SidePartner::ArcLength => Some(level_partner(side, a[1], b[0])),
+            SidePartner::Heading => Some(heading_partner(side, a[1], a[0], dy > 0.0)),
+            SidePartner::Envelope => envelope_partner(&o, ot, side, a, eps, false),
+        };
+        if let Some(z) = z {
             centres.push(a);
             values.push([z - a[0]]);
         }
@@ -251,9 +279,14 @@ pub fn side_pass(
             source,
         }
     })?;
-    for p in positions.iter_mut() {
+    for (i, p) in positions.iter_mut().enumerate() {
         let (y, z) = (p[1], p[2]);
-        let r = match depth_span(&o, y) {
+        if arms.as_ref().is_some_and(|a| a[i]) {
+            // arms take the body's overall depth map only
+            p[2] += affine(z);
+            continue;
+        }
+        let r = match depth_span(ot, y) {
             Some((zb, zf)) if zf > zb => {
                 let s = ((z - zb) / (zf - zb)).clamp(0.0, 1.0);
                 s.powi(opts.depth_falloff) * depth.eval(&[zf, y])[0]
@@ -278,6 +311,83 @@ pub enum SidePartner {
     /// (up the front, down the back), nearest to the point itself: a bulge
     /// that lengthens the outline does not shift the partners above it.
     Heading,
+    /// Only points on the envelope (the front-most or back-most crossing
+    /// of their height) are centres, partnered with the sketch's front-most
+    /// or back-most crossing of that height: overhangs and limbs inside the
+    /// outline's span (a forearm's underside, a belly's underside) are not
+    /// partnered with the far side of the body.
+    Envelope,
+}
+
+/// Outline points within this fraction of the height of their height's
+/// front-most (back-most) crossing are on the envelope.
+pub const ENVELOPE_EPS: f64 = 1e-3;
+
+/// The sketch's front-most (back-most) crossing at `a`'s height when `a` is
+/// the front-most (back-most) crossing of the trunk's outline `trunk` at
+/// that height (within `eps`) and either also of the whole outline `full`
+/// or (with `hidden`) hidden behind an arm that the sketch's crossing lies
+/// beyond; `None` otherwise (points inside the span, hidden points). The
+/// side pass does not partner hidden points: a sketch's crossing beyond
+/// the model's arm can be the sketch's arm (a fat man's hands) as well as
+/// a bulge (a pregnant belly), and the first moved the MakeHuman male->fat
+/// belly by 10 % of the height.
+pub fn envelope_partner(
+    full: &[[f64; 2]],
+    trunk: &[[f64; 2]],
+    side: &[[f64; 2]],
+    a: [f64; 2],
+    eps: f64,
+    hidden: bool,
+) -> Option<f64> {
+    let (zb, zf) = depth_span(trunk, a[1])?;
+    let (fb, ff) = depth_span(full, a[1]).unwrap_or((zb, zf));
+    let (sb, sf) = depth_span(side, a[1])?;
+    if zf - zb <= eps {
+        None
+    } else if zf - a[0] <= eps {
+        (ff - zf <= eps || (hidden && sf > ff + eps)).then_some(sf)
+    } else if a[0] - zb <= eps {
+        (zb - fb <= eps || (hidden && sb < fb - eps)).then_some(sb)
+    } else {
+        None
+    }
+}
+
+/// Fraction of the height below the hands' (crotch's) landmark still
+/// counted as arm.
+pub const ARM_MARGIN: f64 = 0.05;
+
+/// The arms of a human template at `positions`: vertices below the higher
+/// armpit, above the hands and the crotch (less [`ARM_MARGIN`]) and
+/// outside the armpits' x range, the armpits found on the fitted
+/// front outline; `None` unless the front scheme is [`super::Scheme::Human`]
+/// and its landmarks are found.
+pub fn arm_mask(
+    template: &Template,
+    positions: &[[f64; 3]],
+    opts: &FitOptions,
+    outline: &OutlineFn,
+) -> Option<Vec<bool>> {
+    if opts.front_scheme != super::Scheme::Human {
+        return None;
+    }
+    let f = outline(&template.skin_at(positions), View::Front).ok()?;
+    let f = super::polygon::validated("the fitted front outline", &f).ok()?;
+    let marks = super::landmarks::find(&f, super::Scheme::Human, "fitted front outline").ok()?;
+    let (l, r) = (f[marks[2]], f[marks[6]]);
+    let (x0, x1, top) = (l[0].min(r[0]), l[0].max(r[0]), l[1].max(r[1]));
+    // not the feet: arms end above the lower of the hands' and the
+    // crotch's heights, less a margin for the hand below its extreme point
+    let (lo, hi) = super::polygon::bbox(&f);
+    let bottom =
+        f[marks[1]][1].min(f[marks[7]][1]).min(f[marks[4]][1]) - ARM_MARGIN * (hi[1] - lo[1]);
+    Some(
+        positions
+            .iter()
+            .map(|p| p[1] < top && p[1] > bottom && (p[0] < x0 || p[0] > x1))
+            .collect(),
+    )
 }
 
 /// The overall depth map of the side pass.

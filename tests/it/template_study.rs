@@ -37,11 +37,13 @@ fn study_table() {
                 };
                 o.side_partner = match f.get(1) {
                     Some(&"arc") => SidePartner::ArcLength,
+                    Some(&"env") => SidePartner::Envelope,
                     _ => SidePartner::Heading,
                 };
                 if let Some(x) = f.get(2) {
                     o.depth_falloff = x.parse().unwrap();
                 }
+                o.side_trunk = f.get(3) == Some(&"trunk");
                 (v.to_string(), o)
             })
             .collect();
@@ -133,6 +135,21 @@ fn bands(case: &pdesculpt::template::study::Case, meshes: &[Vec<[f64; 3]>]) {
             template.skin.positions[i].map(|v| (v * 100.0).round() / 100.0),
             skin[i].map(|v| (v * 100.0).round() / 100.0),
             target.positions[i].map(|v| (v * 100.0).round() / 100.0)
+        );
+    }
+}
+
+/// Every check of the template family passes (RBF, synthetic figures, the
+/// study on the seven MakeHuman targets: the high level beats the
+/// bounding-box baseline on each, TBSM round trip).
+#[test]
+fn template_checks_pass() {
+    for c in pdesculpt::template::check::checks() {
+        eprintln!("{} {} (tol {})", c.name, c.measured, c.tolerance);
+        assert!(
+            c.passed,
+            "{} measured {} tol {}: {}",
+            c.name, c.measured, c.tolerance, c.note
         );
     }
 }

@@ -28,7 +28,7 @@ use std::path::PathBuf;
 pub enum TbsmCommand {
     /// Replace a part's elliptic sections by the template part's sections (Fig 11b).
     Replace(ReplaceArgs),
-    /// Create a part mesh from a sketched front profile by correspondence with the template part (Fig 11a).
+    /// Create a part mesh from a sketched front or side profile by correspondence with the template part (Fig 11a).
     Create(CreateArgs),
 }
 
