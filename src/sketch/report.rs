@@ -61,6 +61,8 @@ pub struct SketchReport {
     pub not_built: Vec<String>,
     /// Removed parts built from their own profiles ([`super::removed`]).
     pub removed: Vec<RemovedReport>,
+    /// Props composed as separate components (`character::props`).
+    pub props: Vec<crate::character::props::PropReport>,
 }
 
 /// A removed part: a separate closed component, not stitched to the body.
@@ -150,6 +152,7 @@ pub fn build_document_with(
             &doc.inputs.sections,
             &front.cuts,
             doc.level,
+            doc.inputs.body_plan,
         )?;
         out.parts = d.parts;
         out.parts.extend(removed.iter().map(|r| r.spec.clone()));
@@ -168,6 +171,9 @@ pub fn build_document_with(
     let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
     crate::character::edit::apply_mesh_edits(&mut model.mesh, &model.parts, active)
         .map_err(edit_err)?;
+    let props =
+        crate::character::props::compose(&mut model.mesh, &doc.props, base, res.rings_per_height)
+            .map_err(|e| SketchError::Document(e.to_string()))?;
     let topo = topology(&model.mesh);
     let parts = edited
         .iter()
@@ -219,7 +225,8 @@ pub fn build_document_with(
         })
         .collect();
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
-    let names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    let mut names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    names.extend(props.iter().map(|p| p.name.as_str()));
     let body = super::check::without_groups(&model.mesh, &names);
     let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
     let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
@@ -238,6 +245,7 @@ pub fn build_document_with(
             .map(|r| r.name.clone())
             .collect(),
         removed: removed_reports,
+        props,
     };
     Ok(Built {
         doc: out,
