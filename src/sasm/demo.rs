@@ -2,8 +2,9 @@
 //! breast on the torso from a closed curve plus a side and a top profile
 //! (sketch on the model), and a nose on the head from an auxiliary line
 //! plus the side profile. The strokes are drawn over the built model: the
-//! profiles are the host's own section through the feature's centre line
-//! (found by ray casting) plus a bump, as a user traces over the model.
+//! breast's profiles are the host's outline over the region's chord in
+//! their view (found by ray casting) plus a bump, as a user traces over the
+//! model (the nose's, on the symmetry plane, is the host's section there).
 
 use super::check::{measure, SasmReport};
 use super::project::Projector;
@@ -40,6 +41,25 @@ fn host_depth(pr: &Projector, q: [f64; 2]) -> Result<f64, SasmError> {
     })
 }
 
+/// The host's outline over a chord of the region: its greatest depth at
+/// `OUTLINE_SAMPLES` points `q + k e_axis`, `|k| <= half` (a user tracing
+/// a profile over the model in a side or top view sees the host's
+/// outline, not its section through the centre).
+fn outline(pr: &Projector, q: [f64; 2], axis: usize, half: f64) -> Result<f64, SasmError> {
+    let mut best = host_depth(pr, q)?;
+    for k in 0..OUTLINE_SAMPLES {
+        let mut p = q;
+        p[axis] += half * (2.0 * k as f64 / (OUTLINE_SAMPLES - 1) as f64 - 1.0);
+        if let Some(h) = pr.cast(p) {
+            best = best.max(h.point[2]);
+        }
+    }
+    Ok(best)
+}
+
+/// Chord samples of [`outline`].
+const OUTLINE_SAMPLES: usize = 33;
+
 /// The breast (right of the viewer, model +x) on the torso.
 pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
     let pr = Projector::new(torso, View::Front);
@@ -63,13 +83,20 @@ pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
         } else {
             (1.0 - t * t).sqrt() * (1.0 - t * t)
         };
-        side.push([host_depth(&pr, [cx, y])? + h * shape, y]);
+        side.push([
+            outline(&pr, [cx, y], 0, rx * (1.0 - t * t).max(0.0).sqrt())? + h * shape,
+            y,
+        ]);
     }
     let mut top = Vec::new();
     for i in 0..=N {
         let x = cx - 0.042 + 0.084 * i as f64 / N as f64;
         let t = ((x - cx) / 0.044).clamp(-1.0, 1.0);
-        top.push([x, host_depth(&pr, [x, cy])? + h * (1.0 - t * t).powi(2)]);
+        let half = ry * (1.0 - t * t).max(0.0).sqrt();
+        top.push([
+            x,
+            outline(&pr, [x, cy], 1, half)? + h * (1.0 - t * t).powi(2),
+        ]);
     }
     Ok(SasmSpec {
         part: torso.name.clone(),

@@ -103,6 +103,9 @@ pub struct Feature {
     /// Largest |height| on the rays.
     pub peak: f64,
     pub profiles: Vec<ProfileCurve>,
+    /// Silhouette correction factors, one per profile
+    /// ([`super::silhouette`]).
+    pub factors: Vec<super::silhouette::Factor>,
 }
 
 fn inside(poly: &[[f64; 2]], q: [f64; 2]) -> bool {
@@ -266,14 +269,18 @@ impl Feature {
                 message: "the profiles lie on the part: the feature has zero height".into(),
             });
         }
-        Ok(Feature {
+        let mut f = Feature {
             part: part.name.clone(),
             view,
             region,
             rays,
             peak,
             profiles: curves,
-        })
+            factors: Vec::new(),
+        };
+        f.factors =
+            super::silhouette::factors(&f.region, &f.profiles, |q| f.blended_height(q), depth);
+        Ok(f)
     }
 
     /// Height along ray `k` at `rho` (cubic Hermite with Catmull-Rom
@@ -300,8 +307,22 @@ impl Feature {
             + (t3 - t2) * m(i + 1)
     }
 
-    /// The height at a view-plane point (0 outside the region).
+    /// The height at a view-plane point (0 outside the region): the
+    /// blended height times the silhouette factors, which fade to 1 over
+    /// the blend band (the same smoothstep), so that next to the curve the
+    /// height is the blended one and the join stays C1.
     pub fn height(&self, q: [f64; 2]) -> f64 {
+        let h = self.blended_height(q);
+        if h == 0.0 {
+            return 0.0;
+        }
+        let w = smooth((1.0 - self.region.polar(q).0) / BLEND);
+        h * (1.0 + (super::silhouette::Factor::product(&self.factors, q) - 1.0) * w)
+    }
+
+    /// The height before the silhouette correction: the rays blended in
+    /// angle, brought to zero with zero slope at the curve.
+    pub fn blended_height(&self, q: [f64; 2]) -> f64 {
         let (rho, phi) = self.region.polar(q);
         if rho.is_nan() || rho >= 1.0 {
             return 0.0;
@@ -318,13 +339,7 @@ impl Feature {
             .filter(|&k| w[k] > 0.0)
             .map(|k| w[k] * self.ray(k, rho))
             .sum();
-        let t = (1.0 - rho) / BLEND;
-        let b = if t >= 1.0 {
-            1.0
-        } else {
-            t * t * (3.0 - 2.0 * t)
-        };
-        v * b
+        v * smooth((1.0 - rho) / BLEND)
     }
 
     /// Builds a feature from a [`super::SasmSpec`].
@@ -345,6 +360,17 @@ impl Feature {
             std::slice::from_ref(&s.profile),
             Some(s.mirror),
         )
+    }
+}
+
+/// `3 t^2 - 2 t^3` on `[0, 1]`, 1 beyond (0 below).
+fn smooth(t: f64) -> f64 {
+    if t >= 1.0 {
+        1.0
+    } else if t <= 0.0 {
+        0.0
+    } else {
+        t * t * (3.0 - 2.0 * t)
     }
 }
 

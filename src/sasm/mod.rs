@@ -61,6 +61,7 @@ pub mod edit;
 pub mod feature;
 pub mod project;
 pub mod region;
+pub mod silhouette;
 
 pub use apply::{apply_feature, ApplyReport};
 pub use feature::Feature;
