@@ -36,7 +36,15 @@ fn derived() -> (Derived, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
             (l.min(p[1]), h.max(p[1]))
         });
-    let d = derive(&front.points, None, &[], &front.cuts, Level::Initial).expect("derives");
+    let d = derive(
+        &front.points,
+        None,
+        &[],
+        &front.cuts,
+        Level::Initial,
+        Default::default(),
+    )
+    .expect("derives");
     (d, hi - lo)
 }
 

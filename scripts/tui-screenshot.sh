@@ -2,8 +2,8 @@
 # A PNG of `pdesculpt tui` as a terminal shows it (the README's screenshot).
 #
 # Runs the TUI in a detached tmux session on the bundled female, waits for the
-# first build, selects a part (arm_l), applies one GEC scale edit and shows
-# the three views; captures the pane with its colours (`tmux capture-pane
+# first build, selects a part (arm_l), applies one GEC scale edit, attaches a
+# prop (data/conv/blob.json) and shows the three views; captures the pane with its colours (`tmux capture-pane
 # -e`), turns the ANSI text into HTML (python3, below) and screenshots that
 # with headless Chromium (Debian `chromium`, as the gallery test uses).
 #
@@ -44,6 +44,11 @@ keys j j Tab j j j Enter
 tmux send-keys -t "$session" -l "1.3 1.2"
 keys Enter
 wait_for "1 of 1 active"
+# a prop from a conv model beside the body (issue 14's prop command)
+keys p
+tmux send-keys -t "$session" -l "data/conv/blob.json ball 0.07 0.42 1.05 0"
+keys Enter
+wait_for "attached prop"
 keys v v v
 wait_for "front | side | top"
 # type a bad value so the screenshot shows the check as typed

@@ -169,42 +169,57 @@ MALE_SIDE = [
 ]
 
 
-# A four-legged animal (a dog), primary profile in the x-y plane: its
-# lateral silhouette, head toward +x (for an animal the primary "front"
-# file is the view along z, which shows the legs and the tail apart); the
-# secondary profile is the view from its front (z, y). Counter-clockwise key
-# points from the tail tip.
+# A four-legged animal. Its primary profile (the "front" file: the view
+# along z, model x-y plane) is its lateral silhouette, head toward +x, all
+# four legs visible apart (a walking pose); its secondary profile (the "side"
+# file: the view along x, model z-y plane) is the animal seen head-on, legs
+# apart in z (its left at -z). The back is domed between the tail base and
+# the withers so that tail, back and neck separate going up. Clockwise key
+# points from the tail tip (reversed to counter-clockwise below).
 ANIMAL_FRONT = [
-    (-0.66, 0.74), (-0.60, 0.66), (-0.52, 0.58), (-0.44, 0.56),  # tail, rump
-    (-0.30, 0.57), (-0.10, 0.56), (0.10, 0.57), (0.28, 0.60),  # back
-    (0.36, 0.70), (0.40, 0.80), (0.45, 0.86), (0.55, 0.86),  # neck, skull
-    (0.64, 0.80), (0.66, 0.76), (0.60, 0.73), (0.50, 0.72),  # muzzle, jaw
-    (0.46, 0.62), (0.44, 0.50), (0.42, 0.40),  # throat, chest
-    (0.40, 0.20), (0.41, 0.02), (0.44, 0.0), (0.36, 0.0),  # front leg 1
-    (0.355, 0.20), (0.345, 0.32), (0.325, 0.20),  # between the front legs
-    (0.33, 0.02), (0.34, 0.0), (0.27, 0.0), (0.265, 0.20), (0.26, 0.33),  # front leg 2
-    (0.10, 0.34), (-0.10, 0.34), (-0.24, 0.35),  # belly
-    (-0.25, 0.20), (-0.24, 0.02), (-0.21, 0.0), (-0.29, 0.0),  # hind leg 1
-    (-0.30, 0.20), (-0.31, 0.32), (-0.33, 0.20),  # between the hind legs
-    (-0.33, 0.02), (-0.31, 0.0), (-0.39, 0.0), (-0.40, 0.20),  # hind leg 2
-    (-0.42, 0.38), (-0.46, 0.48), (-0.54, 0.53), (-0.62, 0.60),  # haunch, tail
-    (-0.68, 0.70),
+    (-0.575, 0.795), (-0.545, 0.79), (-0.52, 0.74), (-0.47, 0.665), (-0.42, 0.615),  # tail upper edge
+    (-0.36, 0.60), (-0.31, 0.635), (-0.18, 0.67), (0.0, 0.685),  # tail base, back
+    (0.14, 0.67), (0.22, 0.64), (0.27, 0.62),  # withers
+    (0.32, 0.68), (0.355, 0.75), (0.38, 0.81), (0.41, 0.865), (0.46, 0.90),  # neck, skull
+    (0.52, 0.90), (0.57, 0.875), (0.605, 0.84), (0.62, 0.815), (0.60, 0.79),  # muzzle
+    (0.56, 0.78), (0.535, 0.745), (0.52, 0.68), (0.51, 0.60), (0.50, 0.50), (0.48, 0.42),  # jaw, throat, chest
+    (0.465, 0.34), (0.46, 0.20), (0.46, 0.07), (0.45, 0.01), (0.415, 0.0),  # front leg (right)
+    (0.38, 0.01), (0.37, 0.07), (0.37, 0.20), (0.365, 0.30), (0.35, 0.325),
+    (0.335, 0.30), (0.33, 0.20), (0.33, 0.07), (0.32, 0.01), (0.285, 0.0),  # front leg (left)
+    (0.25, 0.01), (0.24, 0.07), (0.24, 0.20), (0.235, 0.30),
+    (0.20, 0.33), (0.10, 0.345), (0.0, 0.35), (-0.10, 0.345), (-0.16, 0.33),  # belly
+    (-0.19, 0.30), (-0.19, 0.20), (-0.19, 0.07), (-0.20, 0.01), (-0.235, 0.0),  # hind leg (left)
+    (-0.27, 0.01), (-0.28, 0.07), (-0.28, 0.20), (-0.285, 0.30), (-0.30, 0.325),
+    (-0.315, 0.30), (-0.32, 0.20), (-0.32, 0.07), (-0.33, 0.01), (-0.365, 0.0),  # hind leg (right)
+    (-0.40, 0.01), (-0.41, 0.07), (-0.42, 0.20), (-0.43, 0.32),
+    (-0.45, 0.42), (-0.465, 0.50), (-0.475, 0.57), (-0.505, 0.64),  # haunch, rump, tail underside
+    (-0.55, 0.71), (-0.585, 0.77),
 ]
 
-ANIMAL_SIDE = [
-    (0.0, 0.86), (0.06, 0.84), (0.07, 0.74), (0.05, 0.66),  # head
-    (0.13, 0.58), (0.14, 0.44), (0.11, 0.36),  # body
-    (0.10, 0.20), (0.10, 0.02), (0.11, 0.0), (0.04, 0.0), (0.045, 0.20), (0.04, 0.32),  # right leg
-    (-0.04, 0.32), (-0.045, 0.20), (-0.04, 0.0), (-0.11, 0.0), (-0.10, 0.02), (-0.10, 0.20),  # left leg
-    (-0.11, 0.36), (-0.14, 0.44), (-0.13, 0.58), (-0.05, 0.66), (-0.07, 0.74), (-0.06, 0.84),
+# Head-on (z, y): right half from the head top (z = 0) down to between the
+# legs (z = 0); mirrored.
+ANIMAL_SIDE_HALF = [
+    (0.0, 0.90), (0.05, 0.89), (0.07, 0.84), (0.065, 0.78), (0.075, 0.72),  # head
+    (0.10, 0.66), (0.13, 0.62), (0.145, 0.55), (0.145, 0.45), (0.13, 0.37),  # neck, body
+    (0.115, 0.33), (0.115, 0.20), (0.115, 0.07), (0.11, 0.01), (0.075, 0.0),  # leg
+    (0.04, 0.01), (0.035, 0.07), (0.035, 0.20), (0.03, 0.30), (0.0, 0.32),
 ]
 
 
 def make_animal():
     front = catmull_rom(list(reversed(ANIMAL_FRONT)), closed=True, per_seg=8)
-    side = catmull_rom(ANIMAL_SIDE, closed=True, per_seg=8)
+    side = mirror_front(ANIMAL_SIDE_HALF)
     write_svg(os.path.join(HERE, "animal_front.svg"), front)
     write_svg(os.path.join(HERE, "animal_side.svg"), side)
+    # key sections of the body (x along the animal, z across): a flatter
+    # belly and a ridge along the spine
+    secs = [
+        {"part": "body", "y": y, "points": section(front, side, y, 0.0, bumps)}
+        for (y, bumps) in [(0.52, [(0.2, 0.5, 1.5708)]), (0.43, [])]
+    ]
+    with open(os.path.join(HERE, "animal_sections.json"), "w") as f:
+        json.dump({"sections": secs}, f, indent=1)
+        f.write("\n")
 
 
 def make(name, front_half, side_keys, sections):

@@ -17,7 +17,8 @@
 //!   "transitions": [ TransitionSpec ... ],
 //!   "removed_parts": [{"name": "hair", "front": {...}, "side": null}],
 //!   "edits": [],
-//!   "cursor": 0
+//!   "cursor": 0,
+//!   "props": [{"name": "ball", "model": "ball.json", "translate": [0, 0, 0], "scale": 1}]
 //! }
 //! ```
 //!
@@ -110,6 +111,49 @@ impl Level {
     }
 }
 
+/// How the primary (front) outline is segmented into parts
+/// (`sketch::segment` for a humanoid, `sketch::quadruped` for a
+/// four-legged animal).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum BodyPlan {
+    /// Decided from the outline: longer than tall (principal axis within 45
+    /// degrees of horizontal) is a quadruped, else a humanoid.
+    #[default]
+    Auto,
+    Humanoid,
+    Quadruped,
+}
+
+impl std::str::FromStr for BodyPlan {
+    type Err = String;
+    fn from_str(s: &str) -> Result<BodyPlan, String> {
+        match s {
+            "auto" => Ok(BodyPlan::Auto),
+            "humanoid" => Ok(BodyPlan::Humanoid),
+            "quadruped" => Ok(BodyPlan::Quadruped),
+            _ => Err(format!(
+                "unknown body plan '{s}' (auto, humanoid, quadruped)"
+            )),
+        }
+    }
+}
+
+impl BodyPlan {
+    /// Stable name.
+    pub fn name(self) -> &'static str {
+        match self {
+            BodyPlan::Auto => "auto",
+            BodyPlan::Humanoid => "humanoid",
+            BodyPlan::Quadruped => "quadruped",
+        }
+    }
+
+    fn is_auto(&self) -> bool {
+        *self == BodyPlan::Auto
+    }
+}
+
 /// A profile given by file or inline.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase", deny_unknown_fields)]
@@ -142,6 +186,10 @@ pub struct Inputs {
     /// SVG flattening tolerance in model units.
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
+    /// Humanoid or quadruped segmentation (default: decided from the front
+    /// outline's shape).
+    #[serde(default, skip_serializing_if = "BodyPlan::is_auto")]
+    pub body_plan: BodyPlan,
 }
 
 fn default_tolerance() -> f64 {
@@ -218,6 +266,11 @@ pub struct TransitionSpec {
     pub children: Vec<String>,
     /// One apex per seam (children - 1).
     pub seam_apex: Vec<[f64; 3]>,
+    /// Where each seam cuts the parent's end ring: the front cut's ring
+    /// angle in (0, pi), one per seam, decreasing (the back cut mirrors it).
+    /// Empty: the fixed angles `pi - j pi / k` (`sketch::transition`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cut_angles: Vec<f64>,
 }
 
 /// A part removed from the main profile, to be modeled from its own
@@ -250,6 +303,10 @@ pub struct CharacterDoc {
     pub edits: Vec<crate::character::edit::Edit>,
     #[serde(default)]
     pub cursor: usize,
+    /// Props: conv models composed as separate components
+    /// ([`crate::character::props`]); absent in older documents.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub props: Vec<crate::character::props::PropSpec>,
 }
 
 impl CharacterDoc {
@@ -264,6 +321,7 @@ impl CharacterDoc {
             removed_parts: Vec::new(),
             edits: Vec::new(),
             cursor: 0,
+            props: Vec::new(),
         }
     }
 
@@ -334,6 +392,17 @@ impl CharacterDoc {
         }
         let mut names: Vec<&str> = self.parts.iter().map(|p| p.name.as_str()).collect();
         names.extend(self.transitions.iter().map(|t| t.name.as_str()));
+        names.extend(self.props.iter().map(|p| p.name.as_str()));
+        if self.props.len() > crate::character::props::MAX_PROPS {
+            return Err(DocError::Invalid(format!(
+                "{} props (at most {})",
+                self.props.len(),
+                crate::character::props::MAX_PROPS
+            )));
+        }
+        for p in &self.props {
+            p.validate().map_err(|e| DocError::Invalid(e.to_string()))?;
+        }
         let mut sorted = names.clone();
         sorted.sort_unstable();
         if let Some(w) = sorted.windows(2).find(|w| w[0] == w[1]) {

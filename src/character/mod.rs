@@ -13,4 +13,5 @@
 pub mod demo;
 pub mod doc;
 pub mod edit;
+pub mod props;
 pub mod skirt;

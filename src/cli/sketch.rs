@@ -1,7 +1,7 @@
 //! `pdesculpt sketch build --front F.svg [--side S.svg] [--sections S.json]
 //! [--level L] -o OUT [--save-doc CHAR.json] [--json]`.
 
-use pdesculpt::character::doc::{CharacterDoc, Inputs, KeySection, Level, ProfileInput};
+use pdesculpt::character::doc::{BodyPlan, CharacterDoc, Inputs, KeySection, Level, ProfileInput};
 use pdesculpt::mesh::io;
 use pdesculpt::sketch::{build_document, Built, Resolution};
 use std::path::{Path, PathBuf};
@@ -52,6 +52,10 @@ pub struct BuildArgs {
     /// SVG flattening tolerance in model units.
     #[arg(long, default_value_t = 2e-3)]
     pub tolerance: f64,
+    /// auto | humanoid | quadruped: how the front outline is segmented
+    /// (auto: a quadruped when the outline is longer than tall).
+    #[arg(long, default_value = "auto")]
+    pub body_plan: BodyPlan,
     /// Output mesh (.obj, .glb, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
@@ -108,6 +112,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             .map(ProfileInput::Path),
         sections,
         tolerance: a.tolerance,
+        body_plan: a.body_plan,
     };
     let doc = CharacterDoc::from_inputs(inputs, level);
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;

@@ -6,6 +6,7 @@
 //! an incremental rebuild equals a full one, and the option sweep's
 //! near-circular ellipse is reconstructed (issue 16).
 
+use super::bvh::Frontier;
 use super::check::{Lcg, FIT_RMS_TOLERANCE};
 use super::incremental::{MeshCache, SketchCache};
 use super::kernel::total_field;
@@ -137,11 +138,36 @@ fn bound_checks(out: &mut Vec<Check>) {
     let (mut violation, mut point_ratio) = (0.0f64, 0.0f64);
     let budget = 1e-3 * t;
     let mut near = super::bvh::Interaction::default();
+    let mut near_f = super::bvh::Interaction::default();
+    let mut stack = Vec::new();
     for _ in 0..200 {
         let c = [0, 1, 2].map(|_| rng.range(-3.0, 3.0));
         let rho = rng.range(0.0, 0.6);
         let (lo, hi) = bvh.interval(c, rho, 0.05 * t);
         let (nlo, nhi) = bvh.near_list(c, rho, budget, &mut near);
+        // the same ball inside a parent ball of twice its radius: bounds
+        // and lists from the parent's frontier (the octree's path)
+        let off = [0, 1, 2].map(|_| rng.range(-0.5, 0.5) * rho);
+        let parent = [0, 1, 2].map(|k| c[k] + off[k]);
+        let (mut pf, mut cf) = (Frontier::default(), Frontier::default());
+        bvh.refine(
+            &bvh.root_frontier(),
+            parent,
+            2.0 * rho,
+            0.05 * t,
+            &mut pf,
+            &mut stack,
+        );
+        let (clo, chi) = bvh.refine(&pf, c, rho, 0.05 * t, &mut cf, &mut stack);
+        bvh.refine(
+            &bvh.root_frontier(),
+            parent,
+            2.0 * rho,
+            budget,
+            &mut pf,
+            &mut stack,
+        );
+        let (flo, fhi) = bvh.near_list_from(&pf, c, rho, budget, &mut near_f, &mut stack);
         for _ in 0..5 {
             // a point of the ball
             let dir = [0, 1, 2].map(|_| rng.range(-1.0, 1.0));
@@ -149,7 +175,10 @@ fn bound_checks(out: &mut Vec<Check>) {
             let x = [0, 1, 2].map(|k| c[k] + r * dir[k]);
             let f = exact(x);
             violation = violation.max((lo - f).max(f - hi).max(0.0) / t);
+            violation = violation.max((clo - f).max(f - chi).max(0.0) / t);
             let approx = 0.5 * (nlo + nhi) + bvh.near_field(&near, x);
+            point_ratio = point_ratio.max((approx - f).abs() / (0.5 * budget));
+            let approx = 0.5 * (flo + fhi) + bvh.near_field(&near_f, x);
             point_ratio = point_ratio.max((approx - f).abs() / (0.5 * budget));
         }
         let f = exact(c);
@@ -165,7 +194,7 @@ fn bound_checks(out: &mut Vec<Check>) {
             violation,
             tol::scaled(tol::ROUNDING, 100.0),
         )
-        .note("teddy: 200 random balls, 5 points each: how far the exact field leaves the hierarchy's bound (/T)"),
+        .note("teddy: 200 random balls, 5 points each: how far the exact field leaves the hierarchy's bound (/T), from the root and from the frontier of a parent ball of twice the radius"),
     );
     out.push(
         Check::new(
@@ -177,7 +206,7 @@ fn bound_checks(out: &mut Vec<Check>) {
             point_ratio,
             1.0 + tol::scaled(tol::ROUNDING, 1e6),
         )
-        .note("teddy: |approximate - exact field| / (budget / 2) at points (budget 1e-3 T; interaction lists and single points); must stay <= 1"),
+        .note("teddy: |approximate - exact field| / (budget / 2) at points (budget 1e-3 T; interaction lists from the root and from a parent ball's frontier, and single points); must stay <= 1"),
     );
 }
 
@@ -256,6 +285,46 @@ fn farfield_checks(out: &mut Vec<Check>) {
         .note("200 random clusters (1-6 signed segments), 5 points each at any distance: |second-order expansion - exact| / proven bound; must stay <= 1"),
     );
 }
+
+/// [`super::farfield::atan2_upper`] against [`f64::atan2`] on ratios
+/// spread over 24 decades and both signs of `x`, plus the branch points.
+fn atan2_checks(out: &mut Vec<Check>) {
+    use super::farfield::atan2_upper;
+    let mut rng = Lcg(0xa7a2);
+    let mut worst = 0.0f64;
+    let mut cases: Vec<(f64, f64)> = vec![(1.0, 0.0), (1.0, -0.0), (1.0, 1.0), (1.0, -1.0)];
+    for t in [2.414_213_562_373_095, 0.66] {
+        for f in [1.0 - 1e-15, 1.0, 1.0 + 1e-15] {
+            cases.push((t * f, 1.0));
+            cases.push((t * f, -1.0));
+        }
+    }
+    for _ in 0..20_000 {
+        let y = 10f64.powf(rng.range(-12.0, 12.0));
+        let x = 10f64.powf(rng.range(-12.0, 12.0)) * if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
+        cases.push((y, x));
+    }
+    for (y, x) in cases {
+        let e = y.atan2(x);
+        worst = worst.max((atan2_upper(y, x) - e).abs() / (e.abs() * f64::EPSILON));
+    }
+    out.push(
+        Check::new(
+            FAMILY,
+            PAPER,
+            "issue 16 one-arctangent field",
+            "conv.fast.atan2_matches_std",
+            Kind::Reference,
+            worst,
+            ATAN2_ULPS,
+        )
+        .note("20 000 random (y > 0, x) over 24 decades and the branch points tan(3 pi/8), 0.66: |Cephes atan2 - std atan2| / (|atan2| eps)"),
+    );
+}
+
+/// Largest accepted error of [`super::farfield::atan2_upper`], in units of
+/// the result's relative rounding (`f64::EPSILON`).
+pub const ATAN2_ULPS: f64 = 4.0;
 
 fn incremental_checks(out: &mut Vec<Check>) {
     // two separate components (two groups): a body and an arm beside it
@@ -403,6 +472,7 @@ pub fn checks() -> Vec<Check> {
     mesh_checks(&mut out);
     bound_checks(&mut out);
     farfield_checks(&mut out);
+    atan2_checks(&mut out);
     incremental_checks(&mut out);
     regression_checks(&mut out);
     hildreth_checks(&mut out);

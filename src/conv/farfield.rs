@@ -11,7 +11,13 @@
 //! $p^2 > 0$: $\theta = \operatorname{atan2}(s\,l\,p,\; p^2 - s^2h(l-h))$.
 //! With $F_t = \frac{1}{2s^2}(a_0^{-1} - a_1^{-1}) + hF_1$ the weighted field
 //! is $\lambda[(w_0 + \frac{w_1-w_0}{l}h)F_1 + \frac{w_1-w_0}{l}F_t']$,
-//! $F_t' = F_t - hF_1$: one square root, one arctangent, four divisions.
+//! $F_t' = F_t - hF_1$: one square root, one arctangent and one division
+//! (for $1/a_0$, $1/a_1$ and $1/p^3$ at once, $a_0 a_1 p^3$ inverted; the
+//! three separate divisions when that product leaves the f64 range).
+//! The arctangent is [`atan2_upper`] (Cephes' rational `atan`, relative
+//! error near $10^{-16}$; about three times cheaper than the C library's
+//! correctly rounded `atan2`, which took a third of the sampling time);
+//! check `conv.fast.atan2_matches_std`.
 //!
 //! **Cluster expansion.** A cluster of segments of one kernel width $s$ is
 //! a signed line density $\mu$ (weight $\lambda w(t)$ along each segment).
@@ -44,6 +50,10 @@ pub struct SegmentField {
     c0: f64,
     /// $\lambda (w_1 - w_0) / l$
     c1: f64,
+    /// $1/s$
+    inv_s: f64,
+    /// $c_1 / (2s^2)$
+    c1_half_s2: f64,
 }
 
 impl SegmentField {
@@ -59,6 +69,8 @@ impl SegmentField {
             s2: s * s,
             c0: seg.lambda * seg.w0,
             c1: seg.lambda * (seg.w1 - seg.w0) / l,
+            inv_s: 1.0 / s,
+            c1_half_s2: seg.lambda * (seg.w1 - seg.w0) / l / (2.0 * s * s),
         }
     }
 
@@ -71,11 +83,70 @@ impl SegmentField {
         let p2 = 1.0 + self.s2 * q;
         let p = p2.sqrt();
         let lh = self.l - h;
-        let i0 = 1.0 / (self.s2 * h * h + p2);
-        let i1 = 1.0 / (self.s2 * lh * lh + p2);
-        let theta = (self.s * self.l * p).atan2(p2 - self.s2 * h * lh);
-        let f1 = 0.5 / p2 * (h * i0 + lh * i1 + theta / (self.s * p));
-        (self.c0 + self.c1 * h) * f1 + self.c1 * (i0 - i1) / (2.0 * self.s2)
+        let a0 = self.s2 * h * h + p2;
+        let a1 = self.s2 * lh * lh + p2;
+        let theta = atan2_upper(self.s * self.l * p, p2 - self.s2 * h * lh);
+        // one division for 1/a0, 1/a1 and 1/(p^2 p)
+        let pp = p2 * p;
+        let (a01, app) = (a0 * a1, a0 * a1 * pp);
+        let inv = 1.0 / app;
+        let (i0, i1, inv_pp) = if inv.is_normal() {
+            (a1 * pp * inv, a0 * pp * inv, a01 * inv)
+        } else {
+            (1.0 / a0, 1.0 / a1, 1.0 / pp)
+        };
+        let f1 = 0.5 * inv_pp * (p * (h * i0 + lh * i1) + theta * self.inv_s);
+        (self.c0 + self.c1 * h) * f1 + self.c1_half_s2 * (i0 - i1)
+    }
+}
+
+/// $\tan(3\pi/8)$.
+const TAN_3PI_8: f64 = 2.414_213_562_373_095;
+/// Cephes' bound between the direct and the $\pi/4$-shifted range.
+const CEPHES_MID: f64 = 0.66;
+/// The low bits of $\pi/2$ beyond `FRAC_PI_2` (Cephes `MOREBITS`).
+const PI_2_LOW: f64 = 6.123_233_995_736_766e-17;
+const ATAN_P: [f64; 5] = [
+    -8.750_608_600_031_904e-1,
+    -1.615_753_718_733_365e1,
+    -7.500_855_792_314_705e1,
+    -1.228_866_684_490_136e2,
+    -6.485_021_904_942_025e1,
+];
+const ATAN_Q: [f64; 5] = [
+    2.485_846_490_142_306e1,
+    1.650_270_098_316_988_5e2,
+    4.328_810_604_912_903e2,
+    4.853_903_996_359_137e2,
+    1.945_506_571_482_614e2,
+];
+
+/// $\operatorname{atan2}(y, x)$ for $y > 0$ (a value in $(0, \pi)$), by
+/// Cephes' `atan` (S. Moshier): the ratio is reduced to
+/// $|z| \le \tan(\pi/8)$ through $\pi/2 - \arctan(1/t)$ or
+/// $\pi/4 + \arctan\frac{t-1}{t+1}$ (one division either way), then
+/// $\arctan z = z + z\,z^2 P(z^2)/Q(z^2)$. Agrees with [`f64::atan2`] to
+/// a few units in the last place (check `conv.fast.atan2_matches_std`).
+#[inline]
+pub fn atan2_upper(y: f64, x: f64) -> f64 {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+    let ax = x.abs();
+    let (base, low, z) = if y > TAN_3PI_8 * ax {
+        (FRAC_PI_2, PI_2_LOW, -ax / y)
+    } else if y <= CEPHES_MID * ax {
+        (0.0, 0.0, y / ax)
+    } else {
+        (FRAC_PI_4, 0.5 * PI_2_LOW, (y - ax) / (y + ax))
+    };
+    let z2 = z * z;
+    let p = (((ATAN_P[0] * z2 + ATAN_P[1]) * z2 + ATAN_P[2]) * z2 + ATAN_P[3]) * z2 + ATAN_P[4];
+    let q =
+        ((((z2 + ATAN_Q[0]) * z2 + ATAN_Q[1]) * z2 + ATAN_Q[2]) * z2 + ATAN_Q[3]) * z2 + ATAN_Q[4];
+    let a = base + ((z * (z2 * p / q) + z) + low);
+    if x < 0.0 {
+        PI - a
+    } else {
+        a
     }
 }
 

@@ -26,6 +26,7 @@ pub mod incremental;
 pub mod kernel;
 pub mod model;
 pub mod narrow;
+pub mod nnls;
 pub mod sample;
 pub mod samples;
 pub mod shapes;

@@ -13,15 +13,34 @@
 //! corners on one side of $T$, so both polygonisers see the same crossing
 //! cells as with the field sampled everywhere. The work grows with the
 //! surface area, not the volume.
+//!
+//! Each box starts from its parent's [`Frontier`] (clusters accepted for
+//! the parent stay accepted, see [`super::bvh`]), so a box tests only what
+//! its parent left open.
+//!
+//! **Threads, deterministically.** The octree is refined in order down to
+//! depth [`TASK_DEPTH`]; every box there that needs refining becomes a
+//! task, and the tasks run on up to [`MAX_THREADS`] threads
+//! (`std::thread::scope`). A box records what it writes as events (fill a
+//! box of nodes, set a node exactly) instead of writing the grid; the
+//! events are then applied in the order of the sequential traversal, with
+//! its rules (the first exact value of a node wins, a fill only reaches a
+//! node that has no value yet). The grid is therefore the same for any
+//! number of threads (test `narrow_band_is_identical_for_any_thread_count`).
 
-use super::bvh::{Interaction, SegmentBvh};
+use super::bvh::{Frontier, Interaction, SegmentBvh};
 use crate::mesh::isosurface::ScalarGrid;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Cells per side of an octree leaf (evaluated node by node).
 pub const LEAF_CELLS: usize = 2;
 /// Default accepted error of a node value, as a fraction of $T$: the
 /// midpoint of the field's bound is within half of it.
 pub const FIELD_TOLERANCE: f64 = 1e-4;
+/// Octree depth whose boxes are the parallel tasks (at most $8^2$ tasks).
+pub const TASK_DEPTH: usize = 2;
+/// Most threads [`sample`] uses.
+pub const MAX_THREADS: usize = 8;
 
 /// What [`sample`] did: node evaluations and boxes decided without them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -38,20 +57,41 @@ pub struct NarrowStats {
     pub cluster_evaluations: usize,
 }
 
-struct Band<'a> {
+impl NarrowStats {
+    fn add(&mut self, o: &NarrowStats) {
+        self.evaluated += o.evaluated;
+        self.boxes_skipped += o.boxes_skipped;
+        self.boxes_tested += o.boxes_tested;
+        self.segment_evaluations += o.segment_evaluations;
+        self.cluster_evaluations += o.cluster_evaluations;
+    }
+}
+
+/// A write of the sequential traversal (applied in order by [`merge`]).
+#[derive(Clone, Copy, Debug)]
+enum Event {
+    /// Every node of the box `lo..=hi` without a value gets `value`.
+    Fill {
+        lo: [u32; 3],
+        hi: [u32; 3],
+        value: f64,
+    },
+    /// Node `id` gets `value` unless it already has an exact one.
+    Exact { id: usize, value: f64 },
+    /// The events of task `index`.
+    Task { index: usize },
+}
+
+struct Grid<'a> {
     bvh: &'a SegmentBvh,
     threshold: f64,
     budget: f64,
     origin: [f64; 3],
     spacing: [f64; 3],
     dims: [usize; 3],
-    values: Vec<f64>,
-    exact: Vec<bool>,
-    stats: NarrowStats,
-    near: Interaction,
 }
 
-impl Band<'_> {
+impl Grid<'_> {
     fn at(&self, i: usize, j: usize, k: usize) -> [f64; 3] {
         [
             self.origin[0] + i as f64 * self.spacing[0],
@@ -63,58 +103,55 @@ impl Band<'_> {
     fn index(&self, i: usize, j: usize, k: usize) -> usize {
         i + self.dims[0] * (j + self.dims[1] * k)
     }
+}
 
-    /// Cells `lo..hi` (per axis), nodes `lo..=hi`.
-    fn visit(&mut self, lo: [usize; 3], hi: [usize; 3]) {
+/// A box left to a task: cells `lo..hi`, its depth and its frontier.
+struct Task {
+    lo: [usize; 3],
+    hi: [usize; 3],
+    depth: usize,
+    frontier: Frontier,
+}
+
+/// One traversal (the top levels, or one task) and its scratch.
+struct Walker<'a, 'g> {
+    grid: &'a Grid<'g>,
+    /// Emit a task instead of refining a box at this depth (top levels).
+    split_at: Option<usize>,
+    tasks: Vec<Task>,
+    events: Vec<Event>,
+    stats: NarrowStats,
+    /// Nodes of the box `seen_lo..` this walker has already evaluated.
+    seen: Vec<bool>,
+    seen_lo: [usize; 3],
+    seen_dims: [usize; 3],
+    /// Frontiers by depth (reused).
+    pool: Vec<Frontier>,
+    stack: Vec<usize>,
+    near: Interaction,
+}
+
+impl<'a, 'g> Walker<'a, 'g> {
+    fn new(grid: &'a Grid<'g>, lo: [usize; 3], hi: [usize; 3], split_at: Option<usize>) -> Self {
+        let seen_dims = [0, 1, 2].map(|k| hi[k] - lo[k] + 1);
+        Walker {
+            grid,
+            split_at,
+            tasks: Vec::new(),
+            events: Vec::new(),
+            stats: NarrowStats::default(),
+            seen: vec![false; seen_dims[0] * seen_dims[1] * seen_dims[2]],
+            seen_lo: lo,
+            seen_dims,
+            pool: Vec::new(),
+            stack: Vec::new(),
+            near: Interaction::default(),
+        }
+    }
+
+    /// Visits the children of the box `lo..hi` (at `depth`) in order.
+    fn children(&mut self, lo: [usize; 3], hi: [usize; 3], depth: usize, from: &Frontier) {
         let n = [0, 1, 2].map(|k| hi[k] - lo[k]);
-        let a = self.at(lo[0], lo[1], lo[2]);
-        let b = self.at(hi[0], hi[1], hi[2]);
-        let centre = [0, 1, 2].map(|k| 0.5 * (a[k] + b[k]));
-        let rho = 0.5 * crate::mesh::norm(crate::mesh::sub(b, a));
-        if n.iter().all(|&c| c <= LEAF_CELLS) {
-            let mut near = std::mem::take(&mut self.near);
-            let (flo, fhi) = self.bvh.near_list(centre, rho, self.budget, &mut near);
-            let far = 0.5 * (flo + fhi);
-            for k in lo[2]..=hi[2] {
-                for j in lo[1]..=hi[1] {
-                    for i in lo[0]..=hi[0] {
-                        let id = self.index(i, j, k);
-                        if !self.exact[id] {
-                            self.values[id] = far + self.bvh.near_field(&near, self.at(i, j, k));
-                            self.exact[id] = true;
-                            self.stats.evaluated += 1;
-                            self.stats.segment_evaluations += near.segments.len();
-                            self.stats.cluster_evaluations += near.clusters.len();
-                        }
-                    }
-                }
-            }
-            self.near = near;
-            return;
-        }
-        let (flo, fhi) = self.bvh.interval(centre, rho, self.budget);
-        self.stats.boxes_tested += 1;
-        let fill = if flo > self.threshold {
-            Some(flo)
-        } else if fhi < self.threshold {
-            Some(fhi)
-        } else {
-            None
-        };
-        if let Some(v) = fill {
-            self.stats.boxes_skipped += 1;
-            for k in lo[2]..=hi[2] {
-                for j in lo[1]..=hi[1] {
-                    let row = self.index(0, j, k);
-                    for id in row + lo[0]..=row + hi[0] {
-                        if !self.exact[id] && self.values[id].is_nan() {
-                            self.values[id] = v;
-                        }
-                    }
-                }
-            }
-            return;
-        }
         let mid = [0, 1, 2].map(|k| lo[k] + n[k] / 2);
         for cz in 0..2 {
             for cy in 0..2 {
@@ -138,10 +175,131 @@ impl Band<'_> {
                         }
                     }
                     if !empty {
-                        self.visit(l, h);
+                        self.visit(l, h, depth + 1, from);
                     }
                 }
             }
+        }
+    }
+
+    /// Cells `lo..hi` (per axis), nodes `lo..=hi`, at octree `depth`,
+    /// inside the box whose frontier is `from`.
+    fn visit(&mut self, lo: [usize; 3], hi: [usize; 3], depth: usize, from: &Frontier) {
+        let g = self.grid;
+        let n = [0, 1, 2].map(|k| hi[k] - lo[k]);
+        let a = g.at(lo[0], lo[1], lo[2]);
+        let b = g.at(hi[0], hi[1], hi[2]);
+        let centre = [0, 1, 2].map(|k| 0.5 * (a[k] + b[k]));
+        let rho = 0.5 * crate::mesh::norm(crate::mesh::sub(b, a));
+        if n.iter().all(|&c| c <= LEAF_CELLS) {
+            self.leaf(lo, hi, centre, rho, from);
+            return;
+        }
+        let mut to = self.pool.pop().unwrap_or_default();
+        let (flo, fhi) = g
+            .bvh
+            .refine(from, centre, rho, g.budget, &mut to, &mut self.stack);
+        self.stats.boxes_tested += 1;
+        let fill = if flo > g.threshold {
+            Some(flo)
+        } else if fhi < g.threshold {
+            Some(fhi)
+        } else {
+            None
+        };
+        if let Some(value) = fill {
+            self.stats.boxes_skipped += 1;
+            self.events.push(Event::Fill {
+                lo: lo.map(|v| v as u32),
+                hi: hi.map(|v| v as u32),
+                value,
+            });
+        } else if self.split_at == Some(depth) {
+            self.events.push(Event::Task {
+                index: self.tasks.len(),
+            });
+            self.tasks.push(Task {
+                lo,
+                hi,
+                depth,
+                frontier: to.clone(),
+            });
+        } else {
+            self.children(lo, hi, depth, &to);
+        }
+        self.pool.push(to);
+    }
+
+    fn leaf(
+        &mut self,
+        lo: [usize; 3],
+        hi: [usize; 3],
+        centre: [f64; 3],
+        rho: f64,
+        from: &Frontier,
+    ) {
+        let g = self.grid;
+        let mut near = std::mem::take(&mut self.near);
+        let (flo, fhi) =
+            g.bvh
+                .near_list_from(from, centre, rho, g.budget, &mut near, &mut self.stack);
+        let far = 0.5 * (flo + fhi);
+        for k in lo[2]..=hi[2] {
+            for j in lo[1]..=hi[1] {
+                for i in lo[0]..=hi[0] {
+                    let s = [i, j, k];
+                    let local = (s[0] - self.seen_lo[0])
+                        + self.seen_dims[0]
+                            * ((s[1] - self.seen_lo[1])
+                                + self.seen_dims[1] * (s[2] - self.seen_lo[2]));
+                    if self.seen[local] {
+                        continue;
+                    }
+                    self.seen[local] = true;
+                    let value = far + g.bvh.near_field(&near, g.at(i, j, k));
+                    self.events.push(Event::Exact {
+                        id: g.index(i, j, k),
+                        value,
+                    });
+                    self.stats.evaluated += 1;
+                    self.stats.segment_evaluations += near.segments.len();
+                    self.stats.cluster_evaluations += near.clusters.len();
+                }
+            }
+        }
+        self.near = near;
+    }
+}
+
+/// Applies `events` in order (tasks' events in place of their markers).
+fn merge(
+    grid: &Grid,
+    events: &[Event],
+    tasks: &[Vec<Event>],
+    values: &mut [f64],
+    exact: &mut [bool],
+) {
+    for e in events {
+        match *e {
+            Event::Fill { lo, hi, value } => {
+                for k in lo[2] as usize..=hi[2] as usize {
+                    for j in lo[1] as usize..=hi[1] as usize {
+                        let row = grid.index(0, j, k);
+                        for id in row + lo[0] as usize..=row + hi[0] as usize {
+                            if !exact[id] && values[id].is_nan() {
+                                values[id] = value;
+                            }
+                        }
+                    }
+                }
+            }
+            Event::Exact { id, value } => {
+                if !exact[id] {
+                    values[id] = value;
+                    exact[id] = true;
+                }
+            }
+            Event::Task { index } => merge(grid, &tasks[index], &[], values, exact),
         }
     }
 }
@@ -149,7 +307,8 @@ impl Band<'_> {
 /// Samples the field of `bvh` on the grid `origin + (i, j, k) * spacing`,
 /// `dims` nodes, exactly (within `budget / 2`) at the corners of every cell
 /// the surface $F = T$ may cross; every other node gets a value on its
-/// proven side of $T$.
+/// proven side of $T$. Uses the available cores (at most [`MAX_THREADS`]);
+/// the result does not depend on their number.
 pub fn sample(
     bvh: &SegmentBvh,
     threshold: f64,
@@ -158,30 +317,76 @@ pub fn sample(
     spacing: [f64; 3],
     dims: [usize; 3],
 ) -> (ScalarGrid, NarrowStats) {
-    let total = dims[0] * dims[1] * dims[2];
-    let mut band = Band {
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(MAX_THREADS);
+    sample_with_threads(bvh, threshold, budget, origin, spacing, dims, threads)
+}
+
+/// [`sample`] on `threads` threads (at least one).
+pub fn sample_with_threads(
+    bvh: &SegmentBvh,
+    threshold: f64,
+    budget: f64,
+    origin: [f64; 3],
+    spacing: [f64; 3],
+    dims: [usize; 3],
+    threads: usize,
+) -> (ScalarGrid, NarrowStats) {
+    let grid = Grid {
         bvh,
         threshold,
         budget,
         origin,
         spacing,
         dims,
-        values: vec![f64::NAN; total],
-        exact: vec![false; total],
-        stats: NarrowStats {
-            nodes: total,
-            ..Default::default()
-        },
-        near: Interaction::default(),
     };
-    band.visit([0; 3], [dims[0] - 1, dims[1] - 1, dims[2] - 1]);
-    let stats = band.stats;
+    let top_hi = [dims[0] - 1, dims[1] - 1, dims[2] - 1];
+    let mut top = Walker::new(&grid, [0; 3], top_hi, Some(TASK_DEPTH));
+    top.visit([0; 3], top_hi, 0, &bvh.root_frontier());
+    let tasks = std::mem::take(&mut top.tasks);
+    let next = AtomicUsize::new(0);
+    let run = || {
+        let mut done: Vec<(usize, Vec<Event>, NarrowStats)> = Vec::new();
+        loop {
+            let i = next.fetch_add(1, Ordering::Relaxed);
+            let Some(t) = tasks.get(i) else { break };
+            let mut w = Walker::new(&grid, t.lo, t.hi, None);
+            w.children(t.lo, t.hi, t.depth, &t.frontier);
+            done.push((i, w.events, w.stats));
+        }
+        done
+    };
+    let threads = threads.clamp(1, tasks.len().max(1));
+    let mut results: Vec<(usize, Vec<Event>, NarrowStats)> = if threads == 1 {
+        run()
+    } else {
+        std::thread::scope(|s| {
+            let handles: Vec<_> = (0..threads).map(|_| s.spawn(run)).collect();
+            handles
+                .into_iter()
+                .flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+                .collect()
+        })
+    };
+    results.sort_by_key(|r| r.0);
+    let mut stats = top.stats;
+    stats.nodes = dims[0] * dims[1] * dims[2];
+    let mut task_events = Vec::with_capacity(results.len());
+    for (_, events, st) in results {
+        stats.add(&st);
+        task_events.push(events);
+    }
+    let total = stats.nodes;
+    let mut values = vec![f64::NAN; total];
+    let mut exact = vec![false; total];
+    merge(&grid, &top.events, &task_events, &mut values, &mut exact);
     (
         ScalarGrid {
             origin,
             spacing,
             dims,
-            values: band.values,
+            values,
         },
         stats,
     )

@@ -460,6 +460,7 @@ fn transitions(
             parent_end: End::Start,
             children: vec!["leg_l".into(), "leg_r".into()],
             seam_apex: vec![crotch],
+            cut_angles: Vec::new(),
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -467,6 +468,7 @@ fn transitions(
             parent_end: End::End,
             children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
             seam_apex: apex,
+            cut_angles: Vec::new(),
         },
     ])
 }

@@ -43,6 +43,7 @@ pub mod body;
 pub mod body_closed;
 pub mod body_layout;
 pub mod body_report;
+pub mod body_study;
 pub mod chain;
 pub mod check;
 pub mod input;

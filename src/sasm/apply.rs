@@ -1,6 +1,13 @@
 //! Applying a feature to the character's mesh: local refinement of the
 //! host part around the region (conforming, so the mesh stays watertight),
 //! then the displacement of the vertices inside the region.
+//!
+//! The feature is added to the mesh as it is when the edit applies (log
+//! order): a vertex of the mesh moves by the height along the depth axis,
+//! so what an earlier force or plate edit did to it is kept; a vertex the
+//! refinement adds is placed on the analytic surface plus the depth offset
+//! of the mesh from that surface interpolated from its edge's ends (zero on
+//! an unedited part), plus the height.
 
 use super::feature::Feature;
 use super::project::Projector;
@@ -34,8 +41,9 @@ fn edge(a: u32, b: u32) -> (u32, u32) {
     (a.min(b), a.max(b))
 }
 
-/// One red-green refinement step of the marked triangles.
-fn refine(m: &mut Mesh, marked: &[bool]) {
+/// One red-green refinement step of the marked triangles; the new
+/// vertices' edge ends are appended to `parents`.
+fn refine(m: &mut Mesh, marked: &[bool], parents: &mut Vec<(u32, u32)>) {
     let mut split: HashMap<(u32, u32), u32> = HashMap::new();
     for (t, tr) in m.triangles.iter().enumerate() {
         if marked[t] {
@@ -71,6 +79,7 @@ fn refine(m: &mut Mesh, marked: &[bool]) {
             (a[2] + b[2]) / 2.0,
         ]);
         split.insert(k, (m.positions.len() - 1) as u32);
+        parents.push(k);
     }
     let mut tris = Vec::with_capacity(m.triangles.len() * 2);
     let mut groups = Vec::with_capacity(m.triangles.len() * 2);
@@ -136,6 +145,8 @@ pub fn apply_feature(
     // zone membership per vertex (positions of existing vertices never
     // change during refinement)
     let mut zone: Vec<Option<bool>> = Vec::new();
+    let n0 = m.positions.len();
+    let mut parents: Vec<(u32, u32)> = Vec::new();
     let in_zone = |m: &Mesh, v: u32, zone: &mut Vec<Option<bool>>| -> bool {
         zone.resize(m.positions.len(), None);
         if let Some(z) = zone[v as usize] {
@@ -166,8 +177,32 @@ pub fn apply_feature(
         if !any {
             break;
         }
-        refine(m, &marked);
+        refine(m, &marked, &mut parents);
         rep.refine_levels += 1;
+    }
+    // depth offset of the mesh from the analytic surface: measured at the
+    // vertices the mesh had, interpolated along edges for the new ones
+    let mut measured: HashMap<u32, f64> = HashMap::new();
+    let mut at = |v: u32, m: &Mesh| -> f64 {
+        *measured.entry(v).or_insert_with(|| {
+            let p = m.positions[v as usize];
+            match pr.cast(f.view.project(p)) {
+                Some(h) if (p[d] - h.point[d]).abs() <= sheet => p[d] - h.point[d],
+                _ => 0.0,
+            }
+        })
+    };
+    let mut offset: Vec<f64> = Vec::with_capacity(parents.len());
+    for &(a, b) in &parents {
+        let side = |x: u32, offset: &[f64], at: &mut dyn FnMut(u32, &Mesh) -> f64| {
+            if (x as usize) < n0 {
+                at(x, m)
+            } else {
+                offset[x as usize - n0]
+            }
+        };
+        let o = 0.5 * (side(a, &offset, &mut at) + side(b, &offset, &mut at));
+        offset.push(o);
     }
     let mut host = vec![false; m.positions.len()];
     for (t, tr) in m.triangles.iter().enumerate() {
@@ -193,8 +228,8 @@ pub fn apply_feature(
         if p[d] < hit.point[d] - sheet {
             continue;
         }
-        let mut np = hit.point;
-        np[d] += f.height(q);
+        let mut np = if v < n0 { p } else { hit.point };
+        np[d] += f.height(q) + if v < n0 { 0.0 } else { offset[v - n0] };
         rep.max_displacement = rep.max_displacement.max(dist(np, p));
         m.positions[v] = np;
         rep.vertices_moved += 1;

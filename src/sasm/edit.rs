@@ -1,10 +1,8 @@
 //! SASM as edits of the character document (`Edit::Sasm`,
-//! `Edit::SasmAux`): applied to the built mesh after the plate edits, in
-//! log order among themselves.
-//!
-//! Limitation: the feature's vertices are placed on the part's PDE surface
-//! (plus the height), so a force displacement (`Edit::Force`) of the same
-//! part inside the region is replaced there.
+//! `Edit::SasmAux`): applied to the built mesh in log order with the plate
+//! edits (`character::edit::apply_mesh_edits`). A feature adds its height
+//! to the mesh as it is (`apply`), so an earlier force or plate edit of
+//! the same part is kept under it.
 
 use super::{apply_feature, Feature, SasmError};
 use crate::character::edit::Edit;
@@ -29,7 +27,8 @@ pub fn feature_of(e: &Edit, parts: &[PartSurface]) -> Option<Result<Feature, Sas
     }
 }
 
-/// Applies the SASM edits among `edits` to the mesh, in order.
+/// Applies the SASM edits among `edits` to the mesh, in order (the plate
+/// edits left out: `character::edit::apply_mesh_edits` applies both).
 pub fn apply_edits(
     mesh: &mut Mesh,
     parts: &[PartSurface],

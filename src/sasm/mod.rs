@@ -47,7 +47,7 @@
 //!
 //! As edits ([`edit`]): `Edit::Sasm` and `Edit::SasmAux` of the character
 //! log are validated against the built part when pushed and applied to the
-//! built mesh after the plate edits, in log order among themselves.
+//! built mesh in log order with the plate edits.
 //!
 //! Simpler than the paper: the feature is a height field in one view (no
 //! overhangs, no undercut beyond the view direction); the interior is C1

@@ -3,8 +3,8 @@
 
 use super::part::{build_part, PartSurface};
 use super::transition::{
-    child_transition, eval as teval, loop_eval, seams as make_seams, ChildTransition, Run, Seam,
-    RING_VERTICES, SEAM_VERTICES,
+    child_transition, cut_table, eval as teval, loop_eval, seams as make_seams, ChildTransition,
+    Run, Seam, RING_VERTICES, SEAM_VERTICES,
 };
 use super::SketchError;
 use crate::character::doc::{End, PartSpec, TransitionSpec};
@@ -58,12 +58,12 @@ pub struct SeamReport {
 /// part (a force edit of `character::edit`: the pde4 2-sided solution, which
 /// vanishes with its u-derivative at both ends of the range, so the part
 /// stays in place and C1 there and its ends, where transitions join, do not
-/// move). `theta = 2 pi v`.
+/// move; or the 4-sided one inside an angle range too).
 #[derive(Clone, Debug)]
 pub struct Displacement {
     pub part: String,
     pub u: [f64; 2],
-    pub field: crate::pde4::TwoSided,
+    pub field: crate::character::edit::ForceField,
 }
 
 impl Displacement {
@@ -74,10 +74,7 @@ impl Displacement {
         if u <= a || u >= b {
             return [0.0; 3];
         }
-        let s = (u - a) / (b - a);
-        let v = (theta / (2.0 * PI)).rem_euclid(1.0);
-        let c = &self.field.comps;
-        [c[0].eval(s, v), c[1].eval(s, v), c[2].eval(s, v)]
+        self.field.at((u - a) / (b - a), theta)
     }
 }
 
@@ -260,7 +257,15 @@ pub fn build_model_with(
             .iter()
             .map(|&c| parts[c].section(parts[c].u0, 0).c0)
             .collect();
-        let seams = make_seams(&parts[pi], t.parent_end, k, &t.seam_apex, &centres);
+        let cuts = cut_table(k, &t.cut_angles);
+        if !t.cut_angles.is_empty() && cuts.is_empty() {
+            return Err(SketchError::Document(format!(
+                "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing",
+                t.name,
+                k.saturating_sub(1)
+            )));
+        }
+        let seams = make_seams(&parts[pi], t.parent_end, k, &t.seam_apex, &centres, &cuts);
         let mut cts = Vec::new();
         for (c, &idx) in ci.iter().enumerate() {
             if parts[idx].closed_start {
@@ -269,7 +274,7 @@ pub fn build_model_with(
                     parts[idx].name, t.name
                 )));
             }
-            let ct = child_transition(c, k, &parts[pi], t.parent_end, &parts[idx], &seams);
+            let ct = child_transition(c, k, &parts[pi], t.parent_end, &parts[idx], &seams, &cuts);
             if thetas[idx].is_some() {
                 return Err(SketchError::Document(format!(
                     "part '{}' is the child of two transitions",

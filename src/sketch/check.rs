@@ -97,6 +97,13 @@ pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
             include_str!("../../data/sketch/male_side.svg"),
             include_str!("../../data/sketch/male_sections.json"),
         ),
+        // a four-legged animal: its lateral silhouette in the front file
+        // (`sketch::quadruped`), segmented with the automatic body plan
+        "animal" => (
+            include_str!("../../data/sketch/animal_front.svg"),
+            include_str!("../../data/sketch/animal_side.svg"),
+            include_str!("../../data/sketch/animal_sections.json"),
+        ),
         _ => return None,
     };
     #[derive(serde::Deserialize)]
@@ -112,6 +119,7 @@ pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
             side: Some(ProfileInput::Points(side.outline.points().to_vec())),
             sections,
             tolerance: 2e-3,
+            body_plan: Default::default(),
         },
         level,
     ))

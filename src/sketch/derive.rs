@@ -5,10 +5,11 @@
 use super::align::{alignment, Alignment};
 use super::cuts::{join_heights, CutPath};
 use super::poly::slice;
-use super::segment::{interval, landmarks, regions, shoulder_top, Landmarks, Region};
+use super::segment::{interval, landmarks, regions, shoulder_top, Landmarks, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{
-    End, KeySection, Level, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
+    BodyPlan, End, KeySection, Level, PartSpec, SectionShape, SectionSpec, SurfaceSpec,
+    TransitionSpec,
 };
 
 /// Sections per part: `3 P + 1` (the C2 PDE chain's rule), P = 4.
@@ -29,10 +30,14 @@ pub const SECTION_SLACK: f64 = 0.15;
 /// Parts and transitions derived from the outlines.
 #[derive(Clone, Debug)]
 pub struct Derived {
+    /// The body plan used (never `Auto`).
+    pub plan: BodyPlan,
     /// The drawing's rotation from upright (identity when upright).
     pub alignment: Alignment,
-    /// Landmarks in the upright frame.
-    pub landmarks: Landmarks,
+    /// A humanoid's landmarks in the upright frame.
+    pub landmarks: Option<Landmarks>,
+    /// A quadruped's landmarks.
+    pub quadruped: Option<super::quadruped::QuadLandmarks>,
     pub parts: Vec<PartSpec>,
     pub transitions: Vec<TransitionSpec>,
 }
@@ -123,11 +128,24 @@ fn place(s: &[Sample], depth: Option<&[(f64, f64)]>, m: usize) -> Vec<usize> {
     idx
 }
 
-/// Side-profile depth at height y: `(centre z, half depth)`.
-fn side_depth(side: &[[f64; 2]], map: [f64; 2], y: f64) -> Option<(f64, f64)> {
+/// Side-profile depth at height y: `(centre z, half depth)` of the slice
+/// part `pick` names (None when hidden or when there is none).
+fn side_depth(side: &[[f64; 2]], map: [f64; 2], y: f64, pick: SidePick) -> Option<(f64, f64)> {
     let s = slice(side, map[0] + map[1] * y);
-    let lo = s.first()?[0];
-    let hi = s.last()?[1];
+    let (lo, hi) = match pick {
+        SidePick::Hidden => return None,
+        SidePick::Whole => (s.first()?[0], s.last()?[1]),
+        SidePick::CentreIn(a, b) => {
+            let iv = s
+                .iter()
+                .filter(|iv| {
+                    let c = 0.5 * (iv[0] + iv[1]);
+                    c > a && c < b
+                })
+                .max_by(|p, q| (p[1] - p[0]).total_cmp(&(q[1] - q[0])))?;
+            (iv[0], iv[1])
+        }
+    };
     Some((0.5 * (lo + hi), 0.5 * (hi - lo)))
 }
 
@@ -154,11 +172,11 @@ pub(super) fn part_from_region(
             s.len()
         )));
     }
-    let uses_side = side.is_some() && !r.name.starts_with("arm");
+    let uses_side = side.is_some() && r.side != SidePick::Hidden;
     // the side profile's depth at every sample (None where it has no slice:
     // then the front alone places the sections)
     let depth: Option<Vec<(f64, f64)>> = match (uses_side, side) {
-        (true, Some(sd)) => s.iter().map(|q| side_depth(sd, map, q.y)).collect(),
+        (true, Some(sd)) => s.iter().map(|q| side_depth(sd, map, q.y, r.side)).collect(),
         _ => None,
     };
     let idx = place(&s, depth.as_deref(), SECTIONS_PER_PART);
@@ -168,7 +186,11 @@ pub(super) fn part_from_region(
     for (j, &i) in idx.iter().enumerate() {
         // tangent from neighbouring samples
         let (a, b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
-        let t = [s[b].c - s[a].c, s[b].y - s[a].y, 0.0];
+        let t = if r.horizontal {
+            [0.0, s[b].y - s[a].y, 0.0]
+        } else {
+            [s[b].c - s[a].c, s[b].y - s[a].y, 0.0]
+        };
         let tn = t[0].hypot(t[1]);
         let t = [t[0] / tn, t[1] / tn, 0.0];
         let e1 = [t[1], -t[0], 0.0];
@@ -182,7 +204,7 @@ pub(super) fn part_from_region(
         let a_r = s[i].w * cos_tilt;
         let last = j + 1 == idx.len();
         let shape = match (uses_side, side) {
-            (true, Some(sd)) if !(last && r.tip) => match side_depth(sd, map, s[i].y) {
+            (true, Some(sd)) if !(last && r.tip) => match side_depth(sd, map, s[i].y, r.side) {
                 Some((zc, b)) => SectionShape::Ellipse {
                     a: a_r,
                     b,
@@ -206,7 +228,7 @@ pub(super) fn part_from_region(
         let lastc = sections.last().map(|q| q.centre).unwrap_or([0.0; 3]);
         let mut zc = 0.0;
         if let (true, Some(sd)) = (uses_side, side) {
-            if let Some((z, _)) = side_depth(sd, map, s[s.len() - 1].y) {
+            if let Some((z, _)) = side_depth(sd, map, s[s.len() - 1].y, r.side) {
                 zc = z;
             }
         }
@@ -286,23 +308,59 @@ fn tilt_top(
     }
 }
 
-/// Derives parts and transitions from validated, counter-clockwise outlines.
-/// A front outline drawn a few degrees off upright is derived upright and
-/// the result turned back ([`super::align`]).
+/// The side profile's height must match the front's within
+/// [`HEIGHT_MISMATCH`].
+pub(super) fn check_side_height(
+    front_height: f64,
+    side: Option<&[[f64; 2]]>,
+) -> Result<(), SketchError> {
+    if let Some(sd) = side {
+        let (ys, _) = super::poly::bounds(sd);
+        let hs = ys[1] - ys[0];
+        let rel = (hs - front_height).abs() / front_height;
+        if rel > HEIGHT_MISMATCH {
+            return Err(SketchError::Mismatch(format!(
+                "side profile height {hs:.4} differs from the front height {front_height:.4} by {:.1} % (> {:.0} %)",
+                100.0 * rel,
+                100.0 * HEIGHT_MISMATCH
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The body plan to segment with: `Auto` is a quadruped when the front
+/// outline is longer than tall ([`super::quadruped::longer_than_tall`]).
+pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
+    match plan {
+        BodyPlan::Auto if super::quadruped::longer_than_tall(front) => BodyPlan::Quadruped,
+        BodyPlan::Auto => BodyPlan::Humanoid,
+        p => p,
+    }
+}
+
+/// Derives parts and transitions from validated, counter-clockwise outlines
+/// with the given body plan ([`resolve_plan`]). A humanoid's front outline
+/// drawn a few degrees off upright is derived upright and the result turned
+/// back ([`super::align`]); a quadruped is segmented as drawn
+/// ([`super::quadruped`]).
 pub fn derive(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     sections: &[KeySection],
     cuts: &[CutPath],
     level: Level,
+    plan: BodyPlan,
 ) -> Result<Derived, SketchError> {
+    if resolve_plan(plan, front) == BodyPlan::Quadruped {
+        return super::quadruped::derive(front, side, sections, cuts, level);
+    }
     let ax = super::align::axes(front);
     if ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
     {
         return Err(SketchError::Segmentation(format!(
-            "the front outline is longer than tall (principal axis {:.0} degrees from horizontal), as a four-legged animal's: \
-             the automatic segmentation handles standing humanoids only (arms away from the body, legs apart); \
-             animals (body, neck and head, four legs, tail) are not supported yet",
+            "the front outline is longer than tall (principal axis {:.0} degrees from horizontal), as a four-legged animal's, \
+             but the humanoid body plan was asked for: use body plan auto or quadruped (--body-plan, inputs.body_plan)",
             ax.major.to_degrees().abs()
         )));
     }
@@ -356,19 +414,7 @@ fn derive_upright(
     if let Some(y) = joins.neck {
         lm.neck_base = y;
     }
-    if let Some(sd) = side {
-        let (ys, _) = super::poly::bounds(sd);
-        let hs = ys[1] - ys[0];
-        let rel = (hs - lm.height()).abs() / lm.height();
-        if rel > HEIGHT_MISMATCH {
-            return Err(SketchError::Mismatch(format!(
-                "side profile height {hs:.4} differs from the front height {:.4} by {:.1} % (> {:.0} %)",
-                lm.height(),
-                100.0 * rel,
-                100.0 * HEIGHT_MISMATCH
-            )));
-        }
-    }
+    check_side_height(lm.height(), side)?;
     let side = if level == Level::Initial { None } else { side };
     let regs = regions(front, &lm, &joins)?;
     let mut parts = regs
@@ -432,6 +478,7 @@ fn derive_upright(
             parent_end: End::Start,
             children: vec!["leg_l".into(), "leg_r".into()],
             seam_apex: vec![[lm.crotch[0], lm.crotch[1], bot_c[2]]],
+            cut_angles: Vec::new(),
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -439,11 +486,14 @@ fn derive_upright(
             parent_end: End::End,
             children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
             seam_apex: vec![apex(-1.0), apex(1.0)],
+            cut_angles: Vec::new(),
         },
     ];
     Ok(Derived {
+        plan: BodyPlan::Humanoid,
         alignment: Alignment::identity(),
-        landmarks: lm,
+        landmarks: Some(lm),
+        quadruped: None,
         parts,
         transitions,
     })

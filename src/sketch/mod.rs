@@ -43,6 +43,7 @@ pub mod input;
 pub mod keysection;
 pub mod part;
 pub mod poly;
+pub mod quadruped;
 pub mod removed;
 pub mod report;
 pub mod segment;

@@ -21,7 +21,7 @@
 use super::align::{axes, Alignment, ROTATION_EPS_DEG};
 use super::derive::part_from_region;
 use super::input::{read_profile, Outline, ViewKind};
-use super::segment::{Pick, Region};
+use super::segment::{Pick, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{PartSpec, RemovedPart, SectionShape};
 use std::path::Path;
@@ -77,6 +77,8 @@ pub fn removed_part(rp: &RemovedPart, base: &Path, tol: f64) -> Result<BuiltRemo
         downward: false,
         tip: true,
         shoulder: None,
+        horizontal: false,
+        side: SidePick::Whole,
     };
     let mut spec = part_from_region(&up, side_pts, &region).map_err(|e| bad(e.to_string()))?;
     // close the start at the outline's lowest point (in the upright frame)

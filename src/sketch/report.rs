@@ -61,6 +61,8 @@ pub struct SketchReport {
     pub not_built: Vec<String>,
     /// Removed parts built from their own profiles ([`super::removed`]).
     pub removed: Vec<RemovedReport>,
+    /// Props composed as separate components (`character::props`).
+    pub props: Vec<crate::character::props::PropReport>,
 }
 
 /// A removed part: a separate closed component, not stitched to the body.
@@ -150,6 +152,7 @@ pub fn build_document_with(
             &doc.inputs.sections,
             &front.cuts,
             doc.level,
+            doc.inputs.body_plan,
         )?;
         out.parts = d.parts;
         out.parts.extend(removed.iter().map(|r| r.spec.clone()));
@@ -158,15 +161,19 @@ pub fn build_document_with(
     // replay the edit log on a copy: `out` keeps the unedited parts and the
     // log, so saving it and building again never applies an edit twice
     // PDE-level edits change the parts (spec edits) or add displacements
-    // (forces); mesh-level edits (plate) then act on the built mesh
+    // (forces); mesh-level edits (plate, SASM) then act on the built mesh,
+    // in log order
     let active = out.active_edits();
     let edit_err = |e: crate::character::edit::EditError| SketchError::Document(e.to_string());
+    crate::character::edit::check_order(&out.transitions, active).map_err(edit_err)?;
     let edited = crate::character::edit::apply_to_parts(&out.parts, active).map_err(edit_err)?;
     let disp = crate::character::edit::displacements(active).map_err(edit_err)?;
     let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
-    crate::character::edit::apply_plates(&mut model.mesh, active).map_err(edit_err)?;
-    crate::sasm::edit::apply_edits(&mut model.mesh, &model.parts, active)
-        .map_err(|e| SketchError::Document(format!("sasm edit: {e}")))?;
+    crate::character::edit::apply_mesh_edits(&mut model.mesh, &model.parts, active)
+        .map_err(edit_err)?;
+    let props =
+        crate::character::props::compose(&mut model.mesh, &doc.props, base, res.rings_per_height)
+            .map_err(|e| SketchError::Document(e.to_string()))?;
     let topo = topology(&model.mesh);
     let parts = edited
         .iter()
@@ -218,7 +225,8 @@ pub fn build_document_with(
         })
         .collect();
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
-    let names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    let mut names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
+    names.extend(props.iter().map(|p| p.name.as_str()));
     let body = super::check::without_groups(&model.mesh, &names);
     let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
     let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
@@ -237,6 +245,7 @@ pub fn build_document_with(
             .map(|r| r.name.clone())
             .collect(),
         removed: removed_reports,
+        props,
     };
     Ok(Built {
         doc: out,

@@ -137,6 +137,25 @@ pub struct Region {
     /// A limb hanging from a shoulder: its top section is tilted up toward
     /// the outline's outer side (sign of the outward x direction).
     pub shoulder: Option<f64>,
+    /// Which part of the side profile gives the region's depth.
+    pub side: SidePick,
+    /// Sections stay horizontal whatever the central curve's tilt (an
+    /// animal's long body, whose slice centres drift with its two ends).
+    pub horizontal: bool,
+}
+
+/// Which part of the side profile's slice gives a region's depth and its
+/// centre's z.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SidePick {
+    /// Hidden in the side view (a humanoid's arms, an animal's tail): the
+    /// sections stay circles.
+    Hidden,
+    /// The slice's whole extent (torso, head, legs of a humanoid).
+    Whole,
+    /// The widest slice interval whose centre z lies in `(lo, hi)` (one leg
+    /// of an animal's pair, seen apart in the view from its front).
+    CentreIn(f64, f64),
 }
 
 /// The interval of a region at height y.
@@ -171,6 +190,8 @@ pub fn regions(
             downward: false,
             tip: false,
             shoulder: None,
+            horizontal: false,
+            side: SidePick::Whole,
         },
         Region {
             name: "head".into(),
@@ -180,6 +201,8 @@ pub fn regions(
             downward: false,
             tip: true,
             shoulder: None,
+            horizontal: false,
+            side: SidePick::Whole,
         },
     ];
     for (name, lo, hi, top, shoulder) in [
@@ -224,6 +247,12 @@ pub fn regions(
             downward: true,
             tip: true,
             shoulder,
+            horizontal: false,
+            side: if shoulder.is_some() {
+                SidePick::Hidden
+            } else {
+                SidePick::Whole
+            },
         });
     }
     for r in &out {

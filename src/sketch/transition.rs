@@ -67,17 +67,48 @@ impl Seam {
     }
 }
 
-/// The ring index of the front cut of seam j (1-based) among k children.
-pub fn cut_indices(j: usize, k: usize) -> (usize, usize) {
+/// The ring indices of the front and back cuts of seam j (1-based) among
+/// k children: `cuts[j - 1]` when given ([`cut_table`]), else the fixed
+/// angles `pi - j pi / k`.
+pub fn cut_indices(j: usize, k: usize, cuts: &[(usize, usize)]) -> (usize, usize) {
+    if let Some(c) = cuts.get(j - 1) {
+        return *c;
+    }
     let n = RING_VERTICES;
     let f = n / 2 - j * n / (2 * k);
     let b = n / 2 + j * n / (2 * k);
     (f % n, b % n)
 }
 
-/// The runs of child `c` (0-based) of `k`.
-pub fn loop_runs(c: usize, k: usize) -> Vec<Run> {
+/// Ring indices of the cuts at the given front angles (radians in (0, pi),
+/// decreasing): rounded to ring vertices, kept strictly decreasing and
+/// inside (0, pi). Empty when `angles` does not have one angle per seam
+/// (the fixed angles are used).
+pub fn cut_table(k: usize, angles: &[f64]) -> Vec<(usize, usize)> {
     let n = RING_VERTICES;
+    if k < 2 || angles.len() != k - 1 || angles.iter().any(|a| !a.is_finite()) {
+        return Vec::new();
+    }
+    let mut f: Vec<usize> = angles
+        .iter()
+        .map(|a| ((a / (2.0 * PI) * n as f64).round() as usize).clamp(1, n / 2 - 1))
+        .collect();
+    // strictly decreasing, each at least 1 and below n / 2
+    for j in 1..f.len() {
+        if f[j] >= f[j - 1] {
+            f[j] = f[j - 1].saturating_sub(1);
+        }
+    }
+    if f.last().is_some_and(|&x| x < 1) || f[0] >= n / 2 {
+        return Vec::new();
+    }
+    f.into_iter().map(|x| (x, n - x)).collect()
+}
+
+/// The runs of child `c` (0-based) of `k`.
+pub fn loop_runs(c: usize, k: usize, cuts: &[(usize, usize)]) -> Vec<Run> {
+    let n = RING_VERTICES;
+    let cut_indices = |j: usize, k: usize| cut_indices(j, k, cuts);
     let steps = |a: usize, b: usize| (b + n - a) % n;
     if k == 1 {
         return vec![Run::Arc { from: 0, count: n }];
@@ -256,8 +287,9 @@ pub fn child_transition(
     parent_end: End,
     child: &PartSurface,
     seams: &[Seam],
+    cuts: &[(usize, usize)],
 ) -> ChildTransition {
-    let runs = loop_runs(c, k);
+    let runs = loop_runs(c, k, cuts);
     let n = loop_len(&runs);
     let mut side = Vec::new();
     if c > 0 {
@@ -319,12 +351,13 @@ pub fn seams(
     k: usize,
     apex: &[[f64; 3]],
     child_centres: &[[f64; 3]],
+    cuts: &[(usize, usize)],
 ) -> Vec<Seam> {
     let ring = parent.section(parent.end_u(parent_end), 0);
     let n = RING_VERTICES as f64;
     (1..k)
         .map(|j| {
-            let (f, b) = cut_indices(j, k);
+            let (f, b) = cut_indices(j, k, cuts);
             let front = ring.eval(2.0 * PI * f as f64 / n);
             let back = ring.eval(2.0 * PI * b as f64 / n);
             let a = apex[j - 1];

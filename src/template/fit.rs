@@ -2,7 +2,7 @@
 
 use super::landmarks::{self, arc_fractions, correspond, Scheme, Similarity};
 use super::polygon::{bbox, validated};
-use super::refine::{self, OnMiss, ViewFit, WarpStats};
+use super::refine::{self, DepthMap, OnMiss, SidePartner, ViewFit, WarpStats};
 use super::sections::{self, SectionMatch, SectionSketch};
 use super::{OutlineFn, TemplateError, View};
 use crate::mesh::Mesh;
@@ -99,6 +99,14 @@ pub struct FitOptions {
     /// How section points correspond at the high level (default
     /// [`SectionMatch::Radial`]).
     pub section_match: SectionMatch,
+    /// How the side pass partners steep outline points (default
+    /// [`SidePartner::Heading`]).
+    pub side_partner: SidePartner,
+    /// The side pass's overall depth map (default [`DepthMap::Robust`]).
+    pub depth_map: DepthMap,
+    /// Exponent of the side pass's relative-depth weights (default
+    /// [`refine::DEPTH_FALLOFF`]).
+    pub depth_falloff: i32,
     /// Zero-displacement anchors of the high level on skin vertices away
     /// from the sections' heights (default 300; 0: none).
     pub band_anchors: usize,
@@ -120,6 +128,9 @@ impl Default for FitOptions {
             on_miss: OnMiss::Fail,
             section_match: SectionMatch::Radial,
             band_anchors: 300,
+            side_partner: SidePartner::Heading,
+            depth_map: DepthMap::Robust,
+            depth_falloff: refine::DEPTH_FALLOFF,
         }
     }
 }

@@ -157,7 +157,7 @@ pub fn front_pass(
     front_warp(positions, &ca, &cb, opts, stats)
 }
 
-/// Exponent of the relative-depth weights of the side residual: a vertex
+/// Default exponent of the relative-depth weights of the side residual: a vertex
 /// at relative depth `s` (0 at the back silhouette, 1 at the front, at its
 /// height) takes `s^p` of the front's residual and `(1 - s)^p` of the
 /// back's, so a belly or a bust moves the skin near the front, not the
@@ -183,16 +183,18 @@ pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
 /// One side (depth-only) pass from `positions`: the side outline of the
 /// fitted skin onto the sketched side profile. Only points where the
 /// outline is steep (|dy/ds| >= [`STEEP`]) are centres, each moving in
-/// depth to the sketch's crossing of the same height nearest to its
-/// arc-length partner. Shallow stretches (soles, the top of the head, under
+/// depth to a crossing of the sketch at the same height
+/// ([`FitOptions::side_partner`]: heading the same way and nearest to the
+/// point, or nearest to its arc-length partner). Shallow stretches (soles, the top of the head, under
 /// the chin or a belly) take the interpolated depth change of their steep
 /// neighbours: with only three side landmarks (head, heel, toe) their
 /// arc-length partners can be on another part of the body (a boy's chin
 /// partnered with the template's neck), which moved vertices by up to 10 %
-/// of the height in the MakeHuman study. The depth change is a
-/// least-squares affine map of depth (the body's overall thickness and
-/// offset) plus the partners' residuals, interpolated along the outline by
-/// a thin-plate spline and applied with [`DEPTH_FALLOFF`] weights of the
+/// of the height in the MakeHuman study. The depth change is an affine
+/// map of depth (the body's overall thickness and offset,
+/// [`FitOptions::depth_map`]) plus the partners' residuals, interpolated
+/// along the outline by a thin-plate spline and applied with
+/// [`FitOptions::depth_falloff`] weights of the
 /// vertex's relative depth at its height ([`depth_span`] of the outline).
 pub fn side_pass(
     template: &Template,
@@ -219,28 +221,25 @@ pub fn side_pass(
         let len = ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2))
             .sqrt()
             .max(f64::MIN_POSITIVE);
-        if ((q[1] - p[1]) / len).abs() >= STEEP {
+        let dy = (q[1] - p[1]) / len;
+        if dy.abs() >= STEEP {
+            let z = match opts.side_partner {
+                SidePartner::ArcLength => level_partner(side, a[1], b[0]),
+                SidePartner::Heading => heading_partner(side, a[1], a[0], dy > 0.0),
+            };
             centres.push(a);
-            values.push([level_partner(side, a[1], b[0]) - a[0]]);
+            values.push([z - a[0]]);
         }
     }
-    // a least-squares affine depth map z -> k z + c of the partners first
-    // (global thickness and offset), then the residuals as a thin-plate
-    // field applied with the vertex's relative depth at its height
-    let n = centres.len().max(1) as f64;
-    let (mz, mt) = centres
-        .iter()
-        .zip(&values)
-        .fold((0.0, 0.0), |(a, b), (c, v)| {
-            (a + c[0] / n, b + (c[0] + v[0]) / n)
-        });
-    let (mut szz, mut szt) = (0.0, 0.0);
-    for (c, v) in centres.iter().zip(&values) {
-        szz += (c[0] - mz).powi(2);
-        szt += (c[0] - mz) * (c[0] + v[0] - mt);
-    }
-    let k = if szz > 0.0 { szt / szz } else { 1.0 };
-    let affine = |z: f64| mt + k * (z - mz) - z;
+    // an affine depth map z -> k z + c of the partners first (global
+    // thickness and offset), then the residuals as a thin-plate field
+    // applied with the vertex's relative depth at its height
+    let (k, c) = match opts.depth_map {
+        DepthMap::None => (1.0, 0.0),
+        DepthMap::LeastSquares => affine_fit(&centres, &values, &vec![1.0; centres.len()]),
+        DepthMap::Robust => robust_affine(&centres, &values),
+    };
+    let affine = |z: f64| k * z + c - z;
     let residual: Vec<[f64; 1]> = centres
         .iter()
         .zip(&values)
@@ -257,8 +256,8 @@ pub fn side_pass(
         let r = match depth_span(&o, y) {
             Some((zb, zf)) if zf > zb => {
                 let s = ((z - zb) / (zf - zb)).clamp(0.0, 1.0);
-                s.powi(DEPTH_FALLOFF) * depth.eval(&[zf, y])[0]
-                    + (1.0 - s).powi(DEPTH_FALLOFF) * depth.eval(&[zb, y])[0]
+                s.powi(opts.depth_falloff) * depth.eval(&[zf, y])[0]
+                    + (1.0 - s).powi(opts.depth_falloff) * depth.eval(&[zb, y])[0]
             }
             _ => depth.eval(&[z, y])[0],
         };
@@ -266,4 +265,108 @@ pub fn side_pass(
     }
     stats.add(&depth);
     Ok(())
+}
+
+/// How the side pass matches a steep outline point with the sketch.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SidePartner {
+    /// The sketch's crossing of the point's height nearest to its
+    /// arc-length partner.
+    ArcLength,
+    /// The sketch's crossing of the point's height, heading the same way
+    /// (up the front, down the back), nearest to the point itself: a bulge
+    /// that lengthens the outline does not shift the partners above it.
+    Heading,
+}
+
+/// The overall depth map of the side pass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DepthMap {
+    /// No affine part: the residual field carries everything.
+    None,
+    /// Least squares over every partner.
+    LeastSquares,
+    /// Tukey-biweight reweighted least squares: a local bulge (belly,
+    /// bust) is an outlier and does not thicken the whole body.
+    Robust,
+}
+
+/// The crossing of the horizontal line at height `y` with the closed
+/// counter-clockwise polygon `p` on an edge heading up (`up`) or down,
+/// nearest to `near`; [`level_partner`] when there is none.
+pub fn heading_partner(p: &[[f64; 2]], y: f64, near: f64, up: bool) -> f64 {
+    let n = p.len();
+    let mut best: Option<(f64, f64)> = None;
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] || (b[1] > a[1]) != up {
+            continue;
+        }
+        let x = a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+        if best.is_none_or(|(d, _)| (x - near).abs() < d) {
+            best = Some(((x - near).abs(), x));
+        }
+    }
+    best.map_or_else(|| level_partner(p, y, near), |(_, x)| x)
+}
+
+/// Weighted least-squares `(k, c)` of `z + v = k z + c` over the centres'
+/// depths `z` and values `v`.
+pub fn affine_fit(centres: &[[f64; 2]], values: &[[f64; 1]], w: &[f64]) -> (f64, f64) {
+    let sw: f64 = w.iter().sum();
+    if sw <= 0.0 {
+        return (1.0, 0.0);
+    }
+    let (mut mz, mut mt) = (0.0, 0.0);
+    for ((c, v), w) in centres.iter().zip(values).zip(w) {
+        mz += w * c[0] / sw;
+        mt += w * (c[0] + v[0]) / sw;
+    }
+    let (mut szz, mut szt) = (0.0, 0.0);
+    for ((c, v), w) in centres.iter().zip(values).zip(w) {
+        szz += w * (c[0] - mz).powi(2);
+        szt += w * (c[0] - mz) * (c[0] + v[0] - mt);
+    }
+    let k = if szz > 0.0 { szt / szz } else { 1.0 };
+    (k, mt - k * mz)
+}
+
+/// Tukey's biweight tuning constant (95 % efficiency).
+const TUKEY: f64 = 4.685;
+
+/// [`affine_fit`] reweighted by Tukey's biweight of the residuals (scale
+/// from their median absolute deviation), 10 iterations.
+pub fn robust_affine(centres: &[[f64; 2]], values: &[[f64; 1]]) -> (f64, f64) {
+    let n = centres.len();
+    let mut w = vec![1.0; n];
+    let (mut k, mut c) = affine_fit(centres, values, &w);
+    let span = centres
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p[1]), h.max(p[1]))
+        });
+    let floor = 1e-4 * (span.1 - span.0).abs().max(f64::MIN_POSITIVE);
+    for _ in 0..10 {
+        let r: Vec<f64> = centres
+            .iter()
+            .zip(values)
+            .map(|(p, v)| p[0] + v[0] - (k * p[0] + c))
+            .collect();
+        let mut a: Vec<f64> = r.iter().map(|x| x.abs()).collect();
+        a.sort_by(f64::total_cmp);
+        let mad = a.get(n / 2).copied().unwrap_or(0.0);
+        let scale = (1.4826 * mad).max(floor) * TUKEY;
+        for (w, r) in w.iter_mut().zip(&r) {
+            let u = r / scale;
+            *w = if u.abs() < 1.0 {
+                (1.0 - u * u).powi(2)
+            } else {
+                0.0
+            };
+        }
+        (k, c) = affine_fit(centres, values, &w);
+    }
+    (k, c)
 }

@@ -300,6 +300,31 @@ pub fn part_from_profile(
     Ok(r.last().to_vec())
 }
 
+/// [`part_from_profile`] for a profile drawn in `view`: a side profile
+/// (`(z, y)`) fits the part turned a quarter turn about y (`(x, y, z) ->
+/// (z, y, -x)`), which is turned back after the fit.
+pub fn part_from_view(
+    part: &Mesh,
+    profile: &[[f64; 2]],
+    view: super::View,
+    outline: &OutlineFn,
+) -> Result<Vec<[f64; 3]>, TemplateError> {
+    match view {
+        super::View::Front => return part_from_profile(part, profile, outline),
+        super::View::Side => {}
+        _ => {
+            return Err(bad(format!(
+                "a part is created from a front or side profile, not a {} one",
+                view.name()
+            )))
+        }
+    }
+    let mut turned = part.clone();
+    turned.map_positions(|p| [p[2], p[1], -p[0]]);
+    let out = part_from_profile(&turned, profile, outline)?;
+    Ok(out.into_iter().map(|p| [-p[2], p[1], p[0]]).collect())
+}
+
 /// The axis of MakeHuman's left foot (x > 0) in the base skin: heel to toe
 /// through the foot's vertices below [`FOOT_HEIGHT`] of the body's height,
 /// `e1` = +x; and the foot mesh itself (triangles entirely below that
@@ -342,6 +367,50 @@ pub fn makehuman_left_foot() -> Result<(Mesh, [f64; 3], [f64; 3]), TemplateError
         [xc, yc, z0],
         [xc, yc, z1],
     ))
+}
+
+/// The MakeHuman left foot as a template part: `count` forefoot sections
+/// (normalised positions 0.5 to 0.95 heel to toe, `e1` = +x), and the foot
+/// mesh compacted to its own vertices.
+pub fn makehuman_foot_part(count: usize) -> Result<(TemplatePart, Mesh), TemplateError> {
+    let (mesh, start, end) = makehuman_left_foot()?;
+    let part = TemplatePart::from_mesh(&mesh, start, end, [1.0, 0.0, 0.0], (0.5, 0.95, count))?;
+    let (foot, _) = mesh.filter_triangles(&vec![true; mesh.triangles.len()]);
+    Ok((part, foot))
+}
+
+/// [`replace_sections`] on the part named `name` of a character document;
+/// returns how many sections were replaced (elliptic or round ones).
+pub fn replace_in_doc(
+    doc: &mut crate::character::doc::CharacterDoc,
+    name: &str,
+    template: &TemplatePart,
+    terms: usize,
+) -> Result<usize, TemplateError> {
+    let names: Vec<&str> = doc.parts.iter().map(|p| p.name.as_str()).collect();
+    let Some(k) = doc.parts.iter().position(|p| p.name == name) else {
+        return Err(bad(format!(
+            "the document has no part '{name}' (parts: {})",
+            if names.is_empty() {
+                "none".to_string()
+            } else {
+                names.join(", ")
+            }
+        )));
+    };
+    let part = &doc.parts[k];
+    let replaceable = |s: &SectionSpec| {
+        matches!(s.shape, SectionShape::Circle { r } if r > 0.0)
+            || matches!(s.shape, SectionShape::Ellipse { .. })
+    };
+    let count = part.sections.iter().filter(|s| replaceable(s)).count();
+    if count == 0 {
+        return Err(bad(format!(
+            "part '{name}' has no elliptic or round section to replace"
+        )));
+    }
+    doc.parts[k] = replace_sections(part, template, terms)?;
+    Ok(count)
 }
 
 /// Height (fraction of the body's) below which skin counts as foot.

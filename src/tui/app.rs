@@ -41,6 +41,13 @@ pub enum Mode {
     Export {
         buffer: String,
     },
+    /// Typing a command's input ([`super::commands`]); `error`: why the
+    /// last Enter was refused.
+    Prompt {
+        kind: super::commands::PromptKind,
+        buffer: String,
+        error: Option<String>,
+    },
     Help,
     /// Quit with unsaved changes: save, discard or stay.
     ConfirmQuit,
@@ -55,6 +62,9 @@ pub enum Effect {
     Rebuild,
     /// Build at export resolution and write to the path.
     Export(PathBuf),
+    /// Push an edit that is kept only when the document still builds
+    /// (`character::edit::push_checked`, on the worker).
+    Check(crate::character::edit::Edit),
     /// Abandon the running job.
     Cancel,
     Quit,
@@ -66,6 +76,7 @@ pub enum ItemKind {
     Part,
     Transition,
     Removed,
+    Prop,
 }
 
 /// One entry of the part tree.
@@ -176,11 +187,16 @@ impl App {
 
     /// The part tree.
     pub fn tree(&self) -> Vec<TreeItem> {
+        let removed = |n: &str| self.doc.removed_parts.iter().any(|r| r.name == n);
         let mut out: Vec<TreeItem> = self
             .edited
             .iter()
             .map(|p| TreeItem {
-                kind: ItemKind::Part,
+                kind: if removed(&p.name) {
+                    ItemKind::Removed
+                } else {
+                    ItemKind::Part
+                },
                 name: p.name.clone(),
                 detail: format!("{} sections", p.sections.len()),
             })
@@ -190,10 +206,21 @@ impl App {
             name: t.name.clone(),
             detail: format!("{} -> {}", t.parent, t.children.join(", ")),
         }));
-        out.extend(self.doc.removed_parts.iter().map(|r| TreeItem {
-            kind: ItemKind::Removed,
-            name: r.name.clone(),
-            detail: "removed, not built".into(),
+        out.extend(
+            self.doc
+                .removed_parts
+                .iter()
+                .filter(|r| !self.edited.iter().any(|p| p.name == r.name))
+                .map(|r| TreeItem {
+                    kind: ItemKind::Removed,
+                    name: r.name.clone(),
+                    detail: "removed, not built".into(),
+                }),
+        );
+        out.extend(self.doc.props.iter().map(|p| TreeItem {
+            kind: ItemKind::Prop,
+            name: p.name.clone(),
+            detail: format!("conv model x{}", p.scale),
         }));
         out
     }
@@ -350,6 +377,15 @@ impl App {
                 }
                 Vec::new()
             }
+            Outcome::Checked {
+                edit,
+                result,
+                elapsed,
+                ..
+            } => {
+                self.running = None;
+                self.checked(*edit, result, elapsed)
+            }
             Outcome::Panicked { message, .. } => {
                 self.running = None;
                 self.failed(format!("rebuild panicked: {message}"))
@@ -357,7 +393,7 @@ impl App {
         }
     }
 
-    fn built(&mut self, r: Rebuilt, elapsed: Duration) -> Vec<Effect> {
+    pub(super) fn built(&mut self, r: Rebuilt, elapsed: Duration) -> Vec<Effect> {
         let mut effects = Vec::new();
         if self.doc.parts.is_empty() {
             // the first build derived the parts: the document keeps them
@@ -466,6 +502,7 @@ impl App {
                 _ => Vec::new(),
             },
             Mode::Editing { row, buffer } => self.on_edit_key(k, row, buffer),
+            Mode::Prompt { kind, buffer, .. } => self.on_prompt_key(k, kind, buffer),
             Mode::Normal => self.on_normal_key(k, ctrl),
         }
     }

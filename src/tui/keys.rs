@@ -2,7 +2,9 @@
 //! and in the README is [`BINDINGS`]).
 
 use super::app::{App, Effect, Focus, Mode};
+use super::commands::PromptKind;
 use super::params::{self, Parsed};
+use crate::character::edit::Edit;
 use crossterm::event::{KeyCode, KeyEvent};
 
 /// Every key binding: keys, what they do.
@@ -23,6 +25,19 @@ pub const BINDINGS: &[(&str, &str)] = &[
     ("u, Ctrl-Z", "undo the last active edit"),
     ("r, Ctrl-Y", "redo"),
     ("v", "preview view: front, side, top, all three"),
+    (
+        "a",
+        "add a part from an SVG/JSON outline (a separate component)",
+    ),
+    (
+        "x",
+        "add a key section to the selected part (ellipse or curve file)",
+    ),
+    (
+        "p",
+        "attach a prop from a conv model file (data/conv/*.json)",
+    ),
+    ("Tab (in a prompt)", "complete the file path"),
     ("b", "rebuild now"),
     (
         "e",
@@ -117,6 +132,9 @@ impl App {
                 Vec::new()
             }
             KeyCode::Char('b') => vec![Effect::Rebuild],
+            KeyCode::Char('a') => self.prompt(PromptKind::AddPart),
+            KeyCode::Char('x') => self.prompt(PromptKind::KeySection),
+            KeyCode::Char('p') => self.prompt(PromptKind::AddProp),
             KeyCode::Char('e') => {
                 let stem = self
                     .path
@@ -132,7 +150,7 @@ impl App {
             KeyCode::Esc => {
                 if self.running.take().is_some() {
                     self.say(
-                        "abandoned the running job (the document is unchanged)",
+                        "cancelled the running job (the document is unchanged)",
                         false,
                     );
                     vec![Effect::Cancel]
@@ -240,7 +258,16 @@ impl App {
                     }
                     Ok(Parsed::Edit(e)) => {
                         self.mode = Mode::Normal;
-                        self.push(e)
+                        if matches!(
+                            e,
+                            Edit::Force { .. } | Edit::Boundary { .. } | Edit::Plate { .. }
+                        ) {
+                            // judged on the built mesh, on the worker
+                            self.say(format!("checking: {}", e.summary()), false);
+                            vec![Effect::Check(e)]
+                        } else {
+                            self.push(e)
+                        }
                     }
                 }
             }

@@ -19,14 +19,20 @@
 //!   change and offered for recovery on the next start;
 //! * [`view`]: drawing; [`term`]: the crossterm event loop.
 //!
-//! Not done: adding a part from an SVG, a key section, a prop from a conv
-//! model, mesh-level (plate) edits; partial rebuilds (every change rebuilds
-//! the whole model, at a lower preview resolution); terminal image
-//! protocols; cancelling a build mid-way (an abandoned build runs to its end
-//! on the worker and its result is dropped).
+//! * [`commands`]: add a part from an SVG profile, a key section, a prop
+//!   from a conv model (`character::props`), typed into a prompt.
+//!
+//! Force, boundary and plate edits are pushed on the worker through
+//! `character::edit::push_checked`; Esc cancels a running rebuild or export
+//! between part solves (see [`worker`]).
+//!
+//! Not done: terminal image protocols (half-blocks only); cancelling inside
+//! one part's solve or the transition/mesh assembly; undo of the commands
+//! (they are not entries of the edit log).
 
 pub mod app;
 pub mod autosave;
+pub mod commands;
 pub mod keys;
 pub mod params;
 pub mod preview;

@@ -7,10 +7,14 @@
 //! chosen section or on all of them. Values are parsed and range-checked as
 //! they are typed ([`parse`]: numbers, then `edit::validate_params`); an
 //! invalid value is shown with its error and cannot be applied. Transitions
-//! and removed parts are shown read-only.
+//! and removed parts are shown read-only. Force, boundary and plate edits
+//! (rows `force`, `boundary`, `plate`) are checked as typed the same way and
+//! then pushed on the worker through `character::edit::push_checked`, so
+//! one that would break the build is refused and the document unchanged.
 
-use crate::character::doc::{CharacterDoc, PartSpec, SectionShape, SurfaceSpec};
+use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape, SurfaceSpec};
 use crate::character::edit::{validate_params, Edit, SectionTransform};
+use crate::pde4::{Force, ForceKind};
 
 /// What a row edits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,6 +30,12 @@ pub enum RowKind {
     Rotate,
     Bend,
     Bump,
+    /// PDESM sculpting force over a u-range of the part.
+    Force,
+    /// PDESM boundary tangent change at one end.
+    Boundary,
+    /// Mesh-level plate bending (paper 001).
+    Plate,
 }
 
 impl RowKind {
@@ -45,6 +55,9 @@ impl RowKind {
             RowKind::Rotate => "angle (degrees)",
             RowKind::Bend => "kappa (1/units) [ax ay az]",
             RowKind::Bump => "h theta(deg) sigma",
+            RowKind::Force => "u0 u1 px py pz [uc vc] (uniform, or at uc vc in [0,1])",
+            RowKind::Boundary => "start|end tx ty tz [reach] (tangent change)",
+            RowKind::Plate => "cx cy cz radius dx dy dz (model units)",
         }
     }
 }
@@ -116,6 +129,9 @@ pub fn part_rows(part: &PartSpec, section: Option<usize>) -> Vec<Row> {
         (RowKind::Rotate, "rotate"),
         (RowKind::Bend, "bend"),
         (RowKind::Bump, "bump"),
+        (RowKind::Force, "force"),
+        (RowKind::Boundary, "boundary"),
+        (RowKind::Plate, "plate"),
     ] {
         rows.push(Row {
             label: label.into(),
@@ -142,6 +158,17 @@ pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
         }
         rows.push(info("edits", "none (transitions follow their parts)"));
         return rows;
+    }
+    if let Some(p) = doc.props.iter().find(|p| p.name == name) {
+        return vec![
+            info("prop", "conv model (paper 003), not stitched"),
+            info("model", p.model.clone()),
+            info(
+                "translate",
+                format!("{} {} {}", p.translate[0], p.translate[1], p.translate[2]),
+            ),
+            info("scale", format!("{}", p.scale)),
+        ];
     }
     if doc.removed_parts.iter().any(|r| r.name == name) {
         return vec![info("removed", "recorded, not built in version 1")];
@@ -250,6 +277,50 @@ pub fn parse(
             };
             gec(SectionTransform::Bend { kappa: v[0], axis })
         }
+        RowKind::Force => {
+            let v = numbers(text, 5, 7)?;
+            let kind = match v.len() {
+                5 => ForceKind::Uniform,
+                7 => ForceKind::Concentrated { u0: v[5], v0: v[6] },
+                _ => return Err("expected u0 u1 px py pz, then optionally uc vc".into()),
+            };
+            Edit::Force {
+                part: part.name.clone(),
+                u: [v[0], v[1]],
+                force: Force {
+                    kind,
+                    p: [v[2], v[3], v[4]],
+                },
+                a: 1.0,
+            }
+        }
+        RowKind::Boundary => {
+            let t = text.trim_start();
+            let (end, rest) = if let Some(r) = t.strip_prefix("start") {
+                (End::Start, r)
+            } else if let Some(r) = t.strip_prefix("end") {
+                (End::End, r)
+            } else {
+                return Err("begin with 'start' or 'end' (which end of the part)".into());
+            };
+            let v = numbers(rest, 3, 4)?;
+            Edit::Boundary {
+                part: part.name.clone(),
+                end,
+                curve: None,
+                tangent: Some([v[0], v[1], v[2]]),
+                reach: *v.get(3).unwrap_or(&0.3),
+            }
+        }
+        RowKind::Plate => {
+            let v = numbers(text, 7, 7)?;
+            Edit::Plate {
+                part: part.name.clone(),
+                centre: [v[0], v[1], v[2]],
+                radius: v[3],
+                d: [v[4], v[5], v[6]],
+            }
+        }
         RowKind::Bump => {
             let v = numbers(text, 3, 3)?;
             gec(SectionTransform::Bump {
@@ -260,5 +331,14 @@ pub fn parse(
         }
     };
     validate_params(&edit).map_err(|e| e.to_string())?;
+    if let Edit::Force { u, .. } = &edit {
+        let len = part.sections.last().map_or(0.0, |s| s.u);
+        if u[0] < 0.0 || u[1] > len {
+            return Err(format!(
+                "u range [{}, {}] is not inside the part (u from 0 to {len:.4})",
+                u[0], u[1]
+            ));
+        }
+    }
     Ok(Parsed::Edit(edit))
 }

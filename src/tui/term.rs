@@ -51,7 +51,8 @@ pub fn run_effects(app: &mut App, worker: &Worker, effects: Vec<Effect>, res: Re
     for e in effects {
         match e {
             Effect::Quit => return true,
-            Effect::Cancel => {}
+            // every job sent so far (only the newest can be running)
+            Effect::Cancel => worker.cancel(app.next_gen.saturating_sub(1)),
             Effect::Rebuild => {
                 let gen = app.start_job(false);
                 worker.send(Job {
@@ -60,6 +61,16 @@ pub fn run_effects(app: &mut App, worker: &Worker, effects: Vec<Effect>, res: Re
                     base: app.base.clone(),
                     res,
                     task: Task::Rebuild,
+                });
+            }
+            Effect::Check(edit) => {
+                let gen = app.start_job(false);
+                worker.send(Job {
+                    gen,
+                    doc: app.doc.clone(),
+                    base: app.base.clone(),
+                    res: Resolution::default(),
+                    task: Task::Check { edit },
                 });
             }
             Effect::Export(path) => {

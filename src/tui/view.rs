@@ -80,6 +80,7 @@ fn draw_tree(f: &mut Frame, app: &App, area: Rect) {
                 ItemKind::Part => ("part", Color::White),
                 ItemKind::Transition => ("join", Color::Cyan),
                 ItemKind::Removed => ("cut ", Color::DarkGray),
+                ItemKind::Prop => ("prop", Color::Magenta),
             };
             ListItem::new(Line::from(vec![
                 Span::styled(format!("{tag} "), Style::default().fg(Color::DarkGray)),
@@ -346,6 +347,27 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
                 Style::default().fg(Color::DarkGray),
             ),
         ]),
+        (
+            Mode::Prompt {
+                kind,
+                buffer,
+                error,
+            },
+            _,
+        ) => {
+            let mut spans = vec![
+                Span::styled(kind.label(), Style::default().fg(Color::Yellow)),
+                Span::raw(format!("{buffer}▏")),
+            ];
+            spans.push(match error {
+                Some(e) => Span::styled(format!("  ✗ {e}"), Style::default().fg(Color::Red)),
+                None => Span::styled(
+                    format!("  {} · Enter, Esc", kind.hint()),
+                    Style::default().fg(Color::DarkGray),
+                ),
+            });
+            Line::from(spans)
+        }
         (_, Some(m)) => Line::from(Span::styled(
             m.text.clone(),
             Style::default().fg(if m.error { Color::Red } else { Color::Green }),

@@ -2,10 +2,16 @@
 //!
 //! One worker thread receives [`Job`]s over a channel and sends back
 //! [`Outcome`]s. Jobs are numbered (`gen`); when several rebuilds are queued
-//! only the newest runs (the others are stale). Cancelling marks a job's
-//! number as abandoned: the library's build is not interruptible, so the
-//! thread finishes it, but its result is dropped and the document stays as
-//! it was. A panic inside a build is caught (`catch_unwind`) and reported as
+//! only the newest runs (the others are stale). Cancelling
+//! ([`Worker::cancel`]) marks every job up to a number as abandoned: the
+//! running build checks the mark before it starts, between the solves of
+//! its parts (they are solved one by one into the part cache before the
+//! model is assembled), between its props, and after the model is built
+//! (before an export writes anything), and stops there with the error
+//! [`CANCELLED`]; the app drops the result and the document stays as it
+//! was. What is not interruptible: one part's solve, the transitions and
+//! the mesh assembly (`sketch::build::build_model_with`), one prop's conv
+//! build, the file write (atomic). A panic inside a build is caught (`catch_unwind`) and reported as
 //! [`Outcome::Panicked`]; the thread lives on.
 //!
 //! Every build starts from the document as it would be read back from disk
@@ -13,12 +19,15 @@
 //! `character build` makes of the saved file.
 
 use crate::character::doc::CharacterDoc;
+use crate::character::edit::Edit;
 use crate::mesh::Mesh;
 use crate::sketch::build::PartCache;
 use crate::sketch::report::build_document_with;
 use crate::sketch::{Resolution, SketchReport};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{channel, Receiver, Sender, TryRecvError};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// What to do.
@@ -29,6 +38,10 @@ pub enum Task {
     /// Build at `res` and write the mesh (format from the extension: OBJ,
     /// GLB, STL, PLY) or a PNG of the front, side and top views.
     Export { path: PathBuf },
+    /// Push `edit` through `character::edit::push_checked` (kept only when
+    /// the document still builds as `character build` builds it); the
+    /// result is the build with the edit.
+    Check { edit: Edit },
 }
 
 /// A job for the worker.
@@ -67,6 +80,14 @@ pub enum Outcome {
         result: Result<PathBuf, String>,
         elapsed: Duration,
     },
+    /// A [`Task::Check`]: `result` is the build with `edit` pushed, or why
+    /// the edit was refused.
+    Checked {
+        gen: u64,
+        edit: Box<Edit>,
+        result: Result<Box<Rebuilt>, String>,
+        elapsed: Duration,
+    },
     Panicked {
         gen: u64,
         message: String,
@@ -80,6 +101,7 @@ impl Outcome {
             Outcome::Started { gen }
             | Outcome::Built { gen, .. }
             | Outcome::Exported { gen, .. }
+            | Outcome::Checked { gen, .. }
             | Outcome::Panicked { gen, .. } => *gen,
         }
     }
@@ -97,8 +119,80 @@ pub fn build(job: &Job) -> Result<Rebuilt, String> {
 /// [`build`] re-solving only the parts not in `cache` (the same mesh, bit
 /// for bit: `sketch::build::PartCache`).
 pub fn build_with(job: &Job, cache: Option<&mut PartCache>) -> Result<Rebuilt, String> {
+    build_cancellable(job, cache, &|| false)
+}
+
+/// The error of a cancelled build.
+pub const CANCELLED: &str = "cancelled";
+
+/// Solves the parts into `cache` one by one and builds the props, asking
+/// `cancelled` before each (the build that follows finds them cached).
+fn prewarm(
+    doc: &CharacterDoc,
+    job: &Job,
+    cache: &mut PartCache,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<(), String> {
+    if !doc.parts.is_empty() {
+        let edited = crate::character::edit::apply_to_parts(&doc.parts, doc.active_edits())
+            .map_err(|e| e.to_string())?;
+        for p in &edited {
+            if cancelled() {
+                return Err(CANCELLED.into());
+            }
+            cache.get(p).map_err(|e| e.to_string())?;
+        }
+    }
+    let cells = crate::character::props::resolution(job.res.rings_per_height);
+    for p in &doc.props {
+        if cancelled() {
+            return Err(CANCELLED.into());
+        }
+        // errors are reported by the build itself
+        if let Ok((text, model)) = p.read_model(&job.base) {
+            let _ = crate::character::props::build_model(&text, &model, cells);
+        }
+    }
+    Ok(())
+}
+
+/// [`build_with`] that stops with [`CANCELLED`] when `cancelled` says so
+/// (asked before the build, between parts and props, and after the build).
+pub fn build_cancellable(
+    job: &Job,
+    cache: Option<&mut PartCache>,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<Rebuilt, String> {
+    if cancelled() {
+        return Err(CANCELLED.into());
+    }
+    let r = build_inner(job, cache, cancelled)?;
+    if cancelled() {
+        return Err(CANCELLED.into());
+    }
+    Ok(r)
+}
+
+fn build_inner(
+    job: &Job,
+    cache: Option<&mut PartCache>,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<Rebuilt, String> {
     let text = serde_json::to_string_pretty(&job.doc).map_err(|e| e.to_string())?;
-    let doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
+    let mut doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
+    if let Task::Check { edit } = &job.task {
+        let built = crate::character::edit::push_checked(&mut doc, edit.clone(), &job.base)
+            .map_err(|e| e.to_string())?;
+        return Ok(Rebuilt {
+            doc: built.doc,
+            mesh: built.model.mesh,
+            report: built.report,
+        });
+    }
+    let mut cache = cache;
+    if let Some(c) = cache.as_deref_mut() {
+        prewarm(&doc, job, c, cancelled)?;
+    }
     let built =
         build_document_with(&doc, &job.base, job.res, false, cache).map_err(|e| e.to_string())?;
     Ok(Rebuilt {
@@ -143,6 +237,8 @@ pub fn check_export_path(path: &Path) -> Result<(), String> {
 /// The worker's handle: send jobs, poll outcomes.
 pub struct Worker {
     tx: Option<Sender<Job>>,
+    /// Jobs numbered up to this are cancelled.
+    cancelled: Arc<AtomicU64>,
     rx: Receiver<Outcome>,
     handle: Option<std::thread::JoinHandle<()>>,
 }
@@ -166,7 +262,20 @@ impl Worker {
     /// across jobs, so an edit of one part re-solves that part only.
     pub fn spawn() -> Worker {
         let mut cache = PartCache::default();
-        Worker::with_build(Box::new(move |j: &Job| build_with(j, Some(&mut cache))))
+        let cancelled = Arc::new(AtomicU64::new(0));
+        let mark = cancelled.clone();
+        let mut w = Worker::with_build(Box::new(move |j: &Job| {
+            let gen = j.gen;
+            build_cancellable(j, Some(&mut cache), &|| mark.load(Ordering::SeqCst) >= gen)
+        }));
+        w.cancelled = cancelled;
+        w
+    }
+
+    /// Cancels every job numbered up to `gen` (the running one stops at
+    /// its next check, queued ones before they start).
+    pub fn cancel(&self, gen: u64) {
+        self.cancelled.fetch_max(gen, Ordering::SeqCst);
     }
 
     /// Starts the worker with a given build function.
@@ -179,6 +288,7 @@ impl Worker {
             .ok();
         Worker {
             tx: Some(tx),
+            cancelled: Arc::new(AtomicU64::new(0)),
             rx,
             handle,
         }
@@ -253,6 +363,12 @@ fn run_one(job: &Job, out: &Sender<Outcome>, f: &mut BuildFn) {
             Task::Export { path } => Outcome::Exported {
                 gen: job.gen,
                 result: result.map(|_| path.clone()),
+                elapsed,
+            },
+            Task::Check { edit } => Outcome::Checked {
+                gen: job.gen,
+                edit: Box::new(edit.clone()),
+                result: result.map(Box::new),
                 elapsed,
             },
         },

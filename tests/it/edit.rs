@@ -171,9 +171,25 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
     assert_eq!(v["edits"][1]["active"], false);
     let o = pdesculpt(&["character", "redo", docs]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let torso = female().parts[0].clone();
+    let (u0, u1) = (
+        torso.sections[0].u,
+        torso.sections[torso.sections.len() - 1].u,
+    );
+    write(
+        &op,
+        &format!(
+            r#"{{"op": "force_region", "part": "torso", "u": [{}, {}], "theta": [0.2, 1.4], "force": {{"type": "area", "u0": 0.2, "u1": 0.8, "v0": 0.25, "v1": 0.75, "p": [0.0, 0.0, 5.0]}}}}"#,
+            u0 + 0.25 * (u1 - u0),
+            u0 + 0.75 * (u1 - u0)
+        ),
+    );
+    let o = pdesculpt(&["character", "edit", docs, "--op", ops]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let o = pdesculpt(&["character", "log", docs]);
     let log = String::from_utf8_lossy(&o.stdout);
-    assert!(log.contains("2 edits, 2 active"), "{log}");
+    assert!(log.contains("3 edits, 3 active"), "{log}");
+    assert!(log.contains("4-sided force"), "{log}");
 
     let before = std::fs::read(&doc).expect("reads");
     let bad = [
@@ -198,6 +214,14 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
             "sx = -1",
         ),
         (r#"{"op": "teleport", "part": "torso"}"#, "not an edit"),
+        (
+            r#"{"op": "force_region", "part": "torso", "u": [0.0, 9.0], "theta": [0.0, 1.0], "force": {"type": "uniform", "p": [0.0, 0.0, 1.0]}}"#,
+            "outside the part",
+        ),
+        (
+            r#"{"op": "force_region", "part": "torso", "u": [1.0, 1.2], "theta": [1.0, 1.0], "force": {"type": "uniform", "p": [0.0, 0.0, 1.0]}}"#,
+            "theta[1] = 1",
+        ),
         // valid parameters, but the plate region (the whole torso) overlaps
         // itself in projection: only the built mesh can tell
         (
@@ -224,7 +248,7 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
     assert_eq!(std::fs::read(&doc).expect("reads"), before);
     // a document whose cursor is past its log is refused on load
     let text = String::from_utf8(before.clone()).unwrap();
-    let broken = text.replace("\"cursor\": 2", "\"cursor\": 7");
+    let broken = text.replace("\"cursor\": 3", "\"cursor\": 7");
     assert_ne!(broken, text);
     let bdoc = dir.join("broken.json");
     write(&bdoc, &broken);
@@ -321,12 +345,58 @@ fn force_boundary_and_plate_edits_refuse_bad_parameters() {
     d.push_edit(good).expect("the sample force is valid");
 }
 
+#[test]
+fn force_region_edits_are_validated_and_applied_inside_their_curve() {
+    use pdesculpt::character::edit::check::sample_force_region;
+    let mut d = female();
+    let torso = d.parts[0].clone();
+    let before = d.clone();
+    let good = sample_force_region(&torso, 0.2, [0.0, 0.0, 5.0]);
+    let Edit::ForceRegion { force, u, .. } = good.clone() else {
+        unreachable!()
+    };
+    let region = |u: [f64; 2], theta: [f64; 2], part: &str| Edit::ForceRegion {
+        part: part.into(),
+        u,
+        theta,
+        force,
+        a: 1.0,
+    };
+    let bad = [
+        (
+            region([-1.0, u[1]], [0.0, 1.0], "torso"),
+            "outside the part",
+        ),
+        (region(u, [0.5, 0.5], "torso"), "theta[1] = 0.5"),
+        (region(u, [0.0, 7.0], "torso"), "theta[1] = 7"),
+        (region(u, [f64::NAN, 1.0], "torso"), "theta[0] = NaN"),
+        (region([u[1], u[0]], [0.0, 1.0], "torso"), "u[1] > u[0]"),
+        (region(u, [0.0, 1.0], "tail"), "unknown part 'tail'"),
+    ];
+    for (e, needle) in bad {
+        let err = d.push_edit(e.clone()).expect_err(needle);
+        assert!(err.to_string().contains(needle), "{needle}: {err}");
+        assert_eq!(d, before, "{e:?} changed the document");
+    }
+    let base = build_document(&d, Path::new("."), low(), false).expect("builds");
+    d.push_edit(good)
+        .expect("the sample 4-sided force is valid");
+    let b = build_document(&d, Path::new("."), low(), false).expect("builds");
+    assert!(b.report.topology.watertight, "{:?}", b.report.topology);
+    let moved: Vec<usize> = (0..base.model.mesh.positions.len())
+        .filter(|&i| base.model.mesh.positions[i] != b.model.mesh.positions[i])
+        .collect();
+    assert!(!moved.is_empty(), "the force moves the torso");
+    let all = base.model.mesh.positions.len();
+    assert!(moved.len() * 4 < all, "{} of {all} moved", moved.len());
+}
+
 fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
     let torso = doc.parts[0].clone();
     let names: Vec<String> = doc.parts.iter().map(|p| p.name.clone()).collect();
     let c = torso.sections[torso.sections.len() / 2].centre;
     (
-        0usize..6,
+        0usize..7,
         proptest::sample::select(names),
         -1.0f64..1.0,
         -1.0f64..1.0,
@@ -354,6 +424,11 @@ fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
                     tangent: Some([0.1 * x, 0.0, 0.1 * y]),
                     reach: 0.4,
                 },
+                5 => pdesculpt::character::edit::check::sample_force_region(
+                    &torso,
+                    3.0 * y,
+                    [10.0 * y, 0.0, 10.0 * x],
+                ),
                 _ => Edit::Plate {
                     part: "torso".into(),
                     centre: [c[0] + 0.05 * x, c[1] + 0.05 * y, c[2] + 0.1],
@@ -391,4 +466,76 @@ proptest! {
             prop_assert!(scratch.model.mesh == inc.model.mesh, "replay differs from incremental");
         }
     }
+}
+
+#[test]
+fn the_log_order_is_the_application_order_or_the_edit_is_refused() {
+    use pdesculpt::character::edit::Session;
+    use pdesculpt::sasm::demo::breast;
+    let d0 = female();
+    let b = build_document(&d0, Path::new("."), low(), false).expect("builds");
+    let torso = b.model.parts.iter().find(|p| p.name == "torso").unwrap();
+    let sasm = Edit::Sasm(breast(torso).expect("the bundled breast"));
+    let Edit::Sasm(spec) = &sasm else {
+        unreachable!()
+    };
+    // a plate over the upper edge of the breast's region, pushing forward
+    let c = spec.curve.points[0];
+    let pr = pdesculpt::sasm::project::Projector::new(torso, spec.curve.view);
+    let hit = pr.cast([c[0] - 0.044, c[1] + 0.05]).expect("on the torso");
+    let plate = Edit::Plate {
+        part: "torso".into(),
+        centre: hit.point,
+        radius: 0.05,
+        d: [0.0, 0.0, 0.01],
+    };
+    // mesh-level edits in either order: both build, differ, and the
+    // interactive path equals the replay bit for bit
+    let mut meshes = Vec::new();
+    for order in [[&plate, &sasm], [&sasm, &plate]] {
+        let mut s = Session::new(d0.clone(), ".".into(), Resolution::default());
+        for e in order {
+            s.push((*e).clone()).expect("valid in this order");
+        }
+        let full = s.build().expect("builds");
+        let fast = s.model().expect("builds");
+        assert!(fast.mesh == full.model.mesh, "interactive path differs");
+        assert!(full.report.topology.watertight);
+        meshes.push(full.model.mesh);
+    }
+    assert!(
+        meshes[0] != meshes[1],
+        "the order of plate and sasm matters"
+    );
+    // a PDE-level edit of the torso after a mesh-level edit of it: refused
+    let mut d = d0.clone();
+    d.push_edit(plate.clone()).expect("valid");
+    let before = d.clone();
+    let err = d.push_edit(shape("torso", 0.3)).expect_err("order");
+    assert!(
+        matches!(
+            err,
+            EditError::Order {
+                index: 1,
+                earlier: 0,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    assert!(
+        err.to_string().contains("undo the mesh-level edit"),
+        "{err}"
+    );
+    assert_eq!(d, before);
+    // ... but not of a child part, whose edit leaves the torso's mesh alone
+    d.push_edit(shape("head", 0.3))
+        .expect("the head's mesh is its own");
+    // a hand-written log in an order that cannot be honoured is refused
+    // at build
+    let mut bad = d0.clone();
+    bad.edits = vec![plate, shape("torso", 0.3)];
+    bad.cursor = 2;
+    let err = build_document(&bad, Path::new("."), low(), false).expect_err("order");
+    assert!(err.to_string().contains("cannot follow"), "{err}");
 }

@@ -357,24 +357,6 @@ fn removed_part_is_built_from_its_profile_as_a_separate_component() {
 }
 
 #[test]
-fn bundled_animal_is_refused_naming_what_is_not_supported() {
-    let dir = tmpdir("sketch-animal");
-    let out = dir.join("dog.obj");
-    let o = pdesculpt(&[
-        "sketch",
-        "build",
-        "--front",
-        &format!("{DATA}/animal_front.svg"),
-        "--side",
-        &format!("{DATA}/animal_side.svg"),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
-    assert_clear_error(&o, "four-legged animal");
-    assert!(!out.exists());
-}
-
-#[test]
 fn tolerance_out_of_range_is_a_clear_error() {
     let dir = tmpdir("sketch-tol");
     let out = dir.join("o.obj");

@@ -132,3 +132,191 @@ fn tbsm_bad_input_is_a_clear_error() {
         .to_string();
     assert!(e.contains("at least 2"), "{e}");
 }
+
+mod cli_tests {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    use pdesculpt::character::doc::{CharacterDoc, Level, SectionShape};
+    use pdesculpt::sketch::check::bundled;
+    use pdesculpt::sketch::{build_document, Resolution};
+    use std::path::Path;
+
+    /// The bundled female at the intermediate level (elliptic sections),
+    /// parts derived, written to `path`; returns the name of a part with
+    /// elliptic sections.
+    fn female_doc(path: &Path) -> String {
+        let doc = bundled("female", Level::Intermediate).expect("bundled");
+        let res = Resolution {
+            rings_per_height: 40.0,
+            transition_rows: 4,
+        };
+        let doc = build_document(&doc, Path::new("."), res, true)
+            .expect("builds")
+            .doc;
+        doc.save(path).unwrap();
+        doc.parts
+            .iter()
+            .find(|p| {
+                p.sections
+                    .iter()
+                    .any(|s| matches!(s.shape, SectionShape::Ellipse { .. }))
+            })
+            .expect("an elliptic part")
+            .name
+            .clone()
+    }
+
+    #[test]
+    fn cli_tbsm_replace_turns_ellipses_into_foot_sections() {
+        let d = tmpdir("tbsm-replace");
+        let doc = d.join("female.json");
+        let part = female_doc(&doc);
+        let out = d.join("out.json");
+        let o = pdesculpt(&[
+            "--json",
+            "template",
+            "tbsm",
+            "replace",
+            doc.to_str().unwrap(),
+            "--part",
+            &part,
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let rep: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let replaced = rep["replaced"].as_u64().unwrap() as usize;
+        assert!(replaced > 0, "{rep}");
+        let (before, after) = (
+            CharacterDoc::load(&doc).unwrap(),
+            CharacterDoc::load(&out).unwrap(),
+        );
+        let (b, a) = (
+            before.parts.iter().find(|p| p.name == part).unwrap(),
+            after.parts.iter().find(|p| p.name == part).unwrap(),
+        );
+        assert_eq!(a.sections.len(), b.sections.len());
+        let gecs = a
+            .sections
+            .iter()
+            .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
+            .count();
+        assert!(gecs >= replaced, "{gecs} < {replaced}");
+        for (x, y) in a.sections.iter().zip(&b.sections) {
+            assert_eq!((x.u, x.centre, x.e1, x.e2), (y.u, y.centre, y.e1, y.e2));
+        }
+        // the other parts are untouched
+        for (x, y) in after.parts.iter().zip(&before.parts) {
+            if x.name != part {
+                assert_eq!(x, y);
+            }
+        }
+    }
+
+    #[test]
+    fn cli_tbsm_bad_input_fails_cleanly_without_output() {
+        let d = tmpdir("tbsm-bad");
+        let doc = d.join("female.json");
+        female_doc(&doc);
+        let out = d.join("never.json");
+        let replace = |extra: &[&str]| {
+            let mut a = vec![
+                "template",
+                "tbsm",
+                "replace",
+                doc.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+            ];
+            a.extend_from_slice(extra);
+            pdesculpt(&a)
+        };
+        assert_clear_error(&replace(&["--part", "tail"]), "no part 'tail'");
+        assert_clear_error(&replace(&["--part", "torso", "--terms", "0"]), "--terms");
+        assert_clear_error(
+            &replace(&["--part", "torso", "--template-sections", "1"]),
+            "--template-sections",
+        );
+        let obj = d.join("cube.obj");
+        std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        assert_clear_error(
+            &replace(&["--part", "torso", "--template", obj.to_str().unwrap()]),
+            "--axis",
+        );
+        let broken = d.join("broken.json");
+        std::fs::write(&broken, "{\"version\": ").unwrap();
+        let o = pdesculpt(&[
+            "template",
+            "tbsm",
+            "replace",
+            broken.to_str().unwrap(),
+            "--part",
+            "torso",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_clear_error(&o, "broken.json");
+        // create: a bow-tie profile, a top view
+        let bow = d.join("bow.json");
+        let v = serde_json::json!({"view": "front", "points": [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]]});
+        std::fs::write(&bow, v.to_string()).unwrap();
+        let mesh_out = d.join("never.obj");
+        let create = |view: &str| {
+            pdesculpt(&[
+                "template",
+                "tbsm",
+                "create",
+                "--profile",
+                bow.to_str().unwrap(),
+                "--view",
+                view,
+                "-o",
+                mesh_out.to_str().unwrap(),
+            ])
+        };
+        assert_clear_error(&create("front"), "intersect");
+        assert_clear_error(&create("top"), "--view");
+        assert!(!out.exists() && !mesh_out.exists());
+    }
+
+    /// A side profile of the MakeHuman foot, made 20 % longer, creates a
+    /// foot mesh (same vertices and faces) whose side outline is the
+    /// profile's within the fit's tolerance.
+    #[test]
+    fn cli_tbsm_create_fits_a_side_profile() {
+        use pdesculpt::template::measure::mesh_outline;
+        use pdesculpt::template::tbsm::makehuman_foot_part;
+        use pdesculpt::template::View;
+        let d = tmpdir("tbsm-create");
+        let (_, foot) = makehuman_foot_part(6).unwrap();
+        let side: Vec<[f64; 2]> = mesh_outline(&foot, View::Side)
+            .unwrap()
+            .into_iter()
+            .map(|p| [1.2 * p[0], p[1]])
+            .collect();
+        let prof = d.join("side.json");
+        let v = serde_json::json!({"view": "side", "points": side});
+        std::fs::write(&prof, v.to_string()).unwrap();
+        let out = d.join("foot.obj");
+        let o = pdesculpt(&[
+            "--json",
+            "template",
+            "tbsm",
+            "create",
+            "--profile",
+            prof.to_str().unwrap(),
+            "--view",
+            "side",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let m = pdesculpt::mesh::io::read(&out).unwrap();
+        assert_eq!(m.positions.len(), foot.positions.len());
+        assert_eq!(m.triangles.len(), foot.triangles.len());
+        let got = mesh_outline(&m, View::Side).unwrap();
+        let (lo, hi) = pdesculpt::template::polygon::bbox(&side);
+        let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let e = pdesculpt::template::polygon::hausdorff(&got, &side, 1e-3 * size) / size;
+        assert!(e < pdesculpt::template::check::PROFILE_REL, "{e}");
+    }
+}

@@ -18,7 +18,7 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 /// Coarse resolution: these tests look at the UI, not at the geometry.
-const RES: Resolution = Resolution {
+pub(crate) const RES: Resolution = Resolution {
     rings_per_height: 24.0,
     transition_rows: 4,
 };
@@ -31,7 +31,7 @@ fn options(name: &str) -> Options {
     }
 }
 
-fn job(app: &mut App) -> Job {
+pub(crate) fn job(app: &mut App) -> Job {
     Job {
         gen: app.start_job(false),
         doc: app.doc.clone(),
@@ -42,9 +42,25 @@ fn job(app: &mut App) -> Job {
 }
 
 /// Runs the effects synchronously (rebuilds on this thread).
-fn settle(app: &mut App, effects: Vec<Effect>) {
+pub(crate) fn settle(app: &mut App, effects: Vec<Effect>) {
     for e in effects {
-        if e == Effect::Rebuild {
+        if let Effect::Check(edit) = e {
+            let j = Job {
+                gen: app.start_job(false),
+                doc: app.doc.clone(),
+                base: app.base.clone(),
+                res: RES,
+                task: Task::Check { edit: edit.clone() },
+            };
+            let result = worker::build(&j).map(Box::new);
+            let more = app.on_outcome(Outcome::Checked {
+                gen: j.gen,
+                edit: Box::new(edit),
+                result,
+                elapsed: Duration::ZERO,
+            });
+            settle(app, more);
+        } else if e == Effect::Rebuild {
             let j = job(app);
             let result = worker::build(&j).map(Box::new);
             let more = app.on_outcome(Outcome::Built {
@@ -58,7 +74,7 @@ fn settle(app: &mut App, effects: Vec<Effect>) {
 }
 
 /// The bundled female, opened at a fresh path and built once.
-fn built(name: &str) -> App {
+pub(crate) fn built(name: &str) -> App {
     let o = options(name);
     let _ = std::fs::remove_file(&o.path);
     let _ = autosave::remove(&o.path);
@@ -68,18 +84,18 @@ fn built(name: &str) -> App {
     app
 }
 
-fn key(app: &mut App, c: KeyCode) {
+pub(crate) fn key(app: &mut App, c: KeyCode) {
     let e = app.on_key(KeyEvent::new(c, KeyModifiers::NONE));
     settle(app, e);
 }
 
-fn typed(app: &mut App, s: &str) {
+pub(crate) fn typed(app: &mut App, s: &str) {
     for c in s.chars() {
         key(app, KeyCode::Char(c));
     }
 }
 
-fn screen(app: &App) -> String {
+pub(crate) fn screen(app: &App) -> String {
     let mut t = Terminal::new(TestBackend::new(160, 48)).expect("terminal");
     let mut cache = PreviewCache::default();
     t.draw(|f| draw(f, app, &mut cache)).expect("draws");
@@ -95,7 +111,7 @@ fn screen(app: &App) -> String {
 }
 
 /// Moves the parameter selection to the row labelled `label`.
-fn to_row(app: &mut App, label: &str) {
+pub(crate) fn to_row(app: &mut App, label: &str) {
     app.focus = Focus::Params;
     let i = app
         .rows()

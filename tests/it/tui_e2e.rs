@@ -242,3 +242,76 @@ fn tui_e2e_sigkill_then_recovery_keeps_every_completed_edit() {
     assert!(summaries[0].contains("1.1"), "{summaries:?}");
     assert!(summaries[1].contains("0.95"), "{summaries:?}");
 }
+
+#[test]
+fn tui_e2e_add_part_key_section_prop_then_export_equals_character_build() {
+    if !have_tmux() {
+        return;
+    }
+    let dir = tmpdir("tui-e2e-cmd");
+    let doc = dir.join("char.json");
+    let _ = std::fs::remove_file(&doc);
+    let _ = std::fs::remove_file(dir.join("char.json.autosave"));
+    let svg = super::tui_commands::tail_svg(&dir);
+    let s = Session::start("cmd", &doc);
+    s.wait_for("rebuilt", Some("rebuilding"));
+    // a missing file: refused, the prompt stays open
+    s.keys(&["a"]);
+    s.wait_for("add part from profile:", None);
+    s.literal(&format!("{}/nope.svg", dir.display()));
+    s.keys(&["Enter"]);
+    s.wait_for("No such file", None);
+    s.keys(&["Escape", "a"]);
+    s.literal(&svg.display().to_string());
+    s.keys(&["Enter"]);
+    s.wait_for("added part 'tail'", None);
+    s.wait_for("rebuilt", Some("rebuilding"));
+    // a key section of the torso (the first part, selected)
+    s.keys(&["x"]);
+    s.literal("1.0 0.12 0.09");
+    s.keys(&["Enter"]);
+    s.wait_for("key section of 'torso'", None);
+    s.wait_for("rebuilt", Some("rebuilding"));
+    s.keys(&["p"]);
+    s.literal(&format!(
+        "{}/data/conv/blob.json ball 0.1 0.5 1.0 0.3",
+        env!("CARGO_MANIFEST_DIR")
+    ));
+    s.keys(&["Enter"]);
+    s.wait_for("attached prop 'ball'", None);
+    s.wait_for("rebuilt", Some("rebuilding"));
+    s.keys(&["e"]);
+    s.wait_for("export to:", None);
+    s.keys(&["Enter"]);
+    s.wait_for("exported", None);
+    s.keys(&["s"]);
+    s.wait_for("saved", None);
+    s.keys(&["q"]);
+    let t0 = Instant::now();
+    while !s.gone() {
+        assert!(t0.elapsed() < PATIENCE, "did not quit:\n{}", s.screen());
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let saved = CharacterDoc::load(&doc).expect("the document was saved");
+    assert_eq!(saved.removed_parts.len(), 1);
+    assert_eq!(saved.props.len(), 1);
+    let reference = dir.join("reference.glb");
+    let out = pdesculpt(&[
+        "character",
+        "build",
+        doc.to_str().expect("utf-8"),
+        "-o",
+        reference.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let a = std::fs::read(dir.join("char.glb")).expect("the TUI exported");
+    let b = std::fs::read(&reference).expect("character build wrote");
+    assert!(
+        a == b,
+        "the TUI's GLB differs from `character build` of the saved document"
+    );
+}

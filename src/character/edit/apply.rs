@@ -90,6 +90,33 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 message: format!("force: {err}"),
             })
         }
+        Edit::ForceRegion {
+            u, theta, force, a, ..
+        } => {
+            param(e, "u[0]", u[0], true, "finite")?;
+            param(e, "u[1]", u[1], u[1] > u[0], "u[1] > u[0]")?;
+            param(e, "theta[0]", theta[0], true, "finite")?;
+            let span = theta[1] - theta[0];
+            param(
+                e,
+                "theta[1]",
+                theta[1],
+                span > 0.0 && span <= super::force4::THETA_SPAN_MAX,
+                "theta[0] < theta[1] <= theta[0] + 2 pi (the curve must enclose a region of the part)",
+            )?;
+            param(
+                e,
+                "a",
+                *a,
+                (A_FORCE_MIN..=A_FORCE_MAX).contains(a),
+                &format!("a shape parameter in [{A_FORCE_MIN}, {A_FORCE_MAX}]"),
+            )?;
+            force.validate().map_err(|err| EditError::Invalid {
+                op: e.op(),
+                part: e.part().unwrap_or("").into(),
+                message: format!("force: {err}"),
+            })
+        }
         Edit::Boundary {
             curve,
             tangent,
@@ -240,7 +267,7 @@ pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditErro
             }
             Ok(())
         }
-        Edit::Force { u, .. } => {
+        Edit::Force { u, .. } | Edit::ForceRegion { u, .. } => {
             let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
             if u[0] < u0 || u[1] > u1 {
                 return Err(EditError::Invalid {
@@ -454,8 +481,10 @@ pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError
         message: err.to_string(),
     })?;
     match e {
-        Edit::Force { .. } => {
-            super::mesh::force_field(e)?;
+        Edit::Force { .. } | Edit::ForceRegion { .. } => {
+            if let Some(f) = super::force4::field_of(e) {
+                f?;
+            }
         }
         Edit::Plate { centre, radius, .. } => {
             let d = super::mesh::distance_to_part(&built, *centre);

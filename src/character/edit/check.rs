@@ -50,6 +50,77 @@ pub fn sample_force(p: &PartSpec, push: [f64; 3]) -> Edit {
     }
 }
 
+/// A 4-sided force edit on a part: an area force in the middle of the
+/// patch inside the rectangle `u` in the middle half of the part's range by
+/// `theta` in `[theta_a, theta_a + 1.2]`, pushing along `p`.
+pub fn sample_force_region(p: &PartSpec, theta_a: f64, push: [f64; 3]) -> Edit {
+    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
+    Edit::ForceRegion {
+        part: p.name.clone(),
+        u: [u0 + 0.25 * (u1 - u0), u0 + 0.75 * (u1 - u0)],
+        theta: [theta_a, theta_a + 1.2],
+        force: Force {
+            kind: ForceKind::Area {
+                u0: 0.2,
+                u1: 0.8,
+                v0: 0.25,
+                v1: 0.75,
+            },
+            p: push,
+        },
+        a: 1.0,
+    }
+}
+
+/// Samples per edge of the 4-sided force checks.
+const EDGE: usize = 64;
+
+/// The 4-sided force checks: `(c0, c1, outside)` on the curve (the
+/// rectangle's edges) and off it, each divided by the peak displacement.
+fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
+    let Some(Ok((u, field))) = super::field_of(e) else {
+        return None;
+    };
+    let super::ForceField::Four { patch, theta } = &field else {
+        return None;
+    };
+    let (mut peak, mut c0, mut c1) = (0.0f64, 0.0f64, 0.0f64);
+    for i in 0..=EDGE {
+        let t = i as f64 / EDGE as f64;
+        for (s, v) in [(0.0, t), (1.0, t), (t, 0.0), (t, 1.0)] {
+            c0 = c0.max(norm(patch.point(s, v)));
+            c1 = c1
+                .max(norm(patch.derivative(s, v, 1, 0)))
+                .max(norm(patch.derivative(s, v, 0, 1)));
+        }
+        for j in 1..EDGE {
+            peak = peak.max(norm(patch.point(t, j as f64 / EDGE as f64)));
+        }
+    }
+    // outside: the field on the part's parameter grid (u over twice the
+    // range, every angle) where the point is off the open rectangle
+    let d = crate::sketch::build::Displacement {
+        part: e.part()?.to_string(),
+        u,
+        field: field.clone(),
+    };
+    let (l, w) = (u[1] - u[0], theta[1] - theta[0]);
+    let mut outside = 0.0f64;
+    for i in 0..=4 * EDGE {
+        let uu = u[0] - 0.5 * l + 2.0 * l * i as f64 / (4 * EDGE) as f64;
+        for j in 0..4 * EDGE {
+            let th = theta[0] - PI + 2.0 * PI * j as f64 / (4 * EDGE) as f64;
+            let inside =
+                uu > u[0] && uu < u[1] && super::force4::angle_coordinate(*theta, th).is_some();
+            if !inside {
+                outside = outside.max(norm(d.at(uu, th)));
+            }
+        }
+    }
+    let _ = w;
+    (peak > 0.0).then_some((c0 / peak, c1 / peak, outside / peak))
+}
+
 fn part<'a>(parts: &'a [PartSpec], name: &str) -> Option<&'a PartSpec> {
     parts.iter().find(|p| p.name == name)
 }
@@ -79,6 +150,49 @@ fn grid_error(
         }
     }
     worst
+}
+
+/// Vertices the 4-sided force moves outside its part's group (NaN when it
+/// moves none at all).
+fn force4_mesh(doc: &CharacterDoc, e: &Edit) -> f64 {
+    let mut d = doc.clone();
+    if d.push_edit(e.clone()).is_err() {
+        return f64::NAN;
+    }
+    let (Ok(a), Ok(b)) = (
+        build_document(doc, Path::new("."), CHECK_RES, false),
+        build_document(&d, Path::new("."), CHECK_RES, false),
+    ) else {
+        return f64::NAN;
+    };
+    let (ma, mb) = (&a.model.mesh, &b.model.mesh);
+    if ma.triangles != mb.triangles || ma.positions.len() != mb.positions.len() {
+        return f64::NAN;
+    }
+    let Some(g) = ma.groups.iter().position(|n| Some(n.as_str()) == e.part()) else {
+        return f64::NAN;
+    };
+    let mut in_part = vec![false; ma.positions.len()];
+    for (t, tr) in ma.triangles.iter().enumerate() {
+        if ma.tri_group[t] as usize == g {
+            tr.iter().for_each(|&v| in_part[v as usize] = true);
+        }
+    }
+    let (mut inside, mut outside) = (0usize, 0usize);
+    for (i, (p, q)) in ma.positions.iter().zip(&mb.positions).enumerate() {
+        if p != q {
+            if in_part[i] {
+                inside += 1;
+            } else {
+                outside += 1;
+            }
+        }
+    }
+    if inside == 0 {
+        f64::NAN
+    } else {
+        outside as f64
+    }
 }
 
 fn differing(a: &Mesh, b: &Mesh) -> f64 {
@@ -175,6 +289,24 @@ pub fn checks() -> Vec<Check> {
     ));
     out.push(c("sec 5.1", "force_clamped_c1", Kind::Boundary, m.1, tol::SOLVE).note(
         "force edit on the torso: u-derivative of the displacement at both ends of the range / peak displacement (C1 to the unedited part)",
+    ));
+
+    // 4-sided force: the displacement and both first derivatives vanish on
+    // the closed curve, and it is zero outside it
+    let f4 = sample_force_region(torso, 0.2, [0.0, 0.0, 5.0]);
+    let m = force4_measures(&f4).unwrap_or((f64::NAN, f64::NAN, f64::NAN));
+    out.push(c("sec 5.1 eq 10", "force4_clamped_c0", Kind::Boundary, m.0, tol::ROUNDING).note(
+        "4-sided force edit on the torso (pde4 4-sided Galerkin patch inside the (u, theta) rectangle, area force): largest displacement on the closed curve (4 x 65 samples) / peak displacement",
+    ));
+    out.push(c("sec 5.1 eq 10", "force4_clamped_c1", Kind::Boundary, m.1, tol::ROUNDING).note(
+        "4-sided force edit: largest first derivative (s and v) of the displacement on the closed curve / peak displacement (the edited part is C1 across the curve)",
+    ));
+    out.push(c("sec 5.1", "force4_outside", Kind::Threshold, m.2, 0.0).note(
+        "4-sided force edit: largest displacement at 257 x 256 part-parameter samples off the open rectangle (u over twice its range, every angle) / peak (exactly zero)",
+    ));
+    let moved_elsewhere = force4_mesh(&doc, &f4);
+    out.push(c("sec 5.1", "force4_mesh_local", Kind::Threshold, moved_elsewhere, 0.0).note(
+        "4-sided force edit on the female: vertices moved outside the torso's group (the edit did move torso vertices; NaN if not)",
     ));
 
     // GEC transforms of all the torso's sections equal the same transform

@@ -48,19 +48,18 @@ pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
     })
 }
 
-/// The displacement fields of the force edits among `edits`, in order.
+/// The displacement fields of the force edits (2- and 4-sided) among
+/// `edits`, in order.
 pub fn displacements(edits: &[Edit]) -> Result<Vec<Displacement>, EditError> {
     edits
         .iter()
-        .filter(|e| matches!(e, Edit::Force { .. }))
-        .map(|e| {
-            let Edit::Force { part, u, .. } = e else {
-                unreachable!("filtered")
-            };
-            Ok(Displacement {
-                part: part.clone(),
-                u: *u,
-                field: force_field(e)?,
+        .filter_map(|e| {
+            super::force4::field_of(e).map(|f| {
+                f.map(|(u, field)| Displacement {
+                    part: e.part().unwrap_or("").to_string(),
+                    u,
+                    field,
+                })
             })
         })
         .collect()
@@ -83,71 +82,114 @@ pub fn distance_to_part(p: &PartSurface, c: [f64; 3]) -> f64 {
     best
 }
 
-/// Applies the plate edits among `edits` to the built mesh, in order: the
-/// region is the part group's vertices within the radius, bent as a clamped
-/// plate (mesh-edge boundary, harmonic disk mapping) scaled so that the
-/// peak displacement is the edit's `d`.
-pub fn apply_plates(mesh: &mut Mesh, edits: &[Edit]) -> Result<(), EditError> {
+/// Applies the mesh-level edits among `edits` to the built mesh, in log
+/// order: plate bendings ([`Edit::Plate`]) and SASM features
+/// ([`Edit::Sasm`], [`Edit::SasmAux`], on `parts`, the built part surfaces)
+/// interleaved as the log has them (a SASM feature keeps what an earlier
+/// plate or force did to its part: it adds its height to the vertices'
+/// current positions).
+pub fn apply_mesh_edits(
+    mesh: &mut Mesh,
+    parts: &[PartSurface],
+    edits: &[Edit],
+) -> Result<(), EditError> {
     for e in edits {
-        let Edit::Plate {
-            part,
-            centre,
-            radius,
-            d,
-        } = e
-        else {
-            continue;
-        };
-        let invalid = |m: String| EditError::Invalid {
-            op: e.op(),
-            part: part.clone(),
-            message: m,
-        };
-        let g = mesh
-            .groups
-            .iter()
-            .position(|n| n == part)
-            .ok_or_else(|| invalid("the mesh has no group of this part".into()))?
-            as u32;
-        let mut inside = vec![false; mesh.positions.len()];
-        for (t, tr) in mesh.triangles.iter().enumerate() {
-            if mesh.tri_group[t] == g {
-                for &v in tr {
-                    inside[v as usize] = dist(mesh.positions[v as usize], *centre) < *radius;
+        match e {
+            Edit::Plate { .. } => apply_plate(mesh, e)?,
+            Edit::Sasm(_) | Edit::SasmAux(_) => {
+                let invalid = |m: String| EditError::Invalid {
+                    op: e.op(),
+                    part: e.part().unwrap_or("").into(),
+                    message: m,
+                };
+                if let Some(f) = crate::sasm::edit::feature_of(e, parts) {
+                    let f = f.map_err(|err| invalid(err.to_string()))?;
+                    let p = parts
+                        .iter()
+                        .find(|p| p.name == f.part)
+                        .ok_or_else(|| invalid("the part is not built".into()))?;
+                    crate::sasm::apply_feature(mesh, p, &f)
+                        .map_err(|err| invalid(err.to_string()))?;
                 }
             }
+            _ => {}
         }
-        let region: Vec<u32> = (0..inside.len())
-            .filter(|&i| inside[i])
-            .map(|i| i as u32)
-            .collect();
-        let opts = RegionOptions {
-            boundary: BoundaryMethod::MeshEdges,
-            mapping: MappingMethod::Harmonic,
-            ..RegionOptions::default()
-        };
-        let plate = PlateDeformer::new(mesh, &region, &opts)
-            .map_err(|err| invalid(format!("plate region ({} vertices): {err}", region.len())))?;
-        let peak = plate.weights().iter().copied().fold(0.0, f64::max);
-        if !(peak.is_finite() && peak > 0.0) {
-            return Err(invalid(format!(
-                "the plate region ({} vertices) has no interior vertex to move",
-                region.len()
-            )));
+    }
+    Ok(())
+}
+
+/// Applies the plate edits among `edits` to the built mesh, in order (the
+/// SASM edits left out: [`apply_mesh_edits`] applies both).
+pub fn apply_plates(mesh: &mut Mesh, edits: &[Edit]) -> Result<(), EditError> {
+    for e in edits {
+        if matches!(e, Edit::Plate { .. }) {
+            apply_plate(mesh, e)?;
         }
-        let q = [d[0] / peak, d[1] / peak, d[2] / peak];
-        plate
-            .apply(&mut mesh.positions, q)
-            .map_err(|err| invalid(err.to_string()))?;
-        if plate
-            .region()
-            .iter()
-            .any(|&v| mesh.positions[v as usize].iter().any(|x| !x.is_finite()))
-        {
-            return Err(invalid(format!(
-                "the motion d = {d:?} moves vertices to non-finite positions; reduce it"
-            )));
+    }
+    Ok(())
+}
+
+/// One plate edit: the region is the part group's vertices within the
+/// radius, bent as a clamped plate (mesh-edge boundary, harmonic disk
+/// mapping) scaled so that the peak displacement is the edit's `d`.
+fn apply_plate(mesh: &mut Mesh, e: &Edit) -> Result<(), EditError> {
+    let Edit::Plate {
+        part,
+        centre,
+        radius,
+        d,
+    } = e
+    else {
+        return Ok(());
+    };
+    let invalid = |m: String| EditError::Invalid {
+        op: e.op(),
+        part: part.clone(),
+        message: m,
+    };
+    let g = mesh
+        .groups
+        .iter()
+        .position(|n| n == part)
+        .ok_or_else(|| invalid("the mesh has no group of this part".into()))? as u32;
+    let mut inside = vec![false; mesh.positions.len()];
+    for (t, tr) in mesh.triangles.iter().enumerate() {
+        if mesh.tri_group[t] == g {
+            for &v in tr {
+                inside[v as usize] = dist(mesh.positions[v as usize], *centre) < *radius;
+            }
         }
+    }
+    let region: Vec<u32> = (0..inside.len())
+        .filter(|&i| inside[i])
+        .map(|i| i as u32)
+        .collect();
+    let opts = RegionOptions {
+        boundary: BoundaryMethod::MeshEdges,
+        mapping: MappingMethod::Harmonic,
+        ..RegionOptions::default()
+    };
+    let plate = PlateDeformer::new(mesh, &region, &opts)
+        .map_err(|err| invalid(format!("plate region ({} vertices): {err}", region.len())))?;
+    let peak = plate.weights().iter().copied().fold(0.0, f64::max);
+    if !(peak.is_finite() && peak > 0.0) {
+        return Err(invalid(format!(
+            "the plate region ({} vertices) has no interior vertex to move",
+            region.len()
+        )));
+    }
+    let q = [d[0] / peak, d[1] / peak, d[2] / peak];
+    plate
+        .apply(&mut mesh.positions, q)
+        .map_err(|err| invalid(err.to_string()))?;
+    if plate
+        .region()
+        .iter()
+        .any(|&v| mesh.positions[v as usize].iter().any(|x| !x.is_finite()))
+    {
+        return Err(invalid(format!(
+            "the motion d = {d:?} moves vertices to non-finite positions; reduce it"
+        )));
     }
     Ok(())
 }
@@ -213,6 +255,7 @@ impl Session {
         }
         let active = self.doc.active_edits();
         let err = |e: EditError| SketchError::Document(e.to_string());
+        super::check_order(&self.doc.transitions, active).map_err(err)?;
         let edited = super::apply_to_parts(&self.doc.parts, active).map_err(err)?;
         let disp = displacements(active).map_err(err)?;
         let mut model = build_model_with(
@@ -223,7 +266,7 @@ impl Session {
             &disp,
             Some(&mut self.cache),
         )?;
-        apply_plates(&mut model.mesh, active).map_err(err)?;
+        apply_mesh_edits(&mut model.mesh, &model.parts, active).map_err(err)?;
         Ok(model)
     }
 }

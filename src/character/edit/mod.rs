@@ -35,8 +35,12 @@
 //!   clamped at both range ends, is *added to the part as a displacement*.
 //!   It vanishes with its u-derivative at the range ends, so the part stays
 //!   in place and C1 there, and the part's ends (where transitions join)
-//!   never move. The chain is not re-solved. Not done: 4-sided forces inside
-//!   a closed curve on the part.
+//!   never move. The chain is not re-solved.
+//! * [`Edit::ForceRegion`] (PDESM 4-sided force, sec 5.1, eqs 10-15): the
+//!   pde4 4-sided patch inside the closed curve bounding a rectangle
+//!   `[u_a, u_b] x [theta_a, theta_b]` of the part's parameter space,
+//!   clamped on all four edges, added to the part as a displacement that
+//!   vanishes with its first derivatives on the curve ([`force4`]).
 //! * [`Edit::Boundary`] (PDESM boundary curves and tangents, sec 5.1): a new
 //!   boundary curve is a new end section (the transition at that end is
 //!   rebuilt from it); a boundary tangent change moves the sections within
@@ -46,8 +50,19 @@
 //!   boundary solution: a part is one C2 chain, not a 2-sided pde4 patch;
 //!   changing it through its sections keeps the transitions C1.
 //! * [`Edit::Plate`] (paper 001, the mesh level of 000 Fig 12): the C1
-//!   plate bending of a region of the built mesh, after every PDE-level
-//!   edit.
+//!   plate bending of a region of the built mesh.
+//! * [`Edit::Sasm`], [`Edit::SasmAux`] (000 sec 5.3): a feature grown on
+//!   the built mesh (`crate::sasm`).
+//!
+//! # Order
+//! The log is applied in order: PDE-level edits to the part surfaces (the
+//! mesh is then built from them), mesh-level edits (plate, SASM) to the
+//! built mesh, interleaved as the log has them ([`apply_mesh_edits`]; a
+//! SASM feature adds its height to the mesh as it is, keeping an earlier
+//! plate or force). A PDE-level edit after a mesh-level edit of the same
+//! part (or of a child of a transition it belongs to) would rebuild the
+//! mesh under that edit: [`check_order`] refuses such a log when the edit is
+//! pushed (and when a hand-written document is built).
 //!
 //! Every edit names its target part ([`Edit::part`]) and validates its
 //! parameters: finite numbers, ranges named in [`EditError::Parameter`], a
@@ -57,10 +72,14 @@
 
 mod apply;
 pub mod check;
+pub mod force4;
 mod mesh;
 
 pub use apply::{apply_to_parts, section_gec, validate_params};
-pub use mesh::{apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS};
+pub use force4::{field_of, force_region_field, ForceField, FORCE4_TERMS};
+pub use mesh::{
+    apply_mesh_edits, apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS,
+};
 
 use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
@@ -92,6 +111,22 @@ pub enum Edit {
         #[serde(default = "one")]
         a: f64,
     },
+    /// PDESM 4-sided sculpting force (sec 5.1, eqs 10-15): the pde4
+    /// 4-sided patch inside the closed curve bounding the part-parameter
+    /// rectangle `u = [u_a, u_b]` (inside the part) by `theta = [theta_a,
+    /// theta_b]` (radians, `0 < theta_b - theta_a <= 2 pi`), clamped on the
+    /// whole curve, with `force` in patch coordinates (`s` across the u
+    /// range, `v` across the angle range, both in `[0, 1]`) and shape
+    /// parameters `a` (default 1); its solution is added to the part as a
+    /// displacement, zero outside the curve ([`force4`]).
+    ForceRegion {
+        part: String,
+        u: [f64; 2],
+        theta: [f64; 2],
+        force: crate::pde4::Force,
+        #[serde(default = "one")]
+        a: f64,
+    },
     /// PDESM boundary change (sec 5.1) at one end of a part: a new boundary
     /// `curve` (the end section's shape, in its frame) and/or a change
     /// `tangent` of the end's u-tangent (model units per unit u), made by
@@ -111,7 +146,7 @@ pub enum Edit {
     /// Mesh-level C1 plate bending (paper 001) on the built mesh: the region
     /// is the part's vertices within `radius` of `centre`, bent as a clamped
     /// plate so that its peak displacement is `d` (the cursor motion).
-    /// Applied after every PDE-level edit, in log order.
+    /// Applied to the built mesh, in log order with the SASM edits.
     Plate {
         part: String,
         centre: [f64; 3],
@@ -120,7 +155,8 @@ pub enum Edit {
     },
     /// SASM sketch on the model (000 sec 5.3, Fig 10a): a closed stroke on
     /// the part plus one or two profile strokes grow a feature inside the
-    /// curve (`crate::sasm`; applied to the built mesh after the plates).
+    /// curve (`crate::sasm`; applied to the built mesh, in log order with
+    /// the plate edits).
     Sasm(crate::sasm::SasmSpec),
     /// SASM auxiliary line (Fig 10b): half an interface, mirrored, plus the
     /// main profile (`crate::sasm::AuxSpec`).
@@ -206,6 +242,14 @@ pub enum EditError {
         part: String,
         message: String,
     },
+    #[error("edit {index} ({summary}) changes the PDE surface of part '{part}' after edit {earlier} ({earlier_summary}) changed its built mesh: a PDE-level edit rebuilds the mesh of its part (and of the children of its transitions), so it cannot follow a mesh-level edit (plate, sasm) there; undo the mesh-level edit first")]
+    Order {
+        index: usize,
+        summary: String,
+        part: String,
+        earlier: usize,
+        earlier_summary: String,
+    },
     #[error("nothing to undo (the cursor is at the start of the log)")]
     NothingToUndo,
     #[error("nothing to redo (the cursor is at the end of the log, {len} edits)")]
@@ -225,11 +269,18 @@ impl Edit {
             Edit::ShapeParameter { part, .. }
             | Edit::GecTransform { part, .. }
             | Edit::Force { part, .. }
+            | Edit::ForceRegion { part, .. }
             | Edit::Boundary { part, .. }
             | Edit::Plate { part, .. } => Some(part),
             Edit::Sasm(s) => Some(&s.part),
             Edit::SasmAux(s) => Some(&s.part),
         }
+    }
+
+    /// Whether the edit acts on the built mesh (plate, SASM) rather than on
+    /// the part's PDE surface.
+    pub fn mesh_level(&self) -> bool {
+        matches!(self, Edit::Plate { .. } | Edit::Sasm(_) | Edit::SasmAux(_))
     }
 
     /// The operation's name (the `op` tag).
@@ -238,6 +289,7 @@ impl Edit {
             Edit::ShapeParameter { .. } => "shape_parameter",
             Edit::GecTransform { .. } => "gec_transform",
             Edit::Force { .. } => "force",
+            Edit::ForceRegion { .. } => "force_region",
             Edit::Boundary { .. } => "boundary",
             Edit::Plate { .. } => "plate",
             Edit::Sasm(_) => "sasm",
@@ -277,6 +329,16 @@ impl Edit {
             Edit::Force { part, u, force, a } => format!(
                 "force {:?} p = ({}, {}, {}) on {part} over u in [{}, {}], a = {a}",
                 force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1]
+            ),
+            Edit::ForceRegion {
+                part,
+                u,
+                theta,
+                force,
+                a,
+            } => format!(
+                "4-sided force {:?} p = ({}, {}, {}) on {part} inside u in [{}, {}], theta in [{}, {}], a = {a}",
+                force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1], theta[0], theta[1]
             ),
             Edit::Boundary {
                 part,
@@ -345,6 +407,9 @@ impl CharacterDoc {
         }
         let mut parts = apply_to_parts(&self.parts, self.active_edits())?;
         validate_params(&e)?;
+        let mut log = self.active_edits().to_vec();
+        log.push(e.clone());
+        check_order(&self.transitions, &log)?;
         apply::apply_one(&mut parts, &e)?;
         apply::check_builds(&parts, &e)?;
         self.edits.truncate(self.cursor);
@@ -372,6 +437,50 @@ impl CharacterDoc {
         self.cursor += 1;
         Ok(())
     }
+}
+
+/// Refuses a log whose order cannot be honoured: the log is applied in
+/// order, except that every PDE-level edit (shape parameter, GEC
+/// transform, force, boundary) is applied to the part surfaces before the
+/// mesh is built and the mesh-level edits (plate, SASM) act on it in log
+/// order. That equals applying the whole log in order as long as no
+/// PDE-level edit follows a mesh-level edit of a part whose built mesh it
+/// changes (the same part, or a child of a transition whose parent or
+/// another child it edits); such a log is refused.
+pub fn check_order(
+    transitions: &[crate::character::doc::TransitionSpec],
+    edits: &[Edit],
+) -> Result<(), EditError> {
+    // the mesh of part `q` depends on part `p`'s surface when they are the
+    // same, or `q` is a child of a transition whose parent or another
+    // child is `p` (a child's ring sampling follows its parent and the
+    // seams between siblings; a parent's does not follow its children)
+    let touches = |p: &str, q: &str| {
+        p == q
+            || transitions.iter().any(|t| {
+                t.children.iter().any(|c| c == q)
+                    && (t.parent == p || t.children.iter().any(|c| c == p))
+            })
+    };
+    for (i, e) in edits.iter().enumerate() {
+        if e.mesh_level() {
+            continue;
+        }
+        let Some(p) = e.part() else { continue };
+        if let Some(j) = edits[..i]
+            .iter()
+            .position(|m| m.mesh_level() && m.part().is_some_and(|q| touches(p, q)))
+        {
+            return Err(EditError::Order {
+                index: i,
+                summary: e.summary(),
+                part: p.into(),
+                earlier: j,
+                earlier_summary: edits[j].summary(),
+            });
+        }
+    }
+    Ok(())
 }
 
 pub(crate) fn unknown_part(parts: &[PartSpec], part: &str) -> EditError {

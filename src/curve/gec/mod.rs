@@ -38,8 +38,11 @@
 //! integrands of the centroid once the sample count exceeds $3J$; spectrally
 //! accurate for the arc length).
 //!
-//! Submodules: [`fit`] (least squares, FFT, parameter choices, automatic
-//! $J$), [`metrics`] (ErM, ErA of paper 002 Table 1, defined precisely
+//! Submodules: [`fit`] (least squares, parameter choices, automatic $J$),
+//! [`correct`] (parameter correction: the default fit's best geometric
+//! error), [`section`] (input validation and the plane), [`fft`] (the
+//! uniform-angle path), [`frame`], [`paper`] (the printed orderings and
+//! literal forms), [`metrics`] (ErM, ErA of paper 002 Table 1, defined precisely
 //! there), [`transform`] (coefficient-space manipulation, paper 000 sec 5.2),
 //! [`study`] (the MakeHuman cross-section study), [`check`].
 //!
@@ -58,24 +61,30 @@
 //! [`repeated_points`] (non-consecutive repeats), [`strip_closing_copy`].
 
 pub mod check;
+pub mod correct;
+pub mod fft;
 pub mod fit;
+pub mod frame;
 pub mod input;
 pub mod metrics;
+pub mod paper;
 pub mod pipeline;
 pub mod samples;
+pub mod section;
 pub mod study;
 pub mod transform;
 
+pub use correct::Correction;
 pub use fit::{
     check_closed, fit, fit_auto, fit_fft, repeated_points, strip_closing_copy, FitOptions,
     FitReport, FrameChoice, Param, Solver,
 };
+pub use frame::{Frame, FRAME_TOL};
 pub use metrics::{errors, FitErrors};
+pub use paper::{paper_000_literal, paper_002_literal};
 
 use crate::curve::Fourier3;
 use crate::jet::{Jet8, Real};
-use crate::mesh::{dot, norm, scale, sub};
-use crate::surface::cross;
 use std::f64::consts::PI;
 
 /// Errors of the gec family.
@@ -119,94 +128,6 @@ pub enum GecError {
     Malformed(String),
     #[error(transparent)]
     Limit(#[from] crate::limits::LimitError),
-}
-
-/// Where a GEC lives in space: origin and two orthonormal in-plane axes.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Frame {
-    pub origin: [f64; 3],
-    pub e1: [f64; 3],
-    pub e2: [f64; 3],
-}
-
-/// Orthonormality tolerance of [`Frame::new`].
-pub const FRAME_TOL: f64 = 1e-9;
-
-impl Frame {
-    /// The papers' placement: the plane $z = z_c$ with axes X and Y.
-    pub fn z_plane(z_c: f64) -> Frame {
-        Frame {
-            origin: [0.0, 0.0, z_c],
-            e1: [1.0, 0.0, 0.0],
-            e2: [0.0, 1.0, 0.0],
-        }
-    }
-
-    /// A frame from origin and axes (checked finite and orthonormal).
-    pub fn new(origin: [f64; 3], e1: [f64; 3], e2: [f64; 3]) -> Result<Frame, GecError> {
-        let all = origin.iter().chain(&e1).chain(&e2);
-        if !all.clone().all(|x| x.is_finite()) {
-            return Err(GecError::InvalidFrame("non-finite component".into()));
-        }
-        let err = (norm(e1) - 1.0)
-            .abs()
-            .max((norm(e2) - 1.0).abs())
-            .max(dot(e1, e2).abs());
-        if err > FRAME_TOL {
-            return Err(GecError::InvalidFrame(format!(
-                "axes not orthonormal (error {err:.3e})"
-            )));
-        }
-        Ok(Frame { origin, e1, e2 })
-    }
-
-    /// A frame in the plane through `origin` with normal `normal`; `e1` is the
-    /// projection of `hint` (or of a coordinate axis if `hint` is nearly
-    /// parallel to the normal), `e2 = normal x e1`.
-    pub fn from_normal(
-        origin: [f64; 3],
-        normal: [f64; 3],
-        hint: [f64; 3],
-    ) -> Result<Frame, GecError> {
-        let nn = norm(normal);
-        if !(nn.is_finite() && nn > 0.0) {
-            return Err(GecError::InvalidFrame("zero or non-finite normal".into()));
-        }
-        let n = scale(normal, 1.0 / nn);
-        let candidates = [hint, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]];
-        for h in candidates {
-            let p = sub(h, scale(n, dot(h, n)));
-            let pn = norm(p);
-            if pn.is_finite() && pn > 0.3 * norm(h).max(f64::MIN_POSITIVE) {
-                let e1 = scale(p, 1.0 / pn);
-                let e2 = cross(n, e1);
-                return Frame::new(origin, e1, e2);
-            }
-        }
-        Err(GecError::InvalidFrame("no in-plane axis found".into()))
-    }
-
-    /// Unit normal `e1 x e2`.
-    pub fn normal(&self) -> [f64; 3] {
-        cross(self.e1, self.e2)
-    }
-
-    /// Space point of in-plane coordinates `(x, y)` (generic).
-    pub fn place<T: Real>(&self, x: T, y: T) -> [T; 3] {
-        let mut p = [T::cst(0.0); 3];
-        for k in 0..3 {
-            p[k] = x * self.e1[k] + y * self.e2[k] + self.origin[k];
-        }
-        p
-    }
-
-    /// In-plane coordinates of a space point (orthogonal projection) and its
-    /// signed distance from the plane.
-    pub fn project(&self, p: [f64; 3]) -> ([f64; 2], f64) {
-        let d = sub(p, self.origin);
-        ([dot(d, self.e1), dot(d, self.e2)], dot(d, self.normal()))
-    }
 }
 
 /// A generalized elliptic curve placed in space.
@@ -431,66 +352,6 @@ impl Gec {
         }
     }
 
-    /// Paper 000 eq 16 ordering: `(x_k, y_k)` for `k = 0..=2J`.
-    pub fn to_paper_000(&self) -> (Vec<f64>, Vec<f64>) {
-        let mut xs = vec![self.centre[0]];
-        let mut ys = vec![self.centre[1]];
-        for (cx, cy) in self.x.iter().zip(&self.y) {
-            xs.extend_from_slice(cx);
-            ys.extend_from_slice(cy);
-        }
-        (xs, ys)
-    }
-
-    /// From paper 000 eq 16 ordering: `xs = [x_0, x_1, .., x_2J]`, same for
-    /// `ys`, placed by `frame` (`Frame::z_plane(z_c)` for the paper).
-    pub fn from_paper_000(frame: Frame, xs: &[f64], ys: &[f64]) -> Result<Gec, GecError> {
-        if xs.len() != ys.len() || xs.len() < 3 || xs.len() % 2 == 0 {
-            return Err(GecError::Malformed(format!(
-                "paper 000 needs 2J+1 >= 3 x and y coefficients, got {} and {}",
-                xs.len(),
-                ys.len()
-            )));
-        }
-        let pairs = |c: &[f64]| c[1..].chunks(2).map(|p| [p[0], p[1]]).collect();
-        Gec::new(frame, [xs[0], ys[0]], pairs(xs), pairs(ys))
-    }
-
-    /// Paper 002 eq 1 ordering: `(a_x, b_x, a_y, b_y)` with `a_x = [a_x0..a_xN]`,
-    /// `b_x = [b_x1..b_xN]` (and the same for y).
-    pub fn to_paper_002(&self) -> [Vec<f64>; 4] {
-        let mut ax = vec![self.centre[0]];
-        let mut ay = vec![self.centre[1]];
-        ax.extend(self.x.iter().map(|c| c[0]));
-        ay.extend(self.y.iter().map(|c| c[0]));
-        let bx = self.x.iter().map(|c| c[1]).collect();
-        let by = self.y.iter().map(|c| c[1]).collect();
-        [ax, bx, ay, by]
-    }
-
-    /// From paper 002 eq 1 ordering (see [`Gec::to_paper_002`]).
-    pub fn from_paper_002(
-        frame: Frame,
-        ax: &[f64],
-        bx: &[f64],
-        ay: &[f64],
-        by: &[f64],
-    ) -> Result<Gec, GecError> {
-        let n = bx.len();
-        if ax.len() != n + 1 || ay.len() != n + 1 || by.len() != n || n == 0 {
-            return Err(GecError::Malformed(format!(
-                "paper 002 needs N+1, N, N+1, N coefficients with N >= 1, got {}, {}, {}, {}",
-                ax.len(),
-                bx.len(),
-                ay.len(),
-                by.len()
-            )));
-        }
-        let x = (0..n).map(|i| [ax[i + 1], bx[i]]).collect();
-        let y = (0..n).map(|i| [ay[i + 1], by[i]]).collect();
-        Gec::new(frame, [ax[0], ay[0]], x, y)
-    }
-
     /// The same curve with `j` terms (zero-padded or truncated).
     pub fn with_terms(&self, j: usize) -> Gec {
         let mut g = self.clone();
@@ -498,38 +359,4 @@ impl Gec {
         g.y.resize(j, [0.0; 2]);
         g
     }
-}
-
-/// Paper 000 eq 16 evaluated literally as printed (coefficient arrays
-/// `x_0..x_2J`, `y_0..y_2J`, parameter `v` in `[0, 1]`, plane `z = z_c`).
-pub fn paper_000_literal(xs: &[f64], ys: &[f64], z_c: f64, v: f64) -> [f64; 3] {
-    let jmax = (xs.len().min(ys.len()).saturating_sub(1)) / 2;
-    let mut x = xs.first().copied().unwrap_or(0.0);
-    let mut y = ys.first().copied().unwrap_or(0.0);
-    for j in 1..=jmax {
-        let a = 2.0 * j as f64 * PI * v;
-        x += xs[2 * j - 1] * a.cos() + xs[2 * j] * a.sin();
-        y += ys[2 * j - 1] * a.sin() + ys[2 * j] * a.cos();
-    }
-    [x, y, z_c]
-}
-
-/// Paper 002 eq 1 evaluated literally as printed (`v` in `[0, 2 pi]`).
-pub fn paper_002_literal(
-    ax: &[f64],
-    bx: &[f64],
-    ay: &[f64],
-    by: &[f64],
-    z_c: f64,
-    v: f64,
-) -> [f64; 3] {
-    let n_max = bx.len().min(by.len()).min(ax.len().saturating_sub(1));
-    let mut x = ax.first().copied().unwrap_or(0.0);
-    let mut y = ay.first().copied().unwrap_or(0.0);
-    for n in 1..=n_max {
-        let a = n as f64 * v;
-        x += ax[n] * a.cos() + bx[n - 1] * a.sin();
-        y += ay[n] * a.sin() + by[n - 1] * a.cos();
-    }
-    [x, y, z_c]
 }

@@ -10,6 +10,7 @@
 //! centroid of the box's vertices; of the polylines it cuts, the closed one
 //! whose centroid is nearest to that point is the section.
 
+use super::correct::Correction;
 use super::fit::{fit, FitOptions, FitReport, Param};
 use super::{Frame, Gec, GecError};
 use crate::mesh::slice::slice;
@@ -206,7 +207,9 @@ pub struct StudyRow {
     pub hausdorff_rel: f64,
 }
 
-/// Fits every section with every J and parameter choice.
+/// Fits every section with every J and parameter rule, each rule's angles
+/// as they are ([`Correction::None`]: this compares the rules; the default
+/// fit, which corrects and chooses, is [`correction_study`]'s `after`).
 pub fn run(
     secs: &[BodySection],
     terms: &[usize],
@@ -220,6 +223,7 @@ pub fn run(
                     &s.points,
                     &FitOptions {
                         param: p,
+                        correction: Correction::None,
                         ..FitOptions::new(j)
                     },
                 )?;
@@ -300,4 +304,61 @@ pub fn silhouette_ellipse(frame: Frame, plane_points: &[[f64; 2]]) -> Gec {
         0.5 * (hi[0] - lo[0]),
         0.5 * (hi[1] - lo[1]),
     )
+}
+
+/// One section at one J fitted with and without parameter correction
+/// ([`super::correct`]), the same parameter rule.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct CorrectionRow {
+    pub section: String,
+    pub terms: usize,
+    pub param: &'static str,
+    /// ErM, ErA (data units) without correction.
+    pub erm_before: f64,
+    pub era_before: f64,
+    /// ErM, ErA with correction (the default fit).
+    pub erm_after: f64,
+    pub era_after: f64,
+    /// The section's in-plane diagonal D.
+    pub scale: f64,
+    /// Correction step of the returned fit (0: the rule's angles kept).
+    pub steps: usize,
+}
+
+/// Fits every section with every J under `param`, without and with
+/// parameter correction.
+pub fn correction_study(
+    secs: &[BodySection],
+    terms: &[usize],
+    param: Param,
+) -> Result<Vec<CorrectionRow>, GecError> {
+    let mut rows = Vec::new();
+    for s in secs {
+        for &j in terms {
+            let opts = FitOptions {
+                param,
+                ..FitOptions::new(j)
+            };
+            let before = fit(
+                &s.points,
+                &FitOptions {
+                    correction: Correction::None,
+                    ..opts
+                },
+            )?;
+            let after = fit(&s.points, &opts)?;
+            rows.push(CorrectionRow {
+                section: s.name.clone(),
+                terms: j,
+                param: param.name(),
+                erm_before: before.errors.erm,
+                era_before: before.errors.era,
+                erm_after: after.errors.erm,
+                era_after: after.errors.era,
+                scale: before.errors.scale,
+                steps: after.correction_steps,
+            });
+        }
+    }
+    Ok(rows)
 }

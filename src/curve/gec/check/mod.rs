@@ -2,6 +2,8 @@
 //! refit round trips, FFT against least squares, transforms against
 //! transformed points, and the paper-literal forms of 000 eq 16 and 002 eq 1.
 
+mod correction;
+
 use super::fit::{dft_coefficients, solve};
 pub use super::samples::tilted_gec;
 use super::transform::Bend;
@@ -197,6 +199,7 @@ pub fn checks() -> Vec<Check> {
     refit_checks(&tg, &mut out);
     transform_checks(&tg, &mut out);
     metric_checks(&mut out);
+    correction::correction_checks(&mut out);
     out
 }
 

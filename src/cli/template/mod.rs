@@ -1,4 +1,6 @@
-//! `pdesculpt template fit`: template-based global modeling (000 sec 4.2).
+//! `pdesculpt template fit`: template-based global modeling (000 sec 4.2);
+//! `pdesculpt template tbsm`: template-based shape manipulation (sec 5.4,
+//! [`tbsm`]).
 //!
 //! `template fit --template makehuman|MESH --front F.svg [--side S.svg]
 //! [--sections SECTIONS.json] -o OUT`: writes the deformed template (every
@@ -13,6 +15,8 @@ use pdesculpt::template::sections::SectionSketch;
 use pdesculpt::template::study::makehuman_template;
 use pdesculpt::template::{fit, FitOptions, LevelReport, OnMiss, Sketch, Template};
 use std::path::{Path, PathBuf};
+
+mod tbsm;
 
 const FORMATS: &str = "\
 SECTIONS.json: {\"sections\": [{\"y\": 10.4, \"loops\": [[[x, z], ...], ...]}, ...]}:
@@ -33,6 +37,10 @@ pub enum Command {
     /// Deform a template so its profiles fit sketched ones (low, medium, high level).
     #[command(after_long_help = FORMATS)]
     Fit(FitArgs),
+    /// Template-based shape manipulation (sec 5.4, Fig 11): replace a part's
+    /// elliptic sections by a template part's, or create a part from a profile.
+    #[command(subcommand)]
+    Tbsm(tbsm::TbsmCommand),
 }
 
 #[derive(clap::Args, Debug)]
@@ -82,7 +90,13 @@ fn profile(path: &Path, view: View) -> anyhow::Result<Vec<[f64; 2]>> {
 
 /// Runs a `template` subcommand.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
-    let Command::Fit(a) = args.command;
+    match args.command {
+        Command::Fit(a) => run_fit(a, json),
+        Command::Tbsm(c) => tbsm::run(c, json),
+    }
+}
+
+fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let t0 = std::time::Instant::now();
     io::Format::from_path(&a.output)?;
     let template: Template = if a.template == "makehuman" {

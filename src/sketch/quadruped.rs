@@ -1,0 +1,386 @@
+//! Segmentation of a four-legged animal (body plan `quadruped`).
+//!
+//! **Views and axes.** The model axes follow the views, not the figure: the
+//! primary profile (the "front" file, the view along z, model x-y) holds the
+//! animal's **lateral silhouette**, head toward +x or -x, its legs apart
+//! (2 legs, or all 4 in a walking pose); the secondary profile (the "side"
+//! file, the view along x, model z-y) holds the animal **seen head-on**, its
+//! left and right legs apart in z. The lateral view is the one that shows
+//! the parts apart, as the view from the front does for a humanoid, so it
+//! is the one segmented; svg x is model x in it and model z in the head-on
+//! view, as for every drawing (`--help`).
+//!
+//! **Landmarks** from horizontal slices of the lateral outline, as for a
+//! humanoid ([`super::segment`]): the **leg gaps** are the gap tops in the
+//! lower half (where, going up, two leg intervals merge under the belly);
+//! the **top gaps** are the gap tops of the outline seen upside down in the
+//! upper half: the concave corners where, going down, the tail, the back and
+//! the neck merge into the body. 1 or 3 leg gaps (2 or 4 legs) and 1 or 2 top
+//! gaps (tail and head, or tail, back and head) are accepted; anything else
+//! is an error naming what was found.
+//!
+//! **Parts**, each the slice intervals of a region of heights as for a
+//! humanoid, so each is a C2 pde6 chain with sections perpendicular to its
+//! central curve (`derive::part_from_region`): `body` between the highest
+//! leg gap and the lowest top gap (minus the join bands of half-height
+//! `GAP_FRACTION` x height); the legs below the belly (hanging, closed at the
+//! foot); above the body the tail, the `back` (a dome between tail and neck,
+//! when the outline has one) and `head` (neck and head, closed at the top of
+//! the skull). The head is the higher of the two end parts above the body:
+//! it says which way the animal faces and so which legs are front legs.
+//! **Legs**: with 4, the outer leg of each pair (farthest from the body's
+//! middle) is the near one, seen from +z (the right when the animal faces
+//! +x: `leg_fr`, `leg_br`), the inner one the far one (`leg_fl`, `leg_bl`);
+//! with the head-on view, each takes its depth and z from the head-on
+//! slice's interval on its side of the view's middle. With 2, `leg_f` and
+//! `leg_b`, their depth from the whole head-on slice. The tail is hidden in
+//! the head-on view (circles, like a humanoid's arms).
+//!
+//! **Transitions** (`sketch::transition`): `underside` joins the body's
+//! lower end to the legs (seams through the leg gaps), `topside` its upper
+//! end to tail, back and head (seams through the top gaps). Both cut the
+//! body's end ring where the seam apexes lie along it (`cut_angles`), not
+//! at the humanoid's fixed angles.
+//!
+//! Not supported yet: a tail hanging down (it would be taken as a leg),
+//! cuts, alignment of a tilted drawing (an animal's principal axis does not
+//! say where "up" is).
+
+use super::derive::{check_side_height, part_from_region, Derived};
+use super::poly::{bounds, gap_tops};
+use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION, LANDMARK_SLICES};
+use super::SketchError;
+use crate::character::doc::{
+    BodyPlan, End, KeySection, Level, PartSpec, SectionShape, TransitionSpec,
+};
+
+/// The joins found on an animal's lateral outline.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct QuadLandmarks {
+    pub y_min: f64,
+    pub y_max: f64,
+    /// Tops of the gaps between the legs, by x.
+    pub leg_gaps: Vec<[f64; 2]>,
+    /// Corners between tail, back and neck at the top, by x.
+    pub top_gaps: Vec<[f64; 2]>,
+    /// +1 when the head is toward +x, -1 toward -x.
+    pub facing: f64,
+}
+
+impl QuadLandmarks {
+    pub fn height(&self) -> f64 {
+        self.y_max - self.y_min
+    }
+}
+
+/// Whether an outline is longer than tall: its principal axis
+/// (`align::axes`) is defined and within 45 degrees of horizontal.
+pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
+    let ax = super::align::axes(front);
+    ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
+}
+
+/// Finds the leg gaps and top corners.
+pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
+    let (yr, _) = bounds(front);
+    let mid = 0.5 * (yr[0] + yr[1]);
+    let by_x = |v: &mut Vec<[f64; 2]>| v.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let mut legs: Vec<[f64; 2]> = gap_tops(front, LANDMARK_SLICES)
+        .into_iter()
+        .filter(|t| t.y < mid)
+        .map(|t| [t.x, t.y])
+        .collect();
+    by_x(&mut legs);
+    let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
+    let mut top: Vec<[f64; 2]> = gap_tops(&flipped, LANDMARK_SLICES)
+        .into_iter()
+        .map(|t| [t.x, -t.y])
+        .filter(|t| t[1] > mid)
+        .collect();
+    by_x(&mut top);
+    if legs.len() != 1 && legs.len() != 3 {
+        return Err(SketchError::Segmentation(format!(
+            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); the lateral view must show 2 or 4 legs apart",
+            legs.len(),
+            legs.len() + 1
+        )));
+    }
+    if top.is_empty() || top.len() > 2 {
+        return Err(SketchError::Segmentation(format!(
+            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them)",
+            top.len()
+        )));
+    }
+    Ok(QuadLandmarks {
+        y_min: yr[0],
+        y_max: yr[1],
+        leg_gaps: legs,
+        top_gaps: top,
+        facing: 1.0,
+    })
+}
+
+/// The farthest height from `from` toward `to` where the region still has
+/// an interval (scan, then bisection).
+fn reach(front: &[[f64; 2]], pick: Pick, from: f64, to: f64) -> f64 {
+    let n = 400;
+    let (mut out, mut inside) = (to, from);
+    let mut last = from;
+    for k in 1..=n {
+        let y = from + (to - from) * k as f64 / n as f64;
+        if interval(front, pick, y).is_none() {
+            out = y;
+            inside = last;
+            break;
+        }
+        last = y;
+    }
+    for _ in 0..40 {
+        let m = 0.5 * (out + inside);
+        if interval(front, pick, m).is_some() {
+            inside = m;
+        } else {
+            out = m;
+        }
+    }
+    inside
+}
+
+/// Names of the legs by x, given the facing.
+fn leg_names(n: usize, facing: f64) -> Vec<&'static str> {
+    let names: Vec<&str> = match n {
+        2 => vec!["leg_b", "leg_f"],
+        // outer legs are the near ones (seen from +z): right when facing +x
+        _ => vec!["leg_br", "leg_bl", "leg_fl", "leg_fr"],
+    };
+    if facing > 0.0 {
+        names
+    } else if n == 2 {
+        vec!["leg_f", "leg_b"]
+    } else {
+        vec!["leg_fl", "leg_fr", "leg_br", "leg_bl"]
+    }
+}
+
+/// The regions of a quadruped, body first, then the legs and the parts
+/// above by x. Sets `lm.facing`.
+pub fn regions(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &mut QuadLandmarks,
+) -> Result<Vec<Region>, SketchError> {
+    let g = GAP_FRACTION * lm.height();
+    let big = 1e3 * lm.height();
+    let leg_top = lm.leg_gaps.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
+    let top_low = lm.top_gaps.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
+    let mut out = vec![Region {
+        name: "body".into(),
+        y0: leg_top + g,
+        y1: top_low - g,
+        pick: Pick::CentreIn(-big, big),
+        downward: false,
+        tip: false,
+        shoulder: None,
+        horizontal: true,
+        side: SidePick::Whole,
+    }];
+    // parts above the body, by x
+    let mut xs = vec![-big];
+    xs.extend(lm.top_gaps.iter().map(|p| p[0]));
+    xs.push(big);
+    let mut above = Vec::new();
+    for i in 0..xs.len() - 1 {
+        let pick = Pick::CentreIn(xs[i], xs[i + 1]);
+        let y0 = [i.checked_sub(1), Some(i)]
+            .iter()
+            .flatten()
+            .filter_map(|&j| lm.top_gaps.get(j))
+            .map(|p| p[1])
+            .fold(f64::MIN, f64::max)
+            + g;
+        if interval(front, pick, y0).is_none() {
+            return Err(SketchError::Segmentation(format!(
+                "quadruped: no outline above the corner at y = {:.4}",
+                y0 - g
+            )));
+        }
+        let y1 = reach(front, pick, y0, lm.y_max + g);
+        above.push((pick, y0, y1));
+    }
+    let (first, last) = (above[0].2, above[above.len() - 1].2);
+    lm.facing = if last >= first { 1.0 } else { -1.0 };
+    let mut names = match above.len() {
+        2 => vec!["tail", "head"],
+        _ => vec!["tail", "back", "head"],
+    };
+    if lm.facing < 0.0 {
+        names.reverse();
+    }
+    for ((pick, y0, y1), name) in above.into_iter().zip(names) {
+        out.push(Region {
+            name: name.into(),
+            y0,
+            y1,
+            pick,
+            downward: false,
+            tip: true,
+            shoulder: None,
+            horizontal: true,
+            side: if name == "tail" {
+                SidePick::Hidden
+            } else {
+                SidePick::Whole
+            },
+        });
+    }
+    // legs, by x
+    let mut xs = vec![-big];
+    xs.extend(lm.leg_gaps.iter().map(|p| p[0]));
+    xs.push(big);
+    let n = xs.len() - 1;
+    let zc = side.map_or(0.0, |s| {
+        let (_, zr) = bounds(s);
+        0.5 * (zr[0] + zr[1])
+    });
+    for (i, name) in leg_names(n, lm.facing).into_iter().enumerate() {
+        let pick = Pick::CentreIn(xs[i], xs[i + 1]);
+        let y1 = [i.checked_sub(1), Some(i)]
+            .iter()
+            .flatten()
+            .filter_map(|&j| lm.leg_gaps.get(j))
+            .map(|p| p[1])
+            .fold(f64::MAX, f64::min)
+            - g;
+        if interval(front, pick, y1).is_none() {
+            return Err(SketchError::Segmentation(format!(
+                "{name}: no outline below its join"
+            )));
+        }
+        let y0 = reach(front, pick, y1, lm.y_min - g);
+        let outer = i == 0 || i + 1 == n;
+        let side_pick = if n == 2 {
+            SidePick::Whole
+        } else if outer {
+            SidePick::CentreIn(zc, big)
+        } else {
+            SidePick::CentreIn(-big, zc)
+        };
+        out.push(Region {
+            name: name.into(),
+            y0,
+            y1,
+            pick,
+            downward: true,
+            tip: true,
+            shoulder: None,
+            horizontal: true,
+            side: side_pick,
+        });
+    }
+    for r in &out {
+        if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
+            return Err(SketchError::Segmentation(format!(
+                "{}: too short ({:.4} between {:.4} and {:.4})",
+                r.name,
+                r.y1 - r.y0,
+                r.y0,
+                r.y1
+            )));
+        }
+    }
+    Ok(out)
+}
+
+/// The body ring's cut angle for a seam apex at `x`: where the ring's e1
+/// coordinate (x for an upright body) reaches the apex, as an angle in
+/// (0, pi) (front cut; the back cut mirrors it).
+fn cut_angle(ring_centre: f64, half_width: f64, x: f64) -> f64 {
+    let c = ((x - ring_centre) / half_width.max(f64::MIN_POSITIVE)).clamp(-0.95, 0.95);
+    c.acos()
+}
+
+fn half_width(p: &PartSpec, end: End) -> (f64, f64) {
+    let s = match end {
+        End::Start => &p.sections[0],
+        End::End => &p.sections[p.sections.len() - 1],
+    };
+    let a = match &s.shape {
+        SectionShape::Circle { r } => *r,
+        SectionShape::Ellipse { a, .. } => *a,
+        SectionShape::Gec { .. } => 0.0,
+    };
+    (s.centre[0], a)
+}
+
+/// Derives a quadruped's parts and transitions from validated,
+/// counter-clockwise outlines (see the module docs).
+pub fn derive(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    sections: &[KeySection],
+    cuts: &[super::cuts::CutPath],
+    level: Level,
+) -> Result<Derived, SketchError> {
+    if let Some((id, _)) = cuts.first() {
+        return Err(SketchError::Cut {
+            id: id.clone(),
+            message: "cuts are not supported for a quadruped yet".into(),
+        });
+    }
+    let mut lm = landmarks(front)?;
+    check_side_height(lm.height(), side)?;
+    let side = if level == Level::Initial { None } else { side };
+    let regs = regions(front, side, &mut lm)?;
+    let mut parts = regs
+        .iter()
+        .map(|r| part_from_region(front, side, r))
+        .collect::<Result<Vec<_>, _>>()?;
+    if level == Level::Final {
+        for k in sections {
+            super::keysection::apply_key_section(&mut parts, k)?;
+        }
+    }
+    let body = &parts[0];
+    let z0 = body.sections[0].centre[2];
+    let z1 = body.sections[body.sections.len() - 1].centre[2];
+    let names = |r: &[Region]| r.iter().map(|r| r.name.clone()).collect::<Vec<_>>();
+    let n_above = lm.top_gaps.len() + 1;
+    let above = names(&regs[1..1 + n_above]);
+    let legs = names(&regs[1 + n_above..]);
+    let (c0, a0) = half_width(body, End::Start);
+    let (c1, a1) = half_width(body, End::End);
+    let transitions = vec![
+        TransitionSpec {
+            name: "underside".into(),
+            parent: "body".into(),
+            parent_end: End::Start,
+            children: legs,
+            seam_apex: lm.leg_gaps.iter().map(|p| [p[0], p[1], z0]).collect(),
+            cut_angles: lm
+                .leg_gaps
+                .iter()
+                .map(|p| cut_angle(c0, a0, p[0]))
+                .collect(),
+        },
+        TransitionSpec {
+            name: "topside".into(),
+            parent: "body".into(),
+            parent_end: End::End,
+            children: above,
+            seam_apex: lm.top_gaps.iter().map(|p| [p[0], p[1], z1]).collect(),
+            cut_angles: lm
+                .top_gaps
+                .iter()
+                .map(|p| cut_angle(c1, a1, p[0]))
+                .collect(),
+        },
+    ];
+    Ok(Derived {
+        plan: BodyPlan::Quadruped,
+        alignment: super::align::Alignment::identity(),
+        landmarks: None,
+        quadruped: Some(lm),
+        parts,
+        transitions,
+    })
+}

@@ -1,0 +1,107 @@
+//! The bundled four-legged animal (body plan quadruped, `sketch::quadruped`).
+
+use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+use pdesculpt::character::doc::{Level, SectionShape};
+use pdesculpt::sketch::check::{bundled, C1_JUMP};
+use pdesculpt::sketch::{build_document, Resolution};
+use std::path::Path;
+
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch");
+
+const PARTS: [&str; 8] = [
+    "body", "tail", "back", "head", "leg_br", "leg_bl", "leg_fl", "leg_fr",
+];
+
+#[test]
+fn every_level_of_the_bundled_animal_is_closed_with_its_parts() {
+    for level in [Level::Initial, Level::Intermediate, Level::Final] {
+        let doc = bundled("animal", level).expect("bundled animal");
+        let b = build_document(&doc, Path::new("."), Resolution::default(), true)
+            .unwrap_or_else(|e| panic!("{level:?}: {e}"));
+        let t = &b.report.topology;
+        assert!(t.watertight && t.manifold && t.oriented, "{level:?}: {t:?}");
+        let names: Vec<&str> = b.doc.parts.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, PARTS, "{level:?}");
+        let tr: Vec<&str> = b.doc.transitions.iter().map(|t| t.name.as_str()).collect();
+        assert_eq!(tr, ["underside", "topside"]);
+        assert!(
+            b.report.max_c1 <= C1_JUMP,
+            "{level:?}: C1 {}",
+            b.report.max_c1
+        );
+        // the legs stand on the ground, the far ones (inner) behind the near
+        let leg = |n: &str| b.doc.parts.iter().find(|p| p.name == n).expect("leg");
+        if level != Level::Initial {
+            let z = |n: &str| {
+                let sec = &leg(n).sections[3];
+                match sec.shape {
+                    SectionShape::Ellipse { offset, .. } => sec.centre[2] + offset,
+                    _ => sec.centre[2],
+                }
+            };
+            assert!(z("leg_fr") > 0.0 && z("leg_br") > 0.0, "near legs at +z");
+            assert!(z("leg_fl") < 0.0 && z("leg_bl") < 0.0, "far legs at -z");
+        }
+    }
+}
+
+#[test]
+fn cli_builds_the_animal_and_the_body_plan_overrides() {
+    let dir = tmpdir("sketch-animal");
+    let out = dir.join("animal.glb");
+    let f = format!("{DATA}/animal_front.svg");
+    let s = format!("{DATA}/animal_side.svg");
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        &f,
+        "--side",
+        &s,
+        "-o",
+        out.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json report");
+    assert_eq!(r["topology"]["watertight"], true);
+    assert_eq!(r["level"], "intermediate");
+    assert!(out.exists());
+    // forcing the humanoid plan on the animal, or the quadruped plan on a
+    // humanoid, is a clear error and writes nothing
+    let bad = dir.join("bad.obj");
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        &f,
+        "--body-plan",
+        "humanoid",
+        "-o",
+        bad.to_str().unwrap(),
+    ]);
+    assert_clear_error(&o, "longer than tall");
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        &format!("{DATA}/female_front.svg"),
+        "--body-plan",
+        "quadruped",
+        "-o",
+        bad.to_str().unwrap(),
+    ]);
+    assert_clear_error(&o, "quadruped");
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        &f,
+        "--body-plan",
+        "dog",
+        "-o",
+        bad.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "clap rejects an unknown plan");
+    assert!(!bad.exists());
+}
