@@ -22,12 +22,12 @@ fn bench(c: &mut Criterion) {
     let plate = PlateDeformer::new(&mesh, &region, &opts).expect("region prepares");
     eprintln!(
         "region: {} vertices, {} boundary vertices, precompute {:.3} s",
-        plate.region.len(),
-        plate.boundary.loop_indices.len(),
+        plate.region().len(),
+        plate.boundary().loop_indices.len(),
         t.elapsed().as_secs_f64()
     );
     let handle: Vec<u32> = plate
-        .region
+        .region()
         .iter()
         .copied()
         .filter(|&v| {
@@ -36,7 +36,7 @@ fn bench(c: &mut Criterion) {
         })
         .collect();
     let t = std::time::Instant::now();
-    let sys = LaplacianSystem::new(&mesh, &plate.region, &handle, &LaplacianParams::default())
+    let sys = LaplacianSystem::new(&mesh, plate.region(), &handle, &LaplacianParams::default())
         .expect("system factors");
     eprintln!(
         "bi-Laplacian factorisation {:.3} s",
@@ -55,7 +55,7 @@ fn bench(c: &mut Criterion) {
             black_box(&positions);
         })
     });
-    let src = plate.rest.clone();
+    let src = plate.rest().to_vec();
     let mut dst = vec![[0.0; 3]; src.len()];
     g.bench_function("buffer_copy", |b| {
         b.iter(|| {
@@ -70,7 +70,7 @@ fn bench(c: &mut Criterion) {
     g.bench_function("bilaplacian_factor_and_solve", |b| {
         b.iter(|| {
             let s =
-                LaplacianSystem::new(&mesh, &plate.region, &handle, &LaplacianParams::default())
+                LaplacianSystem::new(&mesh, plate.region(), &handle, &LaplacianParams::default())
                     .expect("system factors");
             black_box(s.solve([0.0, 0.0, 1.0]))
         })

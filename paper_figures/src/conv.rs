@@ -497,32 +497,6 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Smallest interior angle (degrees) of every triangle.
-fn min_angles(m: &Mesh) -> Vec<f64> {
-    m.triangles
-        .iter()
-        .map(|t| {
-            let p = t.map(|i| m.positions[i as usize]);
-            (0..3)
-                .map(|c| {
-                    let o = p[c];
-                    let u = pdesculpt::mesh::sub(p[(c + 1) % 3], o);
-                    let v = pdesculpt::mesh::sub(p[(c + 2) % 3], o);
-                    let d = pdesculpt::mesh::norm(u) * pdesculpt::mesh::norm(v);
-                    if d > 0.0 {
-                        (pdesculpt::mesh::dot(u, v) / d)
-                            .clamp(-1.0, 1.0)
-                            .acos()
-                            .to_degrees()
-                    } else {
-                        0.0
-                    }
-                })
-                .fold(180.0, f64::min)
-        })
-        .collect()
-}
-
 /// Mean and max of `xs`.
 fn mean_max(xs: &[f64]) -> (f64, f64) {
     let n = xs.len().max(1) as f64;
@@ -534,7 +508,7 @@ fn mean_max(xs: &[f64]) -> (f64, f64) {
 
 fn fig_polygonizers(ctx: &Ctx) -> anyhow::Result<()> {
     use pdesculpt::mesh::isosurface::{
-        marching_tetrahedra, surface_nets, triangle_quality, ScalarGrid,
+        marching_tetrahedra, smallest_angles_deg, surface_nets, triangle_quality, ScalarGrid,
     };
     let star = Model {
         name: "star".into(),
@@ -656,7 +630,7 @@ fn fig_polygonizers(ctx: &Ctx) -> anyhow::Result<()> {
                     best * 1e3
                 ));
                 if res == 64 && field == "teddy" {
-                    hist.push((tag.to_string(), min_angles(&mesh)));
+                    hist.push((tag.to_string(), smallest_angles_deg(&mesh)));
                 }
                 if res == 32 && field == "teddy" {
                     imgs.push(views(&mesh, None, 300));

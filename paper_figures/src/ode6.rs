@@ -10,6 +10,7 @@ use anyhow::Context;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::ode6::check::test_curve;
+use pdesculpt::ode6::spline::NaturalSpline;
 use pdesculpt::ode6::surface::v_jumps;
 use pdesculpt::ode6::{
     Approach2, Basis, BoundaryCurves, Chain, Curve, DiffFormula, Ode6Surface, Params,
@@ -198,50 +199,9 @@ fn overlay(c: &Curve, colour: [u8; 4]) -> Overlay {
     }
 }
 
-/// Second derivatives of the natural cubic spline through `y` at knots `t`.
-fn spline_m2(t: &[f64], y: &[f64]) -> Vec<f64> {
-    let n = t.len();
-    let mut m2 = vec![0.0; n];
-    if n < 3 {
-        return m2;
-    }
-    // Tridiagonal system for the interior second derivatives (Thomas).
-    let k = n - 2;
-    let (mut sub, mut diag, mut sup, mut rhs) =
-        (vec![0.0; k], vec![0.0; k], vec![0.0; k], vec![0.0; k]);
-    for i in 1..n - 1 {
-        let (h0, h1) = (t[i] - t[i - 1], t[i + 1] - t[i]);
-        sub[i - 1] = h0 / 6.0;
-        diag[i - 1] = (h0 + h1) / 3.0;
-        sup[i - 1] = h1 / 6.0;
-        rhs[i - 1] = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
-    }
-    for i in 1..k {
-        let w = sub[i] / diag[i - 1];
-        diag[i] -= w * sup[i - 1];
-        rhs[i] -= w * rhs[i - 1];
-    }
-    let mut x = vec![0.0; k];
-    x[k - 1] = rhs[k - 1] / diag[k - 1];
-    for i in (0..k - 1).rev() {
-        x[i] = (rhs[i] - sup[i] * x[i + 1]) / diag[i];
-    }
-    m2[1..(k + 1)].copy_from_slice(&x);
-    m2
-}
-
-fn spline_eval(t: &[f64], y: &[f64], m2: &[f64], u: f64) -> f64 {
-    let n = t.len();
-    let i = (0..n - 1).rfind(|&i| t[i] <= u).unwrap_or(0).min(n - 2);
-    let h = t[i + 1] - t[i];
-    let a = (t[i + 1] - u) / h;
-    let b = 1.0 - a;
-    a * y[i] + b * y[i + 1] + ((a * a * a - a) * m2[i] + (b * b * b - b) * m2[i + 1]) * h * h / 6.0
-}
-
 /// The loft baseline: a natural cubic spline in u through `curves` at
 /// `knots` (two curves: the ruled surface), sampled on the figure grid.
-pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> Mesh {
+pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> anyhow::Result<Mesh> {
     let closed = curves[0].closed();
     let us: Vec<f64> = (0..=nu)
         .map(|i| knots[0] + (knots[knots.len() - 1] - knots[0]) * i as f64 / nu as f64)
@@ -253,9 +213,9 @@ pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> Me
         let p: Vec<[f64; 3]> = curves.iter().map(|c| c.eval(v)).collect();
         for k in 0..3 {
             let y: Vec<f64> = p.iter().map(|q| q[k]).collect();
-            let m2 = spline_m2(knots, &y);
+            let spline = NaturalSpline::new(knots, &y)?;
             for (i, &u) in us.iter().enumerate() {
-                pts[i * nvp + j][k] = spline_eval(knots, &y, &m2, u);
+                pts[i * nvp + j][k] = spline.eval(u);
             }
         }
     }
@@ -265,7 +225,7 @@ pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> Me
         closed_u: false,
         closed_v: closed,
     };
-    tessellate_grid(pts, us.len(), nvp, d)
+    Ok(tessellate_grid(pts, us.len(), nvp, d))
 }
 
 fn tess<S: Surface>(s: &S) -> Mesh {
@@ -315,7 +275,7 @@ fn fig2_3(ctx: &Ctx) -> anyhow::Result<()> {
             open_curve(0.8, 1.0, 0.5)?,
         ),
     ] {
-        let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV);
+        let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV)?;
         let mut meshes = vec![lofted.clone()];
         let mut rows = Vec::new();
         for (wname, w) in ws {
@@ -406,7 +366,7 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
     for (name, (c1, ctl, c4)) in [("fig4_closed", closed), ("fig5_open", open)] {
         let knots = [0.0, u2, u3, u5, u6, 1.0];
         let all = [&c1, &ctl[0], &ctl[1], &ctl[2], &ctl[3], &c4];
-        let lofted = loft(&all, &knots, NU, NV);
+        let lofted = loft(&all, &knots, NU, NV)?;
         let mut meshes = vec![lofted.clone()];
         let mut rows = Vec::new();
         for (p, formula) in [
@@ -593,7 +553,7 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
                 NV,
             )
         })
-        .collect();
+        .collect::<anyhow::Result<_>>()?;
     let mut loft_mesh = lofted[0].clone();
     loft_mesh.append(&lofted[1]);
     loft_mesh.append(&lofted[2]);
@@ -703,7 +663,7 @@ fn fig10(ctx: &Ctx) -> anyhow::Result<()> {
         Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
     );
     let w = [1.0, 2.0, -1.0, 4.0];
-    let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV);
+    let lofted = loft(&[&c1, &c4], &[0.0, 1.0], NU, NV)?;
     let sets = [
         Params::new(1.0, 3.0, 1.0),
         Params::new(1.0, 1.0, 3.0),

@@ -22,7 +22,7 @@ use pdesculpt::pde4::apply::{deform_region, Deformed, Direction};
 use pdesculpt::pde4::check::{self as pc, plate_centre};
 use pdesculpt::pde4::four_sided::{self, FourSided};
 use pdesculpt::pde4::two_sided::{self, Boundary, TwoSided};
-use pdesculpt::pde4::{Force, ForceKind, ShapeParams};
+use pdesculpt::pde4::{samples, Force, ForceKind, ShapeParams};
 use pdesculpt::render::{render, render_with_camera, Camera, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, Revolution, Tessellation};
 use plotters::prelude::*;
@@ -155,17 +155,6 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Ellipse on a plane of constant z.
-fn ellipse(c: [f64; 3], rx: f64, ry: f64, k: usize, wobble: f64) -> Vec<[f64; 3]> {
-    (0..k)
-        .map(|i| {
-            let a = 2.0 * PI * i as f64 / k as f64;
-            let r = 1.0 + wobble * (3.0 * a).sin();
-            [c[0] + rx * r * a.cos(), c[1] + ry * r * a.sin(), c[2]]
-        })
-        .collect()
-}
-
 fn region_panel(
     body: &Mesh,
     curve: &[[f64; 3]],
@@ -237,13 +226,14 @@ fn body() -> anyhow::Result<Mesh> {
         .mesh)
 }
 
+/// The demo's chest outline (right side), drawn irregular.
 fn chest_curve() -> Vec<[f64; 3]> {
-    ellipse([0.75, 3.75, 1.6], 0.6, 0.7, 40, 0.12)
+    samples::chest_curve(1.0, 0.12)
 }
 
 fn fig2(ctx: &Ctx) -> anyhow::Result<()> {
     let b = body()?;
-    let nose = ellipse([0.0, 7.0, 1.7], 0.18, 0.3, 24, 0.0);
+    let nose = samples::drawn_ellipse([0.0, 7.0, 1.7], 0.18, 0.3, 24, 0.0);
     let arm = band([2.65, 4.05, 0.6], [0.62, -0.78], 0.75, 0.14, 40);
     let (a, ja) = region_panel(
         &b,

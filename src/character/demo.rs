@@ -14,7 +14,6 @@ use crate::plate::deformer::{
     BoundaryMethod, Direction as PlateDirection, PlateDeformer, RegionOptions,
 };
 use serde::Serialize;
-use std::f64::consts::PI;
 use thiserror::Error;
 
 /// A failure of one demo step.
@@ -245,17 +244,6 @@ pub fn teddy_prop(body: &Mesh) -> Result<(Mesh, PropReport), DemoError> {
     ))
 }
 
-/// A closed curve on one side of the chest (`side` = +1 or -1), drawn in
-/// the front view (paper 000 Fig 14).
-fn chest_curve(side: f64) -> Vec<[f64; 3]> {
-    (0..40)
-        .map(|i| {
-            let a = 2.0 * PI * i as f64 / 40.0;
-            [side * 0.75 + 0.6 * a.cos(), 3.75 + 0.7 * a.sin(), 1.6]
-        })
-        .collect()
-}
-
 /// Largest displacement between two vertex buffers over the vertices in
 /// `which` (all when `None`).
 fn max_move(a: &Mesh, b: &Mesh, which: Option<&[bool]>) -> f64 {
@@ -318,7 +306,15 @@ pub fn chest_sculpt(body: &Mesh) -> Result<Mesh, DemoError> {
     )?;
     let mut m = body.clone();
     for side in [1.0, -1.0] {
-        m = deform_region(&m, &chest_curve(side), &d, Pde4Direction::Normal, 0.15, 0.8)?.mesh;
+        m = deform_region(
+            &m,
+            &crate::pde4::samples::chest_curve(side, 0.0),
+            &d,
+            Pde4Direction::Normal,
+            0.15,
+            0.8,
+        )?
+        .mesh;
     }
     Ok(m)
 }

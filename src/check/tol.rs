@@ -7,6 +7,17 @@ pub const ROUNDING: f64 = 1e-12;
 pub const SOLVE: f64 = 1e-9;
 /// Adaptive quadrature against a closed form (relative).
 pub const QUADRATURE: f64 = 1e-10;
+/// Relative jump across a C2 join of patches that were solved separately
+/// (each side carries a dense solve's rounding, amplified by the join's
+/// conditioning).
+pub const JOIN: f64 = 1e-7;
+/// A central difference of step about `1e-5` against the exact derivative
+/// (truncation `h^2` times the third derivative, rounding `eps / h`).
+pub const CENTRAL_DIFFERENCE: f64 = 1e-6;
+/// A defect a measurement must see: a broken join, a displaced curve. Far
+/// above every rounding tolerance here, so "measured above this" cannot be
+/// rounding.
+pub const DETECTED: f64 = 1e-3;
 /// Agreement with a tabulated value printed to four significant digits.
 pub const TABLE_4_DIGITS: f64 = 5e-4;
 /// Agreement with classical plate-theory coefficients demanded by the issues

@@ -3,7 +3,7 @@
 use anyhow::Context;
 use pdesculpt::mesh::io;
 use pdesculpt::plate::baselines::{DeltaMushParams, LaplacianParams, Weights};
-use pdesculpt::plate::deformer::parse_region;
+use pdesculpt::plate::parse_region;
 use pdesculpt::plate::shapes::{compare, Shape};
 use pdesculpt::plate::{
     BoundaryMethod, Direction, MappingMethod, Material, PlateDeformer, RegionOptions,
@@ -152,11 +152,11 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     let info = serde_json::json!({
         "output": a.output.display().to_string(),
         "unit": unit,
-        "region_vertices": plate.region.len(),
-        "boundary_vertices": plate.boundary.loop_indices.len(),
-        "extra_boundary_loops": plate.boundary.extra_loops,
-        "non_star_rays": plate.non_star_rays,
-        "rigidity": plate.rigidity,
+        "region_vertices": plate.region().len(),
+        "boundary_vertices": plate.boundary().loop_indices.len(),
+        "extra_boundary_loops": plate.boundary().extra_loops,
+        "non_star_rays": plate.non_star_rays(),
+        "rigidity": plate.rigidity(),
         "force": force,
         "max_displacement": max_displacement,
     });
@@ -165,15 +165,15 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     } else {
         eprintln!(
             "deformed {} region vertices ({} on the boundary), max displacement {:.4e}; wrote {}",
-            plate.region.len(),
-            plate.boundary.loop_indices.len(),
+            plate.region().len(),
+            plate.boundary().loop_indices.len(),
             max_displacement,
             a.output.display()
         );
-        if plate.non_star_rays > 0 {
+        if plate.non_star_rays() > 0 {
             eprintln!(
                 "warning: {} rays from the centroid cross the boundary more than once (region not star-shaped; eq 16 is not one-to-one there)",
-                plate.non_star_rays
+                plate.non_star_rays()
             );
         }
     }

@@ -29,6 +29,7 @@
 //! what eq 26 asks of patches adjacent in $v$: $c_k^{(i)}(1) = \hat
 //! c_k^{(i)}(0)$, $i = 0, 1, 2$).
 
+use super::spline::{self, NaturalSpline};
 use super::Ode6Error;
 use crate::curve::gec::Gec;
 use crate::curve::Fourier3;
@@ -74,21 +75,23 @@ impl Curve {
     pub fn from_polyline(points: &[[f64; 3]], closed: bool) -> Result<Curve, Ode6Error> {
         let m = points.len();
         if m < if closed { 3 } else { 2 } {
-            return Err(Ode6Error::BadData(format!(
-                "a {} polyline needs at least {} vertices (got {m})",
-                if closed { "closed" } else { "open" },
-                if closed { 3 } else { 2 }
-            )));
+            return Err(Ode6Error::TooFewVertices {
+                closed,
+                min: if closed { 3 } else { 2 },
+                got: m,
+            });
         }
         if points.iter().flatten().any(|x| !x.is_finite()) {
-            return Err(Ode6Error::BadData("polyline vertex is not finite".into()));
+            return Err(Ode6Error::NotFinite {
+                what: "polyline vertex",
+            });
         }
         Ok(if closed {
             Curve::Fourier(trig_interpolate(points))
         } else {
             Curve::Spline {
                 points: points.to_vec(),
-                m2: natural_spline_m2(points),
+                m2: natural_spline_m2(points)?,
             }
         })
     }
@@ -97,9 +100,9 @@ impl Curve {
     /// in space: `P(v) = gec.eval_v(v)`, exactly (as its [`Fourier3`]).
     pub fn from_gec(gec: &Gec) -> Result<Curve, Ode6Error> {
         if !gec.is_finite() {
-            return Err(Ode6Error::BadData(
-                "generalized elliptic curve has non-finite coefficients".into(),
-            ));
+            return Err(Ode6Error::NotFinite {
+                what: "a coefficient of the generalized elliptic curve",
+            });
         }
         Ok(Curve::Fourier(gec.to_fourier3()))
     }
@@ -107,7 +110,9 @@ impl Curve {
     /// A quintic Hermite segment from `[P, P', P'']` at `v = 0` and `v = 1`.
     pub fn hermite(start: [[f64; 3]; 3], end: [[f64; 3]; 3]) -> Result<Curve, Ode6Error> {
         if start.iter().chain(&end).flatten().any(|x| !x.is_finite()) {
-            return Err(Ode6Error::BadData("Hermite end data is not finite".into()));
+            return Err(Ode6Error::NotFinite {
+                what: "Hermite end data",
+            });
         }
         Ok(Curve::Hermite { ends: [start, end] })
     }
@@ -123,19 +128,16 @@ impl Curve {
             Curve::Fourier(f) => f.eval(v * (2.0 * PI)),
             Curve::Spline { points, m2 } => {
                 let n = points.len() - 1;
-                let h = 1.0 / n as f64;
-                let i = ((v.value() / h).floor().max(0.0) as usize).min(n - 1);
-                // Local cubic on [v_i, v_i+1].
-                let a = (T::cst((i + 1) as f64 * h) - v) / h;
-                let b = T::one() - a;
-                let mut p = [T::zero(); 3];
-                for k in 0..3 {
-                    p[k] = a * points[i][k]
-                        + b * points[i + 1][k]
-                        + ((a * a * a - a) * m2[i][k] + (b * b * b - b) * m2[i + 1][k])
-                            * (h * h / 6.0);
-                }
-                p
+                let i = ((v.value() * n as f64).floor().max(0.0) as usize).min(n - 1);
+                let t = [i as f64 / n as f64, (i + 1) as f64 / n as f64];
+                std::array::from_fn(|k| {
+                    spline::segment(
+                        t,
+                        [points[i][k], points[i + 1][k]],
+                        [m2[i][k], m2[i + 1][k]],
+                        v,
+                    )
+                })
             }
             Curve::Hermite { ends } => {
                 let h = hermite5(v);
@@ -209,40 +211,24 @@ pub fn trig_interpolate(points: &[[f64; 3]]) -> Fourier3 {
     Fourier3 { c0, cos, sin }
 }
 
-/// Second derivatives of the natural cubic spline through `points` at
-/// uniform knots of spacing `1/(m-1)` (Thomas algorithm).
-fn natural_spline_m2(points: &[[f64; 3]]) -> Vec<[f64; 3]> {
-    let m = points.len();
-    let mut m2 = vec![[0.0; 3]; m];
-    if m < 3 {
-        return m2;
-    }
-    let h = 1.0 / (m - 1) as f64;
-    let n = m - 2; // interior unknowns: (h/6) M_{i-1} + (2h/3) M_i + (h/6) M_{i+1} = d_i
+/// Second derivatives of the natural cubic spline through `points` at the
+/// uniform knots `v_i = i / (m - 1)`, per component.
+fn natural_spline_m2(points: &[[f64; 3]]) -> Result<Vec<[f64; 3]>, Ode6Error> {
+    let v = uniform_knots(points.len());
+    let mut m2 = vec![[0.0; 3]; points.len()];
     for k in 0..3 {
-        let d: Vec<f64> = (1..m - 1)
-            .map(|i| (points[i + 1][k] - 2.0 * points[i][k] + points[i - 1][k]) / h)
-            .collect();
-        let (a, b) = (h / 6.0, 2.0 * h / 3.0);
-        let mut cp = vec![0.0; n];
-        let mut dp = vec![0.0; n];
-        cp[0] = a / b;
-        dp[0] = d[0] / b;
-        for i in 1..n {
-            let den = b - a * cp[i - 1];
-            cp[i] = a / den;
-            dp[i] = (d[i] - a * dp[i - 1]) / den;
-        }
-        let mut x = vec![0.0; n];
-        x[n - 1] = dp[n - 1];
-        for i in (0..n - 1).rev() {
-            x[i] = dp[i] - cp[i] * x[i + 1];
-        }
-        for i in 0..n {
-            m2[i + 1][k] = x[i];
+        let y: Vec<f64> = points.iter().map(|p| p[k]).collect();
+        let s = NaturalSpline::new(&v, &y)?;
+        for (m, d) in m2.iter_mut().zip(s.second_derivatives()) {
+            m[k] = *d;
         }
     }
-    m2
+    Ok(m2)
+}
+
+/// `v_i = i / (m - 1)`, `i = 0..m` (exactly 0 and 1 at the ends).
+fn uniform_knots(m: usize) -> Vec<f64> {
+    (0..m).map(|i| i as f64 / (m - 1) as f64).collect()
 }
 
 /// The constraint curves of eq 1 as combinations of key curves.
@@ -269,9 +255,7 @@ impl BoundaryCurves {
     /// Approach 1: `c_2 = w1 c_1, c_3 = w2 c_1, c_5 = w3 c_4, c_6 = w4 c_4`.
     pub fn approach1(c1: Curve, c4: Curve, w: [f64; 4]) -> Result<BoundaryCurves, Ode6Error> {
         if w.iter().any(|x| !x.is_finite()) {
-            return Err(Ode6Error::BadData(format!(
-                "approach 1 coefficients not finite: {w:?}"
-            )));
+            return Err(Ode6Error::NonFiniteWeights { weights: w });
         }
         BoundaryCurves::new(
             vec![c1, c4],
@@ -297,13 +281,11 @@ impl BoundaryCurves {
 
     fn new(keys: Vec<Curve>, weights: Vec<[f64; 6]>) -> Result<BoundaryCurves, Ode6Error> {
         if keys.is_empty() {
-            return Err(Ode6Error::BadData("no boundary curves".into()));
+            return Err(Ode6Error::NoCurves);
         }
         let closed = keys[0].closed();
         if keys.iter().any(|k| k.closed() != closed) {
-            return Err(Ode6Error::BadData(
-                "boundary curves mix closed and open curves".into(),
-            ));
+            return Err(Ode6Error::MixedClosure);
         }
         for k in &keys {
             let finite = match k {
@@ -314,9 +296,9 @@ impl BoundaryCurves {
                 Curve::Hermite { ends } => ends.iter().flatten().flatten().all(|x| x.is_finite()),
             };
             if !finite {
-                return Err(Ode6Error::BadData(
-                    "boundary curve has non-finite coefficients".into(),
-                ));
+                return Err(Ode6Error::NotFinite {
+                    what: "a boundary curve coefficient",
+                });
             }
         }
         Ok(BoundaryCurves { keys, weights })
@@ -380,9 +362,7 @@ impl Approach2 {
             && u5 < u6
             && u6 < 1.0;
         if !ok {
-            return Err(Ode6Error::BadData(format!(
-                "control positions need 0 < u2 < u3 < 1 and 0 < u5 < u6 < 1 (got u2 = {u2}, u3 = {u3}, u5 = {u5}, u6 = {u6})"
-            )));
+            return Err(Ode6Error::ControlPositions { u2, u3, u5, u6 });
         }
         // (weight of c1, c̄2, c̄3) in c2, c3 and (c4, c̄6, c̄5) in c5, c6.
         let (d1_0, d2_0, d1_1, d2_1) = match formula {

@@ -94,7 +94,9 @@ impl Particular {
         match force {
             Force::Polynomial { coef } => {
                 if coef.iter().flatten().any(|x| !x.is_finite()) {
-                    return Err(Ode6Error::BadData("force coefficient not finite".into()));
+                    return Err(Ode6Error::NotFinite {
+                        what: "a polynomial force coefficient",
+                    });
                 }
                 let (m, a) = if lambda != 0.0 {
                     (2, [lambda, eta, rho])
@@ -130,15 +132,15 @@ impl Particular {
             }
             Force::Sine { amp, kappa, phase } => {
                 if amp.iter().chain([kappa, phase]).any(|x| !x.is_finite()) {
-                    return Err(Ode6Error::BadData("sine force not finite".into()));
+                    return Err(Ode6Error::NotFinite {
+                        what: "the sine force (amplitude, kappa or phase)",
+                    });
                 }
                 let k2 = kappa * kappa;
                 let symbol = -rho * k2 * k2 * k2 + eta * k2 * k2 - lambda * k2;
                 let size = rho.abs() * k2 * k2 * k2 + eta.abs() * k2 * k2 + lambda.abs() * k2;
                 if !(symbol.is_finite() && size.is_finite()) {
-                    return Err(Ode6Error::BadData(format!(
-                        "sine force kappa = {kappa} overflows the symbol"
-                    )));
+                    return Err(Ode6Error::SymbolOverflow { kappa: *kappa });
                 }
                 if size == 0.0 {
                     return Err(Ode6Error::Resonance { kappa2: k2, symbol });

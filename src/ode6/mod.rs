@@ -23,6 +23,8 @@
 //!   polylines.
 //! * [`force`]: particular solutions for polynomial and sine sculpting forces
 //!   $F(u)$ (left to future work by the paper).
+//! * [`spline`]: the natural cubic spline of open polyline curves and of
+//!   the loft baseline.
 //! * [`spec`]: the JSON surface spec of `pdesculpt ode6 surface` and the
 //!   one-line evaluation of `ode6 eval`.
 //! * [`surface`]: [`Ode6Surface`] (the [`crate::surface::Surface`] impl, fast
@@ -36,6 +38,7 @@ pub mod force;
 pub mod paper;
 pub mod samples;
 pub mod spec;
+pub mod spline;
 pub mod surface;
 
 pub use basis::{Basis, Params, RootCase};
@@ -72,8 +75,81 @@ pub enum Ode6Error {
          no particular solution of the form u cos(kappa u + phase)"
     )]
     Resonance { kappa2: f64, symbol: f64 },
-    #[error("bad boundary data: {0}")]
-    BadData(String),
+    #[error("{what} is not finite")]
+    NotFinite { what: &'static str },
+    #[error("{what} {value} is not finite")]
+    NonFiniteValue { what: &'static str, value: f64 },
+    #[error("a natural spline needs as many values as knots, at least 2 (got {knots} knots, {values} values)")]
+    SplineSize { knots: usize, values: usize },
+    #[error("spline knots must increase strictly: knot {index} = {knot} follows {previous}")]
+    KnotsNotIncreasing {
+        index: usize,
+        previous: f64,
+        knot: f64,
+    },
+    #[error("approach 1 coefficients not finite: {weights:?}")]
+    NonFiniteWeights { weights: [f64; 4] },
+    #[error("a {} polyline needs at least {min} vertices (got {got})", if *closed { "closed" } else { "open" })]
+    TooFewVertices {
+        closed: bool,
+        min: usize,
+        got: usize,
+    },
+    #[error("no boundary curves")]
+    NoCurves,
+    #[error("boundary curves mix closed and open curves")]
+    MixedClosure,
+    #[error(
+        "control positions need 0 < u2 < u3 < 1 and 0 < u5 < u6 < 1 \
+         (got u2 = {u2}, u3 = {u3}, u5 = {u5}, u6 = {u6})"
+    )]
+    ControlPositions { u2: f64, u3: f64, u5: f64, u6: f64 },
+    #[error("v range must satisfy 0 <= v0 < v1 <= 1 (got {v0}, {v1})")]
+    VRange { v0: f64, v1: f64 },
+    #[error(
+        "a chain of n patches needs n + 1 >= 2 sections (got {sections} sections, {params} parameter sets)"
+    )]
+    ChainShape { sections: usize, params: usize },
+    #[error(
+        "a grid needs n + 1 >= 2 sections for n parameter sets and >= 2 knots in v \
+         (got {sections} sections, {params} parameter sets, {knots} knots)"
+    )]
+    GridShape {
+        sections: usize,
+        params: usize,
+        knots: usize,
+    },
+    #[error("every section and constraint needs the same number of v-knots")]
+    UnequalKnots,
+    #[error(
+        "case {case} does not solve eq 8 for rho = {rho}, eta = {eta}, lambda = {lambda} \
+         (relative residual {residual:.2e})"
+    )]
+    WrongCase {
+        case: String,
+        rho: f64,
+        eta: f64,
+        lambda: f64,
+        residual: f64,
+    },
+    #[error("Basis::reduced needs rho = 0 (got rho = {rho})")]
+    ReducedNeedsRhoZero { rho: f64 },
+    #[error("sine force kappa = {kappa} overflows the symbol")]
+    SymbolOverflow { kappa: f64 },
+    #[error("nu (intervals in u) must be in 1..={max} and nv in 3..={max} (got {nu}, {nv})")]
+    Intervals { nu: usize, nv: usize, max: usize },
+    #[error("no parameter value u to evaluate")]
+    NoParameterValues,
+    #[error(
+        "S(u = {u}) is not finite in double precision for rho {rho}, eta {eta}, lambda {lambda} \
+         and these constraints (scale the boundary values or the parameters down)"
+    )]
+    LineOverflow {
+        u: f64,
+        rho: f64,
+        eta: f64,
+        lambda: f64,
+    },
     #[error("{what} = {value} must lie in {range}")]
     OutOfRange {
         what: &'static str,

@@ -179,9 +179,11 @@ impl Spec {
         limits::check("nu", nu, limits::TESS_NU)?;
         limits::check("nv", nv, limits::TESS_NV)?;
         if nu > MAX_INTERVALS || nv > MAX_INTERVALS {
-            return Err(Ode6Error::BadData(format!(
-                "nu (intervals in u) must be in 1..={MAX_INTERVALS} and nv in 3..={MAX_INTERVALS} (got {nu}, {nv})"
-            )));
+            return Err(Ode6Error::Intervals {
+                nu,
+                nv,
+                max: MAX_INTERVALS,
+            });
         }
         Ok([nu, nv])
     }
@@ -204,14 +206,13 @@ pub struct LinePoint {
 /// in double precision.
 pub fn eval_line(basis: &Basis, c: &[f64; 6], at: &[f64]) -> Result<Vec<LinePoint>, Ode6Error> {
     if at.is_empty() {
-        return Err(Ode6Error::BadData(
-            "no parameter value u to evaluate".into(),
-        ));
+        return Err(Ode6Error::NoParameterValues);
     }
     if let Some(x) = c.iter().chain(at).find(|x| !x.is_finite()) {
-        return Err(Ode6Error::BadData(format!(
-            "constraint or parameter value {x} is not finite"
-        )));
+        return Err(Ode6Error::NonFiniteValue {
+            what: "constraint or parameter value",
+            value: *x,
+        });
     }
     if let Some(&u) = at.iter().find(|u| !(0.0..=1.0).contains(*u)) {
         return Err(Ode6Error::OutOfRange {
@@ -231,12 +232,18 @@ pub fn eval_line(basis: &Basis, c: &[f64; 6], at: &[f64]) -> Result<Vec<LinePoin
                 s_uu: s.deriv(2, 0),
                 residual: rho * s.deriv(6, 0) + eta * s.deriv(4, 0) + lambda * s.deriv(2, 0),
             };
-            if [p.s, p.s_u, p.s_uu, p.residual].iter().all(|x| x.is_finite()) {
+            if [p.s, p.s_u, p.s_uu, p.residual]
+                .iter()
+                .all(|x| x.is_finite())
+            {
                 Ok(p)
             } else {
-                Err(Ode6Error::BadData(format!(
-                    "S(u = {u}) is not finite in double precision for rho {rho}, eta {eta}, lambda {lambda} and these constraints (scale the boundary values or the parameters down)"
-                )))
+                Err(Ode6Error::LineOverflow {
+                    u,
+                    rho,
+                    eta,
+                    lambda,
+                })
             }
         })
         .collect()

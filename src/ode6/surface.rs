@@ -49,9 +49,7 @@ impl Ode6Surface {
     /// The patch restricted to `v in [v0, v1]` (a split in `v`, eq 26).
     pub fn with_v_range(mut self, v0: f64, v1: f64) -> Result<Ode6Surface, Ode6Error> {
         if !(v0.is_finite() && v1.is_finite() && 0.0 <= v0 && v0 < v1 && v1 <= 1.0) {
-            return Err(Ode6Error::BadData(format!(
-                "v range must satisfy 0 <= v0 < v1 <= 1 (got {v0}, {v1})"
-            )));
+            return Err(Ode6Error::VRange { v0, v1 });
         }
         self.v_range = (v0, v1);
         Ok(self)
@@ -176,11 +174,10 @@ impl Chain {
     /// `i` spans sections `i` and `i+1` with basis `bases[i]`.
     pub fn from_sections(sections: &[[Curve; 3]], bases: Vec<Basis>) -> Result<Chain, Ode6Error> {
         if sections.len() < 2 || bases.len() + 1 != sections.len() {
-            return Err(Ode6Error::BadData(format!(
-                "a chain of n patches needs n + 1 >= 2 sections (got {} sections, {} parameter sets)",
-                sections.len(),
-                bases.len()
-            )));
+            return Err(Ode6Error::ChainShape {
+                sections: sections.len(),
+                params: bases.len(),
+            });
         }
         let patches = bases
             .into_iter()
@@ -326,16 +323,14 @@ impl Grid {
     pub fn from_knots(knots: &[[Vec<Knot>; 3]], bases: Vec<Basis>) -> Result<Grid, Ode6Error> {
         let nt = knots.first().map(|s| s[0].len()).unwrap_or(0);
         if knots.len() < 2 || bases.len() + 1 != knots.len() || nt < 2 {
-            return Err(Ode6Error::BadData(format!(
-                "a grid needs n + 1 >= 2 sections for n parameter sets and >= 2 knots in v (got {} sections, {} parameter sets, {nt} knots)",
-                knots.len(),
-                bases.len()
-            )));
+            return Err(Ode6Error::GridShape {
+                sections: knots.len(),
+                params: bases.len(),
+                knots: nt,
+            });
         }
         if knots.iter().flatten().any(|k| k.len() != nt) {
-            return Err(Ode6Error::BadData(
-                "every section and constraint needs the same number of v-knots".into(),
-            ));
+            return Err(Ode6Error::UnequalKnots);
         }
         let seg = |s: usize, k: usize, r: usize| Curve::hermite(knots[s][k][r], knots[s][k][r + 1]);
         let patches = bases

@@ -5,6 +5,7 @@
 use super::two_sided::Boundary;
 use super::{Force, ForceKind, ShapeParams};
 use crate::curve::Fourier3;
+use std::f64::consts::PI;
 
 /// The sinusoidal load `sin(pi u) sin(pi v)` (an area force over the whole patch).
 pub const SINE_LOAD: ForceKind = ForceKind::Area {
@@ -126,4 +127,31 @@ pub fn four_sided() -> Result<super::FourSided, super::Pde4Error> {
         8,
         super::four_sided::Method::Galerkin,
     )
+}
+
+/// A closed curve drawn in the front view around a region to deform
+/// (paper 000 sec 5.1, the input of [`super::apply::deform_region`]): `k`
+/// points of the ellipse of half-axes `rx`, `ry` about `centre` in the plane
+/// `z = centre[2]`, its radius modulated by `1 + wobble sin 3a` (an
+/// irregular outline for `wobble > 0`).
+pub fn drawn_ellipse(centre: [f64; 3], rx: f64, ry: f64, k: usize, wobble: f64) -> Vec<[f64; 3]> {
+    (0..k)
+        .map(|i| {
+            let a = 2.0 * PI * i as f64 / k as f64;
+            let r = 1.0 + wobble * (3.0 * a).sin();
+            [
+                centre[0] + rx * r * a.cos(),
+                centre[1] + ry * r * a.sin(),
+                centre[2],
+            ]
+        })
+        .collect()
+}
+
+/// The chest outline of paper 000 Fig 14 on the MakeHuman base body
+/// (decimetres), on the side `side` = +1 or -1: 40 points of
+/// [`drawn_ellipse`] about `(0.75 side, 3.75, 1.6)`. The demo's chest sculpt
+/// draws it plain (`wobble = 0`), the figure irregular (`wobble = 0.12`).
+pub fn chest_curve(side: f64, wobble: f64) -> Vec<[f64; 3]> {
+    drawn_ellipse([side * 0.75, 3.75, 1.6], 0.6, 0.7, 40, wobble)
 }

@@ -71,27 +71,21 @@ impl Default for RegionOptions {
     }
 }
 
-/// A prepared region.
+/// A prepared region. Its fields are read through accessors: they are
+/// derived from one another (the weights from the disk points and the
+/// rigidity, the buffer-size guard of [`Self::apply`] from the region), so
+/// only [`Self::new`] may set them.
 #[derive(Clone, Debug)]
 pub struct PlateDeformer {
-    /// Region vertex indices into the mesh.
-    pub region: Vec<u32>,
-    /// Rest positions of the region vertices.
-    pub rest: Vec<[f64; 3]>,
-    /// Precomputed eq-12 weights $(u^2+v^2-1)^2/(64D)$ (zero outside the disk).
-    pub weights: Vec<f64>,
-    /// Disk coordinates of the region vertices.
-    pub disk: Vec<DiskPoint>,
-    /// Projected local coordinates (eq 14) of the region vertices.
-    pub local: Vec<[f64; 2]>,
-    pub frame: LocalFrame,
-    /// Unit region normal (the frame's $z'$ axis, facing the view).
-    pub normal: [f64; 3],
-    /// The alpha-shape boundary; its indices refer to [`Self::region`].
-    pub boundary: Boundary,
-    pub rigidity: f64,
-    /// Rays from the centroid that cross the boundary more than once.
-    pub non_star_rays: usize,
+    region: Vec<u32>,
+    rest: Vec<[f64; 3]>,
+    weights: Vec<f64>,
+    disk: Vec<DiskPoint>,
+    local: Vec<[f64; 2]>,
+    frame: LocalFrame,
+    boundary: Boundary,
+    rigidity: f64,
+    non_star_rays: usize,
     /// Largest region vertex index (buffer-size check of [`Self::apply`]).
     max_index: usize,
 }
@@ -320,12 +314,62 @@ impl PlateDeformer {
             disk,
             local,
             frame,
-            normal: frame.vz,
             boundary,
             rigidity,
             non_star_rays,
             max_index,
         })
+    }
+
+    /// Region vertex indices into the mesh (first-seen order, no repeats).
+    pub fn region(&self) -> &[u32] {
+        &self.region
+    }
+
+    /// Rest positions of the region vertices.
+    pub fn rest(&self) -> &[[f64; 3]] {
+        &self.rest
+    }
+
+    /// Precomputed eq-12 weights $(u^2+v^2-1)^2/(64D)$ of the region
+    /// vertices (zero outside the disk).
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// Disk coordinates (eq 16) of the region vertices.
+    pub fn disk(&self) -> &[DiskPoint] {
+        &self.disk
+    }
+
+    /// Projected local coordinates (eq 14) of the region vertices.
+    pub fn local(&self) -> &[[f64; 2]] {
+        &self.local
+    }
+
+    /// The local frame of the projection (eq 14).
+    pub fn frame(&self) -> &LocalFrame {
+        &self.frame
+    }
+
+    /// Unit region normal (the frame's $z'$ axis, facing the view).
+    pub fn normal(&self) -> [f64; 3] {
+        self.frame.vz
+    }
+
+    /// The boundary (eq 15); its indices refer to [`Self::region`].
+    pub fn boundary(&self) -> &Boundary {
+        &self.boundary
+    }
+
+    /// Flexural rigidity $D$ of the material.
+    pub fn rigidity(&self) -> f64 {
+        self.rigidity
+    }
+
+    /// Rays from the centroid that cross the boundary more than once.
+    pub fn non_star_rays(&self) -> usize {
+        self.non_star_rays
     }
 
     /// The sculpting force vector for a cursor motion `d` with sensitivity
@@ -334,8 +378,9 @@ impl PlateDeformer {
         match direction {
             Direction::Cursor => [sensitivity * d[0], sensitivity * d[1], sensitivity * d[2]],
             Direction::Normal => {
-                let q = sensitivity * crate::mesh::dot(d, self.normal);
-                [q * self.normal[0], q * self.normal[1], q * self.normal[2]]
+                let n = self.normal();
+                let q = sensitivity * crate::mesh::dot(d, n);
+                [q * n[0], q * n[1], q * n[2]]
             }
         }
     }
@@ -413,88 +458,4 @@ impl PlateDeformer {
         }
         Ok(out)
     }
-}
-
-/// Region from a lasso polygon drawn in the view: the vertices facing the
-/// view (`view` towards the viewer) whose projection in the frame
-/// `LocalFrame::new([0,0,0], view)` lies inside `polygon`.
-pub fn region_from_lasso(
-    mesh: &Mesh,
-    view: [f64; 3],
-    polygon: &[[f64; 2]],
-) -> Result<Vec<u32>, PlateError> {
-    if polygon.len() < 3
-        || polygon
-            .iter()
-            .any(|p| !(p[0].is_finite() && p[1].is_finite()))
-    {
-        return Err(PlateError::RegionFile(
-            "lasso needs at least 3 finite points".into(),
-        ));
-    }
-    let frame = LocalFrame::new([0.0; 3], view)?;
-    let normals = mesh.vertex_normals();
-    let mut out = Vec::new();
-    for (i, p) in mesh.positions.iter().enumerate() {
-        let l = frame.to_local(*p);
-        if crate::mesh::dot(normals[i], frame.vz) > 0.0
-            && super::mapping::inside(polygon, [l[0], l[1]])
-        {
-            out.push(i as u32);
-        }
-    }
-    Ok(out)
-}
-
-/// A JSON region file (unknown keys refused).
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RegionJson {
-    #[serde(default)]
-    vertices: Option<Vec<u32>>,
-    #[serde(default)]
-    lasso: Option<LassoJson>,
-}
-
-/// A lasso: the view direction and a polygon in the view plane.
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LassoJson {
-    view: [f64; 3],
-    polygon: Vec<[f64; 2]>,
-}
-
-/// Parses a region file: JSON `{"vertices": [i, ...]}` or
-/// `{"lasso": {"view": [x, y, z], "polygon": [[x, y], ...]}}`, or plain text
-/// vertex indices separated by whitespace or commas (`#` starts a comment).
-pub fn parse_region(text: &str, mesh: &Mesh) -> Result<Vec<u32>, PlateError> {
-    let t = text.trim_start();
-    if t.starts_with('{') {
-        let r: RegionJson =
-            serde_json::from_str(t).map_err(|e| PlateError::RegionFile(e.to_string()))?;
-        return match (r.vertices, r.lasso) {
-            (Some(ids), None) => Ok(ids),
-            (None, Some(l)) => region_from_lasso(mesh, l.view, &l.polygon),
-            (Some(_), Some(_)) => Err(PlateError::RegionFile(
-                "give either \"vertices\" or \"lasso\", not both".into(),
-            )),
-            (None, None) => Err(PlateError::RegionFile(
-                "JSON region needs \"vertices\" or \"lasso\"".into(),
-            )),
-        };
-    }
-    let mut out = Vec::new();
-    for line in text.lines() {
-        let line = line.split('#').next().unwrap_or("");
-        for tok in line.split(|c: char| c.is_whitespace() || c == ',') {
-            if tok.is_empty() {
-                continue;
-            }
-            out.push(
-                tok.parse::<u32>()
-                    .map_err(|_| PlateError::RegionFile(format!("not a vertex index: {tok:?}")))?,
-            );
-        }
-    }
-    Ok(out)
 }

@@ -35,7 +35,7 @@
 //!
 //! Submodules: [`projection`] (eqs 13-14), [`boundary`] (eq 15),
 //! [`mapping`] (eq 16), [`deformer`] (precomputed region, one pass per
-//! cursor move), [`mod@reference`] (Morley finite-element clamped-plate solver,
+//! cursor move), [`region`] (region files and lassos), [`mod@reference`] (Morley finite-element clamped-plate solver,
 //! the ground truth), [`baselines`] (Laplacian deformer, Delta Mush),
 //! [`shapes`] (test regions and the paper's comparisons), [`check`].
 
@@ -47,11 +47,13 @@ mod delaunay;
 pub mod mapping;
 pub mod projection;
 pub mod reference;
+pub mod region;
 pub mod shapes;
 
 use crate::jet::Real;
 
 pub use deformer::{BoundaryMethod, Direction, MappingMethod, PlateDeformer, RegionOptions};
+pub use region::{parse_region, region_from_lasso};
 
 /// Errors of the plate family.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]

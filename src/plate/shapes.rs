@@ -181,11 +181,11 @@ pub fn compare(
     let ours_mesh = plate.deform(&mesh, d, 1.0, Direction::Normal)?;
     // ground truth on the region's triangles, same q = 1 and D
     let mut local = vec![usize::MAX; mesh.positions.len()];
-    for (k, &v) in plate.region.iter().enumerate() {
+    for (k, &v) in plate.region().iter().enumerate() {
         local[v as usize] = k;
     }
     let xy: Vec<[f64; 2]> = plate
-        .region
+        .region()
         .iter()
         .map(|&v| {
             let p = mesh.positions[v as usize];
@@ -200,10 +200,10 @@ pub fn compare(
             l.iter().all(|&x| x != usize::MAX).then_some(l)
         })
         .collect();
-    let gt = solve_clamped(&xy, &tris, &vec![1.0; xy.len()], plate.rigidity)?;
+    let gt = solve_clamped(&xy, &tris, &vec![1.0; xy.len()], plate.rigidity())?;
     let z = |m: &Mesh| -> Vec<f64> {
         plate
-            .region
+            .region()
             .iter()
             .map(|&v| m.positions[v as usize][2])
             .collect()
@@ -212,21 +212,21 @@ pub fn compare(
     let gt_peak = gt.w.iter().fold(0.0f64, |m, x| m.max(*x));
     let ours_peak = ours_raw.iter().fold(0.0f64, |m, x| m.max(*x));
     // handle: region vertices within 1.5 d_P of the centroid
-    let c = plate.boundary.d_p;
+    let c = plate.boundary().d_p;
     let centre = {
         let n = xy.len() as f64;
         xy.iter()
             .fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n])
     };
     let mut handle: Vec<u32> = plate
-        .region
+        .region()
         .iter()
         .zip(&xy)
         .filter(|(_, p)| (p[0] - centre[0]).hypot(p[1] - centre[1]) <= 1.5 * c)
         .map(|(&v, _)| v)
         .collect();
     if handle.is_empty() {
-        handle.push(plate.region[0]);
+        handle.push(plate.region()[0]);
     }
     let harm = PlateDeformer::new(
         &mesh,
@@ -237,8 +237,8 @@ pub fn compare(
         },
     )?;
     let harm_mesh = harm.deform(&mesh, d, 1.0, Direction::Normal)?;
-    let lap_mesh = laplacian_deform(&mesh, &plate.region, &handle, [0.0, 0.0, 1.0], lap)?;
-    let dm_mesh = delta_mush(&mesh, &plate.region, &plate.region, [0.0, 0.0, 1.0], dm)?;
+    let lap_mesh = laplacian_deform(&mesh, plate.region(), &handle, [0.0, 0.0, 1.0], lap)?;
+    let dm_mesh = delta_mush(&mesh, plate.region(), plate.region(), [0.0, 0.0, 1.0], dm)?;
     let truth = normalise(&gt.w);
     let ours = normalise(&ours_raw);
     let ours_harmonic = normalise(&z(&harm_mesh));
@@ -253,7 +253,7 @@ pub fn compare(
     Ok(Comparison {
         shape,
         grid,
-        region: plate.region.clone(),
+        region: plate.region().to_vec(),
         xy,
         truth,
         ours,

@@ -7,6 +7,7 @@ mod infra;
 mod layers;
 mod registry;
 mod strategies;
+mod tolerances;
 mod units;
 
 mod body;

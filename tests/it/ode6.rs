@@ -85,11 +85,15 @@ fn polylines_interpolate_vertices() {
     }
     assert!(matches!(
         Curve::from_polyline(&[[0.0; 3]; 2], true),
-        Err(Ode6Error::BadData(_))
+        Err(Ode6Error::TooFewVertices {
+            closed: true,
+            min: 3,
+            got: 2
+        })
     ));
     assert!(matches!(
         Curve::from_polyline(&[[f64::NAN, 0.0, 0.0]; 4], false),
-        Err(Ode6Error::BadData(_))
+        Err(Ode6Error::NotFinite { .. })
     ));
 }
 
@@ -142,7 +146,7 @@ fn approach2_three_point_on_quadratic_surface() {
         let want = d_target(u);
         for k in 0..3 {
             assert!(
-                (ours[k] - want[k]).abs() < 1e-6,
+                (ours[k] - want[k]).abs() < tol::CENTRAL_DIFFERENCE,
                 "u = {u}: {ours:?} vs {want:?}"
             );
         }
@@ -307,7 +311,7 @@ fn mismatched_case_is_refused() {
             beta: 2.0,
         },
     );
-    assert!(matches!(r, Err(Ode6Error::BadData(_))));
+    assert!(matches!(r, Err(Ode6Error::WrongCase { .. })));
 }
 
 /// The quintic Hermite segment takes its end data: position, first and
@@ -322,7 +326,7 @@ fn hermite_segment_meets_end_data() {
         for i in 0..3 {
             for k in 0..3 {
                 assert!(
-                    (p[k].deriv(i, 0) - want[i][k]).abs() < 1e-13,
+                    (p[k].deriv(i, 0) - want[i][k]).abs() < tol::ROUNDING,
                     "v = {v} i = {i}"
                 );
             }
@@ -330,7 +334,10 @@ fn hermite_segment_meets_end_data() {
     }
     let mut bad = a;
     bad[1][0] = f64::NAN;
-    assert!(matches!(Curve::hermite(bad, b), Err(Ode6Error::BadData(_))));
+    assert!(matches!(
+        Curve::hermite(bad, b),
+        Err(Ode6Error::NotFinite { .. })
+    ));
 }
 
 /// The 3 x 2 grid check is not vacuous: the registered measure is small on
@@ -359,15 +366,15 @@ fn grid_continuity_check_can_fail() {
         panic!("grid curves are Hermite segments");
     }
     let jb = g.jumps(16);
-    assert!(measure(&g) > 1e-3, "{jb:?}");
-    assert!(jb.v[2] > 0.1 && jb.v[0] < tol::SOLVE && jb.v[1] < tol::SOLVE);
+    assert!(measure(&g) > tol::DETECTED, "{jb:?}");
+    assert!(jb.v[2] > tol::DETECTED && jb.v[0] < tol::SOLVE && jb.v[1] < tol::SOLVE);
 
     // (2) Fig 6b: different parameters on the two sides of a v-join.
     let mut g = good.clone();
     g.patches[2][1].basis = Basis::new(Params::new(0.1, 0.1, 3.0)).unwrap();
     let jb = g.jumps(16);
     assert!(jb.v[0] > 1e-4, "{jb:?}");
-    assert!(measure(&g) > 1e-3);
+    assert!(measure(&g) > tol::DETECTED);
 
     // (3) u-join: the S_uu curve (c6) of patch (0, 0) at the join with (1, 0).
     let mut g = good.clone();
@@ -375,8 +382,8 @@ fn grid_continuity_check_can_fail() {
         ends[1][0][2] += 0.3;
     }
     let jb = g.jumps(16);
-    assert!(jb.u[2] > 0.1 && jb.u[0] < tol::SOLVE, "{jb:?}");
-    assert!(measure(&g) > 1e-3);
+    assert!(jb.u[2] > tol::DETECTED && jb.u[0] < tol::SOLVE, "{jb:?}");
+    assert!(measure(&g) > tol::DETECTED);
 
     // (4) Vacuous: all curves zero -> no derivative to compare -> fails.
     let mut g = good;
@@ -401,7 +408,10 @@ fn gec_boundary_curves() {
     }
     let (mut g, _) = test_gecs();
     g.x[0][1] = f64::INFINITY;
-    assert!(matches!(Curve::from_gec(&g), Err(Ode6Error::BadData(_))));
+    assert!(matches!(
+        Curve::from_gec(&g),
+        Err(Ode6Error::NotFinite { .. })
+    ));
 }
 
 /// `ode6 surface` takes GEC and Hermite curves; a singular parameter set
@@ -440,7 +450,7 @@ fn cli_gec_spec_and_singular_error() {
     assert!(m
         .positions
         .iter()
-        .any(|q| pdesculpt::mesh::dist(*q, p0) < 1e-9));
+        .any(|q| pdesculpt::mesh::dist(*q, p0) < tol::SOLVE));
     // Hermite (open) curves.
     let h = serde_json::json!({"hermite": {"start": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "end": [[1, 0, 0], [1, 0.5, 0], [0, 0, 0]]}});
     let hs = serde_json::json!({"params": {"rho": 1, "eta": 1, "lambda": 3},
@@ -513,8 +523,8 @@ proptest! {
         let g = pdesculpt::ode6::Grid::from_knots(&knots, bases).unwrap();
         let j = g.jumps(6);
         for d in 0..3 {
-            prop_assert!(j.u[d] <= 1e-7 * j.u_magnitude[d].max(1.0), "{ps:?} {j:?}");
-            prop_assert!(j.v[d] <= 1e-7 * j.v_magnitude[d].max(1.0), "{ps:?} {j:?}");
+            prop_assert!(j.u[d] <= tol::JOIN * j.u_magnitude[d].max(1.0), "{ps:?} {j:?}");
+            prop_assert!(j.v[d] <= tol::JOIN * j.v_magnitude[d].max(1.0), "{ps:?} {j:?}");
         }
         for col in &g.patches {
             for p in col {
@@ -547,10 +557,69 @@ proptest! {
                 let q = g.eval_v(v);
                 for k in 0..3 {
                     for (du, c) in sc.iter().enumerate() {
-                        prop_assert!((pt[k].deriv(du, 0) - c * q[k]).abs() <= 1e-9 * (1.0 + (c * q[k]).abs()));
+                        prop_assert!((pt[k].deriv(du, 0) - c * q[k]).abs() <= tol::SOLVE * (1.0 + (c * q[k]).abs()));
                     }
                 }
             }
         }
     }
+}
+
+/// The natural cubic spline on uneven knots: it passes through the values,
+/// reproduces a straight line exactly, is C2 at the interior knots and has
+/// zero curvature at both ends (jets of each interval's cubic); bad knots
+/// are refused by name.
+#[test]
+fn natural_spline_identities() {
+    use pdesculpt::ode6::spline::{segment, NaturalSpline};
+    let t = [0.0, 0.15, 0.4, 0.45, 0.8, 1.0];
+    let y = [1.0, -0.5, 2.0, 0.3, 0.9, -1.2];
+    let s = NaturalSpline::new(&t, &y).unwrap();
+    let m2 = s.second_derivatives();
+    for (ti, yi) in t.iter().zip(&y) {
+        assert!((s.eval(*ti) - yi).abs() < tol::ROUNDING, "t = {ti}");
+    }
+    let piece = |i: usize, u: f64| {
+        segment(
+            [t[i], t[i + 1]],
+            [y[i], y[i + 1]],
+            [m2[i], m2[i + 1]],
+            Jet::<3, 1>::var_u(u),
+        )
+    };
+    for i in 1..t.len() - 1 {
+        let (left, right) = (piece(i - 1, t[i]), piece(i, t[i]));
+        for d in 0..3 {
+            let (a, b) = (left.deriv(d, 0), right.deriv(d, 0));
+            assert!(
+                (a - b).abs() < tol::scaled(tol::SOLVE, a),
+                "knot {i} derivative {d}"
+            );
+        }
+    }
+    assert!(piece(0, t[0]).deriv(2, 0).abs() < tol::SOLVE);
+    assert!(piece(t.len() - 2, t[t.len() - 1]).deriv(2, 0).abs() < tol::SOLVE);
+    let line: Vec<f64> = t.iter().map(|x| 3.0 * x - 1.0).collect();
+    let s = NaturalSpline::new(&t, &line).unwrap();
+    for u in [0.05, 0.3, 0.42, 0.7, 0.99] {
+        assert!(
+            (s.eval(u) - (3.0 * u - 1.0)).abs() < tol::ROUNDING,
+            "u = {u}"
+        );
+    }
+    assert!(matches!(
+        NaturalSpline::new(&[0.0, 0.5, 0.5], &[1.0, 2.0, 3.0]),
+        Err(Ode6Error::KnotsNotIncreasing { index: 2, .. })
+    ));
+    assert!(matches!(
+        NaturalSpline::new(&[0.0], &[1.0]),
+        Err(Ode6Error::SplineSize {
+            knots: 1,
+            values: 1
+        })
+    ));
+    assert!(matches!(
+        NaturalSpline::new(&[0.0, 1.0], &[1.0, f64::NAN]),
+        Err(Ode6Error::NonFiniteValue { .. })
+    ));
 }

@@ -13,6 +13,9 @@ use proptest::prelude::*;
 
 /// Lowest acceptable observed convergence order of the Galerkin centre deflection.
 const MIN_ORDER: f64 = 2.5;
+/// A second-order method's successive differences shrink by 4: the observed
+/// ratio on grids 16, 32, 64 may miss 4 by this much (pre-asymptotic terms).
+const SECOND_ORDER_RATIO_SLACK: f64 = 0.1;
 
 #[test]
 fn pde4_checks_pass() {
@@ -451,7 +454,10 @@ fn galerkin_convergence_order_sine_load_vs_fd_reference() {
         .map(|&n| fd_centre(ShapeParams::PLATE, n, sine).unwrap())
         .collect();
     let fd_ratio = (c[0] - c[1]) / (c[1] - c[2]);
-    assert!((fd_ratio - 4.0).abs() < 0.1, "FD ratio {fd_ratio}");
+    assert!(
+        (fd_ratio - 4.0).abs() < SECOND_ORDER_RATIO_SLACK,
+        "FD ratio {fd_ratio}"
+    );
     for rho in [1.0, 1.0 / 1.5, 0.5] {
         let p = ShapeParams::plate_ratio(rho);
         let reference = fd_centre_extrapolated(p, FD_GRID, sine).unwrap().0;

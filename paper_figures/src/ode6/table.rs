@@ -229,7 +229,7 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             // Baseline: a natural-spline loft through the same sections.
             let knots: Vec<f64> = (0..k).map(|i| i as f64).collect();
             let refs: Vec<&Curve> = secs.iter().collect();
-            let lofted = super::loft(&refs, &knots, (k - 1) * NU / 4, 2 * m);
+            let lofted = super::loft(&refs, &knots, (k - 1) * NU / 4, 2 * m)?;
             let loft_to_rec = stats(&point_distances(&region_vertices, &lofted));
             // Stored scalars per section: 3 per resampled point, or the
             // GEC's centre and 4J coefficients plus its plane's height.

@@ -207,27 +207,31 @@ fn prepare_with(
 
 /// Boundary curve (3D) of a prepared region on mesh `m`.
 fn outline(p: &PlateDeformer, m: &Mesh) -> Vec<[f64; 3]> {
-    p.boundary
+    p.boundary()
         .loop_indices
         .iter()
-        .map(|&i| m.positions[p.region[i] as usize])
+        .map(|&i| m.positions[p.region()[i] as usize])
         .collect()
 }
 
 /// Cursor motion whose plate peak is `peak` for sensitivity `s`.
 fn motion_for_peak(p: &PlateDeformer, s: f64, peak: f64) -> f64 {
-    peak * 64.0 * p.rigidity / s
+    peak * 64.0 * p.rigidity() / s
 }
 
 /// Cursor motion of length `len` along the region normal, oriented
 /// towards `outside`.
 fn outward(p: &PlateDeformer, outside: [f64; 3], len: f64) -> [f64; 3] {
-    let sgn = if dot(p.normal, outside) < 0.0 {
+    let sgn = if dot(p.normal(), outside) < 0.0 {
         -len
     } else {
         len
     };
-    [p.normal[0] * sgn, p.normal[1] * sgn, p.normal[2] * sgn]
+    [
+        p.normal()[0] * sgn,
+        p.normal()[1] * sgn,
+        p.normal()[2] * sgn,
+    ]
 }
 
 /// Fig 8: (a) region, (b, c) same sensitivity, two cursor directions,
@@ -264,7 +268,7 @@ pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
         data.push(serde_json::json!({
             "case": name, "cursor_motion": dv, "sensitivity": s,
             "max_displacement": disp,
-            "predicted_max_s_d_over_64D": s * norm(*dv) / (64.0 * p.rigidity),
+            "predicted_max_s_d_over_64D": s * norm(*dv) / (64.0 * p.rigidity()),
         }));
         meshes.push(out);
     }
@@ -304,8 +308,8 @@ pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
         let d = outward(&p, dir, motion_for_peak(&p, 70.0, 0.35));
         let out = p.deform(&m, d, 70.0, Direction::Normal)?;
         data.push(serde_json::json!({
-            "model": name, "vertices": m.positions.len(), "region_vertices": p.region.len(),
-            "boundary": method, "non_star_rays": p.non_star_rays,
+            "model": name, "vertices": m.positions.len(), "region_vertices": p.region().len(),
+            "boundary": method, "non_star_rays": p.non_star_rays(),
         }));
         let ol = outline(&p, &m);
         before.push((m, ol.clone()));
@@ -348,8 +352,8 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         out_harmonic = ph.deform(&out_harmonic, dh, 70.0, Direction::Normal)?;
         outlines.extend(outline(&p, &t));
         teapot_steps.push(serde_json::json!({
-            "centre": c, "region_vertices": p.region.len(), "boundary": method,
-            "peak": peak, "non_star_rays": p.non_star_rays,
+            "centre": c, "region_vertices": p.region().len(), "boundary": method,
+            "peak": peak, "non_star_rays": p.non_star_rays(),
         }));
     }
     let first: Vec<[f64; 3]> = {
@@ -389,7 +393,7 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
         let p = PlateDeformer::new(&m, &region, &o)?;
         let d = motion_for_peak(&p, 70.0, peak);
         m = p.deform(&m, [0.0, 0.0, d], 70.0, Direction::Cursor)?;
-        steps.push(serde_json::json!({ "shape": s.name(), "region_vertices": p.region.len(), "peak": peak }));
+        steps.push(serde_json::json!({ "shape": s.name(), "region_vertices": p.region().len(), "peak": peak }));
     }
     let img = render_row(&[(&m, Vec::new())], PERSP, 500);
     ctx.write_bytes("001-fig1b-sheet.png", &img.encode_png())?;

@@ -171,7 +171,7 @@ fn apply_plate(mesh: &mut Mesh, e: &Edit) -> Result<(), EditError> {
     };
     let plate = PlateDeformer::new(mesh, &region, &opts)
         .map_err(|err| invalid(format!("plate region ({} vertices): {err}", region.len())))?;
-    let peak = plate.weights.iter().copied().fold(0.0, f64::max);
+    let peak = plate.weights().iter().copied().fold(0.0, f64::max);
     if !(peak.is_finite() && peak > 0.0) {
         return Err(invalid(format!(
             "the plate region ({} vertices) has no interior vertex to move",
@@ -183,7 +183,7 @@ fn apply_plate(mesh: &mut Mesh, e: &Edit) -> Result<(), EditError> {
         .apply(&mut mesh.positions, q)
         .map_err(|err| invalid(err.to_string()))?;
     if plate
-        .region
+        .region()
         .iter()
         .any(|&v| mesh.positions[v as usize].iter().any(|x| !x.is_finite()))
     {

@@ -125,7 +125,7 @@ mod quality;
 mod scan;
 
 pub use polygonize::{marching_tetrahedra, surface_nets};
-pub use quality::{triangle_quality, TriangleQuality};
+pub use quality::{smallest_angles_deg, triangle_quality, TriangleQuality};
 
 #[cfg(test)]
 mod reference;

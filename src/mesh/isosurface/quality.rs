@@ -31,23 +31,7 @@ pub fn triangle_quality(m: &Mesh) -> TriangleQuality {
     let mut below = 0usize;
     for t in &m.triangles {
         let p = t.map(|i| m.positions[i as usize]);
-        let mut mn: f64 = 180.0;
-        for c in 0..3 {
-            let (a, b, o) = (p[(c + 1) % 3], p[(c + 2) % 3], p[c]);
-            let u = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
-            let v = [b[0] - o[0], b[1] - o[1], b[2] - o[2]];
-            let nu = crate::vec3::norm(u);
-            let nv = crate::vec3::norm(v);
-            let ang = if nu > 0.0 && nv > 0.0 {
-                (crate::vec3::dot(u, v) / (nu * nv))
-                    .clamp(-1.0, 1.0)
-                    .acos()
-                    .to_degrees()
-            } else {
-                0.0
-            };
-            mn = mn.min(ang);
-        }
+        let mn = smallest_angle_deg(p);
         q.min_angle_deg = q.min_angle_deg.min(mn);
         q.mean_min_angle_deg += mn;
         let l = [0, 1, 2].map(|c| {
@@ -85,4 +69,35 @@ pub fn triangle_quality(m: &Mesh) -> TriangleQuality {
         q.min_angle_deg = 0.0;
     }
     q
+}
+
+/// The smallest interior angle (degrees) of every triangle of `m`, in
+/// triangle order (0 for a triangle with a repeated corner).
+pub fn smallest_angles_deg(m: &Mesh) -> Vec<f64> {
+    m.triangles
+        .iter()
+        .map(|t| smallest_angle_deg(t.map(|i| m.positions[i as usize])))
+        .collect()
+}
+
+/// The smallest interior angle (degrees) of the triangle `p`.
+fn smallest_angle_deg(p: [[f64; 3]; 3]) -> f64 {
+    let mut mn: f64 = 180.0;
+    for c in 0..3 {
+        let (a, b, o) = (p[(c + 1) % 3], p[(c + 2) % 3], p[c]);
+        let u = [a[0] - o[0], a[1] - o[1], a[2] - o[2]];
+        let v = [b[0] - o[0], b[1] - o[1], b[2] - o[2]];
+        let nu = crate::vec3::norm(u);
+        let nv = crate::vec3::norm(v);
+        let ang = if nu > 0.0 && nv > 0.0 {
+            (crate::vec3::dot(u, v) / (nu * nv))
+                .clamp(-1.0, 1.0)
+                .acos()
+                .to_degrees()
+        } else {
+            0.0
+        };
+        mn = mn.min(ang);
+    }
+    mn
 }

@@ -1,7 +1,12 @@
 //! Unit tests of the polygonisers.
 
 use super::*;
+use crate::check::tol;
 use crate::mesh::topology::report;
+
+/// The unit sphere polygonised on a 20-cell grid: relative volume error
+/// (discretisation, not rounding).
+const SPHERE_VOLUME_REL_MAX: f64 = 0.05;
 
 fn sphere_grid(n: usize) -> ScalarGrid {
     ScalarGrid::sample([-1.3; 3], [1.3; 3], [n; 3], |p| {
@@ -19,7 +24,10 @@ fn sphere_is_closed_manifold_oriented_outward() {
         assert_eq!(r.euler, 2);
         let v = m.signed_volume();
         let exact = 4.0 / 3.0 * std::f64::consts::PI;
-        assert!((v - exact).abs() / exact < 0.05, "volume {v}");
+        assert!(
+            (v - exact).abs() / exact < SPHERE_VOLUME_REL_MAX,
+            "volume {v}"
+        );
     }
 }
 
@@ -93,9 +101,9 @@ fn quality_of_known_triangles() {
     let q = triangle_quality(&m);
     assert_eq!(q.triangles, 2);
     assert_eq!(q.degenerate, 1);
-    assert!((q.mean_aspect - 1.0).abs() < 1e-12, "{q:?}");
-    assert!((q.max_aspect - 1.0).abs() < 1e-12);
+    assert!((q.mean_aspect - 1.0).abs() < tol::ROUNDING, "{q:?}");
+    assert!((q.max_aspect - 1.0).abs() < tol::ROUNDING);
     assert_eq!(q.min_angle_deg, 0.0);
-    assert!((q.mean_min_angle_deg - 30.0).abs() < 1e-9);
+    assert!((q.mean_min_angle_deg - 30.0).abs() < tol::SOLVE);
     assert_eq!(q.frac_below_10deg, 0.5);
 }

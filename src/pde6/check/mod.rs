@@ -25,6 +25,7 @@ mod measure;
 mod paper_literal;
 mod printed;
 mod printed_appendix;
+mod printed_appendix_b;
 mod printed_checks;
 pub use measure::{
     basis_ode_residual, closed_v_mismatch, interpolation_error, lebesgue, method2_amplification,

@@ -377,23 +377,27 @@ pub fn pipeline_circle() -> Result<(f64, f64), PlateError> {
     let p = PlateDeformer::new(&mesh, &region, &opts)?;
     let m = p.deform(&mesh, [0.0, 0.0, 1.0], 50.0, Direction::Cursor)?;
     let z: Vec<f64> = p
-        .region
+        .region()
         .iter()
         .map(|&v| m.positions[v as usize][2])
         .collect();
     let peak = z.iter().fold(0.0f64, |a, b| a.max(*b));
     // the region's boundary radius (outermost vertices)
-    let rmax = p.local.iter().map(|q| q[0].hypot(q[1])).fold(0.0, f64::max);
+    let rmax = p
+        .local()
+        .iter()
+        .map(|q| q[0].hypot(q[1]))
+        .fold(0.0, f64::max);
     let mut err: f64 = 0.0;
-    for (k, q) in p.local.iter().enumerate() {
+    for (k, q) in p.local().iter().enumerate() {
         let r = q[0].hypot(q[1]) / rmax;
         err = err.max((z[k] / peak - 64.0 * disk_profile(r)).abs());
     }
     let bnd = p
-        .boundary
+        .boundary()
         .loop_indices
         .iter()
-        .map(|&i| (m.positions[p.region[i] as usize][2]).abs())
+        .map(|&i| (m.positions[p.region()[i] as usize][2]).abs())
         .fold(0.0, f64::max);
     Ok((err, bnd))
 }

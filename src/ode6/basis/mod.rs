@@ -43,6 +43,10 @@ use super::Ode6Error;
 use crate::jet::{Jet, Real};
 use nalgebra::{DMatrix, SMatrix};
 
+mod case_basis;
+mod roots;
+pub use roots::{classify, classify_closed, Params, RootCase};
+
 /// Largest root magnitude handled by the Taylor series.
 pub const Q_SERIES: f64 = 4.0;
 /// Real roots closer than this fraction of the larger one use the
@@ -53,161 +57,6 @@ pub const SEPARATION: f64 = 0.5;
 pub const RCOND_MIN: f64 = 1e-11;
 /// Largest relative residual accepted by [`Basis::with_case`].
 pub const CASE_RESIDUAL_MAX: f64 = 1e-8;
-/// Terms of the Taylor series of the fundamental solutions.
-const N_SERIES: usize = 48;
-/// Terms of the series of `F2`, `F3` (|q| <= 1, u in [0, 1]).
-const N_F: usize = 16;
-
-/// The shape control parameters of eq 2.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Params {
-    pub rho: f64,
-    pub eta: f64,
-    pub lambda: f64,
-}
-
-impl Params {
-    pub fn new(rho: f64, eta: f64, lambda: f64) -> Params {
-        Params { rho, eta, lambda }
-    }
-
-    fn validate(&self) -> Result<(), Ode6Error> {
-        for (name, value) in [
-            ("rho", self.rho),
-            ("eta", self.eta),
-            ("lambda", self.lambda),
-        ] {
-            if !value.is_finite() {
-                return Err(Ode6Error::NonFinite { name, value });
-            }
-        }
-        if self.rho == 0.0 && self.eta == 0.0 && self.lambda == 0.0 {
-            return Err(Ode6Error::AllZero);
-        }
-        Ok(())
-    }
-
-    /// Roots `q` of `rho q^2 + eta q + lambda = 0` (eqs 13-14) as
-    /// `(re, im)` pairs, computed without cancellation; `rho != 0`.
-    pub fn q_roots(&self) -> [(f64, f64); 2] {
-        let (r, e, l) = (self.rho, self.eta, self.lambda);
-        let disc = e * e - 4.0 * r * l;
-        if disc >= 0.0 {
-            let s = disc.sqrt();
-            // t = rho q1 = -(e + sign(e) s)/2 (sign(0) = +1), q2 = lambda / t.
-            let sgn = if e >= 0.0 { 1.0 } else { -1.0 };
-            let t = -0.5 * (e + sgn * s);
-            if t == 0.0 {
-                return [(0.0, 0.0), (0.0, 0.0)];
-            }
-            let q1 = t / r;
-            let q2 = l / t;
-            [(q1, 0.0), (q2, 0.0)]
-        } else {
-            let a = -e / (2.0 * r);
-            let b = (-disc).sqrt() / (2.0 * r.abs());
-            [(a, b), (a, -b)]
-        }
-    }
-}
-
-/// Which basis represents the solution space (see the module doc).
-#[derive(Clone, Debug, PartialEq)]
-pub enum RootCase {
-    /// Taylor series; `d[k][n]` is the n-th derivative at 0 of basis k.
-    Series {
-        coef: Vec<[f64; N_SERIES]>,
-    },
-    Separated {
-        q1: f64,
-        q2: f64,
-    },
-    CloseOscillatory {
-        sigma: f64,
-        tau: f64,
-    },
-    CloseGrowing {
-        sigma: f64,
-        tau: f64,
-    },
-    Complex {
-        alpha: f64,
-        beta: f64,
-    },
-    /// `rho = 0`, `eta != 0`: `{1, u}` and the pair of `q = -lambda/eta`.
-    FourthOrder {
-        q: f64,
-    },
-    /// `rho = eta = 0`: `{1, u}`.
-    SecondOrder,
-}
-
-impl RootCase {
-    /// A short name for messages.
-    pub fn name(&self) -> String {
-        match self {
-            RootCase::Series { .. } => "small roots |q| <= 4 (Taylor series)".into(),
-            RootCase::Separated { q1, q2 } => format!("distinct real roots q = {q1:.6e}, {q2:.6e}"),
-            RootCase::CloseOscillatory { sigma, tau } => {
-                format!("close/repeated negative roots (sigma = {sigma:.6e}, tau = {tau:.6e})")
-            }
-            RootCase::CloseGrowing { sigma, tau } => {
-                format!("close/repeated positive roots (sigma = {sigma:.6e}, tau = {tau:.6e})")
-            }
-            RootCase::Complex { alpha, beta } => {
-                format!("complex roots r = +-{alpha:.6e} +- {beta:.6e} i")
-            }
-            RootCase::FourthOrder { q } => format!("rho = 0, fourth order (q = {q:.6e})"),
-            RootCase::SecondOrder => "rho = eta = 0, second order".into(),
-        }
-    }
-}
-
-/// `sin(b x)/b` (`x` at `b = 0`).
-fn snc<T: Real>(b: f64, x: T) -> T {
-    if b == 0.0 {
-        x
-    } else {
-        (x * b).sin() / b
-    }
-}
-
-/// `sinh(a x)/a` (`x` at `a = 0`).
-fn shc<T: Real>(a: f64, x: T) -> T {
-    if a == 0.0 {
-        x
-    } else {
-        (x * a).sinh() / a
-    }
-}
-
-/// The two basis functions contributed by one real root `q`.
-fn pair<T: Real>(q: f64, u: T) -> [T; 2] {
-    if q < -1.0 {
-        let w = (-q).sqrt();
-        [(u * w).cos(), (u * w).sin()]
-    } else if q > 1.0 {
-        let w = q.sqrt();
-        [(u * (-w)).exp(), ((u - 1.0) * w).exp()]
-    } else {
-        series_f23(q, u)
-    }
-}
-
-/// `F2(q, u)`, `F3(q, u)` by their series (entire in `q`).
-fn series_f23<T: Real>(q: f64, u: T) -> [T; 2] {
-    let u2 = u * u;
-    // coefficients of (u^2)^k
-    let mut f2 = T::zero();
-    let mut f3 = T::zero();
-    for k in (0..N_F).rev() {
-        let qk = q.powi(k as i32);
-        f2 = f2 * u2 + qk / crate::jet::factorial(2 * k + 2);
-        f3 = f3 * u2 + qk / crate::jet::factorial(2 * k + 3);
-    }
-    [f2 * u2, f3 * u2 * u]
-}
 
 /// The six basis functions `g_1..g_6` of eq 19 for one parameter set.
 #[derive(Clone, Debug)]
@@ -247,13 +96,13 @@ impl Basis {
         if res.is_finite() && res <= CASE_RESIDUAL_MAX {
             Ok(b)
         } else {
-            Err(Ode6Error::BadData(format!(
-                "case {} does not solve eq 8 for rho = {}, eta = {}, lambda = {} (relative residual {res:.2e})",
-                b.case.name(),
-                params.rho,
-                params.eta,
-                params.lambda
-            )))
+            Err(Ode6Error::WrongCase {
+                case: b.case.name(),
+                rho: params.rho,
+                eta: params.eta,
+                lambda: params.lambda,
+                residual: res,
+            })
         }
     }
 
@@ -263,10 +112,7 @@ impl Basis {
     pub fn reduced(params: Params) -> Result<Basis, Ode6Error> {
         params.validate()?;
         if params.rho != 0.0 {
-            return Err(Ode6Error::BadData(format!(
-                "Basis::reduced needs rho = 0 (got rho = {})",
-                params.rho
-            )));
+            return Err(Ode6Error::ReducedNeedsRhoZero { rho: params.rho });
         }
         if params.eta == 0.0 {
             Basis::build(params, RootCase::SecondOrder, 2)
@@ -345,69 +191,7 @@ impl Basis {
 
     /// The case basis `y_1..y_6` (unused entries zero for reduced orders).
     pub fn y<T: Real>(&self, u: T) -> [T; 6] {
-        let one = T::one();
-        let z = T::zero();
-        match &self.case {
-            RootCase::Series { coef } => {
-                let mut out = [z; 6];
-                for k in 0..6 {
-                    let mut acc = T::zero();
-                    for n in (0..N_SERIES).rev() {
-                        acc = acc * u + coef[k][n] / crate::jet::factorial(n);
-                    }
-                    out[k] = acc;
-                }
-                out
-            }
-            RootCase::Separated { q1, q2 } => {
-                let [a, b] = pair(*q1, u);
-                let [c, d] = pair(*q2, u);
-                [one, u, a, b, c, d]
-            }
-            RootCase::CloseOscillatory { sigma, tau } => {
-                let (cs, ss) = ((u * *sigma).cos(), (u * *sigma).sin());
-                let (ct, st) = ((u * *tau).cos(), snc(*tau, u));
-                [one, u, cs * ct, ss * ct, cs * st, ss * st]
-            }
-            RootCase::CloseGrowing { sigma, tau } => {
-                let w = one - u;
-                let e0 = (u * (-*sigma)).exp();
-                let e1 = (w * (-*sigma)).exp();
-                [
-                    one,
-                    u,
-                    e0 * (u * *tau).cosh(),
-                    e0 * shc(*tau, u),
-                    e1 * (w * *tau).cosh(),
-                    e1 * shc(*tau, w),
-                ]
-            }
-            RootCase::Complex { alpha, beta } => {
-                let (a, b) = (*alpha, *beta);
-                if a <= 1.0 {
-                    let (ch, sh) = ((u * a).cosh(), shc(a, u));
-                    let (c, s) = ((u * b).cos(), snc(b, u));
-                    [one, u, ch * c, ch * s, sh * c, sh * s]
-                } else {
-                    let w = one - u;
-                    let e0 = (u * (-a)).exp();
-                    let e1 = (w * (-a)).exp();
-                    [
-                        one,
-                        u,
-                        e0 * (u * b).cos(),
-                        e0 * snc(b, u),
-                        e1 * (w * b).cos(),
-                        e1 * snc(b, w),
-                    ]
-                }
-            }
-            RootCase::FourthOrder { q } => {
-                let [a, b] = pair(*q, u);
-                [one, u, a, b, z, z]
-            }
-            RootCase::SecondOrder => [one, u, z, z, z, z],
-        }
+        case_basis::case_basis(&self.case, u)
     }
 
     /// The basis functions `g_1..g_6` of eq 19 at `u` (generic: jets give
@@ -446,67 +230,6 @@ impl Basis {
             lambda * g.deriv(2, 0),
         ]
     }
-}
-
-/// Chooses the case for `rho != 0`.
-pub fn classify(p: &Params) -> RootCase {
-    classify_with(p, true)
-}
-
-/// The closed-form case even for small roots (cross-checks the series).
-pub fn classify_closed(p: &Params) -> RootCase {
-    classify_with(p, false)
-}
-
-fn classify_with(p: &Params, allow_series: bool) -> RootCase {
-    let [(a1, b1), (a2, _)] = p.q_roots();
-    let qmax = a1.hypot(b1).max(a2.abs());
-    if allow_series && qmax <= Q_SERIES {
-        return RootCase::Series {
-            coef: series_coefficients(p),
-        };
-    }
-    if b1 != 0.0 {
-        // r = alpha + i beta with r^2 = a + i b.
-        let (a, b) = (a1, b1.abs());
-        let m = a.hypot(b);
-        let (alpha, beta) = if a >= 0.0 {
-            let al = ((m + a) / 2.0).sqrt();
-            (al, b / (2.0 * al))
-        } else {
-            let be = ((m - a) / 2.0).sqrt();
-            (b / (2.0 * be), be)
-        };
-        return RootCase::Complex { alpha, beta };
-    }
-    let (q1, q2) = (a1, a2);
-    let gap = (p.eta * p.eta - 4.0 * p.rho * p.lambda).max(0.0).sqrt() / p.rho.abs();
-    if q1 * q2 <= 0.0 || gap >= SEPARATION * qmax {
-        return RootCase::Separated { q1, q2 };
-    }
-    let (w1, w2) = (q1.abs().sqrt(), q2.abs().sqrt());
-    let sigma = (w1 + w2) / 2.0;
-    let tau = gap / (4.0 * sigma);
-    if q1 < 0.0 {
-        RootCase::CloseOscillatory { sigma, tau }
-    } else {
-        RootCase::CloseGrowing { sigma, tau }
-    }
-}
-
-/// Derivatives at 0 of the fundamental solutions: `d[k][n]`, with
-/// `rho d_{n+6} + eta d_{n+4} + lambda d_{n+2} = 0`.
-fn series_coefficients(p: &Params) -> Vec<[f64; N_SERIES]> {
-    (0..6)
-        .map(|k| {
-            let mut d = [0.0; N_SERIES];
-            d[k] = 1.0;
-            for m in 6..N_SERIES {
-                d[m] = -(p.eta * d[m - 2] + p.lambda * d[m - 4]) / p.rho;
-            }
-            d
-        })
-        .collect()
 }
 
 /// The baseline the paper's closed form replaces: solve the 6x6 boundary

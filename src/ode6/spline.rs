@@ -1,0 +1,116 @@
+//! The natural cubic spline through values $y_i$ at increasing knots $t_i$:
+//! cubic on each $[t_i, t_{i+1}]$, $C^2$ at the interior knots, zero second
+//! derivative at both ends. With $M_i = s''(t_i)$ and $h_i = t_{i+1} - t_i$,
+//! $$ s(t) = a\,y_i + b\,y_{i+1} + \big((a^3 - a) M_i + (b^3 - b) M_{i+1}\big)\frac{h_i^2}{6},
+//! \quad a = \frac{t_{i+1} - t}{h_i},\ b = 1 - a, $$
+//! and $C^1$ at the interior knots is the tridiagonal system
+//! $\frac{h_{i-1}}{6} M_{i-1} + \frac{h_{i-1} + h_i}{3} M_i + \frac{h_i}{6} M_{i+1}
+//! = \frac{y_{i+1} - y_i}{h_i} - \frac{y_i - y_{i-1}}{h_{i-1}}$, $M_0 = M_n = 0$
+//! (solved by the Thomas algorithm: the matrix is diagonally dominant).
+//!
+//! Used by open polyline boundary curves ([`super::Curve::from_polyline`],
+//! uniform knots in $v$) and by the natural-spline loft that the figures
+//! compare with the ODE surfaces (knots at the curves' $u$).
+
+use super::Ode6Error;
+use crate::jet::Real;
+
+/// A natural cubic spline in one variable.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NaturalSpline {
+    t: Vec<f64>,
+    y: Vec<f64>,
+    m2: Vec<f64>,
+}
+
+impl NaturalSpline {
+    /// The spline through `y[i]` at `t[i]`; refuses fewer than two knots,
+    /// lengths that differ, non-finite entries and knots that do not
+    /// strictly increase.
+    pub fn new(t: &[f64], y: &[f64]) -> Result<NaturalSpline, Ode6Error> {
+        if t.len() < 2 || t.len() != y.len() {
+            return Err(Ode6Error::SplineSize {
+                knots: t.len(),
+                values: y.len(),
+            });
+        }
+        if let Some(&value) = t.iter().chain(y).find(|x| !x.is_finite()) {
+            return Err(Ode6Error::NonFiniteValue {
+                what: "spline knot or value",
+                value,
+            });
+        }
+        if let Some(i) = (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+            return Err(Ode6Error::KnotsNotIncreasing {
+                index: i,
+                previous: t[i - 1],
+                knot: t[i],
+            });
+        }
+        Ok(NaturalSpline {
+            t: t.to_vec(),
+            y: y.to_vec(),
+            m2: second_derivatives(t, y),
+        })
+    }
+
+    /// The second derivatives $M_i$ at the knots.
+    pub fn second_derivatives(&self) -> &[f64] {
+        &self.m2
+    }
+
+    /// `s(u)`; outside `[t_0, t_n]` the end cubic is extended.
+    pub fn eval(&self, u: f64) -> f64 {
+        let n = self.t.len();
+        let i = (0..n - 1)
+            .rfind(|&i| self.t[i] <= u)
+            .unwrap_or(0)
+            .min(n - 2);
+        segment(
+            [self.t[i], self.t[i + 1]],
+            [self.y[i], self.y[i + 1]],
+            [self.m2[i], self.m2[i + 1]],
+            u,
+        )
+    }
+}
+
+/// The cubic of one interval `[t0, t1]` with end values `y` and end second
+/// derivatives `m2`, at `u` (generic: jets give its derivatives).
+pub fn segment<T: Real>(t: [f64; 2], y: [f64; 2], m2: [f64; 2], u: T) -> T {
+    let h = t[1] - t[0];
+    let a = (T::cst(t[1]) - u) / h;
+    let b = T::one() - a;
+    a * y[0] + b * y[1] + ((a * a * a - a) * m2[0] + (b * b * b - b) * m2[1]) * (h * h / 6.0)
+}
+
+/// $M_0..M_n$ of the module doc (Thomas algorithm); `t` strictly increasing.
+fn second_derivatives(t: &[f64], y: &[f64]) -> Vec<f64> {
+    let n = t.len();
+    let mut m2 = vec![0.0; n];
+    if n < 3 {
+        return m2;
+    }
+    let k = n - 2;
+    let (mut sub, mut diag, mut sup, mut rhs) =
+        (vec![0.0; k], vec![0.0; k], vec![0.0; k], vec![0.0; k]);
+    for i in 1..n - 1 {
+        let (h0, h1) = (t[i] - t[i - 1], t[i + 1] - t[i]);
+        sub[i - 1] = h0 / 6.0;
+        diag[i - 1] = (h0 + h1) / 3.0;
+        sup[i - 1] = h1 / 6.0;
+        rhs[i - 1] = (y[i + 1] - y[i]) / h1 - (y[i] - y[i - 1]) / h0;
+    }
+    for i in 1..k {
+        let w = sub[i] / diag[i - 1];
+        diag[i] -= w * sup[i - 1];
+        rhs[i] -= w * rhs[i - 1];
+    }
+    let mut x = vec![0.0; k];
+    x[k - 1] = rhs[k - 1] / diag[k - 1];
+    for i in (0..k - 1).rev() {
+        x[i] = (rhs[i] - sup[i] * x[i + 1]) / diag[i];
+    }
+    m2[1..=k].copy_from_slice(&x);
+    m2
+}
