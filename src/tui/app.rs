@@ -305,36 +305,6 @@ impl App {
         }
     }
 
-    /// Undo one edit.
-    pub fn undo(&mut self) -> Vec<Effect> {
-        match self.doc.undo() {
-            Ok(()) => {
-                self.log_sel = self.doc.cursor;
-                self.say(format!("undo (cursor {})", self.doc.cursor), false);
-                self.changed()
-            }
-            Err(e) => {
-                self.say(e.to_string(), true);
-                Vec::new()
-            }
-        }
-    }
-
-    /// Redo one edit.
-    pub fn redo(&mut self) -> Vec<Effect> {
-        match self.doc.redo() {
-            Ok(()) => {
-                self.log_sel = self.doc.cursor;
-                self.say(format!("redo (cursor {})", self.doc.cursor), false);
-                self.changed()
-            }
-            Err(e) => {
-                self.say(e.to_string(), true);
-                Vec::new()
-            }
-        }
-    }
-
     /// Marks a job as started on the worker; returns its number.
     pub fn start_job(&mut self, export: bool) -> u64 {
         let gen = self.next_gen;

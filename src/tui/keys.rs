@@ -49,6 +49,36 @@ pub const BINDINGS: &[(&str, &str)] = &[
 ];
 
 impl App {
+    /// Undo one edit.
+    pub fn undo(&mut self) -> Vec<Effect> {
+        match self.doc.undo() {
+            Ok(()) => {
+                self.log_sel = self.doc.cursor;
+                self.say(format!("undo (cursor {})", self.doc.cursor), false);
+                self.changed()
+            }
+            Err(e) => {
+                self.say(e.to_string(), true);
+                Vec::new()
+            }
+        }
+    }
+
+    /// Redo one edit.
+    pub fn redo(&mut self) -> Vec<Effect> {
+        match self.doc.redo() {
+            Ok(()) => {
+                self.log_sel = self.doc.cursor;
+                self.say(format!("redo (cursor {})", self.doc.cursor), false);
+                self.changed()
+            }
+            Err(e) => {
+                self.say(e.to_string(), true);
+                Vec::new()
+            }
+        }
+    }
+
     fn move_sel(&mut self, down: bool) {
         let step = |v: usize, n: usize| -> usize {
             if n == 0 {
