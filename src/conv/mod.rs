@@ -22,6 +22,7 @@ pub mod check_fast;
 pub mod check_quadrature;
 pub mod farfield;
 pub mod fit;
+pub mod frontier;
 pub mod incremental;
 pub mod kernel;
 pub mod model;
