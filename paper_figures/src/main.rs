@@ -6,6 +6,7 @@
 //! which uses whatever is already in the output directory) also writes the
 //! gallery page `index.html` (see `gallery.rs`).
 
+mod body_study;
 mod common;
 
 mod conv;
@@ -25,6 +26,7 @@ use common::{Ctx, Figure};
 fn all_figures() -> Vec<Figure> {
     let mut v = Vec::new();
     v.extend(gec::figures());
+    v.extend(body_study::figures());
     v.extend(pde4::figures());
     v.extend(plate::figures());
     v.extend(pde6::figures());

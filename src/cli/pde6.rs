@@ -1,19 +1,19 @@
 //! `pdesculpt pde6`: sixth-order PDE patches from cross sections (paper 002).
 //!
 //! * `pde6 patch CURVES.json [--a A] [--method global|method1|method2] -o OUT`
+//!   (CURVES.json: the `patch` help below and `pdesculpt::pde6::input`)
 //! * `pde6 body [--mesh BODY.obj | --morph NAME=W ...] -o OUT [--terms J] [--a A] [--anchors K] [--pull P]`:
 //!   one closed body; `--open-parts [--method ...] [--sampling ...]`: the seven open parts
-//!
-//! Without the global `--json` a short summary goes to stderr and nothing to
-//! stdout; with it, the report (JSON) goes to stdout.
 //! * `pde6 mode --a A --n N --values w0,...,w5 --at u`
 //!
-//! CURVES.json: see the `patch` help below and `pdesculpt::pde6::input`.
+//! A short summary goes to stderr; with the global `--json` the report goes
+//! to stdout.
 
-use anyhow::{bail, Context};
+use anyhow::bail;
 use pdesculpt::limits;
-use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions};
-use pdesculpt::pde6::sampling::Sampling;
+use pdesculpt::pde6::body::{reconstruct_base_parts, sampling_from_name, BodyOptions};
+use pdesculpt::pde6::body_closed::ClosedOptions;
+use pdesculpt::pde6::body_report::reconstruct_closed_from;
 use pdesculpt::pde6::Method;
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
@@ -156,16 +156,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 bail!("the surface has non-finite points");
             }
             let unit = units.write_input(&mesh, &output)?;
-            let (summary, line) =
+            let (mut summary, line) =
                 pdesculpt::pde6::input::patch_summary(&chain, sections.len(), &mesh, a, &output);
-            if json {
-                let mut summary = summary;
-                summary["unit"] = serde_json::json!(unit);
-                super::print_json(&summary)?;
-            } else {
-                eprintln!("{line}");
-            }
-            Ok(0)
+            summary["unit"] = serde_json::json!(unit);
+            emit(json, &summary, &format!("{line}\n"))
         }
         Command::Body {
             mesh,
@@ -183,25 +177,18 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             limits::check("--terms", terms, limits::BODY_TERMS)?;
             limits::check("--anchors", anchors, limits::BODY_ANCHORS)?;
             pdesculpt::mesh::io::Format::from_path(&output)?;
-            let sampling = if sampling == "anchored" {
-                Sampling::Anchored {
-                    anchors,
-                    samples: pdesculpt::pde6::body::DEFAULT_SAMPLES,
-                    pull,
-                }
-            } else {
-                Sampling::Gec(sampling.parse().with_context(|| {
-                    format!("--sampling {sampling}: expected anchored, chord, centripetal, uniform or polar")
-                })?)
-            };
+            let sampling = sampling_from_name(&sampling, anchors, pull)?;
             if !open_parts {
-                return body_closed(mesh, &morph, terms, a, anchors, pull, &output, units, json);
+                let opts = ClosedOptions {
+                    terms,
+                    a,
+                    anchors,
+                    pull,
+                    ..ClosedOptions::default()
+                };
+                return body_closed(mesh, &morph, &opts, &output, units, json);
             }
-            let body = pdesculpt::makehuman::base_body()?;
-            eprintln!(
-                "pde6 body: slicing, fitting and solving {} parts",
-                makehuman_parts().len()
-            );
+            eprintln!("pde6 body: slicing, fitting and solving the open parts");
             let opts = BodyOptions {
                 terms,
                 a,
@@ -209,20 +196,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 sampling,
                 ..BodyOptions::default()
             };
-            let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), &opts)?;
+            let (mesh, report) = reconstruct_base_parts(&opts)?;
             let unit = units.write(&mesh, &output, pdesculpt::mesh::unit::MAKEHUMAN)?;
-            if json {
-                let mut out = serde_json::to_value(&report)?;
-                out["unit"] = serde_json::json!(unit);
-                out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
-                super::print_json(&out)?;
-            } else {
-                eprint!(
-                    "{}",
-                    pdesculpt::pde6::input::open_parts_summary(&report, &output)
-                );
-            }
-            Ok(0)
+            let mut out = serde_json::to_value(&report)?;
+            out["unit"] = serde_json::json!(unit);
+            out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
+            let line = pdesculpt::pde6::input::open_parts_summary(&report, &output);
+            emit(json, &out, &line)
         }
         Command::Mode { a, n, values, at } => {
             let (out, line) = pdesculpt::pde6::input::mode_at(a, n, &values, at)?;
@@ -236,40 +216,29 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
 fn body_closed(
     mesh: Option<PathBuf>,
     morph: &[String],
-    terms: usize,
-    a: f64,
-    anchors: usize,
-    pull: f64,
+    opts: &ClosedOptions,
     output: &std::path::Path,
     units: super::units::OutputUnitArgs,
     json: bool,
 ) -> anyhow::Result<i32> {
-    use pdesculpt::pde6::body_closed::{load_body, reconstruct_closed, ClosedOptions};
-    let skin = load_body(mesh.as_deref(), morph)?;
-    if let Some(m) = &mesh {
-        pdesculpt::mesh::io::refuse_overwriting_input(&[m], output)?;
-    }
     eprintln!("pde6 body: finding the layout, tracing, fitting and joining the parts");
-    let opts = ClosedOptions {
-        terms,
-        a,
-        anchors,
-        pull,
-        ..ClosedOptions::default()
-    };
-    let b = reconstruct_closed(&skin, &opts)?;
+    let b = reconstruct_closed_from(mesh.as_deref(), morph, output, opts)?;
     let unit = units.write(&b.model.mesh, output, pdesculpt::mesh::unit::MAKEHUMAN)?;
     let r = &b.report;
+    let mut out = serde_json::to_value(r)?;
+    out["unit"] = serde_json::json!(unit);
+    emit(json, &out, &r.summary(output))
+}
+
+/// The JSON report on stdout with `--json`, else the summary on stderr.
+fn emit(json: bool, report: &serde_json::Value, summary: &str) -> anyhow::Result<i32> {
     if json {
-        let mut out = serde_json::to_value(r)?;
-        out["unit"] = serde_json::json!(unit);
-        super::print_json(&out)?;
+        super::print_json(report)?;
     } else {
-        eprint!("{}", r.summary(output));
+        eprint!("{summary}");
     }
     Ok(0)
 }

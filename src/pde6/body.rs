@@ -30,6 +30,7 @@ use super::sampling::{
 };
 use super::{Chain, Pde6Error, Section};
 use crate::curve::gec::fit::{fit, FitOptions, FrameChoice};
+use crate::curve::gec::Correction;
 use crate::mesh::metrics::{point_distances, stats, DistanceStats};
 use crate::mesh::slice::{slice, Polyline};
 use crate::mesh::Mesh;
@@ -241,7 +242,10 @@ fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, Pde6Error> {
             c[0] >= spec.x_range.0 && c[0] <= spec.x_range.1
         })
         .max_by(|a, b| a.length().total_cmp(&b.length()))
-        .ok_or_else(|| Pde6Error::Body(format!("{}: no closed section at y = {y:.3}", spec.name)))
+        .ok_or_else(|| Pde6Error::NoSection {
+            part: spec.name.to_string(),
+            y,
+        })
 }
 
 /// Reconstructs one part of `skin`.
@@ -260,14 +264,15 @@ pub fn reconstruct_part(
         let pts = dedupe(&l.points, l.length());
         let frame = section_frame(y)?;
         let terms = opts.terms.min(pts.len().saturating_sub(1) / 2).max(1);
-        let here =
-            |e: &dyn std::fmt::Display| Pde6Error::Body(format!("{} section {i}: {e}", spec.name));
+        let here = |e: Pde6Error| e.in_section(format!("{} section {i}", spec.name));
         let (gec, erm_rel) = match opts.sampling {
             Sampling::Gec(param) => {
                 let mut fo = FitOptions::new(terms);
                 fo.frame = FrameChoice::Given(frame);
                 fo.param = param;
-                let r = fit(&pts, &fo).map_err(|e| here(&e))?;
+                // the rule's own angles (the legacy fit: no correction)
+                fo.correction = Correction::None;
+                let r = fit(&pts, &fo).map_err(|e| here(e.into()))?;
                 (r.gec, r.errors.erm_rel)
             }
             Sampling::Anchored {
@@ -276,12 +281,7 @@ pub fn reconstruct_part(
                 pull,
             } => {
                 let plane: Vec<[f64; 2]> = pts.iter().map(|p| frame.project(*p).0).collect();
-                let g = fit_anchored(&plane, frame, terms, anchors, samples, pull).map_err(
-                    |e| match e {
-                        Pde6Error::Body(m) => here(&m),
-                        other => other,
-                    },
-                )?;
+                let g = fit_anchored(&plane, frame, terms, anchors, samples, pull).map_err(here)?;
                 let e = crate::curve::gec::errors(&g, &plane);
                 (g, e.erm_rel)
             }
@@ -331,7 +331,7 @@ pub fn reconstruct(
     opts: &BodyOptions,
 ) -> Result<(Vec<Part>, Mesh, BodyReport), Pde6Error> {
     if skin.positions.is_empty() {
-        return Err(Pde6Error::Body("empty mesh".into()));
+        return Err(Pde6Error::EmptyMesh);
     }
     let (lo, hi) = skin.bbox();
     let height = hi[1] - lo[1];
@@ -399,4 +399,27 @@ pub fn reconstruct(
         recon_triangles: all.triangles.len(),
     };
     Ok((out, all, report))
+}
+
+/// The sampling named on the command line: `anchored` (with `anchors` rays
+/// and `pull`) or a GEC parameter rule (`chord`, `centripetal`, `uniform`,
+/// `polar`).
+pub fn sampling_from_name(name: &str, anchors: usize, pull: f64) -> Result<Sampling, Pde6Error> {
+    if name == "anchored" {
+        return Ok(Sampling::Anchored {
+            anchors,
+            samples: DEFAULT_SAMPLES,
+            pull,
+        });
+    }
+    name.parse()
+        .map(Sampling::Gec)
+        .map_err(|_| Pde6Error::SamplingName(name.to_string()))
+}
+
+/// The seven open parts of paper 002 from the bundled MakeHuman body.
+pub fn reconstruct_base_parts(opts: &BodyOptions) -> Result<(Mesh, BodyReport), Pde6Error> {
+    let body = crate::makehuman::base_body()?;
+    let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), opts)?;
+    Ok((mesh, report))
 }

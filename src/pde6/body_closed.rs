@@ -142,7 +142,7 @@ fn fit_section(
             let h = super::body_layout::hull(t.plane.clone());
             fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
         })
-        .map_err(|e| Pde6Error::Body(format!("{what}: {e}")))?;
+        .map_err(|e| e.in_section(what))?;
     let g = shift_phase(&g, phase);
     Ok(SectionSpec {
         u,
@@ -260,11 +260,9 @@ fn part_from_trace(
     })
 }
 
-fn check_count(what: &str, n: usize) -> Result<(), Pde6Error> {
+fn check_count(what: &'static str, n: usize) -> Result<(), Pde6Error> {
     if n < 7 || (n - 7) % 3 != 0 || n > 7 + 3 * 30 {
-        return Err(Pde6Error::Body(format!(
-            "{what} = {n}: the C2 chain needs 7 + 3k sections (k = 0..30)"
-        )));
+        return Err(Pde6Error::SectionCount { what, got: n });
     }
     Ok(())
 }
@@ -401,8 +399,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             rings_per_height: o.rings_per_height,
             transition_rows: o.transition_rows,
         },
-    )
-    .map_err(|e| Pde6Error::Body(e.to_string()))?;
+    )?;
     let report = measure(skin, &lay, &model, &specs, o);
     Ok(ClosedBody {
         model,

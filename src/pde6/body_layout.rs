@@ -121,7 +121,7 @@ pub fn plane_frame(origin: [f64; 3], n: [f64; 3]) -> Result<Frame, Pde6Error> {
     }
     let e2 = scale(e2, 1.0 / norm(e2));
     let e1 = crate::sketch::transition::cross(e2, n);
-    Frame::new(origin, e1, e2).map_err(|e| Pde6Error::Body(e.to_string()))
+    Ok(Frame::new(origin, e1, e2)?)
 }
 
 /// The closed loops of `m` in the plane (origin, n), in frame coordinates.

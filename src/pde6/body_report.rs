@@ -86,34 +86,48 @@ pub fn measure(
 /// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
 /// with `morphs` (`NAME=WEIGHT`) applied.
 pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, Pde6Error> {
-    let mesh_err = |e: crate::mesh::MeshError| Pde6Error::Body(e.to_string());
     if let Some(p) = path {
         if !morphs.is_empty() {
-            return Err(Pde6Error::Body(
-                "--morph applies to the bundled MakeHuman body, not to --mesh".into(),
-            ));
+            return Err(Pde6Error::MorphWithMesh);
         }
-        let m = crate::mesh::io::read(p).map_err(mesh_err)?;
-        m.validate().map_err(mesh_err)?;
+        let m = crate::mesh::io::read(p)?;
+        m.validate()?;
         return Ok(m);
     }
     let mut targets = Vec::new();
     for s in morphs {
-        let (name, w) = s
-            .split_once('=')
-            .ok_or_else(|| Pde6Error::Body(format!("--morph {s:?}: expected NAME=WEIGHT")))?;
-        let w: f64 = w
-            .trim()
-            .parse()
-            .map_err(|_| Pde6Error::Body(format!("--morph {s:?}: weight is not a number")))?;
+        let (name, w) = s.split_once('=').ok_or_else(|| Pde6Error::Morph {
+            spec: s.clone(),
+            problem: "expected NAME=WEIGHT".into(),
+        })?;
+        let w: f64 = w.trim().parse().map_err(|_| Pde6Error::Morph {
+            spec: s.clone(),
+            problem: "weight is not a number".into(),
+        })?;
         if !w.is_finite() || w.abs() > MORPH_WEIGHT_MAX {
-            return Err(Pde6Error::Body(format!(
-                "--morph {s:?}: weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"
-            )));
+            return Err(Pde6Error::Morph {
+                spec: s.clone(),
+                problem: format!("weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"),
+            });
         }
-        targets.push((crate::makehuman::target(name.trim()).map_err(mesh_err)?, w));
+        targets.push((crate::makehuman::target(name.trim())?, w));
     }
-    Ok(crate::makehuman::body(&targets).map_err(mesh_err)?.mesh)
+    Ok(crate::makehuman::body(&targets)?.mesh)
+}
+
+/// Loads the body ([`load_body`]), refuses an `output` that is the input
+/// mesh, and reconstructs it closed.
+pub fn reconstruct_closed_from(
+    path: Option<&std::path::Path>,
+    morphs: &[String],
+    output: &std::path::Path,
+    opts: &super::body_closed::ClosedOptions,
+) -> Result<super::body_closed::ClosedBody, Pde6Error> {
+    let skin = load_body(path, morphs)?;
+    if let Some(m) = path {
+        crate::mesh::io::refuse_overwriting_input(&[m], output)?;
+    }
+    super::body_closed::reconstruct_closed(&skin, opts)
 }
 
 /// Largest |weight| of a morph target.

@@ -165,7 +165,7 @@ fn spline_eval(x: &[f64], y: &[f64], m: &[f64], u: f64) -> f64 {
 
 /// The three tubes of one part: `(method, mesh)`.
 fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, Pde6Error> {
-    let part = build_part(p).map_err(|e| Pde6Error::Body(e.to_string()))?;
+    let part = build_part(p)?;
     let us: Vec<f64> = p.sections.iter().map(|s| s.u).collect();
     let curves: Vec<Fourier3> = us.iter().map(|&u| part.section(u, 0)).collect();
     let (u0, u1) = (us[0], us[us.len() - 1]);
@@ -194,10 +194,8 @@ fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, Pde6Error> {
     let [rho, eta, lambda] = ODE6_PARAMS;
     let bases = (0..n - 1)
         .map(|_| Basis::new(Params::new(rho, eta, lambda)))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| Pde6Error::Body(e.to_string()))?;
-    let chain = crate::ode6::Chain::from_sections(&sections, bases)
-        .map_err(|e| Pde6Error::Body(e.to_string()))?;
+        .collect::<Result<Vec<_>, _>>()?;
+    let chain = crate::ode6::Chain::from_sections(&sections, bases)?;
     let ode6 = tessellate(&chain, Tessellation { nu, nv: STUDY_NV });
     // loft: natural cubic spline in u through the section points
     let grid_u: Vec<f64> = (0..=nu)

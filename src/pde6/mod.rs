@@ -96,8 +96,52 @@ pub enum Pde6Error {
     LayoutNotFound { what: &'static str, detail: String },
     #[error("{0}")]
     Input(String),
-    #[error("body reconstruction: {0}")]
-    Body(String),
+    #[error("{what} = {got}: the C2 chain needs 7 + 3k sections (k = 0..30)")]
+    SectionCount { what: &'static str, got: usize },
+    #[error("{section}: {cause}")]
+    SectionFit {
+        section: String,
+        #[source]
+        cause: Box<Pde6Error>,
+    },
+    #[error("{part}: no closed section at y = {y:.3}")]
+    NoSection { part: String, y: f64 },
+    #[error("the mesh has no vertices")]
+    EmptyMesh,
+    #[error("--morph {spec:?}: {problem}")]
+    Morph { spec: String, problem: String },
+    #[error("--morph applies to the bundled MakeHuman body, not to --mesh")]
+    MorphWithMesh,
+    #[error("anchored sampling: pull {0} outside [0, 1]")]
+    Pull(f64),
+    #[error("anchored sampling needs >= 3 points, >= 1 anchor, >= 3 samples (got {points}, {anchors}, {samples})")]
+    SamplingCounts {
+        points: usize,
+        anchors: usize,
+        samples: usize,
+    },
+    #[error("--sampling {0}: expected anchored, chord, centripetal, uniform or polar")]
+    SamplingName(String),
+    #[error("degenerate section: {0}")]
+    DegenerateSection(&'static str),
+    #[error("assembling the closed body: {0}")]
+    Assembly(#[from] crate::sketch::SketchError),
+    #[error(transparent)]
+    Gec(#[from] crate::curve::gec::GecError),
+    #[error(transparent)]
+    Ode6(#[from] crate::ode6::Ode6Error),
+    #[error(transparent)]
+    Mesh(#[from] crate::mesh::MeshError),
+}
+
+impl Pde6Error {
+    /// This error as the cause of a failed section fit.
+    pub fn in_section(self, section: impl Into<String>) -> Pde6Error {
+        Pde6Error::SectionFit {
+            section: section.into(),
+            cause: Box::new(self),
+        }
+    }
 }
 
 /// Checks the PDE parameter.

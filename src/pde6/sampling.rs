@@ -63,8 +63,11 @@ pub const START_ANGLE: f64 = -PI / 2.0;
 /// The section frame at height y: e1 = +x, e2 = -z, so counter-clockwise
 /// in the frame is counter-clockwise seen from +y.
 pub fn section_frame(y: f64) -> Result<Frame, Pde6Error> {
-    Frame::new([0.0, y, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0])
-        .map_err(|e| Pde6Error::Body(e.to_string()))
+    Ok(Frame::new(
+        [0.0, y, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 0.0, -1.0],
+    )?)
 }
 
 fn wrap(a: f64) -> f64 {
@@ -103,19 +106,18 @@ pub fn anchored_samples(
     pull: f64,
 ) -> Result<Vec<[f64; 2]>, Pde6Error> {
     if !(pull.is_finite() && (0.0..=1.0).contains(&pull)) {
-        return Err(Pde6Error::Body(format!(
-            "anchored sampling: pull {pull} outside [0, 1]"
-        )));
+        return Err(Pde6Error::Pull(pull));
     }
     if points.len() < 3 || anchors == 0 || samples < 3 {
-        return Err(Pde6Error::Body(format!(
-            "anchored sampling needs >= 3 points, >= 1 anchor, >= 3 samples (got {}, {anchors}, {samples})",
-            points.len()
-        )));
+        return Err(Pde6Error::SamplingCounts {
+            points: points.len(),
+            anchors,
+            samples,
+        });
     }
     let (area, c) = polygon_area_centroid(points);
     if area.is_nan() || area == 0.0 {
-        return Err(Pde6Error::Body("section encloses no area".into()));
+        return Err(Pde6Error::DegenerateSection("the section encloses no area"));
     }
     let mut p = points.to_vec();
     if area < 0.0 {
@@ -131,11 +133,11 @@ pub fn anchored_samples(
     }
     let total = cum[n];
     if !(total.is_finite() && total > 0.0) {
-        return Err(Pde6Error::Body("section has no length".into()));
+        return Err(Pde6Error::DegenerateSection("the section has no length"));
     }
     let at = |(i, f, _): (usize, f64, f64)| cum[i] + f * (cum[i + 1] - cum[i]);
     let first = ray_hit(&p, c, START_ANGLE)
-        .ok_or_else(|| Pde6Error::Body("no crossing of the start ray".into()))?;
+        .ok_or_else(|| Pde6Error::DegenerateSection("no crossing of the start ray"))?;
     let s0 = at(first);
     // knots (arc length from anchor 0, theta), kept strictly increasing
     let mut knots = vec![(0.0, 0.0)];
@@ -185,9 +187,8 @@ pub fn fit_anchored(
     pull: f64,
 ) -> Result<Gec, Pde6Error> {
     let s = anchored_samples(plane, anchors, samples, pull)?;
-    let (centre, x, y) =
-        dft_coefficients(&s, 0.0, terms).map_err(|e| Pde6Error::Body(e.to_string()))?;
-    Gec::new(frame, centre, x, y).map_err(|e| Pde6Error::Body(e.to_string()))
+    let (centre, x, y) = dft_coefficients(&s, 0.0, terms)?;
+    Ok(Gec::new(frame, centre, x, y)?)
 }
 
 /// Polar angle of `C(theta)` about `c0` in the section frame (x, -z).
