@@ -329,18 +329,8 @@ pub(super) fn check_side_height(
     Ok(())
 }
 
-/// The body plan to segment with: `Auto` is a quadruped when the front
-/// outline is longer than tall ([`super::quadruped::longer_than_tall`]).
-pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
-    match plan {
-        BodyPlan::Auto if super::quadruped::longer_than_tall(front) => BodyPlan::Quadruped,
-        BodyPlan::Auto => BodyPlan::Humanoid,
-        p => p,
-    }
-}
-
 /// Derives parts and transitions from validated, counter-clockwise outlines
-/// with the given body plan ([`resolve_plan`]). A humanoid's front outline
+/// with the given body plan ([`super::quadruped::resolve_plan`]). A humanoid's front outline
 /// drawn a few degrees off upright is derived upright and the result turned
 /// back ([`super::align`]); a quadruped is segmented as drawn
 /// ([`super::quadruped`]).
@@ -352,7 +342,7 @@ pub fn derive(
     level: Level,
     plan: BodyPlan,
 ) -> Result<Derived, SketchError> {
-    if resolve_plan(plan, front) == BodyPlan::Quadruped {
+    if super::quadruped::resolve_plan(plan, front) == BodyPlan::Quadruped {
         return super::quadruped::derive(front, side, sections, cuts, level);
     }
     let ax = super::align::axes(front);

@@ -23,10 +23,15 @@
 //! Removed parts (hair, a tail, ears) are built from their own profiles as
 //! separate closed components, not stitched ([`removed`]).
 //!
+//! Four-legged animals (body plan quadruped, auto-detected from an outline
+//! longer than tall) are segmented from their lateral silhouette in the
+//! front file ([`quadruped`]).
+//!
 //! Simpler than the paper: the transitions are cubic Hermite blends (C1,
 //! not C2); only standing humanoids (arms away from the body, legs apart)
-//! are segmented; a cut only moves a join that the automatic segmentation
-//! finds (it cannot add a part).
+//! and quadrupeds with tail and neck rising above the back are segmented; a
+//! cut only moves a join that the automatic segmentation finds (it cannot
+//! add a part), and quadrupeds take no cuts.
 //!
 //! The whole model is one mesh ([`build`]): every part and transition shares
 //! the vertices of the rings and seams it meets, and orientation is made
@@ -41,6 +46,7 @@ pub mod cuts;
 pub mod derive;
 pub mod input;
 pub mod keysection;
+pub mod measure;
 pub mod part;
 pub mod poly;
 pub mod quadruped;

@@ -97,6 +97,16 @@ pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
     ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
 }
 
+/// The body plan to segment with: `Auto` is a quadruped when the front
+/// outline is longer than tall ([`longer_than_tall`]).
+pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
+    match plan {
+        BodyPlan::Auto if super::quadruped::longer_than_tall(front) => BodyPlan::Quadruped,
+        BodyPlan::Auto => BodyPlan::Humanoid,
+        p => p,
+    }
+}
+
 /// Finds the leg gaps and top corners.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     let (yr, _) = bounds(front);
