@@ -137,7 +137,7 @@ pub fn anchored_samples(
     }
     let at = |(i, f, _): (usize, f64, f64)| cum[i] + f * (cum[i + 1] - cum[i]);
     let first = ray_hit(&p, c, START_ANGLE)
-        .ok_or_else(|| Pde6Error::DegenerateSection("no crossing of the start ray"))?;
+        .ok_or(Pde6Error::DegenerateSection("no crossing of the start ray"))?;
     let s0 = at(first);
     // knots (arc length from anchor 0, theta), kept strictly increasing
     let mut knots = vec![(0.0, 0.0)];
