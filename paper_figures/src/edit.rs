@@ -7,9 +7,9 @@
 //!   a3 = a^4) with a = 1.0 and a = 0.3 (same force); a changed boundary
 //!   curve (the hip end's section 25 % wider); a changed boundary tangent
 //!   (the shoulder end's tangent tilted forward).
-//! * `000-fig9`: GECDSM on the female (the issue asks for the bundled
-//!   animal: there is none, so arm, leg and torso): original; leg bent;
-//!   torso sections scaled; a bump on the calf sections; arm bent.
+//! * `000-fig9`: GECDSM on the bundled four-legged animal (as the paper's
+//!   Fig 9 on an elephant): original; neck and head bent forward; body sections
+//!   scaled; a knee bump on a front leg; tail bent.
 
 use crate::common::{Ctx, Figure};
 use pdesculpt::character::doc::{CharacterDoc, End, Level, SectionShape};
@@ -34,7 +34,7 @@ pub fn figures() -> Vec<Figure> {
         Figure {
             id: "000-fig9",
             paper: "000",
-            title: "GECDSM on the female: bend, scale, bump",
+            title: "GECDSM on the four-legged animal: bend, scale, bump",
             run: fig9,
         },
     ]
@@ -42,6 +42,9 @@ pub fn figures() -> Vec<Figure> {
 
 const W: usize = 260;
 const H: usize = 480;
+/// Landscape panels for the animal.
+const ANIMAL_W: usize = 360;
+const ANIMAL_H: usize = 300;
 const VIEW: View = View::Perspective {
     yaw: 20.0,
     pitch: 10.0,
@@ -72,20 +75,21 @@ fn panels(
     title: &str,
     cases: Vec<(String, Built)>,
     base: &Mesh,
+    (w, h): (usize, usize),
 ) -> anyhow::Result<Vec<serde_json::Value>> {
     let mut all = Mesh::default();
     for (_, b) in &cases {
         all.append(&b.model.mesh);
     }
     let (lo, hi) = all.bbox();
-    let cam = Camera::fit_box(lo, hi, VIEW, W, H, 0.04);
+    let cam = Camera::fit_box(lo, hi, VIEW, w, h, 0.04);
     let mut imgs = Vec::new();
     let mut caps = Vec::new();
     let mut rows = Vec::new();
     for (name, b) in &cases {
         let o = RenderOptions {
-            width: W,
-            height: H,
+            width: w,
+            height: h,
             view: VIEW,
             ..Default::default()
         };
@@ -198,6 +202,7 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
         "PDESM on the sketched female's torso (paper 000 Fig 8 analogue; the paper uses a pig torso)",
         cases,
         &base.model.mesh,
+        (W, H),
     )?;
     ctx.write_json(
         "000-fig8.json",
@@ -213,67 +218,74 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
 }
 
 fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
-    let doc = female()?;
+    let doc = bundled("animal", Level::Final).ok_or_else(|| anyhow::anyhow!("bundled animal"))?;
+    let doc = build_document(&doc, Path::new("."), Resolution::default(), true)?.doc;
     let gec = |part: &str, section: Option<usize>, transform| Edit::GecTransform {
         part: part.into(),
         section,
         transform,
     };
-    let bump: Vec<Edit> = (5..10)
+    let base = with(&doc, &[])?;
+    let height = base.report.height;
+    let leg = doc
+        .parts
+        .iter()
+        .find(|p| p.name == "leg_fl")
+        .ok_or_else(|| anyhow::anyhow!("the animal has no leg_fl"))?;
+    let n = leg.sections.len();
+    // a bump on the middle third of the front leg's sections (a knee)
+    let bump: Vec<Edit> = (n / 3..(2 * n) / 3)
         .map(|s| {
             gec(
-                "leg_r",
+                "leg_fl",
                 Some(s),
                 SectionTransform::Bump {
-                    h: 0.015,
-                    theta: -std::f64::consts::FRAC_PI_2,
+                    h: 0.025 * height,
+                    theta: 0.0,
                     sigma: 0.6,
                 },
             )
         })
         .collect();
-    let base = with(&doc, &[])?;
+    let z = [0.0, 0.0, 1.0];
     let cases = vec![
         ("a: original".to_string(), base.clone()),
         (
-            "b: left leg bent outward (kappa -0.8)".into(),
+            "b: neck and head bent forward".into(),
             with(
                 &doc,
                 &[gec(
-                    "leg_l",
+                    "head",
                     None,
                     SectionTransform::Bend {
-                        kappa: -0.8,
-                        axis: [0.0, 0.0, 1.0],
+                        kappa: -2.5 / height,
+                        axis: z,
                     },
                 )],
             )?,
         ),
         (
-            "c: torso sections scaled (1.2, 1.15)".into(),
+            "c: body sections scaled (1.2, 1.15)".into(),
             with(
                 &doc,
                 &[gec(
-                    "torso",
+                    "body",
                     None,
                     SectionTransform::Scale { sx: 1.2, sy: 1.15 },
                 )],
             )?,
         ),
+        ("d: knee bump on the front leg".into(), with(&doc, &bump)?),
         (
-            "d: calf bump (right leg, 5 sections)".into(),
-            with(&doc, &bump)?,
-        ),
-        (
-            "e: left arm bent outward (kappa -2)".into(),
+            "e: tail bent".into(),
             with(
                 &doc,
                 &[gec(
-                    "arm_l",
+                    "tail",
                     None,
                     SectionTransform::Bend {
-                        kappa: -2.0,
-                        axis: [0.0, 0.0, 1.0],
+                        kappa: 5.0 / height,
+                        axis: z,
                     },
                 )],
             )?,
@@ -282,15 +294,16 @@ fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
     let rows = panels(
         ctx,
         "000-fig9",
-        "GECDSM on the sketched female (paper 000 Fig 9 analogue; no bundled animal: leg, torso, arm)",
+        "GECDSM on the sketched four-legged animal (paper 000 Fig 9 analogue)",
         cases,
         &base.model.mesh,
+        (ANIMAL_W, ANIMAL_H),
     )?;
     ctx.write_json(
         "000-fig9.json",
         &json!({
             "figure": "000-fig9",
-            "model": "bundled female (data/sketch), final level, default resolution",
+            "model": "bundled four-legged animal (data/sketch/animal_*.svg), final level, default resolution",
             "transforms": "curve::gec::transform in coefficient space on the parts' key sections (circles/ellipses converted to GECs exactly), parts re-solved",
             "panels": rows,
         }),
