@@ -300,11 +300,7 @@ impl Feature {
                 0.5 * (y[j + 1] - y[j - 1])
             }
         };
-        let (t2, t3) = (t * t, t * t * t);
-        (2.0 * t3 - 3.0 * t2 + 1.0) * y[i]
-            + (t3 - 2.0 * t2 + t) * m(i)
-            + (-2.0 * t3 + 3.0 * t2) * y[i + 1]
-            + (t3 - t2) * m(i + 1)
+        cubic_hermite(t, y[i], m(i), y[i + 1], m(i + 1))
     }
 
     /// The height at a view-plane point (0 outside the region): the
@@ -379,4 +375,14 @@ fn check_part(part: &PartSurface, name: &str) -> Result<(), SasmError> {
         return Err(SasmError::UnknownPart(name.into()));
     }
     Ok(())
+}
+
+/// The cubic Hermite interpolant on `t` in [0, 1] from values `y0`, `y1`
+/// and slopes `m0`, `m1` (per unit of `t`).
+pub(crate) fn cubic_hermite(t: f64, y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
+    let (t2, t3) = (t * t, t * t * t);
+    (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+        + (t3 - 2.0 * t2 + t) * m0
+        + (-2.0 * t3 + 3.0 * t2) * y1
+        + (t3 - t2) * m1
 }

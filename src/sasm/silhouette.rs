@@ -64,11 +64,7 @@ impl Factor {
                 0.5 * (y[j + 1] - y[j - 1])
             }
         };
-        let (t2, t3) = (t * t, t * t * t);
-        (2.0 * t3 - 3.0 * t2 + 1.0) * y[i]
-            + (t3 - 2.0 * t2 + t) * m(i)
-            + (-2.0 * t3 + 3.0 * t2) * y[i + 1]
-            + (t3 - t2) * m(i + 1)
+        super::feature::cubic_hermite(t, y[i], m(i), y[i + 1], m(i + 1))
     }
 }
 

@@ -9,6 +9,10 @@ use pdesculpt::template::tbsm::{
     makehuman_left_foot, replace_sections, round_trip_error, TemplatePart,
 };
 
+/// Two ellipses blended by angle stay within this relative distance of an
+/// ellipse (the blend's radius is linear in t).
+const ELLIPSE_BLEND: f64 = 0.02;
+
 fn foot() -> TemplatePart {
     let (mesh, start, end) = makehuman_left_foot().unwrap();
     TemplatePart::from_mesh(&mesh, start, end, [1.0, 0.0, 0.0], (0.5, 0.95, 6)).unwrap()
@@ -109,7 +113,7 @@ fn tbsm_with_an_elliptic_template_is_the_identity() {
             .fold(0.0f64, |m, e| m.max(e.abs()));
         // an ellipse blended with an ellipse (by angle) is close to, not
         // exactly, an ellipse: the blend's radius is linear in t
-        assert!(worst < 0.02, "{worst}");
+        assert!(worst < ELLIPSE_BLEND, "{worst}");
     }
 }
 

@@ -14,6 +14,8 @@ const CLEANED: &[&str] = &[
     "tests/it/pde6.rs",
     "tests/it/plate.rs",
     "tests/it/infra.rs",
+    "tests/it/conv.rs",
+    "tests/it/gec.rs",
     "tests/it/tolerances.rs",
     "src/mesh/isosurface/tests.rs",
 ];

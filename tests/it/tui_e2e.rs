@@ -145,6 +145,45 @@ fn select_scale_row(s: &Session) {
     s.wait_for("expected 1 to 2 numbers, got 0", None);
 }
 
+/// Exports with the default path, saves, quits and waits for the exit.
+fn export_save_quit(s: &Session) {
+    s.keys(&["e"]);
+    s.wait_for("export to:", None);
+    s.keys(&["Enter"]);
+    s.wait_for("exported", None);
+    s.keys(&["s"]);
+    s.wait_for("saved", None);
+    s.keys(&["q"]);
+    let t0 = Instant::now();
+    while !s.gone() {
+        assert!(t0.elapsed() < PATIENCE, "did not quit:\n{}", s.screen());
+        std::thread::sleep(Duration::from_millis(100));
+    }
+}
+
+/// The TUI's `char.glb` in `dir` equals `character build` of the saved `doc`.
+fn assert_export_equals_build(dir: &Path, doc: &Path) {
+    let reference = dir.join("reference.glb");
+    let out = pdesculpt(&[
+        "character",
+        "build",
+        doc.to_str().expect("utf-8"),
+        "-o",
+        reference.to_str().expect("utf-8"),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let a = std::fs::read(dir.join("char.glb")).expect("the TUI exported");
+    let b = std::fs::read(&reference).expect("character build wrote");
+    assert!(
+        a == b,
+        "the TUI's GLB differs from `character build` of the saved document"
+    );
+}
+
 #[test]
 fn tui_e2e_edit_undo_redo_export_save_in_tmux() {
     if !have_tmux() {
@@ -167,39 +206,10 @@ fn tui_e2e_edit_undo_redo_export_save_in_tmux() {
     s.wait_for("Edit log (1 of 1 active)", None);
     s.wait_for("rebuilt", Some("rebuilding"));
     // export: the prompt is pre-filled with DIR/char.glb
-    s.keys(&["e"]);
-    s.wait_for("export to:", None);
-    s.keys(&["Enter"]);
-    s.wait_for("exported", None);
-    s.keys(&["s"]);
-    s.wait_for("saved", None);
-    s.keys(&["q"]);
-    let t0 = Instant::now();
-    while !s.gone() {
-        assert!(t0.elapsed() < PATIENCE, "did not quit:\n{}", s.screen());
-        std::thread::sleep(Duration::from_millis(100));
-    }
+    export_save_quit(&s);
     let saved = CharacterDoc::load(&doc).expect("the document was saved");
     assert_eq!((saved.edits.len(), saved.cursor), (1, 1));
-    let reference = dir.join("reference.glb");
-    let out = pdesculpt(&[
-        "character",
-        "build",
-        doc.to_str().expect("utf-8"),
-        "-o",
-        reference.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let a = std::fs::read(dir.join("char.glb")).expect("the TUI exported");
-    let b = std::fs::read(&reference).expect("character build wrote");
-    assert!(
-        a == b,
-        "the TUI's GLB differs from `character build` of the saved document"
-    );
+    assert_export_equals_build(&dir, &doc);
 }
 
 #[test]
@@ -280,38 +290,9 @@ fn tui_e2e_add_part_key_section_prop_then_export_equals_character_build() {
     s.keys(&["Enter"]);
     s.wait_for("attached prop 'ball'", None);
     s.wait_for("rebuilt", Some("rebuilding"));
-    s.keys(&["e"]);
-    s.wait_for("export to:", None);
-    s.keys(&["Enter"]);
-    s.wait_for("exported", None);
-    s.keys(&["s"]);
-    s.wait_for("saved", None);
-    s.keys(&["q"]);
-    let t0 = Instant::now();
-    while !s.gone() {
-        assert!(t0.elapsed() < PATIENCE, "did not quit:\n{}", s.screen());
-        std::thread::sleep(Duration::from_millis(100));
-    }
+    export_save_quit(&s);
     let saved = CharacterDoc::load(&doc).expect("the document was saved");
     assert_eq!(saved.removed_parts.len(), 1);
     assert_eq!(saved.props.len(), 1);
-    let reference = dir.join("reference.glb");
-    let out = pdesculpt(&[
-        "character",
-        "build",
-        doc.to_str().expect("utf-8"),
-        "-o",
-        reference.to_str().expect("utf-8"),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let a = std::fs::read(dir.join("char.glb")).expect("the TUI exported");
-    let b = std::fs::read(&reference).expect("character build wrote");
-    assert!(
-        a == b,
-        "the TUI's GLB differs from `character build` of the saved document"
-    );
+    assert_export_equals_build(&dir, &doc);
 }

@@ -74,12 +74,14 @@ mod apply;
 pub mod check;
 pub mod force4;
 mod mesh;
+mod validate;
 
-pub use apply::{apply_to_parts, section_gec, validate_params};
+pub use apply::{apply_to_parts, section_gec};
 pub use force4::{field_of, force_region_field, ForceField, FORCE4_TERMS};
 pub use mesh::{
     apply_mesh_edits, apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS,
 };
+pub use validate::validate_params;
 
 use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
