@@ -164,6 +164,22 @@ pub fn check_real(param: &str, value: f64, range: RealRange) -> Result<f64, Limi
     Ok(value)
 }
 
+/// Shows a real number for an error message: plainly in `[1e-4, 1e9)`,
+/// in exponent form outside it (so `1e300` is not printed as 301 digits).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.0.abs();
+        if a == 0.0 || !a.is_finite() || (1e-4..1e9).contains(&a) {
+            write!(f, "{}", self.0)
+        } else {
+            write!(f, "{:e}", self.0)
+        }
+    }
+}
+
 /// A parameter outside its range or an operation over budget.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum LimitError {
@@ -310,6 +326,15 @@ mod tests {
         assert!(mul("--nu", usize::MAX, 2).is_err());
         assert!(mesh_vertices("--nu/--nv", usize::MAX, 64).is_err());
         assert_eq!(mesh_vertices("--nu/--nv", 16, 64), Ok(17 * 65));
+    }
+
+    #[test]
+    fn num_shows_huge_and_tiny_values_in_exponent_form() {
+        assert_eq!(Num(1e300).to_string(), "1e300");
+        assert_eq!(Num(-2.5e-7).to_string(), "-2.5e-7");
+        assert_eq!(Num(1.4).to_string(), "1.4");
+        assert_eq!(Num(0.0).to_string(), "0");
+        assert_eq!(Num(f64::NAN).to_string(), "NaN");
     }
 
     #[test]

@@ -34,6 +34,9 @@ pub const PROP_RESOLUTION: usize = 64;
 pub const PROP_CELLS: (usize, usize) = (12, 256);
 /// Largest scale factor of a prop.
 pub const PROP_SCALE_MAX: f64 = 1e3;
+/// Largest size of a prop's translation component (model units): past it
+/// the mesh leaves the range of the 32-bit floats mesh files store.
+pub const PROP_TRANSLATE_MAX: f64 = 1e6;
 /// Most props in one document.
 pub const MAX_PROPS: usize = 64;
 
@@ -99,11 +102,17 @@ impl PropSpec {
         if !(self.scale.is_finite() && self.scale > 0.0 && self.scale <= PROP_SCALE_MAX) {
             return Err(bad(format!(
                 "scale = {} is out of range: in (0, {PROP_SCALE_MAX}]",
-                self.scale
+                crate::limits::Num(self.scale)
             )));
         }
         if let Some(t) = self.translate.iter().find(|t| !t.is_finite()) {
             return Err(bad(format!("translate has a non-finite value {t}")));
+        }
+        if let Some(t) = self.translate.iter().find(|t| t.abs() > PROP_TRANSLATE_MAX) {
+            return Err(bad(format!(
+                "translate component {} is out of range: at most {PROP_TRANSLATE_MAX:e} in size",
+                crate::limits::Num(*t)
+            )));
         }
         Ok(())
     }

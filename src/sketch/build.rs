@@ -91,6 +91,9 @@ pub struct PartCache {
 
 /// Most parts a [`PartCache`] keeps.
 pub const PART_CACHE_SIZE: usize = 64;
+/// Largest Hermite tangent factor of a transition (`TransitionSpec::tangent_scale`):
+/// past a few times the parts' own tangents the blend loops out of the body.
+pub const TANGENT_SCALE_MAX: f64 = 10.0;
 
 impl PartCache {
     /// The built part of `spec`, solved only when not cached.
@@ -261,10 +264,14 @@ pub fn build_model_with(
             .map(|&c| parts[c].section(parts[c].u0, 0).c0)
             .collect();
         let cuts = cut_table(k, &t.cut_angles);
-        if !(t.tangent_scale.is_finite() && t.tangent_scale > 0.0) {
+        if !(t.tangent_scale.is_finite()
+            && t.tangent_scale > 0.0
+            && t.tangent_scale <= TANGENT_SCALE_MAX)
+        {
             return Err(SketchError::Document(format!(
-                "transition '{}': tangent_scale must be positive and finite, got {}",
-                t.name, t.tangent_scale
+                "transition '{}': tangent_scale must be in (0, {TANGENT_SCALE_MAX}], got {}",
+                t.name,
+                crate::limits::Num(t.tangent_scale)
             )));
         }
         if !t.cut_angles.is_empty() && cuts.is_empty() {

@@ -411,3 +411,38 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn out_of_range_transition_and_prop_numbers_are_named_errors() {
+    use pdesculpt::character::props::PropSpec;
+    let doc = bundled("female", Level::Initial).expect("bundled female");
+    let derived = build_document(&doc, Path::new("."), Resolution::default(), true)
+        .expect("the bundled female builds")
+        .doc;
+    // a Hermite tangent factor of 1e300 used to reach the file writer
+    // (vertex outside the f32 range) instead of naming the field
+    let mut d = derived.clone();
+    d.transitions[0].tangent_scale = 1e300;
+    let e = build_document(&d, Path::new("."), Resolution::default(), false)
+        .expect_err("tangent_scale 1e300 is refused")
+        .to_string();
+    assert!(
+        e.contains("tangent_scale must be in (0, 10], got 1e300"),
+        "{e}"
+    );
+    // likewise a prop translated by 1e300
+    let prop = PropSpec {
+        name: "p".into(),
+        model: "data/conv/blob.json".into(),
+        translate: [1e300, 0.0, 0.0],
+        scale: 1.0,
+    };
+    let e = prop
+        .validate()
+        .expect_err("translate 1e300 is refused")
+        .to_string();
+    assert!(
+        e.contains("translate component 1e300 is out of range"),
+        "{e}"
+    );
+}

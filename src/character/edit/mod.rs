@@ -216,7 +216,7 @@ pub enum EditError {
         section: usize,
         count: usize,
     },
-    #[error("{op} on part '{part}': {name} = {value} is out of range: {expected}")]
+    #[error("{op} on part '{part}': {name} = {} is out of range: {expected}", crate::limits::Num(*.value))]
     Parameter {
         op: &'static str,
         part: String,
