@@ -39,13 +39,7 @@ pub fn marching_tetrahedra(grid: &ScalarGrid, iso: f64) -> Mesh {
         }
     }
     let positions = ev.positions;
-    let n = tris.len();
-    Mesh {
-        positions,
-        triangles: tris,
-        tri_group: vec![0; n],
-        groups: vec!["surface".into()],
-    }
+    Mesh::with_group(positions, tris, "surface")
 }
 
 /// The twelve cube edges (corner bits).
@@ -145,11 +139,5 @@ pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
             });
         }
     }
-    let n = tris.len();
-    Mesh {
-        positions,
-        triangles: tris,
-        tri_group: vec![0; n],
-        groups: vec!["surface".into()],
-    }
+    Mesh::with_group(positions, tris, "surface")
 }

@@ -140,13 +140,7 @@ pub fn marching_tetrahedra(grid: &ScalarGrid, iso: f64) -> Mesh {
         }
     }
     let positions = ev.positions;
-    let n = tris.len();
-    Mesh {
-        positions,
-        triangles: tris,
-        tri_group: vec![0; n],
-        groups: vec!["surface".into()],
-    }
+    Mesh::with_group(positions, tris, "surface")
 }
 
 /// Naive surface nets of `grid` at level `iso`.
@@ -244,11 +238,5 @@ pub fn surface_nets(grid: &ScalarGrid, iso: f64) -> Mesh {
             }
         }
     }
-    let n = tris.len();
-    Mesh {
-        positions,
-        triangles: tris,
-        tri_group: vec![0; n],
-        groups: vec!["surface".into()],
-    }
+    Mesh::with_group(positions, tris, "surface")
 }
