@@ -30,6 +30,9 @@ struct Session {
     name: String,
 }
 
+/// Attempts at starting a tmux session (see `Session::start`).
+const START_TRIES: usize = 5;
+
 impl Session {
     fn start(name: &str, doc: &Path) -> Session {
         let name = format!("pdesculpt-{name}-{}", std::process::id());
@@ -41,23 +44,33 @@ impl Session {
             env!("CARGO_BIN_EXE_pdesculpt"),
             doc.display()
         );
-        let st = Command::new("tmux")
-            .args([
-                "new-session",
-                "-d",
-                "-s",
-                &name,
-                "-x",
-                "180",
-                "-y",
-                "50",
-                &cmd,
-            ])
-            .env("TERM", "xterm-256color")
-            .status()
-            .expect("tmux runs");
-        assert!(st.success());
-        Session { name }
+        // A tmux server whose last session just ended (a killed pane, or
+        // another test's session) may still be shutting down: `new-session`
+        // then fails once; a fresh server starts on the next try.
+        let mut last = None;
+        for _ in 0..START_TRIES {
+            let out = Command::new("tmux")
+                .args([
+                    "new-session",
+                    "-d",
+                    "-s",
+                    &name,
+                    "-x",
+                    "180",
+                    "-y",
+                    "50",
+                    &cmd,
+                ])
+                .env("TERM", "xterm-256color")
+                .output()
+                .expect("tmux runs");
+            if out.status.success() {
+                return Session { name };
+            }
+            last = Some(String::from_utf8_lossy(&out.stderr).into_owned());
+            std::thread::sleep(Duration::from_millis(300));
+        }
+        panic!("tmux new-session failed {START_TRIES} times: {last:?}");
     }
 
     fn screen(&self) -> String {
