@@ -62,7 +62,7 @@ fn one() -> f64 {
 pub enum PropError {
     #[error("prop '{name}': {message}")]
     Invalid { name: String, message: String },
-    #[error("prop '{name}': {path}: {message}")]
+    #[error("prop '{name}': {message} (file {path})")]
     File {
         name: String,
         path: PathBuf,

@@ -355,18 +355,23 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
             },
             _,
         ) => {
-            let mut spans = vec![
-                Span::styled(kind.label(), Style::default().fg(Color::Yellow)),
-                Span::raw(format!("{buffer}▏")),
-            ];
-            spans.push(match error {
+            let tail = match error {
                 Some(e) => Span::styled(format!("  ✗ {e}"), Style::default().fg(Color::Red)),
                 None => Span::styled(
                     format!("  {} · Enter, Esc", kind.hint()),
                     Style::default().fg(Color::DarkGray),
                 ),
-            });
-            Line::from(spans)
+            };
+            // a long path must not push the error off the line: the typed
+            // text gives way first, keeping its end (where the cursor is)
+            let room = (area.width as usize)
+                .saturating_sub(kind.label().chars().count() + 1 + tail.content.chars().count());
+            let shown = elide_left(buffer, room.max(PROMPT_MIN_SHOWN));
+            Line::from(vec![
+                Span::styled(kind.label(), Style::default().fg(Color::Yellow)),
+                Span::raw(format!("{shown}▏")),
+                tail,
+            ])
         }
         (_, Some(m)) => Line::from(Span::styled(
             m.text.clone(),
@@ -378,6 +383,22 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
         )),
     };
     f.render_widget(Paragraph::new(line), area);
+}
+
+/// Characters of a typed prompt kept on screen however long its error is.
+const PROMPT_MIN_SHOWN: usize = 16;
+
+/// `text` cut to at most `max` characters by dropping its start (marked
+/// with an ellipsis).
+fn elide_left(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_string();
+    }
+    let keep = max.saturating_sub(1);
+    let mut out = String::from("…");
+    out.extend(text.chars().skip(n - keep));
+    out
 }
 
 fn centred(area: Rect, w: u16, h: u16) -> Rect {
@@ -430,4 +451,17 @@ fn draw_popup(f: &mut Frame, app: &App) {
     let area = centred(f.area(), w.max(title.len() as u16 + 4), h);
     f.render_widget(Clear, area);
     f.render_widget(Paragraph::new(lines).block(block(title, true)), area);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::elide_left;
+
+    #[test]
+    fn elide_left_keeps_the_end_within_the_width() {
+        assert_eq!(elide_left("abc", 3), "abc");
+        assert_eq!(elide_left("/a/long/path.json", 10), "…path.json");
+        assert_eq!(elide_left("/a/long/path.json", 10).chars().count(), 10);
+        assert_eq!(elide_left("ééééé", 2), "…é");
+    }
 }

@@ -195,11 +195,20 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
     let missing = format!("{}/nothing.json", app.base.display());
     command(&mut app, 'p', &missing);
     refused(&mut app, &before, "No such file");
-    command(
-        &mut app,
-        'p',
-        &format!("{ROOT}/data/sketch/female_sections.json"),
-    );
+    // a JSON file that is not a conv model, deep enough that the prompt
+    // line cannot hold both the path and the error (CI checks out in a
+    // longer directory than a developer does): the error stays on screen
+    let deep = app
+        .base
+        .join("a_directory_with_a_rather_long_name_for_this_test/and_another_one_below_it");
+    std::fs::create_dir_all(&deep).expect("creates");
+    let not_conv = deep.join("female_sections.json");
+    std::fs::copy(
+        format!("{ROOT}/data/sketch/female_sections.json"),
+        &not_conv,
+    )
+    .expect("copies");
+    command(&mut app, 'p', &not_conv.display().to_string());
     refused(&mut app, &before, "not a conv model file");
     command(&mut app, 'p', &format!("{blob} ball 0"));
     refused(&mut app, &before, "scale = 0 is out of range");
