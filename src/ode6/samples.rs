@@ -83,6 +83,31 @@ pub fn test_gecs() -> (Gec, Gec) {
     (a, b)
 }
 
+/// The 3-patch chain of the u-continuity checks: four sections of test
+/// curves with scaled first and second cross-derivatives, and a different
+/// shape-parameter set per patch (the paper's case, Fig 4c's, Fig 6b's).
+pub fn chain() -> Result<super::Chain, Ode6Error> {
+    let sec = |s: f64, z: f64, ph: f64, w1: f64, w2: f64| {
+        let c = super::Curve::Fourier(test_curve(s, z, ph));
+        [c.clone(), c.scaled(w1), c.scaled(w2)]
+    };
+    let sections = [
+        sec(1.0, 0.0, 0.0, 0.3, -0.2),
+        sec(0.7, 1.0, 0.5, -0.4, 0.6),
+        sec(1.2, 2.0, 1.0, 0.2, 0.1),
+        sec(0.5, 3.0, -0.5, 1.0, -1.0),
+    ];
+    let bases = [
+        Params::new(1.0, 3.0, 1.0),
+        Params::new(1e-4, 3.0, 1e-4),
+        Params::new(1.0, 1.0, 3.0),
+    ]
+    .into_iter()
+    .map(Basis::new)
+    .collect::<Result<Vec<Basis>, _>>()?;
+    super::Chain::from_sections(&sections, bases)
+}
+
 /// One patch between two test curves (approach 1, weights `[1, 0.5, -1, 2]`),
 /// the paper's shape parameters `(1, 3, 1)`.
 pub fn patch() -> Result<super::Ode6Surface, Ode6Error> {

@@ -159,11 +159,8 @@ fn curve_frame(curve: &[[f64; 3]]) -> Result<Frame, Pde4Error> {
 
 /// `(u, v)` of a point at plane coordinates `(x, y)` inside the polygon `poly`, if inside.
 pub fn region_uv(poly: &[[f64; 2]], x: f64, y: f64) -> Option<[f64; 2]> {
-    let (ymin, ymax) = poly
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p[1]), b.max(p[1]))
-        });
+    let (lo, hi) = crate::vec3::bounds(poly)?;
+    let (ymin, ymax) = (lo[1], hi[1]);
     if !(y > ymin && y < ymax) {
         return None;
     }

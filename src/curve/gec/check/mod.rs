@@ -5,7 +5,7 @@
 mod correction;
 
 use super::fit::{dft_coefficients, solve};
-pub use super::samples::tilted_gec;
+use super::samples::tilted_gec;
 use super::transform::Bend;
 use super::{fit, fit_fft, metrics, FitOptions, Frame, Gec, Param, Solver};
 use crate::check::{tol, Check, Kind};
