@@ -108,7 +108,11 @@ pub fn derivative_checks() -> Vec<Check> {
         built("pde4.two_sided", "000", crate::pde4::samples::two_sided()),
         built("pde4.four_sided", "000", crate::pde4::samples::four_sided()),
         built("ode6.patch", "004", crate::ode6::samples::patch()),
-        built("ode6.chain_3", "004", crate::ode6::samples::chain()),
+        built(
+            "ode6.chain_3_paper_params",
+            "004",
+            crate::ode6::samples::chain_of([crate::ode6::Params::new(1.0, 3.0, 1.0); 3]),
+        ),
         built(
             "pde4.deformed_revolution",
             "000",

@@ -183,6 +183,15 @@ pub fn region_uv(poly: &[[f64; 2]], x: f64, y: f64) -> Option<[f64; 2]> {
     None
 }
 
+/// Default `depth` of [`deform_region`]: vertices within this distance of
+/// the curve's plane move (the MakeHuman body is in decimetres).
+pub const DEPTH_DEFAULT: f64 = 1.0;
+/// Default `u_range` of [`deform_part`]: the whole axis.
+pub const U_RANGE_DEFAULT: (f64, f64) = (0.0, 1.0);
+/// Default `radius` of [`deform_part`]: every vertex whose axial fraction
+/// lies in the range, however far from the axis.
+pub const RADIUS_DEFAULT: f64 = f64::INFINITY;
+
 /// Deforms the mesh vertices enclosed by `curve` with the scalar deformation
 /// `w(u, v)` (first component of `deformation`) so the largest displacement is `drag`.
 /// Only vertices within `depth` of the curve's plane (along its normal) are moved.
