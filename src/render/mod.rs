@@ -267,30 +267,13 @@ fn raster_triangle(
     if area.abs() < 1e-12 || !area.is_finite() {
         return;
     }
-    let xmin = p
-        .iter()
-        .map(|q| q[0])
-        .fold(f64::INFINITY, f64::min)
-        .floor()
-        .max(0.0) as usize;
-    let ymin = p
-        .iter()
-        .map(|q| q[1])
-        .fold(f64::INFINITY, f64::min)
-        .floor()
-        .max(0.0) as usize;
-    let xmax = (p
-        .iter()
-        .map(|q| q[0])
-        .fold(f64::NEG_INFINITY, f64::max)
-        .ceil() as i64)
-        .min(img.width as i64 - 1);
-    let ymax = (p
-        .iter()
-        .map(|q| q[1])
-        .fold(f64::NEG_INFINITY, f64::max)
-        .ceil() as i64)
-        .min(img.height as i64 - 1);
+    let Some((lo, hi)) = crate::vec3::bounds(&p) else {
+        return;
+    };
+    let xmin = lo[0].floor().max(0.0) as usize;
+    let ymin = lo[1].floor().max(0.0) as usize;
+    let xmax = (hi[0].ceil() as i64).min(img.width as i64 - 1);
+    let ymax = (hi[1].ceil() as i64).min(img.height as i64 - 1);
     if xmax < 0 || ymax < 0 {
         return;
     }

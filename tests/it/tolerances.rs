@@ -22,9 +22,9 @@ use std::path::{Path, PathBuf};
 
 /// Test files other developers are editing this session, by path prefix
 /// (template5: the template tests; sketch5: the sketch tests; body3: the
-/// body tests; local5: the edit and sasm tests; tui3: the TUI tests and
-/// `src/tui`; conv4: the conv tests). Left out of the scan until their work
-/// lands; `conv.rs` is
+/// body tests and `src/body`, moved from `src/pde6/body_*`; local5: the
+/// edit and sasm tests; tui3: the TUI tests and `src/tui`; conv4: the conv
+/// tests). Left out of the scan until their work lands; `conv.rs` is
 /// scanned for literal upper bounds (it was clean before this session) but
 /// not yet for lower bounds (`knob.depth > 0.5` and the polygon slacks).
 const NOT_YET: &[&str] = &[
@@ -45,6 +45,8 @@ const NOT_YET: &[&str] = &[
     "src/sasm/",
     "src/tui/",
     "src/conv/",
+    "src/body/",
+    "src/pde6/body",
 ];
 
 /// Files of [`NOT_YET`] still scanned for literal upper bounds.
