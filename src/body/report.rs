@@ -1,10 +1,10 @@
-//! The report of the closed body ([`super::body_closed`]): topology, errors
+//! The report of the closed body ([`super::closed`]): topology, errors
 //! against the input skin, join jumps, data size; and loading the body to
 //! reconstruct.
 
-use super::body_closed::ClosedOptions;
-use super::body_layout::Layout;
-use super::Pde6Error;
+use super::closed::ClosedOptions;
+use super::layout::Layout;
+use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
 use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
@@ -85,10 +85,10 @@ pub fn measure(
 
 /// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
 /// with `morphs` (`NAME=WEIGHT`) applied.
-pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, Pde6Error> {
+pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, BodyError> {
     if let Some(p) = path {
         if !morphs.is_empty() {
-            return Err(Pde6Error::MorphWithMesh);
+            return Err(BodyError::MorphWithMesh);
         }
         let m = crate::mesh::io::read(p)?;
         m.validate()?;
@@ -96,16 +96,16 @@ pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Me
     }
     let mut targets = Vec::new();
     for s in morphs {
-        let (name, w) = s.split_once('=').ok_or_else(|| Pde6Error::Morph {
+        let (name, w) = s.split_once('=').ok_or_else(|| BodyError::Morph {
             spec: s.clone(),
             problem: "expected NAME=WEIGHT".into(),
         })?;
-        let w: f64 = w.trim().parse().map_err(|_| Pde6Error::Morph {
+        let w: f64 = w.trim().parse().map_err(|_| BodyError::Morph {
             spec: s.clone(),
             problem: "weight is not a number".into(),
         })?;
         if !w.is_finite() || w.abs() > MORPH_WEIGHT_MAX {
-            return Err(Pde6Error::Morph {
+            return Err(BodyError::Morph {
                 spec: s.clone(),
                 problem: format!("weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"),
             });
@@ -121,13 +121,13 @@ pub fn reconstruct_closed_from(
     path: Option<&std::path::Path>,
     morphs: &[String],
     output: &std::path::Path,
-    opts: &super::body_closed::ClosedOptions,
-) -> Result<super::body_closed::ClosedBody, Pde6Error> {
+    opts: &super::closed::ClosedOptions,
+) -> Result<super::closed::ClosedBody, BodyError> {
     let skin = load_body(path, morphs)?;
     if let Some(m) = path {
         crate::mesh::io::refuse_overwriting_input(&[m], output)?;
     }
-    super::body_closed::reconstruct_closed(&skin, opts)
+    super::closed::reconstruct_closed(&skin, opts)
 }
 
 /// Largest |weight| of a morph target.
