@@ -12,7 +12,8 @@
 //! * [`parts`]: the seven open parts of the paper (`pde6 body --open-parts`);
 //! * [`layout`]: the part layout found from the mesh (no vertex ids);
 //! * [`closed`]: one watertight body (`pde6 body`);
-//! * [`report`]: its measurements against the input body;
+//! * [`report`]: its measurements against the input body, [`sites`]: where
+//!   its largest errors sit;
 //! * [`study`]: the data-size study (000 Fig 13);
 //! * [`check`]: the `pde6.body_*` checks (family `body` in `verify`).
 
@@ -21,6 +22,7 @@ pub mod closed;
 pub mod layout;
 pub mod parts;
 pub mod report;
+pub mod sites;
 pub mod study;
 
 /// Errors of the body reconstruction.

@@ -4,6 +4,7 @@
 
 use super::closed::ClosedOptions;
 use super::layout::Layout;
+use super::sites::{error_sites, ErrorSite};
 use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
 use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
@@ -23,6 +24,10 @@ pub struct ClosedReport {
     pub recon_to_skin_max_rel: f64,
     pub skin_to_recon_rms_rel: f64,
     pub skin_to_recon_max_rel: f64,
+    /// Where the largest recon -> skin error sits.
+    pub recon_to_skin_max_at: Option<ErrorSite>,
+    /// Where the largest skin -> recon error sits.
+    pub skin_to_recon_max_at: Option<ErrorSite>,
     /// Largest relative C0 / C1 / C2 jump over every join.
     pub max_join: [f64; 3],
     pub joins: Vec<JoinReport>,
@@ -45,6 +50,7 @@ pub fn measure(
     let h = lay.height();
     let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
     let s2r = stats(&point_distances(&skin.positions, &model.mesh));
+    let (r2s_at, s2r_at) = error_sites(&model.mesh, skin, specs, lay.sole, h);
     let mut max_join = [0.0f64; 3];
     for j in &model.joins {
         max_join[0] = max_join[0].max(j.c0);
@@ -71,6 +77,8 @@ pub fn measure(
         recon_to_skin_max_rel: r2s.max / h,
         skin_to_recon_rms_rel: s2r.rms / h,
         skin_to_recon_max_rel: s2r.max / h,
+        recon_to_skin_max_at: r2s_at,
+        skin_to_recon_max_at: s2r_at,
         max_join,
         joins: model.joins.clone(),
         seams: model.seams.clone(),
@@ -151,6 +159,9 @@ impl ClosedReport {
             self.max_join[0],
             self.max_join[1],
             self.max_join[2]
-        )
+        ) + &[("reconstruction -> skin", &self.recon_to_skin_max_at), ("skin -> reconstruction", &self.skin_to_recon_max_at)]
+            .iter()
+            .filter_map(|(w, s)| s.as_ref().map(|s| format!("  max {w}: {}\n", s.line())))
+            .collect::<String>()
     }
 }
