@@ -27,14 +27,13 @@ pub struct ErrorSite {
     pub height_rel: f64,
 }
 
+/// (sample index, point, closest point, closest triangle, distance).
+type Farthest = (usize, [f64; 3], [f64; 3], usize, f64);
+
 /// The farthest sample of `from` (vertices, then triangle centroids when
 /// `centroids`) from `to`: (sample index, point, closest point on `to`,
 /// closest triangle of `to`, distance).
-fn farthest(
-    from: &Mesh,
-    to: &Mesh,
-    centroids: bool,
-) -> Option<(usize, [f64; 3], [f64; 3], usize, f64)> {
+fn farthest(from: &Mesh, to: &Mesh, centroids: bool) -> Option<Farthest> {
     let bvh = TriangleBvh::new(to);
     let mut pts = from.positions.clone();
     if centroids {
@@ -43,7 +42,7 @@ fn farthest(
             std::array::from_fn(|k| (a[k] + b[k] + c[k]) / 3.0)
         }));
     }
-    let mut best: Option<(usize, [f64; 3], [f64; 3], usize, f64)> = None;
+    let mut best: Option<Farthest> = None;
     for (i, p) in pts.into_iter().enumerate() {
         if let Some((q, d, t)) = bvh.closest(p) {
             if best.as_ref().is_none_or(|b| d > b.4) {
