@@ -974,11 +974,14 @@ proptest! {
 }
 
 /// Issue 16, parallel narrow band: the teddy's grid is the same, bit for
-/// bit, on 1, 2 and 3 threads (tasks merged in the sequential order), and
-/// equals what `sample_group_fast` returns.
+/// bit, on 1, 2 and 3 threads (tasks merged in the sequential order),
+/// equals what `sample_group_fast` returns and what the single sequential
+/// traversal (no tasks) gives; every band node is evaluated exactly once
+/// (the walkers' count equals the count of evaluated nodes in the grid),
+/// the nodes shared between tasks among them.
 #[test]
 fn narrow_band_is_identical_for_any_thread_count() {
-    use pdesculpt::conv::narrow::{sample_with_threads, FIELD_TOLERANCE};
+    use pdesculpt::conv::narrow::{sample_sequential, sample_with_threads, FIELD_TOLERANCE};
     let m = Model::from_json(include_str!("../../data/conv/teddy.json")).expect("teddy");
     let b = m.build().expect("build");
     let t = m.options.threshold;
@@ -1002,6 +1005,22 @@ fn narrow_band_is_identical_for_any_thread_count() {
         assert!(g.values.iter().all(|v| v.is_finite()));
         assert_eq!(bits(&g.values), bits(&grid.values), "{threads} threads");
     }
+    let (seq, st) = sample_sequential(
+        &bvh,
+        t,
+        FIELD_TOLERANCE * t,
+        grid.origin,
+        grid.spacing,
+        grid.dims,
+    );
+    assert_eq!(bits(&seq.values), bits(&grid.values), "sequential");
+    assert_eq!(st.shared_evaluated, 0, "no tasks, nothing deferred");
+    // each band node once: with tasks, and without
+    assert_eq!(stats.evaluated, stats.exact_nodes, "{stats:?}");
+    assert_eq!(st.evaluated, st.exact_nodes, "{st:?}");
+    assert_eq!(stats.exact_nodes, st.exact_nodes);
+    assert_eq!(stats.segment_evaluations, st.segment_evaluations);
+    assert!(stats.shared_evaluated > 0, "tasks share faces: {stats:?}");
 }
 
 /// Issue 16, per-component reuse: after one stroke of a two-group model
