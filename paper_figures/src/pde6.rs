@@ -252,7 +252,7 @@ fn fig7a(ctx: &Ctx) -> anyhow::Result<()> {
         "002-fig7a.png",
         &Image::hstack(&[a_img, b_img], [255, 255, 255, 255]).encode_png(),
     )?;
-    let jumps = pdesculpt::pde6::check::join_jumps(&chain);
+    let jumps = pdesculpt::surface::Joined::join_jumps(&chain, pdesculpt::pde6::JOIN_SAMPLES);
     ctx.write_json(
         "002-fig7a.json",
         &serde_json::json!({

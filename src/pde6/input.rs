@@ -128,7 +128,7 @@ pub fn patch_summary(
     a: f64,
     output: &Path,
 ) -> (serde_json::Value, String) {
-    let jumps = super::check::join_jumps(chain);
+    let jumps = crate::surface::Joined::join_jumps(chain, super::JOIN_SAMPLES);
     let json = serde_json::json!({
         "sections": sections, "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
         "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),

@@ -117,6 +117,13 @@ fn families_name_no_modeling_module_nor_each_other() {
 }
 
 #[test]
+fn mesh_is_below_surface() {
+    // surface tessellates into meshes; mesh never names surface back.
+    let bad = arrows(&["mesh"], &["surface"]);
+    assert!(bad.is_empty(), "mesh imports surface:\n{}", bad.join("\n"));
+}
+
+#[test]
 fn vec3_is_the_bottom() {
     let mut all: Vec<&str> = UPPER.to_vec();
     all.extend(["check", "jet", "mesh", "surface", "limits"]);
