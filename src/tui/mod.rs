@@ -26,13 +26,15 @@
 //! `character::edit::push_checked`; Esc cancels a running rebuild or export
 //! between part solves (see [`worker`]).
 //!
+//! * [`history`]: one undo history over the edit log and the commands.
+//!
 //! Not done: terminal image protocols (half-blocks only); cancelling inside
-//! one part's solve or the transition/mesh assembly; undo of the commands
-//! (they are not entries of the edit log).
+//! one part's solve or the transition/mesh assembly.
 
 pub mod app;
 pub mod autosave;
 pub mod commands;
+pub mod history;
 pub mod keys;
 pub mod params;
 pub mod preview;

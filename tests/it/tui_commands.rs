@@ -40,7 +40,7 @@ pub(crate) fn tail_svg(dir: &Path) -> PathBuf {
 }
 
 /// Opens the prompt with key `k`, types `text`, presses Enter.
-fn command(app: &mut App, k: char, text: &str) {
+pub(crate) fn command(app: &mut App, k: char, text: &str) {
     key(app, KeyCode::Char(k));
     assert!(matches!(app.mode, Mode::Prompt { .. }), "{:?}", app.mode);
     typed(app, text);
