@@ -29,7 +29,11 @@
 //! * [`history`]: one undo history over the edit log and the commands.
 //!
 //! Not done: terminal image protocols (half-blocks only); cancelling inside
-//! one part's solve or the transition/mesh assembly.
+//! one part's solve or the transition/mesh assembly (they live in
+//! `sketch::build`, which has no cancel hook; how long a cancel waits is
+//! the longer of the two: `benches/tui.rs` `cancel_wait_*`); a force,
+//! boundary or plate edit checked on the worker (`edit::push_checked`)
+//! solves every part without the part cache and is not interruptible.
 
 pub mod app;
 pub mod autosave;
