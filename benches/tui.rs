@@ -21,7 +21,8 @@
 //! * `cancel_wait_one_part_solve`, `cancel_wait_export_tail`: the longest
 //!   waits between two cancel questions of a build (one part's solve; the
 //!   export build after the last part, every part cached), against
-//!   `full_rebuild_export`.
+//!   `full_rebuild_export`. At load 12: 0.17 ms and 489 ms against 524 ms
+//!   (the assembly and report after the last part are the wait).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
