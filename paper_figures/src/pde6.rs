@@ -3,9 +3,9 @@
 //! an analytic profile (Fig 7a) with its convergence study.
 
 use crate::common::{Ctx, Figure};
+use pdesculpt::body::parts::{makehuman_parts, reconstruct, BodyOptions, Part};
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
-use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions, Part};
 use pdesculpt::pde6::{Chain, Section};
 use pdesculpt::render::{render, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, Tessellation};

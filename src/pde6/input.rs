@@ -1,7 +1,6 @@
-//! Reading the sections JSON of `pde6 patch`, building a chain by method, and
-//! the text summary of the open-parts body (library side of `src/cli/pde6.rs`).
+//! Reading the sections JSON of `pde6 patch`, building a chain by method and
+//! the `pde6 mode` evaluation (library side of `src/cli/pde6.rs`).
 
-use super::body::BodyReport;
 use super::{Chain, Method, Pde6Error, Section};
 use crate::curve::gec::Gec;
 use crate::curve::Fourier3;
@@ -67,33 +66,6 @@ pub fn build_chain(
         Method::SharedCurves => Chain::method1(a, sections, first),
         Method::CarriedDerivatives => Chain::method2(a, sections, first),
     }
-}
-
-/// Text summary of the open-parts reconstruction (percent of the height).
-pub fn open_parts_summary(report: &BodyReport, output: &Path) -> String {
-    let h = 100.0;
-    let mut s = format!(
-        "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n",
-        output.display(),
-        report.recon_triangles,
-        report.body_height,
-        h * report.recon_to_skin_rms_rel,
-        h * report.recon_to_skin_max_rel,
-        h * report.skin_to_recon_rms_rel,
-        h * report.skin_to_recon_max_rel
-    );
-    for p in &report.parts {
-        s.push_str(&format!(
-            "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg\n",
-            p.name,
-            h * p.recon_to_skin_rms_rel,
-            h * p.recon_to_skin_max_rel,
-            p.roughness.u,
-            p.roughness.v,
-            p.slip_deg
-        ));
-    }
-    s
 }
 
 /// `pde6 mode`: the single-harmonic function through six values at

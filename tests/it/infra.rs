@@ -327,7 +327,7 @@ fn demo_pipeline_measures_each_step() {
     );
     let r = &d.report.reconstruction;
     assert!(
-        r.recon_to_skin_rms_rel < pdesculpt::pde6::body_closed::RMS_MAX_REL,
+        r.recon_to_skin_rms_rel < pdesculpt::body::closed::RMS_MAX_REL,
         "reconstruction RMS {}",
         r.recon_to_skin_rms_rel
     );

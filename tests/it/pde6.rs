@@ -140,10 +140,10 @@ fn tessellation_is_closed_in_v_and_finite() {
 #[test]
 fn body_reconstruction_is_accurate_and_c2() {
     let body = pdesculpt::makehuman::base_body().unwrap();
-    let (parts, mesh, r) = pdesculpt::pde6::body::reconstruct(
+    let (parts, mesh, r) = pdesculpt::body::parts::reconstruct(
         &body.mesh,
-        &pdesculpt::pde6::body::makehuman_parts(),
-        &pdesculpt::pde6::body::BodyOptions::default(),
+        &pdesculpt::body::parts::makehuman_parts(),
+        &pdesculpt::body::parts::BodyOptions::default(),
     )
     .unwrap();
     assert_eq!(parts.len(), 7);
@@ -244,7 +244,7 @@ fn anchored_sampling_does_not_depend_on_the_start_vertex() {
 
 #[test]
 fn body_ripples_are_removed_without_losing_accuracy() {
-    use pdesculpt::pde6::body::{
+    use pdesculpt::body::parts::{
         legacy_options, makehuman_parts, part_smoothness, reconstruct_part, BodyOptions,
     };
     let body = pdesculpt::makehuman::base_body().unwrap();
@@ -268,7 +268,7 @@ fn body_ripples_are_removed_without_losing_accuracy() {
         assert!(rn.v < ro.v, "{}: {} vs {}", spec.name, rn.v, ro.v);
         assert!(sn < so, "{}: slip {sn} vs {so}", spec.name);
         // accuracy: the new surface is no further from the skin
-        let d = |p: &pdesculpt::pde6::body::Part| {
+        let d = |p: &pdesculpt::body::parts::Part| {
             pdesculpt::mesh::metrics::stats(&pdesculpt::mesh::metrics::point_distances(
                 &p.mesh.positions,
                 &body.mesh,

@@ -9,11 +9,9 @@ use super::mode::{
 use super::samples::{synthetic_sections, SIGNS};
 use super::{Chain, Patch, Piece, Section, JOIN_SAMPLES};
 use crate::check::{tol, Check, Kind};
-use crate::surface::Joined;
-mod body;
-mod body_closed;
 use crate::curve::Fourier3;
 use crate::jet::Jet;
+use crate::surface::Joined;
 use crate::surface::Surface;
 use serde::Deserialize;
 use std::f64::consts::PI;
@@ -193,7 +191,5 @@ pub fn checks() -> Vec<Check> {
     printed_form_checks(&mut out);
     printed_checks::printed_main_checks(&mut out);
     printed_appendix::printed_appendix_checks(&mut out);
-    body::body_smoothness_checks(&mut out);
-    body_closed::body_closed_checks(&mut out);
     out
 }
