@@ -166,21 +166,7 @@ fn region_panel(
         four_sided::Method::Galerkin,
     )?;
     let r = deform_region(body, curve, &d, dir, drag, depth)?;
-    let o = RenderOptions {
-        width: 360,
-        height: 480,
-        view: View::Perspective {
-            yaw: 25.0,
-            pitch: 5.0,
-        },
-        overlays: vec![Overlay {
-            points: curve.to_vec(),
-            closed: true,
-            colour: [220, 30, 30, 255],
-            depth_test: false,
-        }],
-        ..Default::default()
-    };
+    let o = chest_view(curve);
     let moved = r.region.len();
     Ok((
         render_with_camera(&r.mesh, &o, &torso_camera(&o)),
@@ -219,6 +205,25 @@ fn body() -> anyhow::Result<Mesh> {
     Ok(pdesculpt::makehuman::base_body()
         .context("MakeHuman base body")?
         .mesh)
+}
+
+/// The chest panels' camera: three-quarter view with `curve` drawn in red.
+fn chest_view(curve: &[[f64; 3]]) -> RenderOptions {
+    RenderOptions {
+        width: 360,
+        height: 480,
+        view: View::Perspective {
+            yaw: 25.0,
+            pitch: 5.0,
+        },
+        overlays: vec![Overlay {
+            points: curve.to_vec(),
+            closed: true,
+            colour: [220, 30, 30, 255],
+            depth_test: false,
+        }],
+        ..Default::default()
+    }
 }
 
 /// The demo's chest outline (right side), drawn irregular.
@@ -283,21 +288,7 @@ fn fig2(ctx: &Ctx) -> anyhow::Result<()> {
 fn fig14(ctx: &Ctx) -> anyhow::Result<()> {
     let b = body()?;
     let curve = chest_curve();
-    let o = RenderOptions {
-        width: 360,
-        height: 480,
-        view: View::Perspective {
-            yaw: 25.0,
-            pitch: 5.0,
-        },
-        overlays: vec![Overlay {
-            points: curve.clone(),
-            closed: true,
-            colour: [220, 30, 30, 255],
-            depth_test: false,
-        }],
-        ..Default::default()
-    };
+    let o = chest_view(&curve);
     let before = render_with_camera(&b, &o, &torso_camera(&o));
     let (after, j) = region_panel(
         &b,

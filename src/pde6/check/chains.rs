@@ -63,10 +63,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                         "eq 2",
                         &format!("pde6.method2_residual_{name}"),
                         Kind::Residual,
-                        c.pieces
-                            .iter()
-                            .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
-                            .fold(0.0, f64::max),
+                        chain_residual(&c, a),
                         RESIDUAL_TOL,
                     )
                     .note("PDE residual on every piece of the method-2 chain"),
@@ -127,10 +124,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                         "eq 2",
                         &format!("pde6.global_residual_{name}"),
                         Kind::Residual,
-                        c.pieces
-                            .iter()
-                            .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
-                            .fold(0.0, f64::max),
+                        chain_residual(&c, a),
                         RESIDUAL_TOL,
                     )
                     .note("PDE residual on every piece of the global C2 chain"),

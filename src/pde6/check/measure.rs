@@ -21,6 +21,14 @@ pub fn pde_residual<S: Surface>(s: &S, a: f64, u_range: (f64, f64)) -> f64 {
     worst
 }
 
+/// Largest [`pde_residual`] over the pieces of a chain.
+pub fn chain_residual(c: &Chain, a: f64) -> f64 {
+    c.pieces
+        .iter()
+        .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
+        .fold(0.0, f64::max)
+}
+
 /// Largest distance, over 16 equally spaced `v`, from `at(v)` to the
 /// section's curve (how far a surface passes from a section it must meet).
 pub fn section_distance(s: &Section, at: impl Fn(f64) -> [f64; 3]) -> f64 {

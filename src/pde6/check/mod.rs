@@ -26,8 +26,8 @@ mod printed_appendix;
 mod printed_appendix_b;
 mod printed_checks;
 pub use measure::{
-    basis_ode_residual, closed_v_mismatch, interpolation_error, lebesgue, method2_amplification,
-    mode_vs_rk4, pde_residual, section_distance,
+    basis_ode_residual, chain_residual, closed_v_mismatch, interpolation_error, lebesgue,
+    method2_amplification, mode_vs_rk4, pde_residual, section_distance,
 };
 use paper_literal::printed_form_checks;
 pub use paper_literal::{eq26_printed_interpolation_error, eq27_printed_interpolation_error};
