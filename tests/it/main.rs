@@ -13,6 +13,7 @@ mod units;
 mod body;
 mod conv;
 mod edit;
+mod edit_stroke;
 mod gec;
 mod gec_correct;
 mod ode6;
