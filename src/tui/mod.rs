@@ -28,7 +28,10 @@
 //!
 //! * [`history`]: one undo history over the edit log and the commands.
 //!
-//! Not done: terminal image protocols (half-blocks only); cancelling inside
+//! * [`kitty`]: the preview as a PNG through the kitty graphics protocol
+//!   when the terminal announces it (half-blocks otherwise, and below it).
+//!
+//! Not done: other terminal image protocols (sixel, iTerm2); cancelling inside
 //! one part's solve or the transition/mesh assembly (they live in
 //! `sketch::build`, which has no cancel hook; how long a cancel waits is
 //! the longer of the two: `benches/tui.rs` `cancel_wait_*`); a force,
@@ -38,8 +41,10 @@
 pub mod app;
 pub mod autosave;
 pub mod commands;
+pub mod fit;
 pub mod history;
 pub mod keys;
+pub mod kitty;
 pub mod params;
 pub mod preview;
 pub mod term;

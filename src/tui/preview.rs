@@ -5,7 +5,8 @@
 //! one as its background. A `cols x rows` area therefore shows an image of
 //! `cols x 2 rows` pixels. The selected part (a mesh group of the same name)
 //! is drawn in a highlight colour, the other parts in grey and the
-//! transitions in a darker grey. (Terminal image protocols are not used.)
+//! transitions in a darker grey. In kitty the same image, rendered at
+//! 8 x 16 pixels per cell, is laid over it as a PNG ([`super::kitty`]).
 
 use crate::mesh::Mesh;
 use crate::render::{render_views, Image, RenderOptions, View};

@@ -106,11 +106,19 @@ pub fn run(o: Options) -> Result<(), TuiError> {
     let worker = Worker::spawn();
     let mut terminal = ratatui::init();
     install_panic_hook();
-    let mut cache = PreviewCache::default();
+    let kitty = super::kitty::detect();
+    let mut cache = if kitty {
+        PreviewCache::with_kitty()
+    } else {
+        PreviewCache::default()
+    };
     run_effects(&mut app, &worker, vec![Effect::Rebuild], o.preview);
     let result = (|| -> Result<(), TuiError> {
         loop {
             terminal.draw(|f| view::draw(f, &app, &mut cache))?;
+            if let Some(seq) = cache.take_kitty() {
+                write_raw(&seq)?;
+            }
             let mut quit = false;
             while let Some(out) = worker.poll() {
                 let effects = app.on_outcome(out);
@@ -130,6 +138,17 @@ pub fn run(o: Options) -> Result<(), TuiError> {
             }
         }
     })();
+    if kitty {
+        let _ = write_raw(&super::kitty::clear());
+    }
     ratatui::restore();
     result
+}
+
+/// Writes escape sequences straight to the terminal.
+fn write_raw(seq: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    out.write_all(seq.as_bytes())?;
+    out.flush()
 }

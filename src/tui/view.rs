@@ -4,6 +4,7 @@
 //! questions as popups.
 
 use super::app::{App, Focus, ItemKind, Mode};
+use super::fit::{elide_left, fit};
 use super::keys::BINDINGS;
 use super::preview::{self, HalfBlocks};
 use crate::character::doc::ProfileInput;
@@ -17,8 +18,57 @@ use ratatui::Frame;
 /// The preview image of the last draw and what it was drawn for.
 #[derive(Default)]
 pub struct PreviewCache {
-    key: Option<(u64, Option<String>, &'static str, u16, u16)>,
+    key: Option<PreviewKey>,
     image: Option<Image>,
+    /// Also send the preview through the kitty graphics protocol
+    /// ([`super::kitty`]).
+    pub kitty: bool,
+    /// What the terminal shows through it: the preview's key and area.
+    kitty_shown: Option<(PreviewKey, Rect)>,
+    /// Escape sequences to write after the draw.
+    kitty_out: Option<String>,
+}
+
+type PreviewKey = (u64, Option<String>, &'static str, u16, u16);
+
+impl PreviewCache {
+    /// A cache that sends the preview through the kitty graphics protocol.
+    pub fn with_kitty() -> PreviewCache {
+        PreviewCache {
+            kitty: true,
+            ..PreviewCache::default()
+        }
+    }
+
+    /// The kitty escape sequences of the last draw, if any (write them to
+    /// the terminal after the draw).
+    pub fn take_kitty(&mut self) -> Option<String> {
+        self.kitty_out.take()
+    }
+
+    /// Kitty: remove the preview's image (nothing built, or a popup
+    /// covers it).
+    fn kitty_hide(&mut self) {
+        if self.kitty && self.kitty_shown.take().is_some() {
+            self.kitty_out = Some(super::kitty::clear());
+        }
+    }
+
+    /// Kitty: show the preview of `key` over `inner` (`render` draws it).
+    fn kitty_show(&mut self, key: &PreviewKey, inner: Rect, render: impl FnOnce() -> Image) {
+        if !self.kitty || self.kitty_shown.as_ref() == Some(&(key.clone(), inner)) {
+            return;
+        }
+        let png = render().encode_png();
+        self.kitty_out = Some(super::kitty::place(
+            &png,
+            inner.x,
+            inner.y,
+            inner.width,
+            inner.height,
+        ));
+        self.kitty_shown = Some((key.clone(), inner));
+    }
 }
 
 fn block(title: &str, focused: bool) -> Block<'_> {
@@ -163,6 +213,7 @@ fn draw_preview(f: &mut Frame, app: &App, area: Rect, cache: &mut PreviewCache) 
     f.render_widget(b, area);
     let Some(shown) = &app.shown else {
         f.render_widget(Paragraph::new("building..."), inner);
+        cache.kitty_hide();
         return;
     };
     let sel = app.selected().map(|t| t.name);
@@ -183,10 +234,27 @@ fn draw_preview(f: &mut Frame, app: &App, area: Rect, cache: &mut PreviewCache) 
             inner.width,
             inner.height,
         ));
-        cache.key = Some(key);
+        cache.key = Some(key.clone());
     }
     if let Some(img) = &cache.image {
         f.render_widget(HalfBlocks(img), inner);
+    }
+    let popup = matches!(app.mode, Mode::Help | Mode::ConfirmQuit | Mode::Recovery(_));
+    let parts: Vec<String> = app.edited.iter().map(|p| p.name.clone()).collect();
+    let (px, py) = super::kitty::CELL_PX;
+    if popup {
+        cache.kitty_hide();
+    } else {
+        cache.kitty_show(&key, inner, || {
+            preview::render(
+                &shown.mesh,
+                &parts,
+                sel.as_deref(),
+                app.view,
+                inner.width.saturating_mul(px),
+                inner.height.saturating_mul(py / 2),
+            )
+        });
     }
 }
 
@@ -412,67 +480,6 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
 /// Characters of a typed prompt kept on screen however long its error is.
 const PROMPT_MIN_SHOWN: usize = 16;
 
-/// `text` cut to at most `max` characters by dropping its start (marked
-/// with an ellipsis).
-fn elide_left(text: &str, max: usize) -> String {
-    let n = text.chars().count();
-    if n <= max {
-        return text.to_string();
-    }
-    if max == 0 {
-        return String::new();
-    }
-    let keep = max - 1;
-    let mut out = String::from("…");
-    out.extend(text.chars().skip(n - keep));
-    out
-}
-
-/// Characters of a path kept when a line is made to fit.
-const PATH_MIN_SHOWN: usize = 12;
-
-/// `text` made to fit `max` characters: its path-like words (with a `/`),
-/// longest first, lose their start (the file name stays), down to
-/// [`PATH_MIN_SHOWN`] characters each; what is still too long loses its
-/// end (marked with an ellipsis). Long checkout or temp directories must
-/// not push a message's point off its line.
-pub fn fit(text: &str, max: usize) -> String {
-    let n = text.chars().count();
-    if n <= max {
-        return text.to_string();
-    }
-    let mut words: Vec<String> = text.split(' ').map(String::from).collect();
-    let mut over = n - max;
-    let mut paths: Vec<usize> = (0..words.len())
-        .filter(|&i| words[i].contains('/') || words[i].contains('\\'))
-        .collect();
-    paths.sort_by_key(|&i| std::cmp::Reverse(words[i].chars().count()));
-    for i in paths {
-        let len = words[i].chars().count();
-        let cut = over.min(len.saturating_sub(PATH_MIN_SHOWN));
-        if cut > 0 {
-            words[i] = elide_left(&words[i], len - cut);
-            over -= cut;
-        }
-        if over == 0 {
-            return words.join(" ");
-        }
-    }
-    elide_right(&words.join(" "), max)
-}
-
-/// `text` cut to at most `max` characters by dropping its end.
-fn elide_right(text: &str, max: usize) -> String {
-    if text.chars().count() <= max {
-        return text.to_string();
-    }
-    let mut out: String = text.chars().take(max.saturating_sub(1)).collect();
-    if max > 0 {
-        out.push('…');
-    }
-    out
-}
-
 fn centred(area: Rect, w: u16, h: u16) -> Rect {
     let w = w.min(area.width);
     let h = h.min(area.height);
@@ -526,37 +533,4 @@ fn draw_popup(f: &mut Frame, app: &App) {
     let area = centred(f.area(), w.max(title.len() as u16 + 4), h);
     f.render_widget(Clear, area);
     f.render_widget(Paragraph::new(lines).block(block(title, true)), area);
-}
-
-#[cfg(test)]
-mod tests {
-    use super::{elide_left, fit};
-
-    #[test]
-    fn elide_left_keeps_the_end_within_the_width() {
-        assert_eq!(elide_left("abc", 3), "abc");
-        assert_eq!(elide_left("/a/long/path.json", 10), "…path.json");
-        assert_eq!(elide_left("/a/long/path.json", 10).chars().count(), 10);
-        assert_eq!(elide_left("ééééé", 2), "…é");
-        assert_eq!(elide_left("abc", 0), "");
-    }
-
-    #[test]
-    fn fit_shortens_paths_first_then_the_end() {
-        let long = format!("/{}/char.json", "d".repeat(200));
-        let t = fit(&format!("saved {long} ok"), 40);
-        assert_eq!(t.chars().count(), 40);
-        assert!(
-            t.starts_with("saved …") && t.ends_with("/char.json ok"),
-            "{t}"
-        );
-        // no path: the end goes
-        let t = fit(&"x".repeat(50), 10);
-        assert_eq!(t, format!("{}…", "x".repeat(9)));
-        assert_eq!(fit("short", 10), "short");
-        // paths keep their last characters, then the end goes
-        let t = fit(&format!("{long} {long} tail"), 20);
-        assert_eq!(t.chars().count(), 20);
-        assert!(t.starts_with('…'), "{t}");
-    }
 }

@@ -419,3 +419,76 @@ fn tui_every_line_keeps_its_point_under_a_long_path() {
         assert!(s.contains(l), "{l}:\n{s}");
     }
 }
+
+#[test]
+fn tui_kitty_protocol_sends_the_preview_as_png_and_removes_it_under_a_popup() {
+    use pdesculpt::tui::kitty::{base64, clear, place, supported, CHUNK, IMAGE_ID};
+    assert!(supported(Some("xterm-kitty"), None));
+    assert!(supported(Some("xterm-256color"), Some("3")));
+    assert!(!supported(Some("xterm-256color"), None));
+    assert!(!supported(None, Some("")));
+    for (raw, enc) in [
+        ("", ""),
+        ("f", "Zg=="),
+        ("fo", "Zm8="),
+        ("foo", "Zm9v"),
+        ("foobar", "Zm9vYmFy"),
+    ] {
+        assert_eq!(base64(raw.as_bytes()), enc);
+    }
+    // chunks: at most CHUNK bytes each, all but the last marked m=1
+    let bytes: Vec<u8> = (0..10_000u32).map(|i| (i * 7 % 251) as u8).collect();
+    let seq = place(&bytes, 30, 0, 82, 46);
+    let payloads: Vec<&str> = seq
+        .split("\x1b_G")
+        .skip(1)
+        .filter(|c| !c.starts_with("a=d"))
+        .collect();
+    assert!(payloads.len() > 1);
+    let mut data = String::new();
+    for (i, p) in payloads.iter().enumerate() {
+        let (head, rest) = p.split_once(';').expect("a payload");
+        let chunk = rest.strip_suffix("\x1b\\").unwrap_or(rest);
+        let chunk = chunk.split("\x1b\\").next().unwrap_or(chunk);
+        assert!(chunk.len() <= CHUNK);
+        let last = i + 1 == payloads.len();
+        assert!(head.ends_with(if last { "m=0" } else { "m=1" }), "{head}");
+        if i == 0 {
+            assert!(
+                head.contains("a=T,f=100") && head.contains("c=82,r=46"),
+                "{head}"
+            );
+        }
+        data.push_str(chunk);
+    }
+    assert_eq!(data, base64(&bytes));
+    assert!(
+        seq.starts_with("\x1b7\x1b[1;31H"),
+        "the cursor goes to the preview"
+    );
+    // through the draw: a PNG once, nothing while unchanged, removed
+    // under the help popup, sent again after it
+    let mut app = built("kitty");
+    let mut t = Terminal::new(TestBackend::new(160, 48)).expect("terminal");
+    let mut cache = PreviewCache::with_kitty();
+    t.draw(|f| draw(f, &app, &mut cache)).expect("draws");
+    let first = cache.take_kitty().expect("the preview is sent");
+    let start = first.find("m=1;").expect("a chunked PNG") + 4;
+    assert!(
+        first[start..].starts_with(&base64(b"\x89PNG")[..4]),
+        "a PNG"
+    );
+    assert!(first.contains(&format!("i={IMAGE_ID}")));
+    t.draw(|f| draw(f, &app, &mut cache)).expect("draws");
+    assert!(cache.take_kitty().is_none(), "unchanged: nothing sent");
+    key(&mut app, KeyCode::Char('?'));
+    t.draw(|f| draw(f, &app, &mut cache)).expect("draws");
+    assert_eq!(cache.take_kitty(), Some(clear()));
+    key(&mut app, KeyCode::Char('x'));
+    t.draw(|f| draw(f, &app, &mut cache)).expect("draws");
+    assert!(cache.take_kitty().is_some(), "shown again");
+    // without kitty nothing is sent
+    let mut plain = PreviewCache::default();
+    t.draw(|f| draw(f, &app, &mut plain)).expect("draws");
+    assert!(plain.take_kitty().is_none());
+}
