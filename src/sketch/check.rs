@@ -231,9 +231,58 @@ fn c2_option_check(b: &super::Built) -> Check {
     .note("largest C2 jump |X_ss - ell^2 d2X/du2| / max |ell^2 d2X/du2| of the female's transitions built with continuity c2 (quintic Hermite), 3 samples per loop vertex")
 }
 
+/// The crease metric on a regular octahedron split into two groups (top
+/// and bottom pyramids): every edge turns by the angle between adjacent
+/// face normals, `acos(1/3)` (70.53 degrees), inside each group and across
+/// their border; no edge is creased by less, so the creased length is all
+/// 8 interior edges (length sqrt 2 each, four per pyramid's apex).
+fn crease_check() -> Check {
+    let positions = vec![
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, -1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -1.0],
+    ];
+    let mut m = Mesh {
+        positions,
+        ..Mesh::default()
+    };
+    for i in 0..4u32 {
+        let j = (i + 1) % 4;
+        let top = m.group_index("top");
+        m.triangles.push([i, j, 4]);
+        m.tri_group.push(top);
+        let bottom = m.group_index("bottom");
+        m.triangles.push([j, i, 5]);
+        m.tri_group.push(bottom);
+    }
+    let want = (1.0f64 / 3.0).acos().to_degrees();
+    let err = super::crease::creases(&m)
+        .iter()
+        .map(|c| {
+            (c.interior_deg - want)
+                .abs()
+                .max((c.border_deg - want).abs())
+                .max((c.creased_length - 4.0 * 2f64.sqrt()).abs())
+        })
+        .fold(0.0, f64::max);
+    Check::new(
+        "sketch",
+        "000",
+        "sec 4.1.1",
+        "sketch.crease.octahedron",
+        Kind::Reference,
+        err,
+        tol::ROUNDING,
+    )
+    .note("crease metric (largest dihedral angle between adjacent triangles, in degrees, and the creased edge length) on a regular octahedron in two groups against acos(1/3) and 4 sqrt 2")
+}
+
 /// Every check of the family.
 pub fn checks() -> Vec<Check> {
-    let mut out = vec![alignment_check(), quintic_check()];
+    let mut out = vec![alignment_check(), quintic_check(), crease_check()];
     // the animal: body plan quadruped (auto-detected), lateral silhouette
     // in the front file, head-on view in the side file
     for name in ["female", "male", "animal"] {
