@@ -459,6 +459,7 @@ fn transitions(
             seam_apex: vec![crotch],
             cut_angles: Vec::new(),
             tangent_scale: 1.0,
+            continuity: Default::default(),
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -468,6 +469,7 @@ fn transitions(
             seam_apex: apex,
             cut_angles: Vec::new(),
             tangent_scale: 1.0,
+            continuity: Default::default(),
         },
     ])
 }

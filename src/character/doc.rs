@@ -275,6 +275,27 @@ pub struct TransitionSpec {
     /// distance); 1 by default.
     #[serde(default = "unit_scale", skip_serializing_if = "is_unit_scale")]
     pub tangent_scale: f64,
+    /// Order of the blend across the transition (`sketch::transition`):
+    /// `c1` (cubic Hermite, the default) or `c2` (quintic Hermite).
+    #[serde(default, skip_serializing_if = "Continuity::is_default")]
+    pub continuity: Continuity,
+}
+
+/// Continuity of a transition with its parts at its two boundary rings.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Continuity {
+    /// Cubic Hermite: position and first cross derivative.
+    #[default]
+    C1,
+    /// Quintic Hermite: position, first and second cross derivatives.
+    C2,
+}
+
+impl Continuity {
+    fn is_default(&self) -> bool {
+        *self == Continuity::default()
+    }
 }
 
 fn unit_scale() -> f64 {

@@ -299,6 +299,7 @@ pub fn build_model_with(
                 &seams,
                 &cuts,
                 t.tangent_scale,
+                t.continuity,
             );
             if thetas[idx].is_some() {
                 return Err(SketchError::Document(format!(

@@ -470,6 +470,7 @@ fn derive_upright(
             seam_apex: vec![[lm.crotch[0], lm.crotch[1], bot_c[2]]],
             cut_angles: Vec::new(),
             tangent_scale: 1.0,
+            continuity: Default::default(),
         },
         TransitionSpec {
             name: "shoulders".into(),
@@ -479,6 +480,7 @@ fn derive_upright(
             seam_apex: vec![apex(-1.0), apex(1.0)],
             cut_angles: Vec::new(),
             tangent_scale: 1.0,
+            continuity: Default::default(),
         },
     ];
     Ok(Derived {

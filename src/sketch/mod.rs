@@ -27,8 +27,11 @@
 //! longer than tall) are segmented from their lateral silhouette in the
 //! front file ([`quadruped`]).
 //!
-//! Simpler than the paper: the transitions are cubic Hermite blends (C1,
-//! not C2); only standing humanoids (arms away from the body, legs apart)
+//! Simpler than the paper: the transitions are Hermite blends, cubic (C1,
+//! the default) or quintic with the parts' second derivatives (C2, per
+//! transition `continuity: c2`), not PDE surfaces; sibling transitions meet
+//! G1 along their seams; the mesh's creases are measured ([`crease`]);
+//! only standing humanoids (arms away from the body, legs apart)
 //! and quadrupeds with tail and neck rising above the back are segmented; a
 //! cut only moves a join that the automatic segmentation finds (it cannot
 //! add a part), and quadrupeds take no cuts.
@@ -42,6 +45,7 @@
 pub mod align;
 pub mod build;
 pub mod check;
+pub mod crease;
 pub mod cuts;
 pub mod derive;
 pub mod input;

@@ -390,6 +390,7 @@ pub fn derive(
                 .map(|p| cut_angle(c0, a0, p[0], UNDERSIDE_CUT_BLEND))
                 .collect(),
             tangent_scale: TANGENT_SCALE,
+            continuity: Default::default(),
         },
         TransitionSpec {
             name: "topside".into(),
@@ -403,6 +404,7 @@ pub fn derive(
                 .map(|p| cut_angle(c1, a1, p[0], 1.0))
                 .collect(),
             tangent_scale: TANGENT_SCALE,
+            continuity: Default::default(),
         },
     ];
     Ok(Derived {

@@ -36,6 +36,14 @@ pub struct TransitionReport {
     pub surface: &'static str,
     pub joins: Vec<JoinReport>,
     pub seams: Vec<SeamReport>,
+    /// Largest dihedral angle between adjacent triangles inside the
+    /// transition (degrees; [`super::crease`]).
+    pub crease_deg: f64,
+    /// Largest dihedral angle across its joins with the parts (degrees).
+    pub join_crease_deg: f64,
+    /// Length of its interior edges turning by more than
+    /// [`super::crease::CREASE_DEG`], relative to the model height.
+    pub creased_length_rel: f64,
 }
 
 /// Model silhouette against a sketched profile, relative to model height.
@@ -57,6 +65,9 @@ pub struct SketchReport {
     pub profile_error: Vec<ProfileErrorReport>,
     /// Largest C1 jump of any transition join (relative).
     pub max_c1: f64,
+    /// Largest dihedral angle inside any part (degrees): the level a smooth
+    /// transition's `crease_deg` is read against.
+    pub part_crease_deg: f64,
     /// Removed parts recorded in the document and not built.
     pub not_built: Vec<String>,
     /// Removed parts built from their own profiles ([`super::removed`]).
@@ -202,14 +213,27 @@ pub fn build_document_with(
                 .collect(),
         })
         .collect();
+    let creases = super::crease::creases(&model.mesh);
+    let crease_of = |name: &str| creases.iter().find(|c| c.group == name);
+    let part_crease_deg = edited
+        .iter()
+        .filter_map(|p| crease_of(&p.name))
+        .map(|c| c.interior_deg)
+        .fold(0.0, f64::max);
     let transitions = out
         .transitions
         .iter()
         .map(|t| TransitionReport {
+            crease_deg: crease_of(&t.name).map_or(0.0, |c| c.interior_deg),
+            join_crease_deg: crease_of(&t.name).map_or(0.0, |c| c.border_deg),
+            creased_length_rel: crease_of(&t.name).map_or(0.0, |c| c.creased_length / height),
             name: t.name.clone(),
             parent: t.parent.clone(),
             children: t.children.clone(),
-            surface: "cubic Hermite blend (C1 to the parts)",
+            surface: match t.continuity {
+                crate::character::doc::Continuity::C1 => "cubic Hermite blend (C1 to the parts)",
+                crate::character::doc::Continuity::C2 => "quintic Hermite blend (C2 to the parts)",
+            },
             joins: model
                 .joins
                 .iter()
@@ -238,6 +262,7 @@ pub fn build_document_with(
         topology: topo,
         profile_error,
         max_c1,
+        part_crease_deg,
         not_built: out
             .removed_parts
             .iter()
