@@ -12,13 +12,20 @@
 //! [`super::refine::arm_mask`]) the trunk's own outline (arms left out)
 //! gives the trunk's span `[tb, tf]`, and at a height where an arm is the
 //! front-most part (`zf > tf`)
-//! - a sketch in front of the arm (`sf >= zf`) is a bulge of the trunk (a
-//!   pregnant belly): the trunk's front moves to `sf`, the arm stays;
+//! - a sketch in front of the arm by more than the fit's tolerance
+//!   (`sf >= zf + tol h`) is a bulge of the trunk (a pregnant belly): the
+//!   trunk's front moves to `sf`, the arm stays;
 //! - a sketch behind the arm's front moves the arm back to `sf`, and the
 //!   trunk's front only as far as it would stick out of the sketch, or as
 //!   far as a bulge found at nearby heights carries ([`BULGE_REACH`]), so
 //!   the trunk's correction is continuous where the sketch's front passes
 //!   the arm.
+//!
+//! - a sketch whose crossings at that height make two intervals or more
+//!   (the trunk, then the arm, apart) moves the trunk's front to the end
+//!   of the back-most interval and the arm's to the sketch's front: a
+//!   belly between the body's back and the hands is an inner crossing,
+//!   not the envelope (MakeHuman's hands are in front of the belly).
 //!
 //! Likewise at the back. Each vertex then moves in depth by the
 //! correction of its part's front and back at its height, weighted
@@ -63,8 +70,28 @@ pub struct EnvelopeStats {
     /// Of those, rows where the sketch is in front of the arm (a bulge of
     /// the trunk).
     pub bulge_rows: usize,
+    /// Of those, rows where the sketch shows the trunk and the arm apart
+    /// (two intervals or more): the trunk's front goes to the back-most
+    /// interval's front.
+    pub split_rows: usize,
     /// Largest row correction applied (model units).
     pub max_correction: f64,
+}
+
+/// Every crossing (first coordinate) of the horizontal line at height `y`
+/// with the closed polygon `p`, sorted.
+pub fn crossings(p: &[[f64; 2]], y: f64) -> Vec<f64> {
+    let n = p.len();
+    let mut out = Vec::new();
+    for i in 0..n {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
+            continue;
+        }
+        out.push(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
+    }
+    out.sort_by(f64::total_cmp);
+    out
 }
 
 fn smooth(v: &mut [f64], known: &[bool]) {
@@ -160,6 +187,9 @@ pub fn envelope_pass(
     let h = (y1 - y0).max(f64::MIN_POSITIVE);
     let dy = h / (ROWS - 1) as f64;
     let eps = ARM_EPS * h;
+    // a sketch this far beyond an arm is the trunk bulging past it; nearer,
+    // the sketch's crossing is the arm itself
+    let bulge_min = opts.tolerance * h;
     let mut full = Rows::default();
     let mut body = Rows::default();
     let mut bulge = vec![0.0f64; ROWS];
@@ -184,7 +214,15 @@ pub fn envelope_pass(
         if ff > tf + eps {
             arm_front[r] = true;
             stats.arm_rows += 1;
-            if sf >= ff {
+            let sc = crossings(side, y);
+            if sc.len() >= 4 && sc[1] > tb {
+                // the sketch shows a gap in front of the trunk at this
+                // height (trunk, then the arm): the trunk's front goes to
+                // the end of the back-most interval, the arm to the front
+                stats.split_rows += 1;
+                full.front.push(sf - ff);
+                body.front.push(sc[1] - tf);
+            } else if sf >= ff + bulge_min {
                 stats.bulge_rows += 1;
                 bulge[r] = sf - tf;
                 full.front.push(0.0);
@@ -200,7 +238,7 @@ pub fn envelope_pass(
         // back
         if fb < tb - eps {
             arm_back[r] = true;
-            if sb <= fb {
+            if sb <= fb - bulge_min {
                 bulge[r] = bulge[r].max(tb - sb);
                 full.back.push(0.0);
                 body.back.push(sb - tb);
@@ -282,19 +320,6 @@ pub fn envelope_pass(
         .chain(&body.front)
         .chain(&body.back)
         .fold(0.0f64, |m, v| m.max(v.abs()));
-    if std::env::var("ENVELOPE_DEBUG").is_ok() {
-        for r in (0..ROWS).step_by(16) {
-            let y = y0 + r as f64 * dy;
-            eprintln!(
-                "row {:.3}: full {:?} body {:?} sketch {:?} | full f {:.3} b {:.3} | body f {:.3} b {:.3} | arm {} {}",
-                r as f64 / ROWS as f64,
-                full.span[r].map(|(a, b)| ((a * 100.0).round() / 100.0, (b * 100.0).round() / 100.0)),
-                body.span[r].map(|(a, b)| ((a * 100.0).round() / 100.0, (b * 100.0).round() / 100.0)),
-                depth_span(side, y).map(|(a, b)| ((a * 100.0).round() / 100.0, (b * 100.0).round() / 100.0)),
-                full.front[r], full.back[r], body.front[r], body.back[r], arm_front[r], arm_back[r]
-            );
-        }
-    }
     for (i, p) in positions.iter_mut().enumerate() {
         let r = (p[1] - y0) / dy;
         let part = match &arms {

@@ -429,3 +429,80 @@ fn eight_percent_perturbation_without_passes_is_an_error() {
     let v = r.levels[0].0.profiles[0];
     assert!(!v.within && v.max_rel > PROFILE_REL, "{v:?}");
 }
+
+/// `envelope::crossings` lists every crossing of a row, sorted: a U shape
+/// (two prongs) is crossed four times between its prongs' heights, twice
+/// below.
+#[test]
+fn envelope_crossings_of_a_u_shape() {
+    use pdesculpt::template::envelope::crossings;
+    let u = [
+        [0.0, 0.0],
+        [3.0, 0.0],
+        [3.0, 2.0],
+        [2.0, 2.0],
+        [2.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 2.0],
+        [0.0, 2.0],
+    ];
+    let c = crossings(&u, 1.5);
+    assert_eq!(c.len(), 4);
+    for (a, b) in c.iter().zip([0.0, 1.0, 2.0, 3.0]) {
+        assert!((a - b).abs() <= tol::SOLVE, "{c:?}");
+    }
+    assert_eq!(crossings(&u, 0.5).len(), 2);
+    assert!(crossings(&u, 3.0).is_empty());
+}
+
+/// One envelope pass moves a figure prism's side outline (a rectangle in
+/// depth -1..1) onto a sketched side profile whose front bulges by up to
+/// 0.6 (a belly) and whose back is 0.2 deeper: within the fit's tolerance
+/// after the pass, far off before.
+#[test]
+fn envelope_pass_fits_a_bulging_side_profile() {
+    use pdesculpt::profile::{profile_distance, Profile};
+    use pdesculpt::template::envelope::envelope_pass;
+    use pdesculpt::template::measure::mesh_outline;
+    let t = Template::whole(prism(&refined(&figure(Figure::default()), 0.1), 1.0));
+    let (lo, hi) = t
+        .skin
+        .positions
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p[1]), h.max(p[1]))
+        });
+    let bump = |y: f64| {
+        let u = (y - (lo + 0.55 * (hi - lo))) / (0.08 * (hi - lo));
+        0.6 * (-u * u).exp()
+    };
+    let n = 400;
+    let mut side: Vec<[f64; 2]> = (0..=n)
+        .map(|k| {
+            let y = lo + (hi - lo) * k as f64 / n as f64;
+            [1.0 + bump(y), y]
+        })
+        .collect();
+    side.extend(
+        (0..=n)
+            .rev()
+            .map(|k| [-1.2, lo + (hi - lo) * k as f64 / n as f64]),
+    );
+    let side = validated("side", &side).unwrap();
+    let dist = |pos: &[[f64; 3]]| {
+        let o = mesh_outline(&t.skin_at(pos), View::Side).unwrap();
+        profile_distance(
+            &Profile::new(View::Side, o).unwrap(),
+            &Profile::new(View::Side, side.clone()).unwrap(),
+        )
+        .max_rel
+    };
+    let mut pos = t.mesh.positions.clone();
+    let before = dist(&pos);
+    let mut opts = FitOptions::default();
+    opts.envelope_arms = false;
+    envelope_pass(&t, &mut pos, &side, &opts, &mesh_outline).unwrap();
+    let after = dist(&pos);
+    assert!(before > 4.0 * PROFILE_REL, "before {before}");
+    assert!(after <= PROFILE_REL, "before {before}, after {after}");
+}

@@ -22,6 +22,9 @@ fn study_table() {
     {
         opts.envelope_passes = n;
     }
+    if std::env::var("STUDY_ENVARMS").is_ok_and(|v| v == "0") {
+        opts.envelope_arms = false;
+    }
     if std::env::var("STUDY_NOBAND").is_ok() {
         opts.band_anchors = 0;
     }
@@ -234,6 +237,46 @@ fn side_where(
             (q[1] - lo) / h,
             q[0],
             worst.2
+        );
+    }
+}
+
+/// The bench's centre-count anomaly (README): the low level's correction
+/// passes, centres and front error per requested centre count on the
+/// bench's fit (male->boy front). `cargo test --release --test it
+/// bench_centres -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn bench_centres() {
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::study::makehuman_template;
+    use pdesculpt::template::{fit, Sketch, View};
+    let template = makehuman_template(&[]).unwrap();
+    let case = CASES.iter().find(|c| c.name == "male->boy").unwrap();
+    let ts: Vec<_> = case
+        .target
+        .iter()
+        .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
+        .collect();
+    let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+    let sketch = Sketch {
+        front: mesh_outline(&target, View::Front).unwrap(),
+        ..Default::default()
+    };
+    let t_front = mesh_outline(&template.skin, View::Front).unwrap();
+    for n in [200, 399, 400, t_front.len(), 800] {
+        let mut o = FitOptions::default();
+        o.condition = false;
+        o.front_centres = n;
+        o.on_miss = OnMiss::Report;
+        let r = fit(&template, &sketch, &o, &mesh_outline).unwrap();
+        let rep = &r.levels[0].0;
+        println!(
+            "CENTRES requested {n}: centres {} passes {} front {:.3} % ({:.3} s)",
+            rep.centres,
+            rep.passes,
+            100.0 * rep.profiles[0].max_rel,
+            rep.seconds
         );
     }
 }

@@ -262,6 +262,32 @@ mod cli_tests {
             "finite",
         );
         assert_clear_error(
+            &replace(&[
+                "--part",
+                "torso",
+                "--template",
+                obj.to_str().unwrap(),
+                "--axis",
+                "0,0,0,0,1,0",
+                "--e1",
+                "1,0",
+            ]),
+            "--e1 takes 3 numbers",
+        );
+        // the comma form of --axis counted as one value (clap num_args = 6
+        // counted raw arguments): now split and counted by the command
+        assert_clear_error(
+            &replace(&[
+                "--part",
+                "torso",
+                "--template",
+                obj.to_str().unwrap(),
+                "--axis",
+                "0,0,0,0,1",
+            ]),
+            "--axis takes 6 numbers",
+        );
+        assert_clear_error(
             &replace(&["--part", "torso", "--template", obj.to_str().unwrap()]),
             "--axis",
         );

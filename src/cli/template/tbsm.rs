@@ -40,11 +40,11 @@ pub struct PartSource {
     #[arg(long, default_value = "makehuman-foot")]
     pub template: String,
     /// Axis of a mesh template: `X0,Y0,Z0,X1,Y1,Z1` (start to end).
-    #[arg(long, value_delimiter = ',', num_args = 6, allow_hyphen_values = true)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub axis: Option<Vec<f64>>,
     /// Direction of the sections' first axis for a mesh template: `X,Y,Z`
     /// (default 1,0,0; makehuman-foot has its own frame and refuses it).
-    #[arg(long, value_delimiter = ',', num_args = 3, allow_hyphen_values = true)]
+    #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
     pub e1: Option<Vec<f64>>,
     /// Template sections (2 to 64).
     #[arg(long, default_value_t = 6)]
@@ -104,7 +104,13 @@ fn template_part(s: &PartSource) -> anyhow::Result<(TemplatePart, Mesh)> {
     let Some(a) = &s.axis else {
         bail!("a mesh template needs --axis X0,Y0,Z0,X1,Y1,Z1");
     };
+    if a.len() != 6 {
+        bail!("--axis takes 6 numbers X0,Y0,Z0,X1,Y1,Z1, got {}", a.len());
+    }
     let e1 = s.e1.clone().unwrap_or_else(|| vec![1.0, 0.0, 0.0]);
+    if e1.len() != 3 {
+        bail!("--e1 takes 3 numbers X,Y,Z, got {}", e1.len());
+    }
     if a.iter().chain(&e1).any(|v| !v.is_finite()) {
         bail!("--axis and --e1 must be finite numbers");
     }
