@@ -396,7 +396,7 @@ fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
     let names: Vec<String> = doc.parts.iter().map(|p| p.name.clone()).collect();
     let c = torso.sections[torso.sections.len() / 2].centre;
     (
-        0usize..7,
+        0usize..8,
         proptest::sample::select(names),
         -1.0f64..1.0,
         -1.0f64..1.0,
@@ -428,6 +428,11 @@ fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
                     &torso,
                     3.0 * y,
                     [10.0 * y, 0.0, 10.0 * x],
+                ),
+                6 => pdesculpt::character::edit::check_stroke::sample_force_stroke(
+                    &torso,
+                    3.0 * x,
+                    [0.0, 10.0 * y, 10.0 * x],
                 ),
                 _ => Edit::Plate {
                     part: "torso".into(),

@@ -7,6 +7,7 @@ use crate::curve::gec::{Frame, Gec};
 use crate::mesh::{add, dist, dot, scale, sub};
 use std::f64::consts::PI;
 
+use super::force4::U_SPAN_MIN_FRACTION;
 use super::validate::{param, validate_params};
 
 /// The parts with `edits` applied in order (spec-level edits; validated as
@@ -84,20 +85,8 @@ pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditErro
             }
             Ok(())
         }
-        Edit::Force { u, .. } | Edit::ForceRegion { u, .. } => {
-            let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
-            if u[0] < u0 || u[1] > u1 {
-                return Err(EditError::Invalid {
-                    op: e.op(),
-                    part: name.into(),
-                    message: format!(
-                        "the force range [{}, {}] lies outside the part's u range [{u0}, {u1}]",
-                        u[0], u[1]
-                    ),
-                });
-            }
-            Ok(())
-        }
+        Edit::Force { u, .. } | Edit::ForceRegion { u, .. } => force_range(p, e, *u),
+        Edit::ForceStroke { .. } => force_range(p, e, super::force4::stroke_map(e)?.u),
         Edit::Boundary {
             end,
             curve,
@@ -107,6 +96,38 @@ pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditErro
         } => boundary(p, e, *end, curve.as_ref(), *tangent, *reach),
         Edit::Plate { .. } | Edit::Sasm(_) | Edit::SasmAux(_) => Ok(()),
     }
+}
+
+/// A force's u range (a stroke's bounding box) lies inside the part's and
+/// spans at least [`U_SPAN_MIN_FRACTION`] of it.
+fn force_range(p: &PartSpec, e: &Edit, u: [f64; 2]) -> Result<(), EditError> {
+    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
+    let what = match e {
+        Edit::ForceStroke { .. } => "the stroke's u range",
+        _ => "the force range",
+    };
+    if u[0] < u0 || u[1] > u1 {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: p.name.clone(),
+            message: format!(
+                "{what} [{}, {}] lies outside the part's u range [{u0}, {u1}]",
+                u[0], u[1]
+            ),
+        });
+    }
+    let min = U_SPAN_MIN_FRACTION * (u1 - u0);
+    if u[1] - u[0] < min {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: p.name.clone(),
+            message: format!(
+                "{what} [{}, {}] is narrower than the smallest force, {U_SPAN_MIN_FRACTION} of the part's u range ({min:.3e})",
+                u[0], u[1]
+            ),
+        });
+    }
+    Ok(())
 }
 
 fn boundary(
@@ -298,7 +319,7 @@ pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError
         message: err.to_string(),
     })?;
     match e {
-        Edit::Force { .. } | Edit::ForceRegion { .. } => {
+        Edit::Force { .. } | Edit::ForceRegion { .. } | Edit::ForceStroke { .. } => {
             if let Some(f) = super::force4::field_of(e) {
                 f?;
             }

@@ -154,7 +154,7 @@ fn grid_error(
 
 /// Vertices the 4-sided force moves outside its part's group (NaN when it
 /// moves none at all).
-fn force4_mesh(doc: &CharacterDoc, e: &Edit) -> f64 {
+pub(super) fn force4_mesh(doc: &CharacterDoc, e: &Edit) -> f64 {
     let mut d = doc.clone();
     if d.push_edit(e.clone()).is_err() {
         return f64::NAN;
@@ -309,6 +309,8 @@ pub fn checks() -> Vec<Check> {
     out.push(c("sec 5.1", "force4_mesh_local", Kind::Threshold, moved_elsewhere, 0.0).note(
         "4-sided force edit on the female: vertices moved outside the torso's group (the edit did move torso vertices; NaN if not)",
     ));
+
+    out.extend(super::check_stroke::checks(&doc, |e| force4_mesh(&doc, e)));
 
     // GEC transforms of all the torso's sections equal the same transform
     // of its surface points

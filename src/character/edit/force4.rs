@@ -1,6 +1,7 @@
 //! 4-sided sculpting forces inside a closed curve on a part (paper 000
 //! sec 5.1, eqs 10-15): the displacement fields of force edits, 2-sided
-//! ([`Edit::Force`]) and 4-sided ([`Edit::ForceRegion`]).
+//! ([`Edit::Force`]) and 4-sided ([`Edit::ForceRegion`] inside a parameter
+//! rectangle, [`Edit::ForceStroke`] inside a closed stroke).
 //!
 //! The closed curve of a 4-sided force is the boundary of a rectangle
 //! `[u_a, u_b] x [theta_a, theta_b]` of the part's parameter space (`u` the
@@ -13,11 +14,12 @@
 //! vanishes with both first derivatives on the curve (every basis function
 //! `B_m(s) psi_n(v)` does), so the edited part equals the part on and
 //! outside the curve and is C1 across it; outside the rectangle the field
-//! is exactly zero. Not done: a curve of any shape (a stroke projected
-//! onto the part, as SASM projects its strokes) would need a C1 map of its
-//! interior onto the square; the polar map of `sasm::region` has a kink at
-//! the centre, so only parameter rectangles are offered.
+//! is exactly zero. A curve of any simple shape (a closed stroke in the
+//! part's parameters) uses the same patch through a mean value map of the
+//! stroke's inside onto the square, bounded in its derivatives up to the
+//! stroke, so the edit stays C1 across it ([`super::stroke`]).
 
+use super::stroke::StrokeMap;
 use super::{Edit, EditError};
 use crate::pde4::four_sided::Method as Method4;
 use crate::pde4::{FourSided, ShapeParams, TwoSided};
@@ -35,6 +37,9 @@ pub enum ForceField {
     /// 4-sided: inside the angle range `theta` (radians, `theta[0] <
     /// theta[1] <= theta[0] + 2 pi`) of the u-range.
     Four { patch: FourSided, theta: [f64; 2] },
+    /// 4-sided inside a closed stroke: `s` across the stroke's u range, the
+    /// patch evaluated at the stroke map's square coordinates.
+    Stroke { patch: FourSided, map: StrokeMap },
 }
 
 impl ForceField {
@@ -52,6 +57,10 @@ impl ForceField {
                 Some(v) => patch.point(s, v),
                 None => [0.0; 3],
             },
+            ForceField::Stroke { patch, map } => match map.local(s, theta) {
+                Some([x, y]) => patch.point(x, y),
+                None => [0.0; 3],
+            },
         }
     }
 }
@@ -63,11 +72,11 @@ pub fn angle_coordinate(range: [f64; 2], theta: f64) -> Option<f64> {
     (v > 0.0 && v < 1.0).then_some(v)
 }
 
-/// The 4-sided pde4 solution of a 4-sided force edit: clamped on all four
-/// edges, shape parameters `a1 = 1, a2 = 2 a^2, a3 = a^4` (as the 2-sided
-/// force), [`FORCE4_TERMS`] Galerkin terms.
+/// The 4-sided pde4 solution of a 4-sided force edit (rectangle or
+/// stroke): clamped on all four edges, shape parameters `a1 = 1, a2 = 2
+/// a^2, a3 = a^4` (as the 2-sided force), [`FORCE4_TERMS`] Galerkin terms.
 pub fn force_region_field(e: &Edit) -> Result<FourSided, EditError> {
-    let Edit::ForceRegion { force, a, .. } = e else {
+    let (Edit::ForceRegion { force, a, .. } | Edit::ForceStroke { force, a, .. }) = e else {
         return Err(EditError::Invalid {
             op: e.op(),
             part: e.part().unwrap_or("").into(),
@@ -89,6 +98,28 @@ pub fn force_region_field(e: &Edit) -> Result<FourSided, EditError> {
     })
 }
 
+/// The stroke map of a stroke force edit (its validation errors named).
+pub fn stroke_map(e: &Edit) -> Result<StrokeMap, EditError> {
+    let Edit::ForceStroke {
+        part,
+        stroke,
+        corners,
+        ..
+    } = e
+    else {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: e.part().unwrap_or("").into(),
+            message: "not a stroke force edit".into(),
+        });
+    };
+    StrokeMap::new(stroke, *corners).map_err(|err| EditError::Invalid {
+        op: e.op(),
+        part: part.clone(),
+        message: format!("stroke: {err}"),
+    })
+}
+
 /// The displacement field of a force edit (2- or 4-sided) and its u-range;
 /// `None` for other edits.
 pub fn field_of(e: &Edit) -> Option<Result<([f64; 2], ForceField), EditError>> {
@@ -105,9 +136,20 @@ pub fn field_of(e: &Edit) -> Option<Result<([f64; 2], ForceField), EditError>> {
                 },
             )
         })),
+        Edit::ForceStroke { .. } => Some(stroke_map(e).and_then(|map| {
+            let patch = force_region_field(e)?;
+            Ok((map.u, ForceField::Stroke { patch, map }))
+        })),
         _ => None,
     }
 }
 
 /// Largest angle range of a 4-sided force (the whole ring).
 pub const THETA_SPAN_MAX: f64 = 2.0 * PI;
+/// Smallest angle range of a 4-sided force (rectangle or stroke's bounding
+/// box), radians: a narrower patch bends within less than a mesh ring's
+/// angle step and its derivatives grow as the inverse width.
+pub const THETA_SPAN_MIN: f64 = 1e-2;
+/// Smallest u range of a 4-sided force (rectangle or stroke's bounding
+/// box) as a fraction of its part's u range.
+pub const U_SPAN_MIN_FRACTION: f64 = 1e-3;

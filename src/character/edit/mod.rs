@@ -41,6 +41,10 @@
 //!   `[u_a, u_b] x [theta_a, theta_b]` of the part's parameter space,
 //!   clamped on all four edges, added to the part as a displacement that
 //!   vanishes with its first derivatives on the curve ([`force4`]).
+//! * [`Edit::ForceStroke`] (the same inside a closed stroke of any simple
+//!   shape on the part): the stroke's inside is mapped onto the unit square
+//!   by a mean value map, fold-checked ([`stroke`]), and the 4-sided patch
+//!   is evaluated there: zero outside the stroke, C1 across it.
 //! * [`Edit::Boundary`] (PDESM boundary curves and tangents, sec 5.1): a new
 //!   boundary curve is a new end section (the transition at that end is
 //!   rebuilt from it); a boundary tangent change moves the sections within
@@ -72,8 +76,11 @@
 
 mod apply;
 pub mod check;
+pub mod check_stroke;
 pub mod force4;
 mod mesh;
+pub mod stroke;
+mod summary;
 mod validate;
 
 pub use apply::{apply_to_parts, section_gec};
@@ -125,6 +132,26 @@ pub enum Edit {
         part: String,
         u: [f64; 2],
         theta: [f64; 2],
+        force: crate::pde4::Force,
+        #[serde(default = "one")]
+        a: f64,
+    },
+    /// PDESM 4-sided sculpting force inside a closed stroke of any simple
+    /// shape (sec 5.1): `stroke` is the closed curve as points `(u, theta)`
+    /// of the part's parameters (the last point returns to the first; angles
+    /// in radians, spanning less than the ring), inside the part's u range;
+    /// `corners` (optional) are four indices into `stroke`, in order along
+    /// it, where the curve is split into the patch's four sides (default:
+    /// its extreme points towards the bounding box's corners). The pde4
+    /// 4-sided patch of `force` (patch coordinates as for `force_region`)
+    /// and shape parameters `a` (default 1), mapped onto the stroke's inside
+    /// by a mean value map ([`stroke`]), is added to the part as a
+    /// displacement: zero outside the stroke, C1 across it.
+    ForceStroke {
+        part: String,
+        stroke: Vec<[f64; 2]>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        corners: Option<[usize; 4]>,
         force: crate::pde4::Force,
         #[serde(default = "one")]
         a: f64,
@@ -272,6 +299,7 @@ impl Edit {
             | Edit::GecTransform { part, .. }
             | Edit::Force { part, .. }
             | Edit::ForceRegion { part, .. }
+            | Edit::ForceStroke { part, .. }
             | Edit::Boundary { part, .. }
             | Edit::Plate { part, .. } => Some(part),
             Edit::Sasm(s) => Some(&s.part),
@@ -292,96 +320,11 @@ impl Edit {
             Edit::GecTransform { .. } => "gec_transform",
             Edit::Force { .. } => "force",
             Edit::ForceRegion { .. } => "force_region",
+            Edit::ForceStroke { .. } => "force_stroke",
             Edit::Boundary { .. } => "boundary",
             Edit::Plate { .. } => "plate",
             Edit::Sasm(_) => "sasm",
             Edit::SasmAux(_) => "sasm_aux",
-        }
-    }
-
-    /// One line for `character log` and the TUI.
-    pub fn summary(&self) -> String {
-        match self {
-            Edit::ShapeParameter { part, a } => format!("shape parameter of {part}: a = {a}"),
-            Edit::GecTransform {
-                part,
-                section,
-                transform,
-            } => {
-                let which = match section {
-                    Some(s) => format!("section {s} of {part}"),
-                    None => format!("all sections of {part}"),
-                };
-                let t = match transform {
-                    SectionTransform::Translate { d } => {
-                        format!("translate by ({}, {}, {})", d[0], d[1], d[2])
-                    }
-                    SectionTransform::Scale { sx, sy } => format!("scale by ({sx}, {sy})"),
-                    SectionTransform::Rotate { angle } => format!("rotate by {angle} rad"),
-                    SectionTransform::Bend { kappa, axis } => format!(
-                        "bend with curvature {kappa} about ({}, {}, {})",
-                        axis[0], axis[1], axis[2]
-                    ),
-                    SectionTransform::Bump { h, theta, sigma } => {
-                        format!("bump of height {h} at {theta} rad, width {sigma}")
-                    }
-                };
-                format!("GEC {t}: {which}")
-            }
-            Edit::Force { part, u, force, a } => format!(
-                "force {:?} p = ({}, {}, {}) on {part} over u in [{}, {}], a = {a}",
-                force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1]
-            ),
-            Edit::ForceRegion {
-                part,
-                u,
-                theta,
-                force,
-                a,
-            } => format!(
-                "4-sided force {:?} p = ({}, {}, {}) on {part} inside u in [{}, {}], theta in [{}, {}], a = {a}",
-                force.kind, force.p[0], force.p[1], force.p[2], u[0], u[1], theta[0], theta[1]
-            ),
-            Edit::Boundary {
-                part,
-                end,
-                curve,
-                tangent,
-                ..
-            } => {
-                let mut what = Vec::new();
-                if curve.is_some() {
-                    what.push("new curve".to_string());
-                }
-                if let Some(t) = tangent {
-                    what.push(format!("tangent change ({}, {}, {})", t[0], t[1], t[2]));
-                }
-                format!("boundary of {part} at its {end:?}: {}", what.join(", "))
-            }
-            Edit::Plate {
-                part,
-                centre,
-                radius,
-                d,
-            } => format!(
-                "plate bend of {part} within {radius} of ({}, {}, {}) by ({}, {}, {})",
-                centre[0], centre[1], centre[2], d[0], d[1], d[2]
-            ),
-            Edit::Sasm(s) => format!(
-                "SASM on {}: closed curve of {} points ({} view) + {} profile(s)",
-                s.part,
-                s.curve.points.len(),
-                s.curve.view,
-                s.profiles.len()
-            ),
-            Edit::SasmAux(s) => format!(
-                "SASM on {}: auxiliary line of {} points ({} view, mirrored about {}) + {} profile",
-                s.part,
-                s.line.points.len(),
-                s.line.view,
-                s.mirror,
-                s.profile.view
-            ),
         }
     }
 }

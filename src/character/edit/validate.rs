@@ -1,6 +1,7 @@
 //! Validation of an edit's own parameters, before it meets a document
 //! (ranges, finiteness, shape parameters, transform limits).
 
+use super::force4::THETA_SPAN_MIN;
 use super::{Edit, EditError, SectionTransform, SCALE_MAX, SIGMA_MAX};
 use crate::character::doc::SectionShape;
 
@@ -13,6 +14,11 @@ fn check_force(
 ) -> Result<(), EditError> {
     param(e, "u[0]", u[0], true, "finite")?;
     param(e, "u[1]", u[1], u[1] > u[0], "u[1] > u[0]")?;
+    check_patch(e, a, force)
+}
+
+/// The shape parameter and force of a force edit.
+fn check_patch(e: &Edit, a: f64, force: &crate::pde4::Force) -> Result<(), EditError> {
     param(
         e,
         "a",
@@ -105,7 +111,26 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 span > 0.0 && span <= super::force4::THETA_SPAN_MAX,
                 "theta[0] < theta[1] <= theta[0] + 2 pi (the curve must enclose a region of the part)",
             )?;
+            param(
+                e,
+                "theta[1] - theta[0]",
+                span,
+                span >= THETA_SPAN_MIN,
+                &format!("at least {THETA_SPAN_MIN} rad (the smallest 4-sided force)"),
+            )?;
             check_force(e, u, *a, force)
+        }
+        Edit::ForceStroke { force, a, .. } => {
+            check_patch(e, *a, force)?;
+            let map = super::force4::stroke_map(e)?;
+            let span = map.theta[1] - map.theta[0];
+            param(
+                e,
+                "the stroke's angle span",
+                span,
+                span >= THETA_SPAN_MIN,
+                &format!("at least {THETA_SPAN_MIN} rad (the smallest 4-sided force)"),
+            )
         }
         Edit::Boundary {
             curve,
