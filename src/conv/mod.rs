@@ -45,6 +45,16 @@ use thiserror::Error;
 pub enum ConvError {
     #[error("stroke point {index} is not finite")]
     NonFinite { index: usize },
+    #[error("stroke point {index} has coordinate {value:e}, beyond the {limit:e} a stroke may reach; scale the sketch down")]
+    OutOfRange {
+        index: usize,
+        value: f64,
+        limit: f64,
+    },
+    #[error(
+        "stroke spans only {size:e} (bounding-box diagonal), below {limit:e}; scale the sketch up"
+    )]
+    TooSmall { size: f64, limit: f64 },
     #[error("stroke too short: {points} distinct points, at least {needed} needed")]
     TooShort { points: usize, needed: usize },
     #[error("stroke encloses (almost) no area: {area:e}")]

@@ -53,6 +53,14 @@ pub struct Rotation {
     pub degrees: f64,
 }
 
+/// Largest absolute translation or plane depth of a component: f64 grid
+/// positions there still resolve 1e-4 (a model far out but within it is
+/// refused later, when its mesh would be written in f32:
+/// `sample::check_f32_output`); beyond it the grid cannot hold the surface.
+pub const MAX_TRANSLATION: f64 = 1e12;
+/// Most components a model may have.
+pub const MAX_COMPONENTS: usize = 1000;
+
 /// One sketched component.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
 #[serde(default, deny_unknown_fields)]
@@ -147,7 +155,42 @@ impl Model {
         if m.components.is_empty() {
             return Err(ConvError::Model("no components".into()));
         }
+        m.check_components()?;
         Ok(m)
+    }
+
+    /// Refuses duplicate component names (operations and copies name
+    /// components), translations and depths beyond [`MAX_TRANSLATION`],
+    /// and more than [`MAX_COMPONENTS`].
+    fn check_components(&self) -> Result<(), ConvError> {
+        if self.components.len() > MAX_COMPONENTS {
+            return Err(ConvError::Model(format!(
+                "{} components, at most {MAX_COMPONENTS}",
+                self.components.len()
+            )));
+        }
+        let mut names = std::collections::HashMap::new();
+        for (i, c) in self.components.iter().enumerate() {
+            if let Some(j) = names.insert(c.name.as_str(), i) {
+                return Err(ConvError::Model(format!(
+                    "components {j} and {i} are both named {:?}; operations and copies need unique names",
+                    c.name
+                )));
+            }
+            let far = c
+                .translate
+                .iter()
+                .chain(c.depth.iter())
+                .find(|v| v.is_finite() && v.abs() > MAX_TRANSLATION);
+            if let Some(v) = far {
+                return Err(ConvError::Model(format!(
+                    "component {:?}: translation or depth {v:e} beyond {MAX_TRANSLATION:e}; \
+                     move the model nearer the origin",
+                    c.name
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Serialises the model (pretty JSON).
@@ -170,6 +213,7 @@ impl Model {
     /// [`Self::build`] reusing the sketches of `cache` whose stroke and
     /// options are unchanged (copies and unedited strokes are not refitted).
     pub fn build_cached(&self, cache: &mut SketchCache) -> Result<BuiltModel, ConvError> {
+        self.check_components()?;
         let strokes: Vec<&[[f64; 2]]> = self
             .components
             .iter()

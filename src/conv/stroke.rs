@@ -31,6 +31,11 @@ impl Default for StrokeOptions {
 
 /// Smallest number of distinct points a stroke needs.
 pub const MIN_POINTS: usize = 4;
+/// Largest absolute stroke coordinate (screen units): beyond it squared
+/// distances lose the sketch's detail long before they overflow.
+pub const MAX_COORDINATE: f64 = 1e6;
+/// Smallest stroke size (bounding-box diagonal).
+pub const MIN_SIZE: f64 = 1e-6;
 /// Points closer than this fraction of the diagonal are merged.
 const DUPLICATE_FRACTION: f64 = 1e-9;
 
@@ -172,6 +177,13 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
         if !p[0].is_finite() || !p[1].is_finite() {
             return Err(ConvError::NonFinite { index: i });
         }
+        if let Some(&value) = p.iter().find(|v| v.abs() > MAX_COORDINATE) {
+            return Err(ConvError::OutOfRange {
+                index: i,
+                value,
+                limit: MAX_COORDINATE,
+            });
+        }
     }
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for p in raw {
@@ -181,6 +193,17 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
         }
     }
     let diag = if raw.is_empty() { 0.0 } else { dist2(lo, hi) };
+    let size = if raw.is_empty() {
+        0.0
+    } else {
+        (hi[0] - lo[0]).hypot(hi[1] - lo[1])
+    };
+    if size > 0.0 && size < MIN_SIZE {
+        return Err(ConvError::TooSmall {
+            size,
+            limit: MIN_SIZE,
+        });
+    }
     // drop consecutive duplicates (and a closing repeat of the first point)
     let mut pts: Vec<[f64; 2]> = Vec::with_capacity(raw.len());
     for &p in raw {

@@ -717,6 +717,118 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
+/// Every input path of `conv build` refuses out-of-range or malformed
+/// input clearly, before writing: duplicate component names (operations
+/// and copies would pick one silently), stroke coordinates beyond
+/// MAX_COORDINATE (squared distances overflowed: "1 distinct points" for a
+/// 4-point square), strokes below MIN_SIZE, translations and depths beyond
+/// MAX_TRANSLATION (1e300 said "does not close"),
+/// too many components, truncated and non-UTF-8 files, a missing file, a
+/// directory, and resolutions out of range.
+#[test]
+fn cli_build_refuses_out_of_range_models_clearly() {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    use pdesculpt::conv::model::MAX_COMPONENTS;
+    let d = tmpdir("conv-range");
+    let square = |s: f64| format!("[[0,0],[{s:e},0],[{s:e},{s:e}],[0,{s:e}]]");
+    let comp = |name: &str, extra: &str| {
+        format!(r#"{{"name": "{name}", "stroke": [[0,0],[1,0],[1,1],[0,1]]{extra}}}"#)
+    };
+    let many: Vec<String> = (0..=MAX_COMPONENTS)
+        .map(|i| comp(&format!("c{i}"), ""))
+        .collect();
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        (
+            "dup",
+            format!(
+                r#"{{"components": [{}, {}]}}"#,
+                comp("c", ""),
+                comp("c", "")
+            )
+            .into_bytes(),
+            "both named",
+        ),
+        (
+            "huge",
+            model_with_stroke(&square(1e300)).into_bytes(),
+            "scale the sketch down",
+        ),
+        (
+            "tiny",
+            model_with_stroke(&square(1e-300)).into_bytes(),
+            "scale the sketch up",
+        ),
+        (
+            "far",
+            format!(
+                r#"{{"components": [{}]}}"#,
+                comp("c", r#", "translate": [1e300, 0, 0]"#)
+            )
+            .into_bytes(),
+            "nearer the origin",
+        ),
+        (
+            "deep",
+            format!(
+                r#"{{"components": [{}]}}"#,
+                comp("c", r#", "depth": -1e13"#)
+            )
+            .into_bytes(),
+            "nearer the origin",
+        ),
+        (
+            "many",
+            format!(r#"{{"components": [{}]}}"#, many.join(",")).into_bytes(),
+            "at most",
+        ),
+        (
+            "trunc",
+            br#"{"components": [{"name": "c", "stroke": [[0,0],[1,0]"#.to_vec(),
+            "EOF",
+        ),
+        ("binary", vec![0xff, 0xfe, 0x00, 0x7b], "UTF-8"),
+    ];
+    for (name, bytes, needle) in cases {
+        let model = d.join(format!("{name}.json"));
+        std::fs::write(&model, bytes).expect("write");
+        let out_path = d.join(format!("{name}.obj"));
+        let out = pdesculpt(&[
+            "conv",
+            "build",
+            model.to_str().expect("utf8"),
+            "-o",
+            out_path.to_str().expect("utf8"),
+            "--resolution",
+            "16",
+        ]);
+        assert_clear_error(&out, needle);
+        assert!(!out_path.exists(), "{name}: an output file was written");
+    }
+    let ok = d.join("ok.json");
+    std::fs::write(&ok, model_with_stroke(&square(1.0))).expect("write");
+    let o = d.join("ok.obj");
+    let missing = d.join("missing.json");
+    for (model, res, needle) in [
+        (&missing, "16", "No such file"),
+        (&d, "16", "reading"),
+        (&ok, "100000", "resolution"),
+        (&ok, "3", "resolution"),
+    ] {
+        let out = pdesculpt(&[
+            "conv",
+            "build",
+            model.to_str().expect("utf8"),
+            "-o",
+            o.to_str().expect("utf8"),
+            "--resolution",
+            res,
+        ]);
+        assert_clear_error(&out, needle);
+        assert!(!o.exists());
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
 /// Issue 16: Hildreth-d'Esopo ran into its 20,000-sweep cap on 5 of the 6
 /// distinct teddy strokes (normal equations with condition numbers up to
 /// 3e12). With the subspace step every stroke converges, its optimality
