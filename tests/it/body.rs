@@ -120,3 +120,32 @@ fn cli_body_from_a_mesh_file_and_bad_input() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("NAME=WEIGHT"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The self-intersection detector finds a crossing it is shown and none on
+/// a clean closed mesh or on triangles that only share a vertex.
+#[test]
+fn self_intersection_detector_sees_crossings() {
+    use pdesculpt::body::intersect::{self_intersections, triangles_cross, CROSS_EPS};
+    let a = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let through = [[0.2, 0.2, -1.0], [0.3, 0.2, 1.0], [0.2, 0.3, 1.0]];
+    let apart = [[0.2, 0.2, 0.5], [0.3, 0.2, 1.0], [0.2, 0.3, 1.0]];
+    assert!(triangles_cross(a, through, CROSS_EPS).is_some());
+    assert!(triangles_cross(a, apart, CROSS_EPS).is_none());
+    let cube = box_mesh([0.0; 3], [1.0; 3]);
+    assert_eq!(self_intersections(&cube).pairs, 0);
+    // two cubes overlapping: every crossing is found and named by group
+    let mut two = cube.clone();
+    let n = two.positions.len() as u32;
+    two.positions.extend(
+        cube.positions
+            .iter()
+            .map(|p| [p[0] + 0.5, p[1] + 0.5, p[2] + 0.5]),
+    );
+    two.triangles
+        .extend(cube.triangles.iter().map(|t| t.map(|v| v + n)));
+    two.tri_group.extend(cube.tri_group.iter().copied());
+    let x = self_intersections(&two);
+    assert!(x.pairs > 0, "{x:?}");
+    assert!(x.example.is_some());
+}
+
