@@ -14,11 +14,14 @@
 //! * [`closed`]: one watertight body (`pde6 body`);
 //! * [`report`]: its measurements against the input body, [`sites`]: where
 //!   its largest errors sit;
+//! * [`intersect`]: self-intersections of the closed mesh (grid + triangle
+//!   pairs);
 //! * [`study`]: the data-size study (000 Fig 13);
 //! * [`check`]: the `pde6.body_*` checks (family `body` in `verify`).
 
 pub mod check;
 pub mod closed;
+pub mod intersect;
 pub mod layout;
 pub mod parts;
 pub mod report;

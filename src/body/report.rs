@@ -3,6 +3,7 @@
 //! reconstruct.
 
 use super::closed::ClosedOptions;
+use super::intersect::{self_intersections, Intersections};
 use super::layout::Layout;
 use super::sites::{error_sites, ErrorSite};
 use super::BodyError;
@@ -28,6 +29,8 @@ pub struct ClosedReport {
     pub recon_to_skin_max_at: Option<ErrorSite>,
     /// Where the largest skin -> recon error sits.
     pub skin_to_recon_max_at: Option<ErrorSite>,
+    /// Crossing triangle pairs of the closed mesh ([`super::intersect`]).
+    pub self_intersections: Intersections,
     /// Largest relative C0 / C1 / C2 jump over every join.
     pub max_join: [f64; 3],
     pub joins: Vec<JoinReport>,
@@ -80,6 +83,7 @@ pub fn measure(
         recon_to_skin_max_at: r2s_at,
         skin_to_recon_max_at: s2r_at,
         max_join,
+        self_intersections: self_intersections(&model.mesh),
         joins: model.joins.clone(),
         seams: model.seams.clone(),
         sections,
@@ -146,7 +150,7 @@ impl ClosedReport {
     pub fn summary(&self, output: &std::path::Path) -> String {
         let t = &self.topology;
         format!(
-            "wrote {} ({} triangles); watertight {} manifold {} oriented {}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n  joins: max C0 {:.2e} C1 {:.2e} C2 {:.2e}\n",
+            "wrote {} ({} triangles); watertight {} manifold {} oriented {}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n  joins: max C0 {:.2e} C1 {:.2e} C2 {:.2e}\n  self-intersections: {} crossing triangle pairs {:?}\n",
             output.display(),
             self.triangles,
             t.watertight,
@@ -158,7 +162,9 @@ impl ClosedReport {
             100.0 * self.skin_to_recon_max_rel,
             self.max_join[0],
             self.max_join[1],
-            self.max_join[2]
+            self.max_join[2],
+            self.self_intersections.pairs,
+            self.self_intersections.by_groups
         ) + &[("reconstruction -> skin", &self.recon_to_skin_max_at), ("skin -> reconstruction", &self.skin_to_recon_max_at)]
             .iter()
             .filter_map(|(w, s)| s.as_ref().map(|s| format!("  max {w}: {}\n", s.line())))

@@ -120,3 +120,94 @@ fn cli_body_from_a_mesh_file_and_bad_input() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("NAME=WEIGHT"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The self-intersection detector finds a crossing it is shown and none on
+/// a clean closed mesh or on triangles that only share a vertex.
+#[test]
+fn self_intersection_detector_sees_crossings() {
+    use pdesculpt::body::intersect::{self_intersections, triangles_cross, CROSS_EPS};
+    let a = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let through = [[0.2, 0.2, -1.0], [0.3, 0.2, 1.0], [0.2, 0.3, 1.0]];
+    let apart = [[0.2, 0.2, 0.5], [0.3, 0.2, 1.0], [0.2, 0.3, 1.0]];
+    assert!(triangles_cross(a, through, CROSS_EPS).is_some());
+    assert!(triangles_cross(a, apart, CROSS_EPS).is_none());
+    let cube = box_mesh([0.0; 3], [1.0; 3]);
+    assert_eq!(self_intersections(&cube).pairs, 0);
+    // two cubes overlapping (offsets off the face diagonals): crossings found
+    let mut two = cube.clone();
+    let n = two.positions.len() as u32;
+    two.positions.extend(
+        cube.positions
+            .iter()
+            .map(|p| [p[0] + 0.37, p[1] + 0.41, p[2] + 0.43]),
+    );
+    two.triangles
+        .extend(cube.triangles.iter().map(|t| t.map(|v| v + n)));
+    two.tri_group.extend(cube.tri_group.iter().copied());
+    let x = self_intersections(&two);
+    assert!(x.pairs > 0, "{x:?}");
+    assert!(x.example.is_some());
+}
+
+/// Hausdorff distance between the reconstruction of the base body and that
+/// of a differently tessellated, scaled and moved copy (mapped back),
+/// relative to the height.
+const REMESH_HAUSDORFF_MAX_REL: f64 = 0.005;
+
+/// Every triangle split into four at its edge midpoints (shared between
+/// neighbours, so the copy stays closed): the same surface, other vertices.
+fn midpoint_subdivide(m: &Mesh) -> Mesh {
+    use std::collections::HashMap;
+    let mut pos = m.positions.clone();
+    let mut mid: HashMap<(u32, u32), u32> = HashMap::new();
+    let mut tris = Vec::with_capacity(4 * m.triangles.len());
+    let mut at = |a: u32, b: u32, pos: &mut Vec<[f64; 3]>| -> u32 {
+        *mid.entry((a.min(b), a.max(b))).or_insert_with(|| {
+            let (p, q) = (pos[a as usize], pos[b as usize]);
+            pos.push([
+                (p[0] + q[0]) / 2.0,
+                (p[1] + q[1]) / 2.0,
+                (p[2] + q[2]) / 2.0,
+            ]);
+            (pos.len() - 1) as u32
+        })
+    };
+    for &[a, b, c] in &m.triangles {
+        let (ab, bc, ca) = (at(a, b, &mut pos), at(b, c, &mut pos), at(c, a, &mut pos));
+        tris.extend([[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]);
+    }
+    Mesh::new(pos, tris)
+}
+
+/// The layout comes from the geometry, not from MakeHuman's vertex ids: a
+/// re-tessellated copy of the base body (4x the triangles, every vertex id
+/// different), scaled by 1.7 and moved in y and z, reconstructs to the same
+/// surface within [`REMESH_HAUSDORFF_MAX_REL`] of the height.
+#[test]
+fn a_retessellated_moved_copy_reconstructs_the_same() {
+    let o = ClosedOptions::default();
+    let base = load_body(None, &[]).unwrap();
+    let (s, ty, tz) = (1.7, 3.0, -2.0);
+    let mut copy = midpoint_subdivide(&base);
+    assert_eq!(copy.triangles.len(), 4 * base.triangles.len());
+    for p in &mut copy.positions {
+        *p = [s * p[0], s * p[1] + ty, s * p[2] + tz];
+    }
+    let a = reconstruct_closed(&base, &o).expect("base");
+    let mut b = reconstruct_closed(&copy, &o).expect("re-tessellated copy");
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    for p in &mut b.model.mesh.positions {
+        *p = [p[0] / s, (p[1] - ty) / s, (p[2] - tz) / s];
+    }
+    let h = a.report.body_height;
+    let d = pdesculpt::mesh::metrics::hausdorff(&a.model.mesh, &b.model.mesh) / h;
+    assert!(d <= REMESH_HAUSDORFF_MAX_REL, "Hausdorff {d} of the height");
+    let (ea, eb) = (&a.report, &b.report);
+    assert!(
+        (ea.recon_to_skin_max_rel - eb.recon_to_skin_max_rel).abs() <= REMESH_HAUSDORFF_MAX_REL,
+        "{} vs {}",
+        ea.recon_to_skin_max_rel,
+        eb.recon_to_skin_max_rel
+    );
+}

@@ -1,0 +1,159 @@
+//! Self-intersections of a closed mesh: every pair of triangles that share
+//! no vertex and cross each other (an edge of one passes through the
+//! other). Candidate pairs come from a uniform grid over the triangles'
+//! bounding boxes (cell = twice the mean edge length), so the cost is
+//! linear in the triangles for a mesh of even density.
+//!
+//! The test is Moller-Trumbore's segment-triangle intersection on the six
+//! edges of a pair (two non-coplanar triangles intersect if and only if an
+//! edge of one meets the other); coplanar overlaps are not counted.
+
+use crate::mesh::{dot, sub, Mesh};
+use crate::vec3::cross;
+use std::collections::HashMap;
+
+/// Self-intersections found.
+#[derive(Clone, Debug, Default, serde::Serialize)]
+pub struct Intersections {
+    /// Crossing triangle pairs.
+    pub pairs: usize,
+    /// Crossing pairs per pair of groups (`"a/b"`, names sorted), largest first.
+    pub by_groups: Vec<(String, usize)>,
+    /// One crossing point per group pair (the first found).
+    pub example: Option<[f64; 3]>,
+}
+
+/// Where segment `p`-`q` crosses triangle `t` strictly inside (barycentric
+/// and segment parameters away from the ends by `eps`).
+pub fn segment_hits_triangle(
+    p: [f64; 3],
+    q: [f64; 3],
+    t: [[f64; 3]; 3],
+    eps: f64,
+) -> Option<[f64; 3]> {
+    let d = sub(q, p);
+    let e1 = sub(t[1], t[0]);
+    let e2 = sub(t[2], t[0]);
+    let h = cross(d, e2);
+    let a = dot(e1, h);
+    let scale = (dot(d, d) * dot(e1, e1).max(dot(e2, e2))).max(f64::MIN_POSITIVE);
+    if a.abs() <= 1e-12 * scale {
+        return None;
+    }
+    let f = 1.0 / a;
+    let s = sub(p, t[0]);
+    let u = f * dot(s, h);
+    if u < eps || u > 1.0 - eps {
+        return None;
+    }
+    let qv = cross(s, e1);
+    let v = f * dot(d, qv);
+    if v < eps || u + v > 1.0 - eps {
+        return None;
+    }
+    let w = f * dot(e2, qv);
+    if w < eps || w > 1.0 - eps {
+        return None;
+    }
+    Some([p[0] + w * d[0], p[1] + w * d[1], p[2] + w * d[2]])
+}
+
+/// Whether triangles `a` and `b` cross (an edge of one through the other).
+pub fn triangles_cross(a: [[f64; 3]; 3], b: [[f64; 3]; 3], eps: f64) -> Option<[f64; 3]> {
+    for (x, y) in [(a, b), (b, a)] {
+        for k in 0..3 {
+            if let Some(p) = segment_hits_triangle(x[k], x[(k + 1) % 3], y, eps) {
+                return Some(p);
+            }
+        }
+    }
+    None
+}
+
+/// Parameter margin of [`triangles_cross`]: touching at an edge or a corner
+/// within this fraction is not a crossing.
+pub const CROSS_EPS: f64 = 1e-9;
+
+/// Crossing pairs the closed bodies of the checks have today (base 110,
+/// checked morphs 62-175, in the shoulder transition near the armpits and,
+/// on caucasian-male-young, inside the mitten hands; caucasian-female-child,
+/// not checked, has 264, 188 of them in the feet). The issue asks for none:
+/// this bound is a regression guard, not the target.
+pub const SELF_CROSSINGS_KNOWN_MAX: f64 = 200.0;
+
+/// Every crossing pair of triangles of `m` that share no vertex.
+pub fn self_intersections(m: &Mesh) -> Intersections {
+    let n = m.triangles.len();
+    if n == 0 {
+        return Intersections::default();
+    }
+    let mut edge_sum = 0.0;
+    for t in 0..n {
+        let c = m.corners(t);
+        for k in 0..3 {
+            edge_sum += crate::mesh::dist(c[k], c[(k + 1) % 3]);
+        }
+    }
+    let cell = (2.0 * edge_sum / (3 * n) as f64).max(f64::MIN_POSITIVE);
+    let key = |p: [f64; 3]| p.map(|x| (x / cell).floor() as i64);
+    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+    let boxes: Vec<([i64; 3], [i64; 3])> = (0..n)
+        .map(|t| {
+            let c = m.corners(t);
+            let lo = std::array::from_fn(|k| c[0][k].min(c[1][k]).min(c[2][k]));
+            let hi = std::array::from_fn(|k| c[0][k].max(c[1][k]).max(c[2][k]));
+            (key(lo), key(hi))
+        })
+        .collect();
+    for (t, (lo, hi)) in boxes.iter().enumerate() {
+        for i in lo[0]..=hi[0] {
+            for j in lo[1]..=hi[1] {
+                for k in lo[2]..=hi[2] {
+                    grid.entry([i, j, k]).or_default().push(t as u32);
+                }
+            }
+        }
+    }
+    let mut out = Intersections::default();
+    let mut groups: HashMap<String, usize> = HashMap::new();
+    let mut cand = Vec::new();
+    for (t, (lo, hi)) in boxes.iter().enumerate() {
+        cand.clear();
+        for i in lo[0]..=hi[0] {
+            for j in lo[1]..=hi[1] {
+                for k in lo[2]..=hi[2] {
+                    if let Some(v) = grid.get(&[i, j, k]) {
+                        cand.extend(v.iter().copied().filter(|&s| s as usize > t));
+                    }
+                }
+            }
+        }
+        cand.sort_unstable();
+        cand.dedup();
+        let tv = m.triangles[t];
+        let ct = m.corners(t);
+        for &s in &cand {
+            let sv = m.triangles[s as usize];
+            if tv.iter().any(|v| sv.contains(v)) {
+                continue;
+            }
+            if let Some(p) = triangles_cross(ct, m.corners(s as usize), CROSS_EPS) {
+                out.pairs += 1;
+                out.example.get_or_insert(p);
+                let name = |t: usize| {
+                    let g = m.tri_group.get(t).copied().unwrap_or(0) as usize;
+                    m.groups.get(g).cloned().unwrap_or_default()
+                };
+                let (mut a, mut b) = (name(t), name(s as usize));
+                if a > b {
+                    std::mem::swap(&mut a, &mut b);
+                }
+                *groups.entry(format!("{a}/{b}")).or_default() += 1;
+            }
+        }
+    }
+    out.by_groups = groups.into_iter().collect();
+    out.by_groups
+        .sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    out
+}
