@@ -1,5 +1,5 @@
 //! The closed-body reconstruction of the bundled MakeHuman body
-//! (`pde6::body_closed::reconstruct_closed`: layout from the mesh, traces,
+//! (`body::closed::reconstruct_closed`: layout from the mesh, traces,
 //! 94 GEC section fits, six C2 PDE chains, the hips and shoulders
 //! transitions, the mesh and its report against the skin), beside the
 //! issue's baseline in the same run: one dense global solve, the torso's
@@ -7,7 +7,7 @@
 //! 24 x 24 system). Report the ratio.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use pdesculpt::pde6::body_closed::{reconstruct_closed, ClosedOptions};
+use pdesculpt::body::closed::{reconstruct_closed, ClosedOptions};
 use pdesculpt::pde6::{Chain, Section};
 use pdesculpt::sketch::part::build_part;
 use std::hint::black_box;

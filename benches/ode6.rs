@@ -6,7 +6,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::ode6::basis::solve_line;
-use pdesculpt::ode6::check::test_curve;
+use pdesculpt::ode6::samples::test_curve;
 use pdesculpt::ode6::{Basis, BoundaryCurves, Curve, Ode6Surface, Params};
 use pdesculpt::surface::{tessellate, Surface, Tessellation};
 use std::hint::black_box;

@@ -2,8 +2,8 @@
 //! vs the direct double sum, M = N = 32 on a 256 x 256 grid, in the same run.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use pdesculpt::pde4::check::sample_forces;
 use pdesculpt::pde4::four_sided::{self, FourSided};
+use pdesculpt::pde4::samples::sample_forces;
 use pdesculpt::pde4::two_sided::{self, TwoSided};
 use pdesculpt::pde4::ShapeParams;
 use pdesculpt::surface::Surface;

@@ -7,13 +7,16 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use nalgebra::{DMatrix, DVector};
 use pdesculpt::curve::Fourier3;
-use pdesculpt::pde6::check::synthetic_sections;
 use pdesculpt::pde6::mode::ModeBasis;
+use pdesculpt::pde6::samples::synthetic_sections;
 use pdesculpt::pde6::{Chain, Method, Patch, Piece, Section};
 use pdesculpt::surface::{tessellate, tessellate_grid, Surface, Tessellation};
 use std::hint::black_box;
 
 const A: f64 = -0.5;
+/// The closed form and the dense LU agree to a dense solve's rounding,
+/// amplified by the 1134-unknown system's conditioning.
+const AGREE: f64 = 10.0 * pdesculpt::check::tol::SOLVE;
 const N: usize = 10;
 const TESS: Tessellation = Tessellation { nu: 48, nv: 64 };
 
@@ -139,7 +142,10 @@ fn bench(c: &mut Criterion) {
         .zip(&md.positions)
         .map(|(a, b)| pdesculpt::mesh::dist(*a, *b))
         .fold(0.0, f64::max);
-    assert!(diff < 1e-8, "closed-form and dense chains differ by {diff}");
+    assert!(
+        diff < AGREE,
+        "closed-form and dense chains differ by {diff}"
+    );
     let mut g = c.benchmark_group("pde6_fig4_chain_n10");
     g.sample_size(10);
     g.bench_function("closed_form_6x6_and_fast_grid", |b| {

@@ -25,6 +25,7 @@
 //! | [`character`] | 000 | character documents and assembly |
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
 
+pub mod body;
 pub mod character;
 pub mod check;
 pub mod conv;

@@ -32,6 +32,7 @@ pub fn families() -> &'static [Family] {
         Family { name: "template", papers: "000", checks: crate::template::check::checks },
         Family { name: "edit", papers: "000, 001", checks: crate::character::edit::check::checks },
         Family { name: "sasm", papers: "000", checks: crate::sasm::check::checks },
+        Family { name: "body", papers: "002, 000", checks: crate::body::check::checks },
         Family { name: "derivatives", papers: "-", checks: derivative_checks },
     ]
 }
@@ -100,14 +101,32 @@ pub fn derivative_checks() -> Vec<Check> {
         derivative_check(
             "mesh.torus",
             "-",
-            &crate::mesh::samples::Torus {
-                big: 2.0,
-                small: 0.5,
+            &crate::surface::samples::Torus {
+                big: crate::mesh::samples::TORUS_RADII.0,
+                small: crate::mesh::samples::TORUS_RADII.1,
             },
         ),
         built("pde4.two_sided", "000", crate::pde4::samples::two_sided()),
         built("pde4.four_sided", "000", crate::pde4::samples::four_sided()),
         built("ode6.patch", "004", crate::ode6::samples::patch()),
+        built(
+            "ode6.chain_3_paper_params",
+            "004",
+            crate::ode6::samples::chain_of([crate::ode6::Params::new(1.0, 3.0, 1.0); 3]),
+        ),
+        built(
+            "pde4.deformed_revolution",
+            "000",
+            crate::pde4::samples::four_sided().and_then(|f| {
+                crate::pde4::apply::Deformed::new(
+                    Revolution { r0: 1.0, r1: 0.3 },
+                    f,
+                    (0.1, 0.9),
+                    (0.05, 0.98),
+                    0.5,
+                )
+            }),
+        ),
         built(
             "ode6.grid_3x2_column",
             "004",

@@ -1,6 +1,6 @@
 //! Figures of the closed body's studies (issue 15):
 //!
-//! * `000-fig13`: the data-size study (`pdesculpt::pde6::body_study`):
+//! * `000-fig13`: the data-size study (`pdesculpt::body::study`):
 //!   error against the numbers stored, log axes, for PDE6, ODE6 and a loft
 //!   through the same sections at three densities, beside the mesh's vertex
 //!   coordinates; a markdown table per part.
@@ -9,10 +9,10 @@
 //!   default) at the same J (`curve::gec::study::correction_study`).
 
 use crate::common::{Ctx, Figure};
+use pdesculpt::body::closed::ClosedOptions;
+use pdesculpt::body::study::{data_size_study, StudyRow, DENSITIES, METHODS};
 use pdesculpt::curve::gec::study::{base_sections, correction_study, TABLE1_TERMS};
 use pdesculpt::curve::gec::Param;
-use pdesculpt::pde6::body_closed::ClosedOptions;
-use pdesculpt::pde6::body_study::{data_size_study, StudyRow, DENSITIES, METHODS};
 use plotters::prelude::*;
 
 /// The figures of this module.

@@ -9,13 +9,14 @@ use crate::common::{Ctx, Figure};
 use anyhow::Context;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
-use pdesculpt::ode6::check::test_curve;
+use pdesculpt::ode6::samples::test_curve;
 use pdesculpt::ode6::spline::NaturalSpline;
-use pdesculpt::ode6::surface::v_jumps;
+use pdesculpt::ode6::VSplit;
 use pdesculpt::ode6::{
     Approach2, Basis, BoundaryCurves, Chain, Curve, DiffFormula, Ode6Surface, Params,
 };
 use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
+use pdesculpt::surface::Joined;
 use pdesculpt::surface::{tessellate, tessellate_grid, Domain, Surface, Tessellation};
 use serde_json::json;
 
@@ -61,15 +62,15 @@ fn panels(meshes: &[Mesh], overlays: &[Overlay], view: View) -> Image {
             ..o.clone()
         })
         .collect();
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for m in &meshes {
-        let (a, b) = m.bbox();
-        for k in 0..3 {
-            lo[k] = lo[k].min(a[k]);
-            hi[k] = hi[k].max(b[k]);
-        }
-    }
+    let corners: Vec<[f64; 3]> = meshes
+        .iter()
+        .flat_map(|m| {
+            let (a, b) = m.bbox();
+            [a, b]
+        })
+        .collect();
+    let (lo, hi) =
+        pdesculpt::vec3::bounds(&corners).unwrap_or(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]));
     let o = RenderOptions {
         width: 360,
         height: 360,
@@ -592,15 +593,19 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             ("C1: rho = 0 (positions + tangents only)", &p1),
         ],
     )?;
-    let j2 = c2.u_jumps(32);
-    let j1 = c1.u_jumps(32);
+    let j2 = c2.join_jumps(32);
+    let j1 = c1.join_jumps(32);
     // Fig 6b: v-split with the paper's parameters against equal ones.
     let bc =
         BoundaryCurves::approach1(curves[0].clone(), curves[1].clone(), [1.0, 0.5, -1.0, 2.0])?;
     let split = |pa: Params, pb: Params| -> anyhow::Result<[f64; 3]> {
         let a = Ode6Surface::new(Basis::new(pa)?, bc.clone()).with_v_range(0.0, 0.5)?;
         let b = Ode6Surface::new(Basis::new(pb)?, bc.clone()).with_v_range(0.5, 1.0)?;
-        Ok(v_jumps(&a, &b, 40))
+        Ok(VSplit {
+            below: &a,
+            above: &b,
+        }
+        .join_jumps(40))
     };
     ctx.write_json(
         "004-fig6.json",
@@ -608,7 +613,7 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             "panels": ["loft per pair of sections (C0)", "rho = 0 chain (C1)", "ODE6 chain (C2)"],
             "u_jumps_c2_chain": {"c0": j2[0], "c1": j2[1], "c2": j2[2]},
             "u_jumps_c1_chain": {"c0": j1[0], "c1": j1[1], "c2": j1[2]},
-            "grid_3x2_jumps": pdesculpt::ode6::check::grid_3x2()?.jumps(32),
+            "grid_3x2_jumps": pdesculpt::ode6::samples::grid_3x2()?.join_jumps(32),
             "v_split_fig6b_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0))?,
             "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. grid_3x2_jumps: the separately built 3 x 2 grid of the check ode6.continuity_grid_3x2 (jumps and derivative magnitudes at its u- and v-joins). Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) on one split patch break even C0 in v."
         }),

@@ -86,13 +86,14 @@ fn view() -> RenderOptions {
 
 fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
     let part = Revolution { r0: 1.0, r1: 0.15 };
-    let up = |v: f64| [(2.0 * PI * v).cos(), 0.0, (2.0 * PI * v).sin()];
+    // a force of magnitude `mag` pointing radially out at v
+    let radial = |mag: f64, v: f64| {
+        let (c, s) = ((2.0 * PI * v).cos(), (2.0 * PI * v).sin());
+        [mag * c, 0.0, mag * s]
+    };
     let conc = Force {
         kind: ForceKind::Concentrated { u0: 0.5, v0: 0.2 },
-        p: {
-            let d = up(0.2);
-            [30.0 * d[0], 0.0, 30.0 * d[2]]
-        },
+        p: radial(30.0, 0.2),
     };
     let line = Force {
         kind: ForceKind::Line {
@@ -100,10 +101,7 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
             u1: 0.85,
             v0: 0.6,
         },
-        p: {
-            let d = up(0.6);
-            [90.0 * d[0], 0.0, 90.0 * d[2]]
-        },
+        p: radial(90.0, 0.6),
     };
     let area = Force {
         kind: ForceKind::Area {
@@ -112,10 +110,7 @@ fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
             v0: 0.8,
             v1: 0.95,
         },
-        p: {
-            let d = up(0.875);
-            [1500.0 * d[0], 0.0, 1500.0 * d[2]]
-        },
+        p: radial(1500.0, 0.875),
     };
     let t = Tessellation { nu: 80, nv: 96 };
     let mut panels = vec![render(&tessellate(&part, t), &view())];
@@ -433,19 +428,19 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
         (
             "square, sinusoidal (FD ref.)",
             ShapeParams::PLATE,
-            pc::SINE_LOAD,
+            samples::SINE_LOAD,
             fd(ShapeParams::PLATE)?,
         ),
         (
             "b/a = 1.5, sinusoidal (FD ref.)",
             ShapeParams::plate_ratio(1.0 / 1.5),
-            pc::SINE_LOAD,
+            samples::SINE_LOAD,
             fd(ShapeParams::plate_ratio(1.0 / 1.5))?,
         ),
         (
             "b/a = 2, sinusoidal (FD ref.)",
             ShapeParams::plate_ratio(0.5),
-            pc::SINE_LOAD,
+            samples::SINE_LOAD,
             fd(ShapeParams::plate_ratio(0.5))?,
         ),
     ]);

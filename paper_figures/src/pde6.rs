@@ -3,9 +3,9 @@
 //! an analytic profile (Fig 7a) with its convergence study.
 
 use crate::common::{Ctx, Figure};
+use pdesculpt::body::parts::{makehuman_parts, reconstruct, BodyOptions, Part};
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
-use pdesculpt::pde6::body::{makehuman_parts, reconstruct, BodyOptions, Part};
 use pdesculpt::pde6::{Chain, Section};
 use pdesculpt::render::{render, Image, Overlay, RenderOptions, View};
 use pdesculpt::surface::{tessellate, Tessellation};
@@ -252,7 +252,7 @@ fn fig7a(ctx: &Ctx) -> anyhow::Result<()> {
         "002-fig7a.png",
         &Image::hstack(&[a_img, b_img], [255, 255, 255, 255]).encode_png(),
     )?;
-    let jumps = pdesculpt::pde6::check::join_jumps(&chain);
+    let jumps = pdesculpt::surface::Joined::join_jumps(&chain, pdesculpt::pde6::JOIN_SAMPLES);
     ctx.write_json(
         "002-fig7a.json",
         &serde_json::json!({

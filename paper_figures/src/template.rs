@@ -119,7 +119,10 @@ fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
             100.0 * bbox.rms_rel,
             100.0 * bbox.max_rel
         )];
-        for r in rows.iter().filter(|r| r.method != "bbox") {
+        for r in rows
+            .iter()
+            .filter(|r| r.method != "bbox" && r.method != "target")
+        {
             let prof: Vec<String> = r
                 .profiles
                 .iter()

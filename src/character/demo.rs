@@ -2,6 +2,7 @@
 //! reconstruction, and a prop sketched as a convolution surface, each step
 //! measured.
 
+use crate::body::closed::{reconstruct_closed, ClosedOptions, ClosedReport};
 use crate::makehuman;
 use crate::mesh::unit::{self, Unit};
 use crate::mesh::Mesh;
@@ -9,7 +10,6 @@ use crate::pde4::apply::{deform_region, Direction as Pde4Direction};
 use crate::pde4::force::{Force, ForceKind};
 use crate::pde4::four_sided::{self, FourSided};
 use crate::pde4::ShapeParams;
-use crate::pde6::body_closed::{reconstruct_closed, ClosedOptions, ClosedReport};
 use crate::plate::deformer::{
     BoundaryMethod, Direction as PlateDirection, PlateDeformer, RegionOptions,
 };
@@ -26,7 +26,7 @@ pub enum DemoError {
     #[error("plate belly push")]
     Plate(#[from] crate::plate::PlateError),
     #[error("pde6 reconstruction")]
-    Pde6(#[from] crate::pde6::Pde6Error),
+    Body(#[from] crate::body::BodyError),
     #[error(transparent)]
     Skirt(#[from] super::skirt::SkirtError),
     #[error("SketchCo prop")]

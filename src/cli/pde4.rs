@@ -66,11 +66,12 @@ enum Cmd {
         /// Part axis `x0,y0,z0,x1,y1,z1` (two-sided spec): u runs from the first point to the second.
         #[arg(long)]
         axis: Option<String>,
-        /// Range `a,b` of the axis fraction deformed (with --axis).
-        #[arg(long, default_value = "0,1", requires = "axis")]
-        u_range: String,
+        /// Range `a,b` of the axis fraction deformed (with --axis; default
+        /// `pde4::apply::U_RANGE_DEFAULT`, the whole axis 0,1).
+        #[arg(long, requires = "axis")]
+        u_range: Option<String>,
         /// Move only vertices within this distance of the axis (with --axis).
-        #[arg(long, default_value_t = f64::INFINITY, requires = "axis")]
+        #[arg(long, default_value_t = pdesculpt::pde4::apply::RADIUS_DEFAULT, requires = "axis")]
         radius: f64,
         /// Input mesh (OBJ/STL/PLY).
         #[arg(long, conflicts_with = "makehuman")]
@@ -85,7 +86,7 @@ enum Cmd {
         #[arg(long)]
         drag: f64,
         /// Move only vertices within this distance of the curve plane (with --curve).
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = pdesculpt::pde4::apply::DEPTH_DEFAULT)]
         depth: f64,
         /// Direction `x,y,z`; default the vertex normals.
         #[arg(long)]
@@ -198,11 +199,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
                 (None, Some(axis)) => {
                     let a = parse_list(&axis, 6, "--axis")?;
-                    let r = parse_list(&u_range, 2, "--u-range")?;
+                    let r = match &u_range {
+                        Some(t) => parse_list(t, 2, "--u-range").map(|r| (r[0], r[1]))?,
+                        None => pdesculpt::pde4::apply::U_RANGE_DEFAULT,
+                    };
                     deform_part(
                         &base,
                         ([a[0], a[1], a[2]], [a[3], a[4], a[5]]),
-                        (r[0], r[1]),
+                        r,
                         radius,
                         &patch,
                         dir,

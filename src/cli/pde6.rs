@@ -10,10 +10,10 @@
 //! to stdout.
 
 use anyhow::bail;
+use pdesculpt::body::closed::ClosedOptions;
+use pdesculpt::body::parts::{reconstruct_base_parts, sampling_from_name, BodyOptions};
+use pdesculpt::body::report::reconstruct_closed_from;
 use pdesculpt::limits;
-use pdesculpt::pde6::body::{reconstruct_base_parts, sampling_from_name, BodyOptions};
-use pdesculpt::pde6::body_closed::ClosedOptions;
-use pdesculpt::pde6::body_report::reconstruct_closed_from;
 use pdesculpt::pde6::Method;
 use pdesculpt::surface::{tessellate, Tessellation};
 use std::path::PathBuf;
@@ -94,7 +94,7 @@ pub enum Command {
         #[arg(long, default_value_t = 10)]
         terms: usize,
         /// PDE parameter a (small |a| keeps the top harmonics from rippling between sections).
-        #[arg(long, default_value_t = pdesculpt::pde6::body::BODY_A, allow_hyphen_values = true)]
+        #[arg(long, default_value_t = pdesculpt::body::parts::BODY_A, allow_hyphen_values = true)]
         a: f64,
         #[arg(long, value_enum, default_value_t = MethodArg::Global)]
         method: MethodArg,
@@ -104,11 +104,11 @@ pub enum Command {
         #[arg(long, default_value = "anchored")]
         sampling: String,
         /// Anchored sampling: number of rays.
-        #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_ANCHORS)]
+        #[arg(long, default_value_t = pdesculpt::body::parts::DEFAULT_ANCHORS)]
         anchors: usize,
         /// Anchored sampling: how hard the rays pin theta (0 = arc length from
         /// the +z ray, 1 = ray k at exactly 2 pi k / K).
-        #[arg(long, default_value_t = pdesculpt::pde6::body::DEFAULT_PULL)]
+        #[arg(long, default_value_t = pdesculpt::body::parts::DEFAULT_PULL)]
         pull: f64,
         /// Output mesh (obj, glb, stl, ply).
         #[arg(short, long)]
@@ -201,7 +201,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let mut out = serde_json::to_value(&report)?;
             out["unit"] = serde_json::json!(unit);
             out["report_unit"] = serde_json::json!(pdesculpt::mesh::unit::MAKEHUMAN);
-            let line = pdesculpt::pde6::input::open_parts_summary(&report, &output);
+            let line = pdesculpt::body::parts::open_parts_summary(&report, &output);
             emit(json, &out, &line)
         }
         Command::Mode { a, n, values, at } => {

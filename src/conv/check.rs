@@ -432,5 +432,6 @@ pub fn checks() -> Vec<Check> {
     polygon_checks(&mut out);
     out.extend(super::check_fast::checks());
     out.extend(super::check_quadrature::checks());
+    out.extend(super::check_sides::checks());
     out
 }

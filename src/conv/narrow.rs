@@ -18,17 +18,31 @@
 //! the parent stay accepted, see [`super::bvh`]), so a box tests only what
 //! its parent left open.
 //!
-//! **Threads, deterministically.** The octree is refined in order down to
-//! depth [`TASK_DEPTH`]; every box there that needs refining becomes a
-//! task, and the tasks run on up to [`MAX_THREADS`] threads
-//! (`std::thread::scope`). A box records what it writes as events (fill a
-//! box of nodes, set a node exactly) instead of writing the grid; the
-//! events are then applied in the order of the sequential traversal, with
-//! its rules (the first exact value of a node wins, a fill only reaches a
-//! node that has no value yet). The grid is therefore the same for any
-//! number of threads (test `narrow_band_is_identical_for_any_thread_count`).
+//! **Threads, deterministically, each node once.** The octree is refined
+//! in order down to depth [`TASK_DEPTH`]; every box there that needs
+//! refining becomes a task, and the tasks run on up to [`MAX_THREADS`]
+//! threads (`std::thread::scope`). A box records what it writes as events
+//! (fill a box of nodes, set a node exactly) instead of writing the grid;
+//! the events are then applied in the order of the sequential traversal,
+//! with its rules (the first leaf of the traversal to reach a node gives
+//! its value, a fill only reaches a node that has no value yet).
+//!
+//! A node inside a task's box belongs to that task alone and is evaluated
+//! there. A node on a face of a task's box inside the grid may also be
+//! reached by the neighbouring task, so the task does not evaluate it: it
+//! records a *deferred* event naming the node and its leaf's interaction
+//! list (`narrow_merge::LeafContext`). The merge keeps, for every node, the first
+//! event in traversal order, exact or deferred, and the deferred nodes it
+//! keeps are then evaluated once each (in parallel) with their first
+//! leaf's list: the same arithmetic as [`sample_sequential`], the single
+//! traversal that evaluates every node where it first reaches it. The grid
+//! is therefore the same bit for bit for any number of threads and equal
+//! to the sequential one, and every band node is evaluated exactly once
+//! ([`NarrowStats::evaluated`] equals [`NarrowStats::exact_nodes`]; test
+//! `narrow_band_is_identical_for_any_thread_count`).
 
 use super::bvh::{Frontier, Interaction, SegmentBvh};
+use super::narrow_merge::{finish, Event, Grid, LeafContext, Record};
 use crate::mesh::isosurface::ScalarGrid;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -55,53 +69,25 @@ pub struct NarrowStats {
     /// Cluster expansions evaluated (the clusters near a leaf times its
     /// nodes evaluated).
     pub cluster_evaluations: usize,
+    /// Of `evaluated`: nodes on faces between tasks, evaluated after the
+    /// merge (once each).
+    pub shared_evaluated: usize,
+    /// Nodes within the margin of $T$ given the reference's value after
+    /// sampling (`BuiltModel::sample_group_fast`; 0 from [`sample`]).
+    pub reference_nodes: usize,
+    /// Nodes holding an evaluated value in the grid (counted in the grid,
+    /// not by the walkers): equals `evaluated` when no node is evaluated
+    /// twice.
+    pub exact_nodes: usize,
 }
 
 impl NarrowStats {
-    fn add(&mut self, o: &NarrowStats) {
+    pub(super) fn add(&mut self, o: &NarrowStats) {
         self.evaluated += o.evaluated;
         self.boxes_skipped += o.boxes_skipped;
         self.boxes_tested += o.boxes_tested;
         self.segment_evaluations += o.segment_evaluations;
         self.cluster_evaluations += o.cluster_evaluations;
-    }
-}
-
-/// A write of the sequential traversal (applied in order by [`merge`]).
-#[derive(Clone, Copy, Debug)]
-enum Event {
-    /// Every node of the box `lo..=hi` without a value gets `value`.
-    Fill {
-        lo: [u32; 3],
-        hi: [u32; 3],
-        value: f64,
-    },
-    /// Node `id` gets `value` unless it already has an exact one.
-    Exact { id: usize, value: f64 },
-    /// The events of task `index`.
-    Task { index: usize },
-}
-
-struct Grid<'a> {
-    bvh: &'a SegmentBvh,
-    threshold: f64,
-    budget: f64,
-    origin: [f64; 3],
-    spacing: [f64; 3],
-    dims: [usize; 3],
-}
-
-impl Grid<'_> {
-    fn at(&self, i: usize, j: usize, k: usize) -> [f64; 3] {
-        [
-            self.origin[0] + i as f64 * self.spacing[0],
-            self.origin[1] + j as f64 * self.spacing[1],
-            self.origin[2] + k as f64 * self.spacing[2],
-        ]
-    }
-
-    fn index(&self, i: usize, j: usize, k: usize) -> usize {
-        i + self.dims[0] * (j + self.dims[1] * k)
     }
 }
 
@@ -120,7 +106,13 @@ struct Walker<'a, 'g> {
     split_at: Option<usize>,
     tasks: Vec<Task>,
     events: Vec<Event>,
+    /// Contexts of the leaves with deferred nodes.
+    leaves: Vec<LeafContext>,
     stats: NarrowStats,
+    /// Per axis, whether the low / high face of `seen_lo..` is shared with
+    /// other walkers (its nodes are deferred).
+    shared_lo: [bool; 3],
+    shared_hi: [bool; 3],
     /// Nodes of the box `seen_lo..` this walker has already evaluated.
     seen: Vec<bool>,
     seen_lo: [usize; 3],
@@ -132,14 +124,27 @@ struct Walker<'a, 'g> {
 }
 
 impl<'a, 'g> Walker<'a, 'g> {
-    fn new(grid: &'a Grid<'g>, lo: [usize; 3], hi: [usize; 3], split_at: Option<usize>) -> Self {
+    /// A walker over the nodes `lo..=hi`; with `share`, the nodes on the
+    /// faces of that box inside the grid are deferred (a task), and with
+    /// `split_at` every node is (the top levels, whose leaves may touch any
+    /// task).
+    fn new(
+        grid: &'a Grid<'g>,
+        lo: [usize; 3],
+        hi: [usize; 3],
+        split_at: Option<usize>,
+        share: bool,
+    ) -> Self {
         let seen_dims = [0, 1, 2].map(|k| hi[k] - lo[k] + 1);
         Walker {
             grid,
             split_at,
             tasks: Vec::new(),
             events: Vec::new(),
+            leaves: Vec::new(),
             stats: NarrowStats::default(),
+            shared_lo: [0, 1, 2].map(|k| share && lo[k] > 0),
+            shared_hi: [0, 1, 2].map(|k| share && hi[k] + 1 < grid.dims[k]),
             seen: vec![false; seen_dims[0] * seen_dims[1] * seen_dims[2]],
             seen_lo: lo,
             seen_dims,
@@ -244,6 +249,7 @@ impl<'a, 'g> Walker<'a, 'g> {
             g.bvh
                 .near_list_from(from, centre, rho, g.budget, &mut near, &mut self.stack);
         let far = 0.5 * (flo + fhi);
+        let mut deferred = false;
         for k in lo[2]..=hi[2] {
             for j in lo[1]..=hi[1] {
                 for i in lo[0]..=hi[0] {
@@ -256,51 +262,34 @@ impl<'a, 'g> Walker<'a, 'g> {
                         continue;
                     }
                     self.seen[local] = true;
+                    let id = g.index(i, j, k);
+                    let shared = self.split_at.is_some()
+                        || (0..3).any(|a| {
+                            (self.shared_lo[a] && s[a] == self.seen_lo[a])
+                                || (self.shared_hi[a]
+                                    && s[a] + 1 == self.seen_lo[a] + self.seen_dims[a])
+                        });
+                    if shared {
+                        deferred = true;
+                        let leaf = self.leaves.len() as u32;
+                        self.events.push(Event::Deferred { id, leaf });
+                        continue;
+                    }
                     let value = far + g.bvh.near_field(&near, g.at(i, j, k));
-                    self.events.push(Event::Exact {
-                        id: g.index(i, j, k),
-                        value,
-                    });
+                    self.events.push(Event::Exact { id, value });
                     self.stats.evaluated += 1;
                     self.stats.segment_evaluations += near.segments.len();
                     self.stats.cluster_evaluations += near.clusters.len();
                 }
             }
         }
-        self.near = near;
-    }
-}
-
-/// Applies `events` in order (tasks' events in place of their markers).
-fn merge(
-    grid: &Grid,
-    events: &[Event],
-    tasks: &[Vec<Event>],
-    values: &mut [f64],
-    exact: &mut [bool],
-) {
-    for e in events {
-        match *e {
-            Event::Fill { lo, hi, value } => {
-                for k in lo[2] as usize..=hi[2] as usize {
-                    for j in lo[1] as usize..=hi[1] as usize {
-                        let row = grid.index(0, j, k);
-                        for id in row + lo[0] as usize..=row + hi[0] as usize {
-                            if !exact[id] && values[id].is_nan() {
-                                values[id] = value;
-                            }
-                        }
-                    }
-                }
-            }
-            Event::Exact { id, value } => {
-                if !exact[id] {
-                    values[id] = value;
-                    exact[id] = true;
-                }
-            }
-            Event::Task { index } => merge(grid, &tasks[index], &[], values, exact),
+        if deferred {
+            self.leaves.push(LeafContext {
+                far,
+                near: near.clone(),
+            });
         }
+        self.near = near;
     }
 }
 
@@ -342,27 +331,28 @@ pub fn sample_with_threads(
         dims,
     };
     let top_hi = [dims[0] - 1, dims[1] - 1, dims[2] - 1];
-    let mut top = Walker::new(&grid, [0; 3], top_hi, Some(TASK_DEPTH));
+    let mut top = Walker::new(&grid, [0; 3], top_hi, Some(TASK_DEPTH), false);
     top.visit([0; 3], top_hi, 0, &bvh.root_frontier());
     let tasks = std::mem::take(&mut top.tasks);
     let next = AtomicUsize::new(0);
     let run = || {
-        let mut done: Vec<(usize, Vec<Event>, NarrowStats)> = Vec::new();
+        let mut done: Vec<Done> = Vec::new();
         loop {
             let i = next.fetch_add(1, Ordering::Relaxed);
             let Some(t) = tasks.get(i) else { break };
-            let mut w = Walker::new(&grid, t.lo, t.hi, None);
+            let mut w = Walker::new(&grid, t.lo, t.hi, None, true);
             w.children(t.lo, t.hi, t.depth, &t.frontier);
-            done.push((i, w.events, w.stats));
+            done.push((i, w.events, w.leaves, w.stats));
         }
         done
     };
-    let threads = threads.clamp(1, tasks.len().max(1));
-    let mut results: Vec<(usize, Vec<Event>, NarrowStats)> = if threads == 1 {
+    let threads = threads.max(1);
+    let task_threads = threads.min(tasks.len().max(1));
+    let mut results: Vec<Done> = if task_threads == 1 {
         run()
     } else {
         std::thread::scope(|s| {
-            let handles: Vec<_> = (0..threads).map(|_| s.spawn(run)).collect();
+            let handles: Vec<_> = (0..task_threads).map(|_| s.spawn(run)).collect();
             handles
                 .into_iter()
                 .flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
@@ -371,23 +361,48 @@ pub fn sample_with_threads(
     };
     results.sort_by_key(|r| r.0);
     let mut stats = top.stats;
-    stats.nodes = dims[0] * dims[1] * dims[2];
-    let mut task_events = Vec::with_capacity(results.len());
-    for (_, events, st) in results {
-        stats.add(&st);
-        task_events.push(events);
-    }
-    let total = stats.nodes;
-    let mut values = vec![f64::NAN; total];
-    let mut exact = vec![false; total];
-    merge(&grid, &top.events, &task_events, &mut values, &mut exact);
-    (
-        ScalarGrid {
-            origin,
-            spacing,
-            dims,
-            values,
-        },
-        stats,
-    )
+    let records: Vec<Record> = results
+        .iter()
+        .map(|(_, events, leaves, st)| {
+            stats.add(st);
+            Record { events, leaves }
+        })
+        .collect();
+    let top_record = Record {
+        events: &top.events,
+        leaves: &top.leaves,
+    };
+    finish(&grid, &top_record, &records, stats, threads)
+}
+
+/// A finished task: its index, events, leaf contexts and counts.
+type Done = (usize, Vec<Event>, Vec<LeafContext>, NarrowStats);
+
+/// The reference traversal for [`sample_with_threads`]: one walker over
+/// the whole octree, no tasks, every node evaluated where the traversal
+/// first reaches it. Same grid, bit for bit.
+pub fn sample_sequential(
+    bvh: &SegmentBvh,
+    threshold: f64,
+    budget: f64,
+    origin: [f64; 3],
+    spacing: [f64; 3],
+    dims: [usize; 3],
+) -> (ScalarGrid, NarrowStats) {
+    let grid = Grid {
+        bvh,
+        threshold,
+        budget,
+        origin,
+        spacing,
+        dims,
+    };
+    let top_hi = [dims[0] - 1, dims[1] - 1, dims[2] - 1];
+    let mut w = Walker::new(&grid, [0; 3], top_hi, None, false);
+    w.visit([0; 3], top_hi, 0, &bvh.root_frontier());
+    let record = Record {
+        events: &w.events,
+        leaves: &w.leaves,
+    };
+    finish(&grid, &record, &[], w.stats, 1)
 }

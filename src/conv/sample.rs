@@ -10,6 +10,41 @@ use super::ConvError;
 use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid, MAX_NODES};
 use crate::mesh::Mesh;
 
+/// Gives every node of `grid` whose value lies within `margin` of
+/// `threshold` the value of `reference` at its position (the brute-force
+/// sampler's arithmetic: same node position, same summation order);
+/// returns how many.
+///
+/// Why: the narrow band's node values are within `budget / 2` of the exact
+/// field (a fill value is on its proven side), so with `margin = budget`
+/// every other node lies at least `budget / 2` from $T$ on the same side as
+/// the exact field, and the reference's rounding error (about $10^{-13} T$
+/// for the teddy's 189 segments) is far below that: every node is then on
+/// the same side of $T$ as in the reference grid, and the polygonisers,
+/// whose triangles depend only on the sides, give the reference's
+/// triangles (check `conv.fast.teddy_sides_match_reference`).
+pub fn settle_near_threshold(
+    grid: &mut ScalarGrid,
+    threshold: f64,
+    margin: f64,
+    reference: impl Fn([f64; 3]) -> f64,
+) -> usize {
+    let d = grid.dims;
+    let mut n = 0;
+    for (id, v) in grid.values.iter_mut().enumerate() {
+        if (*v - threshold).abs() <= margin {
+            let (i, j, k) = (id % d[0], (id / d[0]) % d[1], id / (d[0] * d[1]));
+            *v = reference([
+                grid.origin[0] + i as f64 * grid.spacing[0],
+                grid.origin[1] + j as f64 * grid.spacing[1],
+                grid.origin[2] + k as f64 * grid.spacing[2],
+            ]);
+            n += 1;
+        }
+    }
+    n
+}
+
 /// Largest allowed resolution (cells along the longest axis).
 pub const MAX_RESOLUTION: usize = 512;
 /// Times the grid box is doubled when the surface reaches its boundary.
@@ -79,7 +114,10 @@ impl BuiltModel {
 
     /// [`Self::sample_group`] by the narrow-band sampler: the same grid,
     /// exact (within `tolerance` T / 2) at the corners of every cell that
-    /// may cross $T$, a value on the proven side of $T$ elsewhere.
+    /// may cross $T$, a value on the proven side of $T$ elsewhere; nodes
+    /// within `tolerance` T of $T$ get the reference's value
+    /// ([`settle_near_threshold`]), so every node is on the reference's
+    /// side of $T$.
     pub fn sample_group_fast(
         &self,
         g: usize,
@@ -93,6 +131,7 @@ impl BuiltModel {
             )));
         }
         let bvh = self.group_bvh(g)?;
+        let comps = self.group_members(g)?;
         let mut stats = NarrowStats::default();
         let grid = self.sample_group_with(g, resolution, threshold, |l, spacing, dims| {
             let total = dims[0].saturating_mul(dims[1]).saturating_mul(dims[2]);
@@ -101,9 +140,15 @@ impl BuiltModel {
                     "a grid of {dims:?} nodes exceeds {MAX_NODES}"
                 )));
             }
-            let (grid, st) =
-                narrow::sample(&bvh, threshold, tolerance * threshold, l, spacing, dims);
+            // the reference's node positions (`ScalarGrid::sample`'s spacing)
+            let h = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * spacing[k]);
+            let spacing = [0, 1, 2].map(|k| (h[k] - l[k]) / (dims[k] - 1) as f64);
+            let budget = tolerance * threshold;
+            let (mut grid, st) = narrow::sample(&bvh, threshold, budget, l, spacing, dims);
             stats = st;
+            stats.reference_nodes = settle_near_threshold(&mut grid, threshold, budget, |r| {
+                components_field(&comps, r)
+            });
             Ok(grid)
         })?;
         Ok(grid.map(|g| (g, stats)))

@@ -4,7 +4,7 @@
 
 use super::io::{encode_obj, encode_ply, encode_stl, parse_obj, parse_ply, parse_stl};
 use super::metrics::{closest_point_on_triangle, TriangleBvh};
-pub use super::samples::{lcg, torus_mesh, Torus};
+use super::samples::{lcg, torus_mesh};
 use super::{dist, slice, topology, Mesh};
 use crate::check::{tol, Check, Kind};
 use std::f64::consts::PI;

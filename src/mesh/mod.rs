@@ -89,6 +89,25 @@ impl Mesh {
         }
     }
 
+    /// Two triangles per cell of a row-major grid of points (`nu x nv`,
+    /// index `iu * nv + iv`), cut along the diagonal from `(iu, iv)` to
+    /// `(iu + 1, iv + 1)`. A closed direction (`closed = [u, v]`) wraps: its
+    /// last cells join the last row of points to the first.
+    pub fn grid(positions: Vec<[f64; 3]>, nu: usize, nv: usize, closed: [bool; 2]) -> Self {
+        let cells_u = if closed[0] { nu } else { nu - 1 };
+        let cells_v = if closed[1] { nv } else { nv - 1 };
+        let idx = |i: usize, j: usize| ((i % nu) * nv + (j % nv)) as u32;
+        let mut tris = Vec::with_capacity(2 * cells_u * cells_v);
+        for i in 0..cells_u {
+            for j in 0..cells_v {
+                let (a, b, c, e) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
+                tris.push([a, b, c]);
+                tris.push([a, c, e]);
+            }
+        }
+        Mesh::new(positions, tris)
+    }
+
     /// Appends `other` (its groups are kept, renamed into this mesh's group
     /// list; groups with equal names merge).
     pub fn append(&mut self, other: &Mesh) {

@@ -1,32 +1,10 @@
-//! Named test surfaces and meshes of the mesh infrastructure (a torus and
-//! a reproducible random source), shared by checks, tests and benches.
+//! Named test meshes of the mesh infrastructure (a torus and a reproducible
+//! random source), shared by checks, tests and benches. Built here without
+//! the `surface` layer above (`surface::samples::Torus` is the same torus as
+//! a parametric surface; a test holds the two equal).
 
 use super::Mesh;
-use crate::surface::{tessellate, Domain, Surface, Tessellation};
 use std::f64::consts::PI;
-
-/// A torus with major radius `big` and minor radius `small` about the y
-/// axis, closed in both directions.
-#[derive(Clone, Copy, Debug)]
-pub struct Torus {
-    pub big: f64,
-    pub small: f64,
-}
-
-impl Surface for Torus {
-    fn eval<T: crate::jet::Real>(&self, u: T, v: T) -> [T; 3] {
-        let (a, b) = (u * (2.0 * PI), v * (2.0 * PI));
-        let r = b.cos() * self.small + self.big;
-        [r * a.cos(), b.sin() * self.small, -(r * a.sin())]
-    }
-    fn domain(&self) -> Domain {
-        Domain {
-            closed_u: true,
-            closed_v: true,
-            ..Domain::UNIT
-        }
-    }
-}
 
 /// Deterministic pseudo-random numbers in [0, 1) (xorshift), so checks are
 /// reproducible without a dependency.
@@ -37,13 +15,22 @@ pub fn lcg(seed: &mut u64) -> f64 {
     (*seed >> 11) as f64 / (1u64 << 53) as f64
 }
 
-/// The torus (R = 2, r = 0.5) tessellated on a 2n x n grid.
+/// Major and minor radius of [`torus_mesh`].
+pub const TORUS_RADII: (f64, f64) = (2.0, 0.5);
+
+/// The torus about the y axis (radii [`TORUS_RADII`]) sampled on a closed
+/// 2n x n parameter grid (`u` around the axis, `v` around the tube).
 pub fn torus_mesh(n: usize) -> Mesh {
-    tessellate(
-        &Torus {
-            big: 2.0,
-            small: 0.5,
-        },
-        Tessellation { nu: 2 * n, nv: n },
-    )
+    let (big, small) = TORUS_RADII;
+    let (nu, nv) = (2 * n.max(1), n.max(1));
+    let mut pts = Vec::with_capacity(nu * nv);
+    for iu in 0..nu {
+        let a = (iu as f64 / nu as f64) * (2.0 * PI);
+        for iv in 0..nv {
+            let b = (iv as f64 / nv as f64) * (2.0 * PI);
+            let r = b.cos() * small + big;
+            pts.push([r * a.cos(), b.sin() * small, -(r * a.sin())]);
+        }
+    }
+    Mesh::grid(pts, nu, nv, [true, true])
 }

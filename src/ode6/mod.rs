@@ -44,7 +44,7 @@ pub mod surface;
 pub use basis::{Basis, Params, RootCase};
 pub use boundary::{Approach2, BoundaryCurves, Curve, DiffFormula};
 pub use force::Force;
-pub use surface::{Chain, Grid, GridJumps, Ode6Surface};
+pub use surface::{Chain, Grid, GridJumps, Ode6Surface, VSplit};
 
 /// Errors of the ode6 family.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

@@ -193,13 +193,6 @@ impl Chain {
             .collect::<Result<Vec<_>, Ode6Error>>()?;
         Ok(Chain { patches })
     }
-
-    /// Jumps `[position, first, second]` of `d^i S/du^i` across every join,
-    /// maximised over `nv` samples of `v` (the old name of
-    /// [`Joined::join_jumps`]).
-    pub fn u_jumps(&self, nv: usize) -> [f64; 3] {
-        self.join_jumps(nv)
-    }
 }
 
 /// Jumps `[position, first, second]` of `d^i S/du^i` across every join,
@@ -249,21 +242,33 @@ impl Surface for Chain {
     }
 }
 
-/// Jumps `[position, first, second]` of `d^j S/dv^j` across the join of two
-/// patches adjacent in `v` (`a` ends at `v*`, `b` starts there), maximised
-/// over `nu` samples of `u`.
-pub fn v_jumps(a: &Ode6Surface, b: &Ode6Surface, nu: usize) -> [f64; 3] {
-    let v = a.v_range.1;
-    let mut out = [0.0f64; 3];
-    for iu in 0..=nu {
-        let u = iu as f64 / nu as f64;
-        for j in 0..3 {
-            let pa = a.derivative(u, v, 0, j);
-            let pb = b.derivative(u, b.v_range.0, 0, j);
-            out[j] = out[j].max(crate::mesh::dist(pa, pb));
+/// Two patches adjacent in `v`: `below` ends at `v*`, `above` starts there
+/// (Fig 6b's split of one patch between two parameter sets).
+#[derive(Clone, Copy, Debug)]
+pub struct VSplit<'a> {
+    pub below: &'a Ode6Surface,
+    pub above: &'a Ode6Surface,
+}
+
+/// Jumps `[position, first, second]` of `d^j S/dv^j` across the join,
+/// maximised over `nu + 1` samples of `u`.
+impl Joined for VSplit<'_> {
+    type Jumps = [f64; 3];
+
+    fn join_jumps(&self, nu: usize) -> [f64; 3] {
+        let (a, b) = (self.below, self.above);
+        let v = a.v_range.1;
+        let mut out = [0.0f64; 3];
+        for iu in 0..=nu {
+            let u = iu as f64 / nu as f64;
+            for j in 0..3 {
+                let pa = a.derivative(u, v, 0, j);
+                let pb = b.derivative(u, b.v_range.0, 0, j);
+                out[j] = out[j].max(crate::mesh::dist(pa, pb));
+            }
         }
+        out
     }
-    out
 }
 
 /// Curve data at a knot in `v`: `[P, P_v, P_vv]`.
@@ -353,12 +358,6 @@ impl Grid {
             })
             .collect::<Result<Vec<_>, Ode6Error>>()?;
         Ok(Grid { patches })
-    }
-
-    /// Jumps across every u-join and v-join, `n + 1` samples along each
-    /// (the old name of [`Joined::join_jumps`]).
-    pub fn jumps(&self, n: usize) -> GridJumps {
-        self.join_jumps(n)
     }
 }
 

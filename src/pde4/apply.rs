@@ -159,11 +159,8 @@ fn curve_frame(curve: &[[f64; 3]]) -> Result<Frame, Pde4Error> {
 
 /// `(u, v)` of a point at plane coordinates `(x, y)` inside the polygon `poly`, if inside.
 pub fn region_uv(poly: &[[f64; 2]], x: f64, y: f64) -> Option<[f64; 2]> {
-    let (ymin, ymax) = poly
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-            (a.min(p[1]), b.max(p[1]))
-        });
+    let (lo, hi) = crate::vec3::bounds(poly)?;
+    let (ymin, ymax) = (lo[1], hi[1]);
     if !(y > ymin && y < ymax) {
         return None;
     }
@@ -185,6 +182,15 @@ pub fn region_uv(poly: &[[f64; 2]], x: f64, y: f64) -> Option<[f64; 2]> {
     }
     None
 }
+
+/// Default `depth` of [`deform_region`]: vertices within this distance of
+/// the curve's plane move (the MakeHuman body is in decimetres).
+pub const DEPTH_DEFAULT: f64 = 1.0;
+/// Default `u_range` of [`deform_part`]: the whole axis.
+pub const U_RANGE_DEFAULT: (f64, f64) = (0.0, 1.0);
+/// Default `radius` of [`deform_part`]: every vertex whose axial fraction
+/// lies in the range, however far from the axis.
+pub const RADIUS_DEFAULT: f64 = f64::INFINITY;
 
 /// Deforms the mesh vertices enclosed by `curve` with the scalar deformation
 /// `w(u, v)` (first component of `deformation`) so the largest displacement is `drag`.

@@ -97,19 +97,25 @@ pub fn sample_boundary() -> Boundary {
     }
 }
 
+/// Three different shape parameters (the plate, uniform 0.3, and
+/// `a = (1, 0.5, 1)`), one per component: the two-sided checks' mix.
+pub fn mixed_shapes() -> [ShapeParams; 3] {
+    [
+        ShapeParams::PLATE,
+        ShapeParams::uniform(0.3),
+        ShapeParams {
+            a1: 1.0,
+            a2: 0.5,
+            a3: 1.0,
+        },
+    ]
+}
+
 /// The two-sided patch of the non-zero-boundary checks: three different
 /// shape parameters, the sample forces, 8 x 8 terms, [`sample_boundary`].
 pub fn two_sided() -> Result<super::TwoSided, super::Pde4Error> {
     super::TwoSided::new(
-        [
-            ShapeParams::PLATE,
-            ShapeParams::uniform(0.3),
-            ShapeParams {
-                a1: 1.0,
-                a2: 0.5,
-                a3: 1.0,
-            },
-        ],
+        mixed_shapes(),
         &sample_forces(),
         8,
         8,

@@ -1,7 +1,6 @@
-//! Reading the sections JSON of `pde6 patch`, building a chain by method, and
-//! the text summary of the open-parts body (library side of `src/cli/pde6.rs`).
+//! Reading the sections JSON of `pde6 patch`, building a chain by method and
+//! the `pde6 mode` evaluation (library side of `src/cli/pde6.rs`).
 
-use super::body::BodyReport;
 use super::{Chain, Method, Pde6Error, Section};
 use crate::curve::gec::Gec;
 use crate::curve::Fourier3;
@@ -69,33 +68,6 @@ pub fn build_chain(
     }
 }
 
-/// Text summary of the open-parts reconstruction (percent of the height).
-pub fn open_parts_summary(report: &BodyReport, output: &Path) -> String {
-    let h = 100.0;
-    let mut s = format!(
-        "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n",
-        output.display(),
-        report.recon_triangles,
-        report.body_height,
-        h * report.recon_to_skin_rms_rel,
-        h * report.recon_to_skin_max_rel,
-        h * report.skin_to_recon_rms_rel,
-        h * report.skin_to_recon_max_rel
-    );
-    for p in &report.parts {
-        s.push_str(&format!(
-            "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg\n",
-            p.name,
-            h * p.recon_to_skin_rms_rel,
-            h * p.recon_to_skin_max_rel,
-            p.roughness.u,
-            p.roughness.v,
-            p.slip_deg
-        ));
-    }
-    s
-}
-
 /// `pde6 mode`: the single-harmonic function through six values at
 /// u = 0, 0.2, ..., 1, evaluated at `at`: (JSON, one-line summary).
 pub fn mode_at(
@@ -156,7 +128,7 @@ pub fn patch_summary(
     a: f64,
     output: &Path,
 ) -> (serde_json::Value, String) {
-    let jumps = super::check::join_jumps(chain);
+    let jumps = crate::surface::Joined::join_jumps(chain, super::JOIN_SAMPLES);
     let json = serde_json::json!({
         "sections": sections, "pieces": chain.pieces.len(), "method": format!("{:?}", chain.method),
         "a": a, "max_condition": chain.max_condition(), "coefficients": chain.coefficient_count(),

@@ -24,9 +24,8 @@
 //! unstable recursion that amplifies by ~13 per patch) and
 //! [`Chain::c2_global`] ([`spline`]: the method-2 conditions solved together
 //! with one end condition at each end; C2 and stable — the default of the
-//! body and the CLI). The [`body`] module reconstructs the MakeHuman body from
-//! its cross sections (reconstruction to skin RMS 0.06 %, max 1.6 % of the body
-//! height; `pde6.body_smoothness` measures the ripple fix).
+//! body and the CLI). The whole-body reconstruction built from these chains
+//! lives above the families, in [`crate::body`].
 //!
 //! Accuracy note: for $a \ne 0$ the harmonic functions do not contain the
 //! constants, so refining the sections converges (order ~6) only down to a
@@ -39,11 +38,6 @@
 //! `pde6_closed_form.json`); beyond, or for $q \to 0$ with $a \ne 0$, the solver
 //! refuses matrices with condition number above [`mode::MAX_CONDITION`].
 
-pub mod body;
-pub mod body_closed;
-pub mod body_layout;
-pub mod body_report;
-pub mod body_study;
 pub mod chain;
 pub mod check;
 pub mod input;
@@ -92,26 +86,14 @@ pub enum Pde6Error {
     Singular { q: f64 },
     #[error("the 6x6 interpolation matrix has condition number {condition:.3e} (q = {q}): |a| or N too large (or |a| too small but nonzero)")]
     IllConditioned { q: f64, condition: f64 },
-    #[error("body layout: {what} not found: {detail}")]
-    LayoutNotFound { what: &'static str, detail: String },
     #[error("{0}")]
     Input(String),
-    #[error("{what} = {got}: the C2 chain needs 7 + 3k sections (k = 0..30)")]
-    SectionCount { what: &'static str, got: usize },
     #[error("{section}: {cause}")]
     SectionFit {
         section: String,
         #[source]
         cause: Box<Pde6Error>,
     },
-    #[error("{part}: no closed section at y = {y:.3}")]
-    NoSection { part: String, y: f64 },
-    #[error("the mesh has no vertices")]
-    EmptyMesh,
-    #[error("--morph {spec:?}: {problem}")]
-    Morph { spec: String, problem: String },
-    #[error("--morph applies to the bundled MakeHuman body, not to --mesh")]
-    MorphWithMesh,
     #[error("anchored sampling: pull {0} outside [0, 1]")]
     Pull(f64),
     #[error("anchored sampling needs >= 3 points, >= 1 anchor, >= 3 samples (got {points}, {anchors}, {samples})")]
@@ -120,16 +102,10 @@ pub enum Pde6Error {
         anchors: usize,
         samples: usize,
     },
-    #[error("--sampling {0}: expected anchored, chord, centripetal, uniform or polar")]
-    SamplingName(String),
     #[error("degenerate section: {0}")]
     DegenerateSection(&'static str),
-    #[error("assembling the closed body: {0}")]
-    Assembly(#[from] crate::sketch::SketchError),
     #[error(transparent)]
     Gec(#[from] crate::curve::gec::GecError),
-    #[error(transparent)]
-    Ode6(#[from] crate::ode6::Ode6Error),
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
 }

@@ -13,6 +13,7 @@
 
 pub mod check;
 mod join;
+pub mod samples;
 mod tessellate;
 
 pub use join::Joined;

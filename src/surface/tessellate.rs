@@ -35,16 +35,5 @@ pub fn tessellate<S: Surface + ?Sized>(s: &S, t: Tessellation) -> Mesh {
 /// Triangulates a row-major grid of points (`nu_pts x nv_pts`, index
 /// `iu * nv_pts + iv`) with the closedness of `d`.
 pub fn tessellate_grid(pts: Vec<[f64; 3]>, nu_pts: usize, nv_pts: usize, d: Domain) -> Mesh {
-    let cells_u = if d.closed_u { nu_pts } else { nu_pts - 1 };
-    let cells_v = if d.closed_v { nv_pts } else { nv_pts - 1 };
-    let idx = |i: usize, j: usize| ((i % nu_pts) * nv_pts + (j % nv_pts)) as u32;
-    let mut tris = Vec::with_capacity(2 * cells_u * cells_v);
-    for i in 0..cells_u {
-        for j in 0..cells_v {
-            let (a, b, c, e) = (idx(i, j), idx(i + 1, j), idx(i + 1, j + 1), idx(i, j + 1));
-            tris.push([a, b, c]);
-            tris.push([a, c, e]);
-        }
-    }
-    Mesh::new(pts, tris)
+    Mesh::grid(pts, nu_pts, nv_pts, [d.closed_u, d.closed_v])
 }

@@ -116,6 +116,13 @@ pub struct FitOptions {
     /// Zero-displacement anchors of the high level on skin vertices away
     /// from the sections' heights (default 300; 0: none).
     pub band_anchors: usize,
+    /// Envelope correction passes ([`super::envelope`]) after the medium
+    /// and high levels while the side view misses the tolerance (default
+    /// 0: none, until the pass beats the study's numbers).
+    pub envelope_passes: usize,
+    /// The envelope passes decide per height whether an arm or the trunk
+    /// forms the fitted outline (default true).
+    pub envelope_arms: bool,
 }
 
 impl Default for FitOptions {
@@ -138,6 +145,8 @@ impl Default for FitOptions {
             depth_map: DepthMap::Robust,
             depth_falloff: refine::DEPTH_FALLOFF,
             side_trunk: false,
+            envelope_passes: 0,
+            envelope_arms: true,
         }
     }
 }
@@ -261,6 +270,39 @@ pub fn level_partner(p: &[[f64; 2]], y: f64, near: f64) -> f64 {
         }
     }
     best
+}
+
+/// Envelope correction passes ([`super::envelope::envelope_pass`]) while
+/// the side view misses the tolerance, at most
+/// [`FitOptions::envelope_passes`]; a pass that does not reduce the miss
+/// is undone and ends them. Returns the passes kept.
+fn envelope_passes(
+    template: &Template,
+    positions: &mut Vec<[f64; 3]>,
+    side_err: &mut f64,
+    side: &[[f64; 2]],
+    opts: &FitOptions,
+    outline: &OutlineFn,
+) -> Result<usize, TemplateError> {
+    let mut kept = 0;
+    while *side_err > opts.tolerance && kept < opts.envelope_passes {
+        let mut next = positions.clone();
+        super::envelope::envelope_pass(template, &mut next, side, opts, outline)?;
+        let err = refine::measure(template, &next, View::Side, side, outline)?;
+        if std::env::var("ENVELOPE_DEBUG").is_ok() {
+            eprintln!(
+                "envelope pass {kept}: side {:.3} % -> {:.3} %",
+                100.0 * *side_err,
+                100.0 * err
+            );
+        }
+        if err >= *side_err {
+            break;
+        }
+        (*positions, *side_err) = (next, err);
+        kept += 1;
+    }
+    Ok(kept)
 }
 
 pub(crate) fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
@@ -389,6 +431,7 @@ pub fn fit(
         (medium, side_err) = (next, err);
         passes += 1;
     }
+    passes += envelope_passes(template, &mut medium, &mut side_err, &side, opts, outline)?;
     let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
     refine::enforce(Level::Medium, &fits, passes, opts)?;
     let rep = LevelReport {
@@ -407,23 +450,22 @@ pub fn fit(
     }
     let t2 = Instant::now();
     let medium = &levels[1].1;
-    let (rep, high) =
+    let (rep, mut high) =
         sections::fit_sections(template, medium, &front, &side, &sketch.sections, opts)?;
+    let mut side_err = refine::measure(template, &high, View::Side, &side, outline)?;
+    let passes = envelope_passes(template, &mut high, &mut side_err, &side, opts, outline)?;
     let fits = vec![
         refine::view_fit(
             View::Front,
             refine::measure(template, &high, View::Front, &front, outline)?,
             opts,
         ),
-        refine::view_fit(
-            View::Side,
-            refine::measure(template, &high, View::Side, &side, outline)?,
-            opts,
-        ),
+        refine::view_fit(View::Side, side_err, opts),
     ];
-    refine::enforce(Level::High, &fits, 0, opts)?;
+    refine::enforce(Level::High, &fits, passes, opts)?;
     levels.push((
         LevelReport {
+            passes,
             profiles: fits,
             seconds: t2.elapsed().as_secs_f64(),
             ..rep

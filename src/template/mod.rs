@@ -29,6 +29,7 @@
 //! geometry included, so MakeHuman targets still apply to the result).
 
 pub mod check;
+pub mod envelope;
 pub mod fit;
 pub mod landmarks;
 pub mod measure;

@@ -244,6 +244,17 @@ impl<const D: usize, const M: usize> Rbf<D, M> {
                 out[m] += self.poly[1 + k][m] * x[k];
             }
         }
+        if D == 2 {
+            // r^2 log r = r^2 ln(r^2) / 2: no square root per centre
+            for (c, w) in self.centres.iter().zip(&self.weights) {
+                let r2 = (x[0] - c[0]).powi(2) + (x[1] - c[1]).powi(2);
+                let phi = if r2 > 0.0 { 0.5 * r2 * r2.ln() } else { 0.0 };
+                for m in 0..M {
+                    out[m] += w[m] * phi;
+                }
+            }
+            return out;
+        }
         for (c, w) in self.centres.iter().zip(&self.weights) {
             let phi = kernel(D, dist(&x, c));
             for m in 0..M {

@@ -176,7 +176,43 @@ pub struct Row {
     pub rms_rel: f64,
     pub max_rel: f64,
     pub profiles: Vec<ViewError>,
+    /// Creases ([`super::measure::crease`], radians) on the front of the
+    /// lower belly and of the face ([`CREASE_REGIONS`]).
+    pub creases: [f64; 2],
     pub seconds: f64,
+}
+
+/// Crease regions, by the template's skin at rest: front half (z above the
+/// middle of the depth range) between two fractions of the height and
+/// within a half-width (fraction of the height) of the middle in x (no
+/// hands, no arms).
+pub const CREASE_REGIONS: [(&str, f64, f64, f64); 2] =
+    [("belly", 0.50, 0.62, 0.07), ("face", 0.87, 1.0, 0.04)];
+
+/// The creases of `positions` (every template vertex) over the template at
+/// rest, per [`CREASE_REGIONS`].
+pub fn creases(template: &Template, positions: &[[f64; 3]]) -> [f64; 2] {
+    let rest = &template.skin;
+    let (lo, hi) = rest.positions.iter().fold(
+        ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+        |(mut l, mut h), p| {
+            for k in 0..3 {
+                l[k] = l[k].min(p[k]);
+                h[k] = h[k].max(p[k]);
+            }
+            (l, h)
+        },
+    );
+    let (xc, zc) = (0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2]));
+    let h = hi[1] - lo[1];
+    let moved = template.skin_at(positions);
+    CREASE_REGIONS.map(|(_, a, b, w)| {
+        let region = |p: &[f64; 3]| {
+            let f = (p[1] - lo[1]) / h;
+            p[2] > zc && f >= a && f <= b && (p[0] - xc).abs() < w * h
+        };
+        super::measure::crease(rest, &moved, &region)
+    })
 }
 
 /// A case's rows and the positions of the template and of every level.
@@ -198,6 +234,7 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
         rms_rel: rms,
         max_rel: mx,
         profiles: profile_errors(&template, &bb, &sketch)?,
+        creases: creases(&template, &bb),
         seconds: 0.0,
     }];
     let r = fit(&template, &sketch, opts, &mesh_outline)?;
@@ -215,9 +252,25 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
             rms_rel: rms,
             max_rel: mx,
             profiles: profile_errors(&template, pos, &sketch)?,
+            creases: creases(&template, pos),
             seconds: rep.seconds,
         });
         meshes.push(pos.clone());
     }
+    // the target itself (its own creases over the template: the ground
+    // truth's sharpening, e.g. a pregnant belly's underside)
+    let mut tpos = template.mesh.positions.clone();
+    for (p, &i) in target.positions.iter().zip(&template.skin_index) {
+        tpos[i as usize] = *p;
+    }
+    rows.push(Row {
+        case: case.name.into(),
+        method: "target".into(),
+        rms_rel: 0.0,
+        max_rel: 0.0,
+        profiles: Vec::new(),
+        creases: creases(&template, &tpos),
+        seconds: 0.0,
+    });
     Ok((rows, meshes))
 }

@@ -9,6 +9,7 @@
 //! leaves a document that does not build.
 
 use super::autosave;
+use super::history::History;
 use super::params::{self, Row};
 use super::preview::ViewSet;
 use super::worker::{Outcome, Rebuilt};
@@ -139,6 +140,10 @@ pub struct App {
     pub running: Option<Running>,
     pub next_gen: u64,
     pub view: ViewSet,
+    /// Undo history of edits and input commands ([`super::history`]).
+    pub history: History,
+    /// The history of `good`.
+    pub good_history: History,
 }
 
 impl App {
@@ -150,7 +155,10 @@ impl App {
             .map(PathBuf::from)
             .filter(|p| !p.as_os_str().is_empty())
             .unwrap_or_else(|| PathBuf::from("."));
+        let history = History::of(&doc);
         let mut app = App {
+            good_history: history.clone(),
+            history,
             doc,
             path,
             base,
@@ -294,6 +302,7 @@ impl App {
         let summary = e.summary();
         match self.doc.push_edit(e) {
             Ok(()) => {
+                self.history.record_edit();
                 self.say(format!("applied: {summary}"), false);
                 self.log_sel = self.doc.cursor;
                 self.changed()
@@ -374,6 +383,7 @@ impl App {
             effects.clear();
         }
         self.good = Some(self.doc.clone());
+        self.good_history = self.history.clone();
         self.stale = false;
         let id = self.shown.as_ref().map_or(1, |s| s.id + 1);
         self.shown = Some(Shown {
@@ -389,6 +399,7 @@ impl App {
         let effects = match self.good.clone() {
             Some(g) if g != self.doc => {
                 self.doc = g;
+                self.history = self.good_history.clone();
                 self.say(
                     format!("{text}; the document is back to its last good state"),
                     true,
@@ -418,6 +429,7 @@ impl App {
             Mode::Recovery(doc) => match k.code {
                 KeyCode::Char('y') => {
                     self.doc = *doc;
+                    self.history = History::of(&self.doc);
                     self.mode = Mode::Normal;
                     self.say("recovered the autosaved changes (not saved yet)", false);
                     self.changed()

@@ -7,14 +7,19 @@
 //! [`add_key_section`], [`add_prop`] build a new document or return the
 //! error, which stays on screen with the prompt open); the document then
 //! goes through the usual rebuild, and a build failure puts back the last
-//! good document. These changes are not entries of the edit log: `u`
-//! does not undo them (the autosave and the saved file keep them).
+//! good document. These changes are not entries of the edit log, but they
+//! are steps of the session's one undo history ([`super::history`]): `u`
+//! and `r` undo and redo them as they do edits.
+//!
+//! Typed paths are read against the working directory (Tab completes
+//! there) and stored relative to the document's directory when the file is
+//! in it or below it, absolute otherwise ([`stored_path`]): a document
+//! copied or moved together with its files builds in its new place.
 //!
 //! * Add part: `PATH [NAME]`, a closed outline (SVG or JSON polyline) in
 //!   model units, drawn where the part sits. It becomes a removed part
 //!   (`sketch::removed`): built from its own outline as one pde6 chain, a
-//!   separate closed component not stitched to the body. Typed paths are
-//!   stored absolute.
+//!   separate closed component not stitched to the body.
 //! * Key section: `Y A B` (an ellipse of semi-axes `A` along x and `B`
 //!   along z about the part's centre at that height) or `Y FILE.json` (a
 //!   closed curve: `[[x, z], ...]`, `{"points": ...}` or a sections file
@@ -119,6 +124,31 @@ fn typed_file(word: &str, exts: &[&str]) -> Result<PathBuf, String> {
     Ok(abs)
 }
 
+/// How a typed file is stored in the document: relative to the document's
+/// directory `base` (with `/` separators) when the file is in it or below
+/// it, so a document moved or copied with its files still builds;
+/// absolute otherwise. `character build` and the TUI resolve a relative
+/// path against the document's directory (`sketch::input::read_profile`,
+/// `PropSpec::path`).
+pub fn stored_path(abs: &Path, base: &Path) -> String {
+    let rel = std::fs::canonicalize(base)
+        .ok()
+        .and_then(|b| abs.strip_prefix(b).ok().map(Path::to_path_buf))
+        .filter(|r| !r.as_os_str().is_empty());
+    let words = rel.as_ref().and_then(|r| {
+        r.components()
+            .map(|c| match c {
+                std::path::Component::Normal(w) => w.to_str(),
+                _ => None,
+            })
+            .collect::<Option<Vec<&str>>>()
+    });
+    match words {
+        Some(w) => w.join("/"),
+        None => abs.display().to_string(),
+    }
+}
+
 fn stem_name(p: &Path) -> String {
     let s: String = p
         .file_stem()
@@ -186,7 +216,7 @@ pub fn add_part(
     check_name(doc, &name)?;
     let rp = RemovedPart {
         name: name.clone(),
-        front: ProfileInput::Path(path.display().to_string()),
+        front: ProfileInput::Path(stored_path(&path, base)),
         side: None,
     };
     let built = crate::sketch::removed::removed_part(&rp, base, doc.inputs.tolerance)
@@ -333,7 +363,7 @@ pub fn add_prop(
     }
     let p = PropSpec {
         name: name.clone(),
-        model: path.display().to_string(),
+        model: stored_path(&path, base),
         translate,
         scale,
     };
@@ -374,6 +404,7 @@ impl App {
             self.say(format!("not applied: {e}"), true);
             return Vec::new();
         }
+        self.history.record_edit();
         self.log_sel = self.doc.cursor;
         // autosave; the build with the edit is at hand (no second rebuild)
         let _ = self.changed();
@@ -416,7 +447,19 @@ impl App {
                 };
                 match r {
                     Ok((doc, msg)) => {
-                        self.doc = doc;
+                        let what = match kind {
+                            PromptKind::AddPart => format!(
+                                "add part '{}'",
+                                doc.removed_parts.last().map_or("", |r| r.name.as_str())
+                            ),
+                            PromptKind::KeySection => format!("key section of '{part}'"),
+                            PromptKind::AddProp => format!(
+                                "attach prop '{}'",
+                                doc.props.last().map_or("", |p| p.name.as_str())
+                            ),
+                        };
+                        let before = std::mem::replace(&mut self.doc, doc);
+                        self.history.record_inputs(what, &before, &mut self.doc);
                         self.mode = Mode::Normal;
                         self.say(msg, false);
                         return self.changed();

@@ -22,7 +22,10 @@ pub const BINDINGS: &[(&str, &str)] = &[
         "Esc",
         "cancel typing, or abandon the running rebuild/export",
     ),
-    ("u, Ctrl-Z", "undo the last active edit"),
+    (
+        "u, Ctrl-Z",
+        "undo the last edit or command (add part, key section, prop)",
+    ),
     ("r, Ctrl-Y", "redo"),
     ("v", "preview view: front, side, top, all three"),
     (
@@ -49,12 +52,15 @@ pub const BINDINGS: &[(&str, &str)] = &[
 ];
 
 impl App {
-    /// Undo one edit.
+    /// Undoes one step of the history: an edit or an input command.
     pub fn undo(&mut self) -> Vec<Effect> {
-        match self.doc.undo() {
-            Ok(()) => {
+        match self.history.undo(&mut self.doc) {
+            Ok(what) => {
                 self.log_sel = self.doc.cursor;
-                self.say(format!("undo (cursor {})", self.doc.cursor), false);
+                self.say(
+                    format!("undo: {what} (log cursor {})", self.doc.cursor),
+                    false,
+                );
                 self.changed()
             }
             Err(e) => {
@@ -64,12 +70,15 @@ impl App {
         }
     }
 
-    /// Redo one edit.
+    /// Redoes one step of the history.
     pub fn redo(&mut self) -> Vec<Effect> {
-        match self.doc.redo() {
-            Ok(()) => {
+        match self.history.redo(&mut self.doc) {
+            Ok(what) => {
                 self.log_sel = self.doc.cursor;
-                self.say(format!("redo (cursor {})", self.doc.cursor), false);
+                self.say(
+                    format!("redo: {what} (log cursor {})", self.doc.cursor),
+                    false,
+                );
                 self.changed()
             }
             Err(e) => {
@@ -119,22 +128,42 @@ impl App {
         }
     }
 
-    /// Moves the log cursor to `target` by undoing or redoing.
+    /// Moves the log cursor to `target` by undoing or redoing edits; it
+    /// stops at an input command (only `u`/`r` step over those).
     fn seek(&mut self, target: usize) -> Vec<super::app::Effect> {
+        use super::history::Step;
         let target = target.min(self.doc.edits.len());
         let mut moved = false;
-        while self.doc.cursor > target && self.doc.undo().is_ok() {
+        while self.doc.cursor > target
+            && self.history.last() == Some(&Step::Edit)
+            && self.history.undo(&mut self.doc).is_ok()
+        {
             moved = true;
         }
-        while self.doc.cursor < target && self.doc.redo().is_ok() {
+        while self.doc.cursor < target
+            && self.history.next() == Some(&Step::Edit)
+            && self.history.redo(&mut self.doc).is_ok()
+        {
             moved = true;
         }
-        if !moved {
-            return Vec::new();
+        let blocked = self.doc.cursor != target;
+        if blocked {
+            self.say(
+                format!(
+                    "log cursor at {}: an input command (add part, key section, prop) lies between; step over it with u/r",
+                    self.doc.cursor
+                ),
+                true,
+            );
+        } else if moved {
+            self.say(format!("log cursor at {}", self.doc.cursor), false);
         }
-        self.say(format!("log cursor at {}", self.doc.cursor), false);
         self.log_sel = self.doc.cursor;
-        self.changed()
+        if moved {
+            self.changed()
+        } else {
+            Vec::new()
+        }
     }
 
     pub(super) fn on_normal_key(&mut self, k: KeyEvent, ctrl: bool) -> Vec<Effect> {

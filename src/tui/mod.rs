@@ -26,13 +26,19 @@
 //! `character::edit::push_checked`; Esc cancels a running rebuild or export
 //! between part solves (see [`worker`]).
 //!
+//! * [`history`]: one undo history over the edit log and the commands.
+//!
 //! Not done: terminal image protocols (half-blocks only); cancelling inside
-//! one part's solve or the transition/mesh assembly; undo of the commands
-//! (they are not entries of the edit log).
+//! one part's solve or the transition/mesh assembly (they live in
+//! `sketch::build`, which has no cancel hook; how long a cancel waits is
+//! the longer of the two: `benches/tui.rs` `cancel_wait_*`); a force,
+//! boundary or plate edit checked on the worker (`edit::push_checked`)
+//! solves every part without the part cache and is not interruptible.
 
 pub mod app;
 pub mod autosave;
 pub mod commands;
+pub mod history;
 pub mod keys;
 pub mod params;
 pub mod preview;

@@ -104,11 +104,14 @@ fn draw_tree(f: &mut Frame, app: &App, area: Rect) {
     }
 }
 
-fn profile_text(p: &ProfileInput) -> String {
-    match p {
+/// A profile's line of the inputs panel, made to fit `width` (a long
+/// path must not wrap and push the lines below out of the panel).
+fn profile_text(label: &str, p: &ProfileInput, width: usize) -> String {
+    let text = match p {
         ProfileInput::Path(s) => s.clone(),
         ProfileInput::Points(v) => format!("{} points inline", v.len()),
-    }
+    };
+    fit(&format!("{label}{text}"), width)
 }
 
 fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
@@ -125,13 +128,16 @@ fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
         .map(|(n, k)| format!("{n} {k}"))
         .collect::<Vec<_>>()
         .join(", ");
+    let w = area.width.saturating_sub(2) as usize;
     let lines = vec![
         Line::from(format!("level    {}", d.level.name())),
-        Line::from(format!("front    {}", profile_text(&d.inputs.front))),
-        Line::from(format!(
-            "side     {}",
-            d.inputs.side.as_ref().map_or("none".into(), profile_text)
-        )),
+        Line::from(profile_text("front    ", &d.inputs.front, w)),
+        Line::from(
+            d.inputs
+                .side
+                .as_ref()
+                .map_or("side     none".into(), |p| profile_text("side     ", p, w)),
+        ),
         Line::from(format!(
             "sections {}",
             if secs.is_empty() { "none".into() } else { secs }
@@ -194,6 +200,8 @@ fn draw_params(f: &mut Frame, app: &App, area: Rect) {
         _ => None,
     };
     let err = app.typing_error();
+    // inside the borders, after the label
+    let value_width = (area.width as usize).saturating_sub(2 + 10);
     let mut items: Vec<ListItem> = Vec::new();
     for (i, r) in app.rows().into_iter().enumerate() {
         let label = Span::styled(format!("{:<10}", r.label), Style::default().fg(Color::Cyan));
@@ -209,7 +217,10 @@ fn draw_params(f: &mut Frame, app: &App, area: Rect) {
                     Span::styled(format!("{buf}▏"), Style::default().fg(colour)),
                 ])));
                 let hint = match &err {
-                    Some(e) => Span::styled(format!("  ✗ {e}"), Style::default().fg(Color::Red)),
+                    Some(e) => Span::styled(
+                        fit(&format!("  ✗ {e}"), value_width + 10),
+                        Style::default().fg(Color::Red),
+                    ),
                     None => Span::styled(
                         format!("  ✓ Enter applies ({})", r.kind.hint()),
                         Style::default().fg(Color::Green),
@@ -225,7 +236,7 @@ fn draw_params(f: &mut Frame, app: &App, area: Rect) {
                 };
                 items.push(ListItem::new(Line::from(vec![
                     label,
-                    Span::styled(r.value, style),
+                    Span::styled(fit(&r.value, value_width), style),
                 ])));
             }
         }
@@ -334,19 +345,26 @@ pub fn status_line(app: &App) -> Line<'static> {
 
 fn draw_message(f: &mut Frame, app: &App, area: Rect) {
     let typing = app.typing_error();
+    let width = area.width as usize;
     let line = match (&app.mode, &app.message) {
         (Mode::Editing { .. }, _) if typing.is_some() => Line::from(Span::styled(
-            format!("✗ {}", typing.unwrap_or_default()),
+            fit(&format!("✗ {}", typing.unwrap_or_default()), width),
             Style::default().fg(Color::Red),
         )),
-        (Mode::Export { buffer }, _) => Line::from(vec![
-            Span::styled("export to: ", Style::default().fg(Color::Yellow)),
-            Span::raw(format!("{buffer}▏")),
-            Span::styled(
-                "  (.obj .glb .stl .ply .png; Enter, Esc)",
-                Style::default().fg(Color::DarkGray),
-            ),
-        ]),
+        (Mode::Export { buffer }, _) => {
+            const LABEL: &str = "export to: ";
+            const HINT: &str = "  (.obj .glb .stl .ply .png; Enter, Esc)";
+            // the typed path gives way from its start, as in a prompt
+            let room = width.saturating_sub(LABEL.len() + 1 + HINT.len());
+            Line::from(vec![
+                Span::styled(LABEL, Style::default().fg(Color::Yellow)),
+                Span::raw(format!(
+                    "{}▏",
+                    elide_left(buffer, room.max(PROMPT_MIN_SHOWN))
+                )),
+                Span::styled(HINT, Style::default().fg(Color::DarkGray)),
+            ])
+        }
         (
             Mode::Prompt {
                 kind,
@@ -356,7 +374,13 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
             _,
         ) => {
             let tail = match error {
-                Some(e) => Span::styled(format!("  ✗ {e}"), Style::default().fg(Color::Red)),
+                Some(e) => Span::styled(
+                    fit(
+                        &format!("  ✗ {e}"),
+                        width.saturating_sub(kind.label().len() + 1 + PROMPT_MIN_SHOWN),
+                    ),
+                    Style::default().fg(Color::Red),
+                ),
                 None => Span::styled(
                     format!("  {} · Enter, Esc", kind.hint()),
                     Style::default().fg(Color::DarkGray),
@@ -364,7 +388,7 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
             };
             // a long path must not push the error off the line: the typed
             // text gives way first, keeping its end (where the cursor is)
-            let room = (area.width as usize)
+            let room = width
                 .saturating_sub(kind.label().chars().count() + 1 + tail.content.chars().count());
             let shown = elide_left(buffer, room.max(PROMPT_MIN_SHOWN));
             Line::from(vec![
@@ -374,11 +398,11 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
             ])
         }
         (_, Some(m)) => Line::from(Span::styled(
-            m.text.clone(),
+            fit(&m.text, width),
             Style::default().fg(if m.error { Color::Red } else { Color::Green }),
         )),
         _ => Line::from(Span::styled(
-            format!("{}  ·  ? help", app.path.display()),
+            fit(&format!("{}  ·  ? help", app.path.display()), width),
             Style::default().fg(Color::DarkGray),
         )),
     };
@@ -395,9 +419,57 @@ fn elide_left(text: &str, max: usize) -> String {
     if n <= max {
         return text.to_string();
     }
-    let keep = max.saturating_sub(1);
+    if max == 0 {
+        return String::new();
+    }
+    let keep = max - 1;
     let mut out = String::from("…");
     out.extend(text.chars().skip(n - keep));
+    out
+}
+
+/// Characters of a path kept when a line is made to fit.
+const PATH_MIN_SHOWN: usize = 12;
+
+/// `text` made to fit `max` characters: its path-like words (with a `/`),
+/// longest first, lose their start (the file name stays), down to
+/// [`PATH_MIN_SHOWN`] characters each; what is still too long loses its
+/// end (marked with an ellipsis). Long checkout or temp directories must
+/// not push a message's point off its line.
+pub fn fit(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_string();
+    }
+    let mut words: Vec<String> = text.split(' ').map(String::from).collect();
+    let mut over = n - max;
+    let mut paths: Vec<usize> = (0..words.len())
+        .filter(|&i| words[i].contains('/') || words[i].contains('\\'))
+        .collect();
+    paths.sort_by_key(|&i| std::cmp::Reverse(words[i].chars().count()));
+    for i in paths {
+        let len = words[i].chars().count();
+        let cut = over.min(len.saturating_sub(PATH_MIN_SHOWN));
+        if cut > 0 {
+            words[i] = elide_left(&words[i], len - cut);
+            over -= cut;
+        }
+        if over == 0 {
+            return words.join(" ");
+        }
+    }
+    elide_right(&words.join(" "), max)
+}
+
+/// `text` cut to at most `max` characters by dropping its end.
+fn elide_right(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        return text.to_string();
+    }
+    let mut out: String = text.chars().take(max.saturating_sub(1)).collect();
+    if max > 0 {
+        out.push('…');
+    }
     out
 }
 
@@ -436,9 +508,12 @@ fn draw_popup(f: &mut Frame, app: &App) {
         Mode::Recovery(_) => (
             "Recover?",
             vec![
-                Line::from(format!(
-                    "{} is newer than the document:",
-                    super::autosave::sidecar(&app.path).display()
+                Line::from(fit(
+                    &format!(
+                        "{} is newer than the document:",
+                        super::autosave::sidecar(&app.path).display()
+                    ),
+                    (f.area().width as usize).saturating_sub(4),
                 )),
                 Line::from("unsaved changes of an earlier session."),
                 Line::from("y: recover them   n: discard the autosave"),
@@ -455,7 +530,7 @@ fn draw_popup(f: &mut Frame, app: &App) {
 
 #[cfg(test)]
 mod tests {
-    use super::elide_left;
+    use super::{elide_left, fit};
 
     #[test]
     fn elide_left_keeps_the_end_within_the_width() {
@@ -463,5 +538,25 @@ mod tests {
         assert_eq!(elide_left("/a/long/path.json", 10), "…path.json");
         assert_eq!(elide_left("/a/long/path.json", 10).chars().count(), 10);
         assert_eq!(elide_left("ééééé", 2), "…é");
+        assert_eq!(elide_left("abc", 0), "");
+    }
+
+    #[test]
+    fn fit_shortens_paths_first_then_the_end() {
+        let long = format!("/{}/char.json", "d".repeat(200));
+        let t = fit(&format!("saved {long} ok"), 40);
+        assert_eq!(t.chars().count(), 40);
+        assert!(
+            t.starts_with("saved …") && t.ends_with("/char.json ok"),
+            "{t}"
+        );
+        // no path: the end goes
+        let t = fit(&"x".repeat(50), 10);
+        assert_eq!(t, format!("{}…", "x".repeat(9)));
+        assert_eq!(fit("short", 10), "short");
+        // paths keep their last characters, then the end goes
+        let t = fit(&format!("{long} {long} tail"), 20);
+        assert_eq!(t.chars().count(), 20);
+        assert!(t.starts_with('…'), "{t}");
     }
 }

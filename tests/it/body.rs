@@ -1,12 +1,12 @@
 //! The closed body of `pde6 body` (issue 15): watertight, manifold, oriented,
 //! C1 at the joins, within the error targets; bad input refused by name.
 
-use pdesculpt::mesh::Mesh;
-use pdesculpt::pde6::body_closed::{
+use pdesculpt::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, JOIN_C1_MAX, MAX_MAX_REL,
     RMS_MAX_REL,
 };
-use pdesculpt::pde6::Pde6Error;
+use pdesculpt::body::BodyError;
+use pdesculpt::mesh::Mesh;
 use pdesculpt::profile::shapes::box_mesh;
 use proptest::prelude::*;
 
@@ -64,7 +64,7 @@ proptest! {
                 let t = &b.report.topology;
                 prop_assert!(t.watertight && t.manifold && t.oriented, "{:?}: {:?}", morphs, t);
             }
-            Err(e) => prop_assert!(matches!(e, Pde6Error::LayoutNotFound { .. }) && !e.to_string().is_empty(), "{:?}: {}", morphs, e),
+            Err(e) => prop_assert!(matches!(e, BodyError::LayoutNotFound { .. }) && !e.to_string().is_empty(), "{:?}: {}", morphs, e),
         }
     }
 }

@@ -974,11 +974,15 @@ proptest! {
 }
 
 /// Issue 16, parallel narrow band: the teddy's grid is the same, bit for
-/// bit, on 1, 2 and 3 threads (tasks merged in the sequential order), and
-/// equals what `sample_group_fast` returns.
+/// bit, on 1, 2 and 3 threads (tasks merged in the sequential order) and
+/// equals what the single sequential traversal (no tasks) gives; every band
+/// node is evaluated exactly once (the walkers' count equals the count of
+/// evaluated nodes in the grid), the nodes shared between tasks among
+/// them. `sample_group_fast` returns the same grid except at the nodes near
+/// $T$, which hold the reference's value.
 #[test]
 fn narrow_band_is_identical_for_any_thread_count() {
-    use pdesculpt::conv::narrow::{sample_with_threads, FIELD_TOLERANCE};
+    use pdesculpt::conv::narrow::{sample_sequential, sample_with_threads, FIELD_TOLERANCE};
     let m = Model::from_json(include_str!("../../data/conv/teddy.json")).expect("teddy");
     let b = m.build().expect("build");
     let t = m.options.threshold;
@@ -988,8 +992,8 @@ fn narrow_band_is_identical_for_any_thread_count() {
         .expect("a surface");
     let bvh = b.group_bvh(0).expect("bvh");
     let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
-    for threads in [1, 2, 3] {
-        let (g, st) = sample_with_threads(
+    let run = |threads: usize| {
+        sample_with_threads(
             &bvh,
             t,
             FIELD_TOLERANCE * t,
@@ -997,11 +1001,60 @@ fn narrow_band_is_identical_for_any_thread_count() {
             grid.spacing,
             grid.dims,
             threads,
-        );
-        assert_eq!(st, stats, "{threads} threads");
-        assert!(g.values.iter().all(|v| v.is_finite()));
-        assert_eq!(bits(&g.values), bits(&grid.values), "{threads} threads");
+        )
+    };
+    let (one, st1) = run(1);
+    assert!(one.values.iter().all(|v| v.is_finite()));
+    for threads in [2, 3] {
+        let (g, st) = run(threads);
+        assert_eq!(st, st1, "{threads} threads");
+        assert_eq!(bits(&g.values), bits(&one.values), "{threads} threads");
     }
+    let (seq, st) = sample_sequential(
+        &bvh,
+        t,
+        FIELD_TOLERANCE * t,
+        grid.origin,
+        grid.spacing,
+        grid.dims,
+    );
+    assert_eq!(bits(&seq.values), bits(&one.values), "sequential");
+    assert_eq!(st.shared_evaluated, 0, "no tasks, nothing deferred");
+    // each band node once: with tasks, and without
+    assert_eq!(st1.evaluated, st1.exact_nodes, "{st1:?}");
+    assert_eq!(st.evaluated, st.exact_nodes, "{st:?}");
+    assert_eq!(st1.exact_nodes, st.exact_nodes);
+    assert_eq!(st1.segment_evaluations, st.segment_evaluations);
+    assert!(st1.shared_evaluated > 0, "tasks share faces: {st1:?}");
+    // sample_group_fast: the same, but the nodes near T are the reference's
+    assert_eq!(stats.evaluated, st1.evaluated);
+    let mut settled = 0;
+    for (id, (&fast, &raw)) in grid.values.iter().zip(&one.values).enumerate() {
+        if (raw - t).abs() <= FIELD_TOLERANCE * t {
+            settled += 1;
+            let d = grid.dims;
+            let (i, j, k) = (id % d[0], (id / d[0]) % d[1], id / (d[0] * d[1]));
+            let x = [0, 1, 2].map(|a| grid.origin[a] + [i, j, k][a] as f64 * grid.spacing[a]);
+            assert_eq!(fast.to_bits(), b.group_field(0, x).to_bits(), "node {id}");
+        } else {
+            assert_eq!(fast.to_bits(), raw.to_bits(), "node {id}");
+        }
+    }
+    assert_eq!(settled, stats.reference_nodes);
+}
+
+/// Issue 16, the 4-triangle difference at 160 cells: one node within
+/// 1e-6 T of T fell on the other side. Every node of the shell
+/// |F - T| <= SIDE_SHELL T is now on the reference's side (some nodes near
+/// T get the reference's value); outside the shell the error bound keeps
+/// the sides.
+#[test]
+fn teddy_sides_match_reference_at_160() {
+    use pdesculpt::conv::check_sides::{compare_sides, SIDES_RESOLUTION};
+    let m = Model::from_json(include_str!("../../data/conv/teddy.json")).expect("teddy");
+    let s = compare_sides(&m, SIDES_RESOLUTION).expect("compare");
+    assert!(s.shell > 0 && s.settled > 0, "{s:?}");
+    assert_eq!(s.differ, 0, "{s:?}");
 }
 
 /// Issue 16, per-component reuse: after one stroke of a two-group model

@@ -775,7 +775,7 @@ mod cli {
         ]);
         assert_clear_error(&out, "not reached with J <= 2");
         // a tilted plane (3 columns, varying z): fitted frame
-        let tilted = gec::check::tilted_gec().sample(50);
+        let tilted = gec::samples::tilted_gec().sample(50);
         let tf = d.join("tilted.csv");
         std::fs::write(&tf, csv(&tilted, false, 3)).unwrap();
         let v = json_out(&pdesculpt(&[

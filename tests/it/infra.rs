@@ -75,6 +75,21 @@ proptest! {
 }
 
 #[test]
+fn torus_mesh_is_the_tessellated_torus_surface() {
+    // mesh::samples builds its torus without the surface layer above it;
+    // the parametric surface sample must stay the same torus, bit for bit.
+    use pdesculpt::mesh::samples::{torus_mesh, TORUS_RADII};
+    use pdesculpt::surface::{samples::Torus, tessellate, Tessellation};
+    for n in [3, 12, 24] {
+        let (big, small) = TORUS_RADII;
+        let s = tessellate(&Torus { big, small }, Tessellation { nu: 2 * n, nv: n });
+        let m = torus_mesh(n);
+        assert_eq!(m.positions, s.positions, "n = {n}");
+        assert_eq!(m.triangles, s.triangles, "n = {n}");
+    }
+}
+
+#[test]
 fn malformed_obj_names_the_line() {
     let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
     match parse_obj(text, "bad.obj") {
@@ -312,7 +327,7 @@ fn demo_pipeline_measures_each_step() {
     );
     let r = &d.report.reconstruction;
     assert!(
-        r.recon_to_skin_rms_rel < pdesculpt::pde6::body_closed::RMS_MAX_REL,
+        r.recon_to_skin_rms_rel < pdesculpt::body::closed::RMS_MAX_REL,
         "reconstruction RMS {}",
         r.recon_to_skin_rms_rel
     );

@@ -1,7 +1,10 @@
 //! The import graph has no arrow from a lower layer to a higher one
 //! (issue 19): the ground (`vec3`, `check`, `jet`, `mesh`, `surface`) names
 //! no equation family, no character module and no CLI; `vec3` names nothing
-//! of the crate at all. Doc comments may link anywhere.
+//! of the crate at all; an equation family (`pde4`, `pde6`, `ode6`, `plate`,
+//! `conv`, `profile`) names no other family and nothing of the modeling layer
+//! above it (the whole-body reconstruction lives in `body`, not in `pde6`).
+//! Doc comments may link anywhere.
 
 use std::path::{Path, PathBuf};
 
@@ -16,6 +19,8 @@ const UPPER: &[&str] = &[
     "profile",
     "sketch",
     "template",
+    "sasm",
+    "body",
     "character",
     "tui",
     "render",
@@ -79,6 +84,43 @@ fn arrows_in(files: &[PathBuf], modules: &[&str]) -> Vec<String> {
 fn ground_names_no_upper_module() {
     let bad = arrows(&["vec3.rs", "check", "jet", "mesh", "surface"], UPPER);
     assert!(bad.is_empty(), "upward imports:\n{}", bad.join("\n"));
+}
+
+/// The equation families: each sits beside the others, below modeling.
+const FAMILIES: &[&str] = &["pde4", "pde6", "ode6", "plate", "conv", "profile"];
+
+#[test]
+fn families_name_no_modeling_module_nor_each_other() {
+    let above = [
+        "sketch",
+        "template",
+        "sasm",
+        "body",
+        "character",
+        "makehuman",
+        "render",
+        "tui",
+        "verify",
+        "cli",
+    ];
+    let mut bad = Vec::new();
+    for f in FAMILIES {
+        let mut named: Vec<&str> = above.to_vec();
+        named.extend(FAMILIES.iter().filter(|g| *g != f));
+        bad.extend(arrows(&[f], &named));
+    }
+    assert!(
+        bad.is_empty(),
+        "upward or sideways imports:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn mesh_is_below_surface() {
+    // surface tessellates into meshes; mesh never names surface back.
+    let bad = arrows(&["mesh"], &["surface"]);
+    assert!(bad.is_empty(), "mesh imports surface:\n{}", bad.join("\n"));
 }
 
 #[test]

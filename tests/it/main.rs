@@ -30,3 +30,4 @@ mod template_tbsm;
 mod tui;
 mod tui_commands;
 mod tui_e2e;
+mod tui_history;

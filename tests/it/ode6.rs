@@ -3,12 +3,21 @@
 use pdesculpt::check::tol;
 use pdesculpt::jet::Jet;
 use pdesculpt::ode6::basis::{solve_line, RCOND_MIN};
-use pdesculpt::ode6::check::test_curve;
+use pdesculpt::ode6::samples::test_curve;
 use pdesculpt::ode6::{
     Approach2, Basis, BoundaryCurves, Curve, DiffFormula, Force, Ode6Error, Ode6Surface, Params,
 };
-use pdesculpt::surface::{tessellate, Surface, Tessellation};
+use pdesculpt::surface::{tessellate, Joined, Surface, Tessellation};
 use proptest::prelude::*;
+
+/// Boundary rows sum basis coefficients as large as `amp` (the basis'
+/// largest), which cancel: the boundary tolerance grows with `amp` once
+/// `amp` passes `1 / BOUNDARY_PER_AMP` (below that, the SOLVE level).
+const BOUNDARY_PER_AMP: f64 = 1e-3;
+/// Fig 6b: different parameters on the two sides of a v-join leave a jump
+/// in S_vv below a broken curve's (`tol::DETECTED`) but three orders above
+/// the rounding of a join (`tol::JOIN`).
+const PARAM_MISMATCH_SEEN: f64 = 1e-4;
 
 /// Every ode6 check passes.
 #[test]
@@ -209,32 +218,31 @@ fn cli_surface_writes_mesh() {
     )
     .unwrap();
     let out_mesh = dir.join("s.obj");
-    let st = crate::cli::pdesculpt(&[
-        "ode6",
-        "surface",
-        spec.to_str().unwrap(),
-        "-o",
-        out_mesh.to_str().unwrap(),
-        "--nu",
-        "8",
-        "--nv",
-        "12",
-    ])
-    .status;
+    let st = ode6_surface(&spec, &out_mesh, &["--nu", "8", "--nv", "12"]).status;
     assert!(st.success());
     let m = pdesculpt::mesh::io::read(&out_mesh).unwrap();
     assert_eq!(m.positions.len(), (8 + 1) * 12);
     std::fs::write(&spec, r#"{"params": {"rho": 1, "eta": 3}}"#).unwrap();
-    let st = crate::cli::pdesculpt(&[
+    let st = ode6_surface(&spec, &out_mesh, &[]).status;
+    assert_eq!(st.code(), Some(1));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Runs `pdesculpt ode6 surface SPEC -o OUT EXTRA...`.
+fn ode6_surface(
+    spec: &std::path::Path,
+    out: &std::path::Path,
+    extra: &[&str],
+) -> std::process::Output {
+    let mut args = vec![
         "ode6",
         "surface",
         spec.to_str().unwrap(),
         "-o",
-        out_mesh.to_str().unwrap(),
-    ])
-    .status;
-    assert_eq!(st.code(), Some(1));
-    let _ = std::fs::remove_dir_all(&dir);
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    crate::cli::pdesculpt(&args)
 }
 
 /// A shape parameter: zero, or +- 10^e with e in [-3, 3].
@@ -257,7 +265,7 @@ proptest! {
             Ok(b) => {
                 prop_assert!(b.rcond >= RCOND_MIN);
                 let amp = b.coef_magnitude();
-                prop_assert!(b.boundary_error() <= tol::scaled(tol::SOLVE, amp * 1e-3) * 10.0, "{p:?} {} boundary {:e} amp {:e}", b.case.name(), b.boundary_error(), amp);
+                prop_assert!(b.boundary_error() <= tol::scaled(tol::SOLVE, amp * BOUNDARY_PER_AMP) * 10.0, "{p:?} {} boundary {:e} amp {:e}", b.case.name(), b.boundary_error(), amp);
                 prop_assert!(b.residual_error(6) <= tol::SOLVE * 10.0, "{p:?} {} residual {:e}", b.case.name(), b.residual_error(6));
                 for i in 0..=8 {
                     prop_assert!(b.g(i as f64 / 8.0).iter().all(|x| x.is_finite()));
@@ -271,7 +279,7 @@ proptest! {
         if rho == 0.0 && !(eta == 0.0 && lambda == 0.0) {
             let b = Basis::reduced(p);
             if let Ok(b) = b {
-                prop_assert!(b.boundary_error() <= tol::scaled(tol::SOLVE, b.coef_magnitude() * 1e-3) * 10.0);
+                prop_assert!(b.boundary_error() <= tol::scaled(tol::SOLVE, b.coef_magnitude() * BOUNDARY_PER_AMP) * 10.0);
             }
         }
     }
@@ -318,7 +326,7 @@ fn mismatched_case_is_refused() {
 /// second derivative at v = 0 and v = 1 (jets).
 #[test]
 fn hermite_segment_meets_end_data() {
-    let knots = pdesculpt::ode6::check::grid_knots();
+    let knots = pdesculpt::ode6::samples::grid_knots();
     let (a, b) = (knots[1][2][0], knots[1][2][1]);
     let c = Curve::hermite(a, b).unwrap();
     for (v, want) in [(0.0, a), (1.0, b)] {
@@ -347,11 +355,12 @@ fn hermite_segment_meets_end_data() {
 /// perturbed on one side), and on a grid whose curves are all zero.
 #[test]
 fn grid_continuity_check_can_fail() {
-    use pdesculpt::ode6::check::{grid_3x2, GRID_MAGNITUDE_FLOOR};
-    let measure = |g: &pdesculpt::ode6::Grid| g.jumps(16).relative(GRID_MAGNITUDE_FLOOR);
+    use pdesculpt::ode6::check::GRID_MAGNITUDE_FLOOR;
+    use pdesculpt::ode6::samples::grid_3x2;
+    let measure = |g: &pdesculpt::ode6::Grid| g.join_jumps(16).relative(GRID_MAGNITUDE_FLOOR);
     let good = grid_3x2().unwrap();
-    assert!(measure(&good) < tol::SOLVE, "{:?}", good.jumps(16));
-    let j = good.jumps(16);
+    assert!(measure(&good) < tol::SOLVE, "{:?}", good.join_jumps(16));
+    let j = good.join_jumps(16);
     assert!(j
         .u_magnitude
         .iter()
@@ -365,15 +374,15 @@ fn grid_continuity_check_can_fail() {
     } else {
         panic!("grid curves are Hermite segments");
     }
-    let jb = g.jumps(16);
+    let jb = g.join_jumps(16);
     assert!(measure(&g) > tol::DETECTED, "{jb:?}");
     assert!(jb.v[2] > tol::DETECTED && jb.v[0] < tol::SOLVE && jb.v[1] < tol::SOLVE);
 
     // (2) Fig 6b: different parameters on the two sides of a v-join.
     let mut g = good.clone();
     g.patches[2][1].basis = Basis::new(Params::new(0.1, 0.1, 3.0)).unwrap();
-    let jb = g.jumps(16);
-    assert!(jb.v[0] > 1e-4, "{jb:?}");
+    let jb = g.join_jumps(16);
+    assert!(jb.v[0] > PARAM_MISMATCH_SEEN, "{jb:?}");
     assert!(measure(&g) > tol::DETECTED);
 
     // (3) u-join: the S_uu curve (c6) of patch (0, 0) at the join with (1, 0).
@@ -381,7 +390,7 @@ fn grid_continuity_check_can_fail() {
     if let Curve::Hermite { ends } = &mut g.patches[0][0].curves.keys[5] {
         ends[1][0][2] += 0.3;
     }
-    let jb = g.jumps(16);
+    let jb = g.join_jumps(16);
     assert!(jb.u[2] > tol::DETECTED && jb.u[0] < tol::SOLVE, "{jb:?}");
     assert!(measure(&g) > tol::DETECTED);
 
@@ -401,7 +410,8 @@ fn grid_continuity_check_can_fail() {
 /// itself, for closed tilted curves; non-finite GECs are refused.
 #[test]
 fn gec_boundary_curves() {
-    use pdesculpt::ode6::check::{gec_boundary_error, test_gecs};
+    use pdesculpt::ode6::check::gec_boundary_error;
+    use pdesculpt::ode6::samples::test_gecs;
     for p in [Params::new(1.0, 3.0, 1.0), Params::new(1.0, -20.0, 50.0)] {
         let e = gec_boundary_error(p, [1.5, -2.0, 0.5, 4.0]).unwrap();
         assert!(e < tol::SOLVE, "{p:?}: {e:e}");
@@ -420,7 +430,7 @@ fn gec_boundary_curves() {
 fn cli_gec_spec_and_singular_error() {
     let dir = std::env::temp_dir().join(format!("ode6_cli_gec_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let (ga, gb) = pdesculpt::ode6::check::test_gecs();
+    let (ga, gb) = pdesculpt::ode6::samples::test_gecs();
     let spec = |params: serde_json::Value| {
         serde_json::json!({"params": params,
             "curves": {"approach1": {"c1": {"gec": ga}, "c4": {"gec": gb}, "w": [1, 0, -1, 0]}}})
@@ -432,18 +442,7 @@ fn cli_gec_spec_and_singular_error() {
         spec(serde_json::json!({"rho": 1, "eta": 3, "lambda": 1})).to_string(),
     )
     .unwrap();
-    let st = crate::cli::pdesculpt(&[
-        "ode6",
-        "surface",
-        path.to_str().unwrap(),
-        "-o",
-        out_mesh.to_str().unwrap(),
-        "--nu",
-        "4",
-        "--nv",
-        "16",
-    ])
-    .status;
+    let st = ode6_surface(&path, &out_mesh, &["--nu", "4", "--nv", "16"]).status;
     assert!(st.success());
     let m = pdesculpt::mesh::io::read(&out_mesh).unwrap();
     let p0 = ga.eval_v(0.0);
@@ -456,14 +455,7 @@ fn cli_gec_spec_and_singular_error() {
     let hs = serde_json::json!({"params": {"rho": 1, "eta": 1, "lambda": 3},
         "curves": {"approach1": {"c1": h, "c4": h, "w": [0, 0, 0, 0]}}});
     std::fs::write(&path, hs.to_string()).unwrap();
-    let st = crate::cli::pdesculpt(&[
-        "ode6",
-        "surface",
-        path.to_str().unwrap(),
-        "-o",
-        out_mesh.to_str().unwrap(),
-    ])
-    .status;
+    let st = ode6_surface(&path, &out_mesh, &[]).status;
     assert!(st.success());
     // The singular parameter set of the golden file.
     let golden: serde_json::Value = serde_json::from_str(pdesculpt::ode6::check::GOLDEN).unwrap();
@@ -475,13 +467,7 @@ fn cli_gec_spec_and_singular_error() {
     )
     .unwrap();
     let bad_mesh = dir.join("bad.obj");
-    let out = crate::cli::pdesculpt(&[
-        "ode6",
-        "surface",
-        path.to_str().unwrap(),
-        "-o",
-        bad_mesh.to_str().unwrap(),
-    ]);
+    let out = ode6_surface(&path, &bad_mesh, &[]);
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("singular boundary system"), "{err}");
@@ -511,7 +497,7 @@ proptest! {
             Err(Ode6Error::Singular { case, .. }) => { prop_assert!(!case.is_empty()); return Ok(()); }
             Err(e) => return Err(TestCaseError::fail(format!("{e}"))),
         };
-        let mut knots = pdesculpt::ode6::check::grid_knots();
+        let mut knots = pdesculpt::ode6::samples::grid_knots();
         for (s, sec) in knots.iter_mut().enumerate() {
             for (k, curve) in sec.iter_mut().enumerate() {
                 for (t, knot) in curve.iter_mut().enumerate() {
@@ -521,7 +507,7 @@ proptest! {
             }
         }
         let g = pdesculpt::ode6::Grid::from_knots(&knots, bases).unwrap();
-        let j = g.jumps(6);
+        let j = g.join_jumps(6);
         for d in 0..3 {
             prop_assert!(j.u[d] <= tol::JOIN * j.u_magnitude[d].max(1.0), "{ps:?} {j:?}");
             prop_assert!(j.v[d] <= tol::JOIN * j.v_magnitude[d].max(1.0), "{ps:?} {j:?}");

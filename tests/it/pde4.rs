@@ -2,10 +2,10 @@
 
 use pdesculpt::check::tol;
 use pdesculpt::pde4::check::{
-    checks, plate_centre, rel, sample_boundary, sample_forces, two_sided_boundary,
-    two_sided_residual, PLATE_SQUARE_UNIFORM_PRECISE,
+    checks, plate_centre, rel, two_sided_boundary, two_sided_residual, PLATE_SQUARE_UNIFORM_PRECISE,
 };
 use pdesculpt::pde4::four_sided::{self, FourSided};
+use pdesculpt::pde4::samples::{sample_boundary, sample_forces};
 use pdesculpt::pde4::two_sided::{self, TwoSided};
 use pdesculpt::pde4::{Force, ForceKind, Pde4Error, ShapeParams};
 use pdesculpt::surface::Surface;
@@ -444,8 +444,9 @@ fn cli_eval_matches_library_and_rejects_bad_specs() {
 
 #[test]
 fn galerkin_convergence_order_sine_load_vs_fd_reference() {
-    use pdesculpt::pde4::check::{FD_GRID, SINE_LOAD};
+    use pdesculpt::pde4::check::FD_GRID;
     use pdesculpt::pde4::fd::{fd_centre, fd_centre_extrapolated};
+    use pdesculpt::pde4::samples::SINE_LOAD;
     use std::f64::consts::PI;
     let sine = |u: f64, v: f64| (PI * u).sin() * (PI * v).sin();
     // the FD reference is second order: successive differences shrink by 4

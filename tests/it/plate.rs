@@ -13,6 +13,14 @@ use proptest::prelude::*;
 
 /// Accepted band of the observed convergence order (expected 2).
 const ORDER_BAND: (f64, f64) = (1.75, 2.25);
+/// The peak weight sits at the mesh vertex nearest the region's centre, not
+/// at the centre: on the 20x20 sheet it reaches this fraction of the
+/// closed-form centre value `s d / (64 D)` at least.
+const SHEET_PEAK_FRACTION: f64 = 0.9;
+/// The same on the coarse body mesh, whose region is a few rings wide.
+const BODY_PEAK_FRACTION: f64 = 0.5;
+/// A force this small counts as zero for the relative residual of eq 3.
+const FORCE_FLOOR: f64 = 1e-12;
 
 fn top() -> RegionOptions {
     RegionOptions {
@@ -85,7 +93,7 @@ fn plate_deformer_moves_only_the_interior_and_is_linear_in_the_force() {
     let peak = p.weights().iter().fold(0.0f64, |m, w| m.max(*w));
     let bound = 1.0 / (64.0 * p.rigidity());
     assert!(peak <= bound * (1.0 + tol::ROUNDING));
-    assert!(peak > 0.9 * bound);
+    assert!(peak > SHEET_PEAK_FRACTION * bound);
 }
 
 #[test]
@@ -367,7 +375,7 @@ fn plate_on_the_makehuman_belly() {
     let peak = disp.iter().fold(0.0f64, |a, b| a.max(*b));
     let bound = s / (64.0 * p.rigidity());
     assert!(
-        peak <= bound * (1.0 + tol::ROUNDING) && peak > 0.5 * bound,
+        peak <= bound * (1.0 + tol::ROUNDING) && peak > BODY_PEAK_FRACTION * bound,
         "{peak} vs {bound}"
     );
     for &i in &p.boundary().loop_indices {
@@ -578,7 +586,7 @@ proptest! {
         prop_assert!(d.is_finite() && d > 0.0);
         let w = disk_solution(q, d, Jet4x4::var_u(r * th.cos()), Jet4x4::var_v(r * th.sin()));
         let bl = w.deriv(4, 0) + 2.0 * w.deriv(2, 2) + w.deriv(0, 4);
-        prop_assert!((d * bl - q).abs() <= tol::SOLVE * q.abs().max(1e-12), "residual {}", d * bl - q);
+        prop_assert!((d * bl - q).abs() <= tol::SOLVE * q.abs().max(FORCE_FLOOR), "residual {}", d * bl - q);
         let wb = disk_solution(q, d, Jet4x4::var_u(tb.cos()), Jet4x4::var_v(tb.sin()));
         let scale = (q / d).abs().max(1e-300);
         for v in [wb.value(), wb.deriv(1, 0), wb.deriv(0, 1)] {

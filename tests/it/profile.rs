@@ -258,6 +258,10 @@ const CIRCLE_SVG: &str = r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0
   <polyline id="cut1" points="80,200 120,200" stroke="red"/>
 </svg>"#;
 
+/// Top view: svg y is model z unflipped, so the circle (svg y in 180..=220)
+/// stays above this; a flipped axis would put it at -220..=-180.
+const TOP_VIEW_Z_FLOOR: f64 = 150.0;
+
 #[test]
 fn svg_applies_transforms_flattens_curves_and_reads_cuts() {
     let tol_model = 1e-3;
@@ -286,7 +290,7 @@ fn svg_applies_transforms_flattens_curves_and_reads_cuts() {
     assert_eq!(s.cuts[0].points, vec![[80.0, -200.0], [120.0, -200.0]]);
     // top view: svg y is model z, unflipped
     let t = parse_svg(CIRCLE_SVG, View::Top, tol_model).expect("valid");
-    assert!(t.outline.points().iter().all(|p| p[1] > 150.0));
+    assert!(t.outline.points().iter().all(|p| p[1] > TOP_VIEW_Z_FLOOR));
 }
 
 #[test]

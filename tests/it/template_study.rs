@@ -16,6 +16,12 @@ fn study_table() {
     if std::env::var("STUDY_ARCLENGTH").is_ok() {
         opts.section_match = pdesculpt::template::sections::SectionMatch::ArcLength;
     }
+    if let Some(n) = std::env::var("STUDY_ENVELOPE")
+        .ok()
+        .and_then(|v| v.parse().ok())
+    {
+        opts.envelope_passes = n;
+    }
     if std::env::var("STUDY_NOBAND").is_ok() {
         opts.band_anchors = 0;
     }
@@ -68,6 +74,9 @@ fn one_case(case: &pdesculpt::template::study::Case, opts: &FitOptions) {
         if std::env::var("STUDY_BANDS").is_ok() {
             bands(case, &meshes);
         }
+        if std::env::var("STUDY_WHERE").is_ok() {
+            side_where(case, opts, &meshes);
+        }
         for r in rows {
             let prof: Vec<String> = r
                 .profiles
@@ -75,12 +84,14 @@ fn one_case(case: &pdesculpt::template::study::Case, opts: &FitOptions) {
                 .map(|p| format!("{} {:.2}", p.view.name(), 100.0 * p.distance.max_rel))
                 .collect();
             println!(
-                "STUDY {:18} {:6} rms {:.2} max {:.2} | {} | {:.2} s",
+                "STUDY {:18} {:6} rms {:.2} max {:.2} | {} | crease belly {:.2} face {:.2} rad | {:.2} s",
                 r.case,
                 r.method,
                 100.0 * r.rms_rel,
                 100.0 * r.max_rel,
                 prof.join(", "),
+                r.creases[0],
+                r.creases[1],
                 r.seconds
             );
         }
@@ -150,6 +161,79 @@ fn template_checks_pass() {
             c.passed,
             "{} measured {} tol {}: {}",
             c.name, c.measured, c.tolerance, c.note
+        );
+    }
+}
+
+/// Diagnostic (`STUDY_WHERE=1`): per level, where the side profile's
+/// largest miss sits (height fraction, depth) and which part of the body
+/// (arm or trunk, by the fit's arm mask) forms the fitted outline there.
+fn side_where(
+    case: &pdesculpt::template::study::Case,
+    opts: &FitOptions,
+    meshes: &[Vec<[f64; 3]>],
+) {
+    use pdesculpt::profile::{Profile, ProfileIndex, View};
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::study::{makehuman_template, sketch_of};
+    let template = makehuman_template(case.template).unwrap();
+    let ts: Vec<_> = case
+        .target
+        .iter()
+        .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
+        .collect();
+    let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+    let sketch = sketch_of(&target).unwrap();
+    let side = Profile::new(View::Side, sketch.side.clone().unwrap()).unwrap();
+    let (lo, hi) = side
+        .points()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+            (l.min(p[1]), h.max(p[1]))
+        });
+    let h = hi - lo;
+    for (k, m) in meshes.iter().enumerate().skip(1) {
+        let skin = template.skin_at(m);
+        let fitted = Profile::new(View::Side, mesh_outline(&skin, View::Side).unwrap()).unwrap();
+        let arms = pdesculpt::template::refine::arm_mask(&template, m, opts, &mesh_outline);
+        let (is, if_) = (ProfileIndex::new(&side), ProfileIndex::new(&fitted));
+        let mut worst = (0.0, [0.0; 2], "");
+        for q in fitted.resample_arclength(4000) {
+            let d = is.distance(q);
+            if d > worst.0 {
+                worst = (d, q, "fitted");
+            }
+        }
+        for q in side.resample_arclength(4000) {
+            let d = if_.distance(q);
+            if d > worst.0 {
+                worst = (d, q, "sketch");
+            }
+        }
+        let q = worst.1;
+        let near = skin
+            .positions
+            .iter()
+            .enumerate()
+            .min_by(|a, b| {
+                let da = (a.1[2] - q[0]).powi(2) + (a.1[1] - q[1]).powi(2);
+                let db = (b.1[2] - q[0]).powi(2) + (b.1[1] - q[1]).powi(2);
+                da.total_cmp(&db)
+            })
+            .map(|(i, _)| i)
+            .unwrap();
+        let part = match &arms {
+            Some(a) if a[template.skin_index[near] as usize] => "arm",
+            Some(_) => "trunk",
+            None => "?",
+        };
+        println!(
+            "WHERE {} level {k}: side miss {:.2} % at height {:.3}, z {:.3} ({} point; nearest fitted vertex: {part})",
+            case.name,
+            100.0 * worst.0 / h,
+            (q[1] - lo) / h,
+            q[0],
+            worst.2
         );
     }
 }

@@ -240,8 +240,27 @@ mod cli_tests {
             &replace(&["--part", "torso", "--template-sections", "1"]),
             "--template-sections",
         );
+        // --e1 is a mesh template's: makehuman-foot refuses it (it used to
+        // be ignored silently)
+        assert_clear_error(
+            &replace(&["--part", "torso", "--e1", "0,0,1"]),
+            "--e1 is for a mesh template",
+        );
         let obj = d.join("cube.obj");
         std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+        assert_clear_error(
+            &replace(&[
+                "--part",
+                "torso",
+                "--template",
+                obj.to_str().unwrap(),
+                "--axis",
+                "0,0,0,0,1,0",
+                "--e1",
+                "NaN,0,0",
+            ]),
+            "finite",
+        );
         assert_clear_error(
             &replace(&["--part", "torso", "--template", obj.to_str().unwrap()]),
             "--axis",

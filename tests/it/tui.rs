@@ -5,7 +5,7 @@
 
 use crate::cli::tmpdir;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use pdesculpt::character::doc::CharacterDoc;
+use pdesculpt::character::doc::{CharacterDoc, ProfileInput};
 use pdesculpt::sketch::Resolution;
 use pdesculpt::tui::app::{App, Effect, Focus, Mode};
 use pdesculpt::tui::autosave;
@@ -314,4 +314,108 @@ fn tui_export_path_is_checked_before_any_work() {
         "{:?}",
         app.message
     );
+}
+
+/// A directory whose path is far longer than a screen line (CI checks out
+/// in a longer directory than a developer does: no line may depend on it).
+pub(crate) fn deep_dir(name: &str) -> PathBuf {
+    let mut d = tmpdir(&format!("tui-{name}"));
+    for i in 0..8 {
+        d = d.join(format!("a_rather_long_directory_name_number_{i}"));
+    }
+    std::fs::create_dir_all(&d).expect("creates");
+    assert!(d.display().to_string().chars().count() > 300);
+    d
+}
+
+/// The screen's last line (the message line).
+fn message_line(app: &App) -> String {
+    screen(app).lines().last().unwrap_or_default().to_string()
+}
+
+#[test]
+fn tui_every_line_keeps_its_point_under_a_long_path() {
+    let dir = deep_dir("deep");
+    let o = Options {
+        path: dir.join("char.json"),
+        bundled: "female".into(),
+        preview: RES,
+    };
+    let mut app = open(&o).expect("opens");
+    settle(&mut app, vec![Effect::Rebuild]);
+    // the idle line: the document's name and the help key
+    app.message = None;
+    let m = message_line(&app);
+    assert!(m.contains("char.json") && m.contains("? help"), "{m}");
+    // saved: the file name stays
+    key(&mut app, KeyCode::Char('s'));
+    let m = message_line(&app);
+    assert!(
+        m.starts_with("saved …") && m.trim_end().ends_with("/char.json"),
+        "{m}"
+    );
+    // the export prompt: the end of the typed path and the hint
+    key(&mut app, KeyCode::Char('e'));
+    let m = message_line(&app);
+    assert!(m.contains("char.glb▏") && m.contains("Enter, Esc)"), "{m}");
+    key(&mut app, KeyCode::Esc);
+    // an export's outcome: where to and how long
+    let gen = app.start_job(true);
+    app.on_outcome(Outcome::Exported {
+        gen,
+        result: Ok(dir.join("char.glb")),
+        elapsed: Duration::from_millis(42),
+    });
+    let m = message_line(&app);
+    assert!(m.contains("/char.glb in 42 ms"), "{m}");
+    // an input profile given by a long path: the panel keeps its lines
+    let side = app.doc.inputs.side.clone();
+    app.doc.inputs.side = Some(ProfileInput::Path(
+        dir.join("side.svg").display().to_string(),
+    ));
+    let s = screen(&app);
+    assert!(s.contains("side.svg"), "{s}");
+    for l in ["level    final", "sections torso", "template none"] {
+        assert!(s.contains(l), "{l} pushed out of the inputs panel:\n{s}");
+    }
+    app.doc.inputs.side = side;
+    // a prop whose model is outside the document's directory (absolute)
+    let models = deep_dir("deep-models");
+    let blob = models.join("ball.json");
+    std::fs::copy(
+        format!("{}/data/conv/blob.json", env!("CARGO_MANIFEST_DIR")),
+        &blob,
+    )
+    .expect("copies");
+    key(&mut app, KeyCode::Char('p'));
+    typed(
+        &mut app,
+        &format!("{} ball 0.1 0.5 1.0 0.3", blob.display()),
+    );
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.mode, Mode::Normal, "{:?}", app.message);
+    let m = message_line(&app);
+    assert!(
+        m.starts_with("attached prop 'ball'") && m.contains("ball.json"),
+        "{m}"
+    );
+    app.tree_sel = app
+        .tree()
+        .iter()
+        .position(|t| t.name == "ball")
+        .expect("in the tree");
+    let s = screen(&app);
+    assert!(s.contains("Parameters: ball"), "{s}");
+    let row = s
+        .lines()
+        .find(|l| l.contains("model     "))
+        .expect("model row");
+    assert!(row.contains("/ball.json"), "{row}");
+    // the recovery question names the sidecar and still asks
+    let again = open(&o).expect("opens");
+    assert!(matches!(again.mode, Mode::Recovery(_)));
+    let s = screen(&again);
+    for l in ["is newer than the document:", "y: recover them"] {
+        assert!(s.contains(l), "{l}:\n{s}");
+    }
 }

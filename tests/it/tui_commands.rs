@@ -40,7 +40,7 @@ pub(crate) fn tail_svg(dir: &Path) -> PathBuf {
 }
 
 /// Opens the prompt with key `k`, types `text`, presses Enter.
-fn command(app: &mut App, k: char, text: &str) {
+pub(crate) fn command(app: &mut App, k: char, text: &str) {
     key(app, KeyCode::Char(k));
     assert!(matches!(app.mode, Mode::Prompt { .. }), "{:?}", app.mode);
     typed(app, text);
@@ -466,4 +466,51 @@ fn tui_cancelled_build_stops_between_parts_and_leaves_the_document() {
     assert!(!out.exists(), "a cancelled export wrote its file");
     assert_eq!(app.doc, before);
     assert!(screen(&app).contains("cancelled the running job"));
+}
+
+/// How long a cancel takes after Esc, in steps: the build asks before it
+/// starts, before each part's solve and each prop, and after the model is
+/// built. Raised before question `k`, it stops at question `k` with every
+/// part before it solved and none after: between two questions lies at
+/// most one part's solve, or (after the last part) the transitions and the
+/// mesh assembly, which are not interruptible.
+#[test]
+fn tui_cancel_stops_at_the_next_question_at_most_one_part_solve_later() {
+    use pdesculpt::sketch::build::PartCache;
+    use std::cell::Cell;
+    let app = built("cmd-cancel-steps");
+    let n = app.doc.parts.len();
+    assert!(app.doc.props.is_empty());
+    let j = Job {
+        gen: 1,
+        doc: app.doc.clone(),
+        base: app.base.clone(),
+        res: super::tui::RES,
+        task: Task::Rebuild,
+    };
+    // questions: 1 before the build, 2..=n+1 before each part, n+2 after
+    for k in 1..=n + 2 {
+        let asked = Cell::new(0);
+        let mut cache = PartCache::default();
+        let r = worker::build_cancellable(&j, Some(&mut cache), &|| {
+            asked.set(asked.get() + 1);
+            asked.get() >= k
+        });
+        assert_eq!(r.err().as_deref(), Some(worker::CANCELLED), "k = {k}");
+        assert_eq!(
+            asked.get(),
+            k,
+            "stopped at the first question after the cancel"
+        );
+        assert_eq!(cache.solved, k.saturating_sub(2).min(n), "k = {k}");
+    }
+    // not cancelled: n + 2 questions, every part solved once
+    let asked = Cell::new(0);
+    let mut cache = PartCache::default();
+    let r = worker::build_cancellable(&j, Some(&mut cache), &|| {
+        asked.set(asked.get() + 1);
+        false
+    });
+    assert!(r.is_ok(), "{:?}", r.err());
+    assert_eq!((asked.get(), cache.solved), (n + 2, n));
 }

@@ -6,8 +6,8 @@
 //! and the distances to the skin of every variant.
 
 use crate::common::Ctx;
+use pdesculpt::body::parts::{legacy_options, makehuman_parts, reconstruct, BodyOptions, BODY_A};
 use pdesculpt::curve::gec::fit::Param;
-use pdesculpt::pde6::body::{legacy_options, makehuman_parts, reconstruct, BodyOptions, BODY_A};
 use pdesculpt::pde6::sampling::Sampling;
 use pdesculpt::render::{render_with_camera, Camera, Image, RenderOptions, View};
 

@@ -23,7 +23,7 @@ pub struct Args {
     max_terms: usize,
     /// How points get their angle: uniform (index), chord (length),
     /// centripetal, polar (angle about the centroid; star-shaped only).
-    #[arg(long, default_value = "chord")]
+    #[arg(long, default_value = FitRequest::default().param.name())]
     param: String,
     /// Angle (radians) given to the first point by uniform, chord and
     /// centripetal (default: its polar angle about the area centroid).

@@ -42,15 +42,10 @@ pub struct PartSource {
     /// Axis of a mesh template: `X0,Y0,Z0,X1,Y1,Z1` (start to end).
     #[arg(long, value_delimiter = ',', num_args = 6, allow_hyphen_values = true)]
     pub axis: Option<Vec<f64>>,
-    /// Direction of the sections' first axis for a mesh template: `X,Y,Z`.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        num_args = 3,
-        default_value = "1,0,0",
-        allow_hyphen_values = true
-    )]
-    pub e1: Vec<f64>,
+    /// Direction of the sections' first axis for a mesh template: `X,Y,Z`
+    /// (default 1,0,0; makehuman-foot has its own frame and refuses it).
+    #[arg(long, value_delimiter = ',', num_args = 3, allow_hyphen_values = true)]
+    pub e1: Option<Vec<f64>>,
     /// Template sections (2 to 64).
     #[arg(long, default_value_t = 6)]
     pub template_sections: usize,
@@ -99,6 +94,9 @@ fn template_part(s: &PartSource) -> anyhow::Result<(TemplatePart, Mesh)> {
         if s.axis.is_some() {
             bail!("--axis is for a mesh template, not makehuman-foot");
         }
+        if s.e1.is_some() {
+            bail!("--e1 is for a mesh template, not makehuman-foot (its sections' frame is the foot's own)");
+        }
         return Ok(makehuman_foot_part(s.template_sections)?);
     }
     let mesh = io::read(std::path::Path::new(&s.template))
@@ -106,14 +104,15 @@ fn template_part(s: &PartSource) -> anyhow::Result<(TemplatePart, Mesh)> {
     let Some(a) = &s.axis else {
         bail!("a mesh template needs --axis X0,Y0,Z0,X1,Y1,Z1");
     };
-    if a.iter().chain(&s.e1).any(|v| !v.is_finite()) {
+    let e1 = s.e1.clone().unwrap_or_else(|| vec![1.0, 0.0, 0.0]);
+    if a.iter().chain(&e1).any(|v| !v.is_finite()) {
         bail!("--axis and --e1 must be finite numbers");
     }
     let part = TemplatePart::from_mesh(
         &mesh,
         [a[0], a[1], a[2]],
         [a[3], a[4], a[5]],
-        [s.e1[0], s.e1[1], s.e1[2]],
+        [e1[0], e1[1], e1[2]],
         (0.05, 0.95, s.template_sections),
     )?;
     Ok((part, mesh))

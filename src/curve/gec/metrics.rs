@@ -125,14 +125,8 @@ pub fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// Bounding-box diagonal of in-plane points.
 pub fn diagonal(points: &[[f64; 2]]) -> f64 {
-    let mut lo = [f64::INFINITY; 2];
-    let mut hi = [f64::NEG_INFINITY; 2];
-    for p in points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) =
+        crate::vec3::bounds(points).unwrap_or(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]));
     (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 

@@ -6,6 +6,7 @@
 use super::fit::FrameChoice;
 use super::{Frame, GecError};
 use crate::mesh::{dist, norm};
+use crate::vec3::bounds;
 
 /// Two points closer than this times the polyline's diameter are "repeated".
 pub const REPEAT_TOL: f64 = 1e-12;
@@ -22,14 +23,7 @@ pub struct Section {
 }
 
 fn diameter(points: &[[f64; 3]]) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for p in points {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) = bounds(points).unwrap_or(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]));
     dist(lo, hi)
 }
 
@@ -51,16 +45,9 @@ pub fn check_scale(points: &[[f64; 3]]) -> Result<(), GecError> {
         });
     }
     let big = points.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    let mut d = [0.0f64; 3];
-    for k in 0..3 {
-        let (a, b) = points
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                (a.min(p[k]), b.max(p[k]))
-            });
-        d[k] = b - a;
-    }
-    let span = d[0].max(d[1]).max(d[2]);
+    let span = bounds(points).map_or(f64::NEG_INFINITY, |(a, b)| {
+        (b[0] - a[0]).max(b[1] - a[1]).max(b[2] - a[2])
+    });
     if points.len() > 1 && !(span >= lo && big <= hi) {
         return Err(GecError::InvalidParameter(format!(
             "the points span {span:.3e} with coordinates up to {big:.3e}; the fit supports spans of at least {lo:e} and coordinates up to {hi:e} (rescale the input)"

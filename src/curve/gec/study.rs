@@ -290,14 +290,8 @@ pub fn standard_ellipse(g1: &Gec) -> Gec {
 /// in the section's frame, centred on the in-plane bounding box, semi-axes
 /// half its width and depth.
 pub fn silhouette_ellipse(frame: Frame, plane_points: &[[f64; 2]]) -> Gec {
-    let mut lo = [f64::INFINITY; 2];
-    let mut hi = [f64::NEG_INFINITY; 2];
-    for p in plane_points {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
+    let (lo, hi) =
+        crate::vec3::bounds(plane_points).unwrap_or(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]));
     Gec::ellipse(
         frame,
         [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],

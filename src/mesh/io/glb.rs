@@ -27,14 +27,12 @@ pub fn group_colour(g: usize) -> [f32; 3] {
 pub fn encode_glb(m: &Mesh) -> Vec<u8> {
     let nv = m.positions.len();
     let mut bin: Vec<u8> = Vec::with_capacity(nv * 24 + m.triangles.len() * 12);
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
+    // f32 rounding is monotone: the f32 box is the f64 box rounded
+    let (lo, hi) = m.bbox();
+    let (lo, hi) = (lo.map(|x| x as f32), hi.map(|x| x as f32));
     for p in &m.positions {
-        for k in 0..3 {
-            let x = p[k] as f32;
-            lo[k] = lo[k].min(x);
-            hi[k] = hi[k].max(x);
-            bin.extend_from_slice(&x.to_le_bytes());
+        for x in p {
+            bin.extend_from_slice(&(*x as f32).to_le_bytes());
         }
     }
     let normals_offset = bin.len();

@@ -13,7 +13,7 @@ pub fn encode_stl(m: &Mesh) -> Vec<u8> {
     out.extend_from_slice(&header);
     out.extend_from_slice(&(m.triangles.len() as u32).to_le_bytes());
     for t in 0..m.triangles.len() {
-        let n = crate::surface::normalize(m.face_normal_area(t));
+        let n = crate::vec3::normalize(m.face_normal_area(t));
         for x in n {
             out.extend_from_slice(&(x as f32).to_le_bytes());
         }

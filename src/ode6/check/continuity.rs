@@ -5,28 +5,10 @@ use super::*;
 /// C2 joins in u (chains) and v (splits).
 pub(super) fn continuity_checks() -> Vec<Check> {
     let mut out = Vec::new();
-    let sec = |s: f64, z: f64, ph: f64, w1: f64, w2: f64| {
-        let c = Curve::Fourier(test_curve(s, z, ph));
-        [c.clone(), c.scaled(w1), c.scaled(w2)]
-    };
-    let sections = [
-        sec(1.0, 0.0, 0.0, 0.3, -0.2),
-        sec(0.7, 1.0, 0.5, -0.4, 0.6),
-        sec(1.2, 2.0, 1.0, 0.2, 0.1),
-        sec(0.5, 3.0, -0.5, 1.0, -1.0),
-    ];
-    let bases: Result<Vec<Basis>, _> = [
-        Params::new(1.0, 3.0, 1.0),
-        Params::new(1e-4, 3.0, 1e-4),
-        Params::new(1.0, 1.0, 3.0),
-    ]
-    .into_iter()
-    .map(Basis::new)
-    .collect();
-    let chain = bases.and_then(|b| Chain::from_sections(&sections, b));
+    let chain = chain();
     let jumps = chain
         .as_ref()
-        .map(|c| c.u_jumps(16))
+        .map(|c| c.join_jumps(16))
         .unwrap_or([f64::NAN; 3]);
     for (i, what) in ["c0", "c1", "c2"].iter().enumerate() {
         out.push(ck(
@@ -41,7 +23,7 @@ pub(super) fn continuity_checks() -> Vec<Check> {
     // A 3 x 2 grid of separately built patches (own Hermite constraint
     // curves each, see `grid_knots`): C2 across every u-join and v-join.
     let grid = grid_3x2();
-    let gj = grid.as_ref().map(|g| g.jumps(16));
+    let gj = grid.as_ref().map(|g| g.join_jumps(16));
     let rel = |f: fn(&GridJumps) -> (f64, f64)| match &gj {
         Ok(j) => {
             let (jump, mag) = f(j);
@@ -104,7 +86,14 @@ pub(super) fn continuity_checks() -> Vec<Check> {
         let size = (0..=20)
             .map(|i| crate::mesh::norm(a.point(i as f64 / 20.0, 0.4)))
             .fold(0.0, f64::max);
-        (v_jumps(&a, &b, 20), size)
+        (
+            VSplit {
+                below: &a,
+                above: &b,
+            }
+            .join_jumps(20),
+            size,
+        )
     };
     let (fig6b, size) = split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0));
     let (same, _) = split(Params::new(1.0, 1.0, 3.0), Params::new(1.0, 1.0, 3.0));

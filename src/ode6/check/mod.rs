@@ -7,12 +7,12 @@ use super::basis::{classify_closed, Basis, Params};
 use super::boundary::{Approach2, BoundaryCurves, Curve, DiffFormula};
 use super::force::Force;
 use super::paper;
-pub use super::samples::{grid_3x2, grid_knots, test_curve, test_gecs};
-use super::surface::{v_jumps, Chain, Grid, GridJumps, Ode6Surface};
+use super::samples::{chain, grid_3x2, grid_knots, test_curve, test_gecs};
+use super::surface::{Grid, GridJumps, Ode6Surface, VSplit};
 use super::Ode6Error;
 use crate::check::{tol, Check, Kind};
 use crate::jet::Jet;
-use crate::surface::Surface;
+use crate::surface::{Joined, Surface};
 mod boundary;
 pub use boundary::gec_boundary_error;
 use boundary::{degenerate_checks, gec_check};
@@ -130,7 +130,7 @@ pub fn checks() -> Vec<Check> {
                 // this case (separate patches, Hermite constraint curves).
                 let knots: Vec<_> = grid_knots().into_iter().take(3).collect();
                 let rel = Grid::from_knots(&knots, vec![b.clone(), b.clone()])
-                    .map(|g| g.jumps(8).relative(GRID_MAGNITUDE_FLOOR))
+                    .map(|g| g.join_jumps(8).relative(GRID_MAGNITUDE_FLOOR))
                     .unwrap_or(f64::NAN);
                 out.push(ck(
                     "eqs 23-26",

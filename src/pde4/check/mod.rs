@@ -8,7 +8,7 @@
 
 use super::force::{printed_four_sided, printed_two_sided};
 use super::four_sided::{self, FourSided};
-pub use super::samples::{root_cases, sample_boundary, sample_forces, SINE_LOAD};
+use super::samples::{mixed_shapes, root_cases, sample_boundary, sample_forces, SINE_LOAD};
 use super::two_sided::{self, basis_b, Boundary, Mode, TwoSided};
 use super::{Force, ForceKind, ShapeParams};
 use crate::check::{tol, Check, Kind};

@@ -105,15 +105,7 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
     );
     let b = sample_boundary();
     let (r2, b2) = match TwoSided::new(
-        [
-            ShapeParams::PLATE,
-            ShapeParams::uniform(0.3),
-            ShapeParams {
-                a1: 1.0,
-                a2: 0.5,
-                a3: 1.0,
-            },
-        ],
+        mixed_shapes(),
         &forces,
         m,
         n,
@@ -183,15 +175,7 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         },
         p: [1.0, 0.5, 0.0],
     }];
-    let ps = [
-        ShapeParams::PLATE,
-        ShapeParams::uniform(0.3),
-        ShapeParams {
-            a1: 1.0,
-            a2: 0.5,
-            a3: 1.0,
-        },
-    ];
+    let ps = mixed_shapes();
     let grid: Vec<f64> = (0..=20).map(|i| i as f64 / 20.0).collect();
     let mode0 =
         |t: &TwoSided| -> Vec<f64> { grid.iter().map(|&u| t.comps[0].mode(0).eval(u)).collect() };

@@ -37,7 +37,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
         }
         match Chain::method2(a, &sec, 3) {
             Ok(c) => {
-                let j = join_jumps(&c);
+                let j = c.join_jumps(JOIN_SAMPLES);
                 out.push(
                     Check::new(FAMILY, PAPER, "eqs 24-27, A17-A36", &format!("pde6.method2_c2_{name}"), Kind::Continuity, j[0].max(j[1]).max(j[2]), SOLVE_TOL)
                         .note(format!("12-section, 3-patch method-2 chain (Fig 4 layout, first patch on sections 4-9), a = {a}: max relative jump of S, S_u, S_uu across both joins, jets")),
@@ -50,14 +50,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                             .filter(move |s| s.u >= p.start && s.u <= p.end)
                             .map(move |s| (p, s))
                     })
-                    .map(|(p, s)| {
-                        (0..16)
-                            .map(|j| {
-                                let v = 2.0 * PI * j as f64 / 16.0;
-                                crate::mesh::dist(p.eval(s.u, v), s.curve.eval(v))
-                            })
-                            .fold(0.0, f64::max)
-                    })
+                    .map(|(p, s)| section_distance(s, |v| p.eval(s.u, v)))
                     .fold(0.0, f64::max);
                 out.push(
                     Check::new(FAMILY, PAPER, "eqs 25, A30", &format!("pde6.method2_interpolates_{name}"), Kind::Boundary, worst_interp, SOLVE_TOL)
@@ -103,7 +96,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
     for (name, a) in SIGNS {
         match Chain::c2_global(a, &sec13) {
             Ok(c) => {
-                let j = join_jumps(&c);
+                let j = c.join_jumps(JOIN_SAMPLES);
                 out.push(
                     Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, j[0].max(j[1]).max(j[2]), SOLVE_TOL)
                         .note(format!("13-section, 4-piece globally solved C2 chain, a = {a}: max relative jump of S, S_u, S_uu across the joins, jets")),
@@ -112,12 +105,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                     .iter()
                     .map(|s| {
                         let p = &c.pieces[c.piece_at(s.u).min(c.pieces.len() - 1)];
-                        (0..16)
-                            .map(|j| {
-                                let v = 2.0 * PI * j as f64 / 16.0;
-                                crate::mesh::dist(p.eval(s.u, v), s.curve.eval(v))
-                            })
-                            .fold(0.0, f64::max)
+                        section_distance(s, |v| p.eval(s.u, v))
                     })
                     .fold(0.0, f64::max);
                 out.push(
@@ -167,7 +155,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
     let a = SIGNS[0].1;
     let (m, c0) = match Chain::method1(a, &sec, 3) {
         Ok(c) => {
-            let j = join_jumps(&c);
+            let j = c.join_jumps(JOIN_SAMPLES);
             (j[1], j[0])
         }
         Err(_) => (f64::NAN, f64::NAN),

@@ -21,6 +21,17 @@ pub fn pde_residual<S: Surface>(s: &S, a: f64, u_range: (f64, f64)) -> f64 {
     worst
 }
 
+/// Largest distance, over 16 equally spaced `v`, from `at(v)` to the
+/// section's curve (how far a surface passes from a section it must meet).
+pub fn section_distance(s: &Section, at: impl Fn(f64) -> [f64; 3]) -> f64 {
+    (0..16)
+        .map(|j| {
+            let v = 2.0 * PI * j as f64 / 16.0;
+            crate::mesh::dist(at(v), s.curve.eval(v))
+        })
+        .fold(0.0, f64::max)
+}
+
 /// Max distance between the patch at local `nodes` and the curves there.
 pub fn interpolation_error(p: &Patch, nodes: &[f64], curves: &[&Fourier3]) -> f64 {
     let mut worst: f64 = 0.0;

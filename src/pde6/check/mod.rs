@@ -6,14 +6,12 @@ use super::mode::{
     method1_conditions, method2_conditions, paper_basis_condition, Mode, ModeBasis, ModeSolver,
     NODES_METHOD1,
 };
-pub use super::samples::{synthetic_sections, SIGNS};
+use super::samples::{synthetic_sections, SIGNS};
 use super::{Chain, Patch, Piece, Section, JOIN_SAMPLES};
 use crate::check::{tol, Check, Kind};
-use crate::surface::Joined;
-mod body;
-mod body_closed;
 use crate::curve::Fourier3;
 use crate::jet::Jet;
+use crate::surface::Joined;
 use crate::surface::Surface;
 use serde::Deserialize;
 use std::f64::consts::PI;
@@ -29,7 +27,7 @@ mod printed_appendix_b;
 mod printed_checks;
 pub use measure::{
     basis_ode_residual, closed_v_mismatch, interpolation_error, lebesgue, method2_amplification,
-    mode_vs_rk4, pde_residual,
+    mode_vs_rk4, pde_residual, section_distance,
 };
 use paper_literal::printed_form_checks;
 pub use paper_literal::{eq26_printed_interpolation_error, eq27_printed_interpolation_error};
@@ -82,12 +80,6 @@ struct GoldenLebesgue {
 
 fn curves6(s: &[Section]) -> [&Fourier3; 6] {
     std::array::from_fn(|i| &s[i].curve)
-}
-
-/// Jumps across every join of a chain (16 v samples); kept at this path for
-/// callers of the old name: the measurement is [`Joined::join_jumps`].
-pub fn join_jumps(c: &Chain) -> [f64; 3] {
-    c.join_jumps(JOIN_SAMPLES)
 }
 
 fn golden_checks(out: &mut Vec<Check>) {
@@ -199,7 +191,5 @@ pub fn checks() -> Vec<Check> {
     printed_form_checks(&mut out);
     printed_checks::printed_main_checks(&mut out);
     printed_appendix::printed_appendix_checks(&mut out);
-    body::body_smoothness_checks(&mut out);
-    body_closed::body_closed_checks(&mut out);
     out
 }

@@ -7,36 +7,29 @@ use super::*;
 /// z at the patch's local u = 0). Returns the largest distance from the
 /// printed patch to the sections in its range (16 v samples each).
 pub fn eq26_printed_interpolation_error(c: &Chain, sections: &[Section]) -> f64 {
-    let Some(p) = c.pieces.first() else {
-        return f64::NAN;
-    };
-    let z0 = p.patch.section(0.0, 0).c0[2];
-    sections
-        .iter()
-        .filter(|s| s.u >= p.start && s.u <= p.end)
-        .flat_map(|s| {
-            (0..16).map(move |j| {
-                let v = 2.0 * PI * j as f64 / 16.0;
-                let [x, y, _] = p.eval(s.u, v);
-                crate::mesh::dist([x, y, z0], s.curve.eval(v))
-            })
-        })
-        .fold(0.0, f64::max)
+    c.pieces
+        .first()
+        .map_or(f64::NAN, |p| constant_z_error(p, sections))
 }
 
 /// Eq 27 as printed for the top patch P3: x and y from the patch,
 /// `z^{P3}(u, v) = A_{z0}^{P3}(0)` constant. Largest distance from the printed
 /// patch to the sections in its range (16 v samples each).
 pub fn eq27_printed_interpolation_error(p: &Piece, sections: &[Section]) -> f64 {
+    constant_z_error(p, sections)
+}
+
+/// Eqs 26-27 as printed: the piece's x and y with z frozen at
+/// `A_{z0}(0)`; largest distance to the sections in the piece's range.
+fn constant_z_error(p: &Piece, sections: &[Section]) -> f64 {
     let z0 = p.patch.section(0.0, 0).c0[2];
     sections
         .iter()
         .filter(|s| s.u >= p.start && s.u <= p.end)
-        .flat_map(|s| {
-            (0..16).map(move |j| {
-                let v = 2.0 * PI * j as f64 / 16.0;
+        .map(|s| {
+            section_distance(s, |v| {
                 let [x, y, _] = p.eval(s.u, v);
-                crate::mesh::dist([x, y, z0], s.curve.eval(v))
+                [x, y, z0]
             })
         })
         .fold(0.0, f64::max)

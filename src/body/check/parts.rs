@@ -2,12 +2,12 @@
 //! Figs 5-6): the current options against [`legacy_options`] on the parts
 //! that rippled (torso and head).
 
-use super::super::body::{
+use crate::body::parts::{
     legacy_options, makehuman_parts, part_smoothness, reconstruct_part, BodyOptions,
 };
 use crate::check::{Check, Kind};
 
-const FAMILY: &str = "pde6";
+const FAMILY: &str = "body";
 const PAPER: &str = "002";
 /// The ripple fix must at least halve the u-roughness of torso and head.
 pub const ROUGHNESS_RATIO_MAX: f64 = 0.5;

@@ -1,10 +1,11 @@
-//! The report of the closed body ([`super::body_closed`]): topology, errors
+//! The report of the closed body ([`super::closed`]): topology, errors
 //! against the input skin, join jumps, data size; and loading the body to
 //! reconstruct.
 
-use super::body_closed::ClosedOptions;
-use super::body_layout::Layout;
-use super::Pde6Error;
+use super::closed::ClosedOptions;
+use super::layout::Layout;
+use super::sites::{error_sites, ErrorSite};
+use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
 use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
@@ -23,6 +24,10 @@ pub struct ClosedReport {
     pub recon_to_skin_max_rel: f64,
     pub skin_to_recon_rms_rel: f64,
     pub skin_to_recon_max_rel: f64,
+    /// Where the largest recon -> skin error sits.
+    pub recon_to_skin_max_at: Option<ErrorSite>,
+    /// Where the largest skin -> recon error sits.
+    pub skin_to_recon_max_at: Option<ErrorSite>,
     /// Largest relative C0 / C1 / C2 jump over every join.
     pub max_join: [f64; 3],
     pub joins: Vec<JoinReport>,
@@ -45,6 +50,7 @@ pub fn measure(
     let h = lay.height();
     let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
     let s2r = stats(&point_distances(&skin.positions, &model.mesh));
+    let (r2s_at, s2r_at) = error_sites(&model.mesh, skin, specs, lay.sole, h);
     let mut max_join = [0.0f64; 3];
     for j in &model.joins {
         max_join[0] = max_join[0].max(j.c0);
@@ -71,6 +77,8 @@ pub fn measure(
         recon_to_skin_max_rel: r2s.max / h,
         skin_to_recon_rms_rel: s2r.rms / h,
         skin_to_recon_max_rel: s2r.max / h,
+        recon_to_skin_max_at: r2s_at,
+        skin_to_recon_max_at: s2r_at,
         max_join,
         joins: model.joins.clone(),
         seams: model.seams.clone(),
@@ -85,10 +93,10 @@ pub fn measure(
 
 /// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
 /// with `morphs` (`NAME=WEIGHT`) applied.
-pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, Pde6Error> {
+pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Mesh, BodyError> {
     if let Some(p) = path {
         if !morphs.is_empty() {
-            return Err(Pde6Error::MorphWithMesh);
+            return Err(BodyError::MorphWithMesh);
         }
         let m = crate::mesh::io::read(p)?;
         m.validate()?;
@@ -96,16 +104,16 @@ pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Me
     }
     let mut targets = Vec::new();
     for s in morphs {
-        let (name, w) = s.split_once('=').ok_or_else(|| Pde6Error::Morph {
+        let (name, w) = s.split_once('=').ok_or_else(|| BodyError::Morph {
             spec: s.clone(),
             problem: "expected NAME=WEIGHT".into(),
         })?;
-        let w: f64 = w.trim().parse().map_err(|_| Pde6Error::Morph {
+        let w: f64 = w.trim().parse().map_err(|_| BodyError::Morph {
             spec: s.clone(),
             problem: "weight is not a number".into(),
         })?;
         if !w.is_finite() || w.abs() > MORPH_WEIGHT_MAX {
-            return Err(Pde6Error::Morph {
+            return Err(BodyError::Morph {
                 spec: s.clone(),
                 problem: format!("weight outside [-{MORPH_WEIGHT_MAX}, {MORPH_WEIGHT_MAX}]"),
             });
@@ -121,13 +129,13 @@ pub fn reconstruct_closed_from(
     path: Option<&std::path::Path>,
     morphs: &[String],
     output: &std::path::Path,
-    opts: &super::body_closed::ClosedOptions,
-) -> Result<super::body_closed::ClosedBody, Pde6Error> {
+    opts: &super::closed::ClosedOptions,
+) -> Result<super::closed::ClosedBody, BodyError> {
     let skin = load_body(path, morphs)?;
     if let Some(m) = path {
         crate::mesh::io::refuse_overwriting_input(&[m], output)?;
     }
-    super::body_closed::reconstruct_closed(&skin, opts)
+    super::closed::reconstruct_closed(&skin, opts)
 }
 
 /// Largest |weight| of a morph target.
@@ -151,6 +159,9 @@ impl ClosedReport {
             self.max_join[0],
             self.max_join[1],
             self.max_join[2]
-        )
+        ) + &[("reconstruction -> skin", &self.recon_to_skin_max_at), ("skin -> reconstruction", &self.skin_to_recon_max_at)]
+            .iter()
+            .filter_map(|(w, s)| s.as_ref().map(|s| format!("  max {w}: {}\n", s.line())))
+            .collect::<String>()
     }
 }

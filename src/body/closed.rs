@@ -1,4 +1,4 @@
-//! One closed body from PDE surfaces: the parts of [`super::body_layout`]
+//! One closed body from PDE surfaces: the parts of [`super::layout`]
 //! (torso, two legs, two arms, neck and head) as C2 sixth-order PDE chains
 //! (`Chain::c2_global`, the sketch's [`crate::sketch::part`]), joined at the
 //! hips (crotch) and the shoulders (armpits, neck) by the sketch's
@@ -20,17 +20,17 @@
 //! a separate part: the head's horizontal sections run from the neck to the
 //! crown, through the jaw.
 
-use super::body_layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
-use super::body_report::measure;
-pub use super::body_report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
-use super::sampling::fit_anchored;
-use super::Pde6Error;
+use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
+use super::report::measure;
+pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
+use super::BodyError;
 use crate::character::doc::{
     End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
 use crate::curve::gec::Gec;
 use crate::mesh::topology::report as topology;
 use crate::mesh::{add, dot, norm, scale, sub, Mesh};
+use crate::pde6::sampling::fit_anchored;
 use crate::sketch::build::{build_model, Model, Resolution};
 
 /// Options of the closed reconstruction.
@@ -45,7 +45,7 @@ pub struct ClosedOptions {
     pub leg_sections: usize,
     pub arm_sections: usize,
     pub head_sections: usize,
-    /// Anchored sampling (see [`super::sampling`]).
+    /// Anchored sampling (see [`crate::pde6::sampling`]).
     pub anchors: usize,
     pub samples: usize,
     pub pull: f64,
@@ -58,14 +58,14 @@ impl Default for ClosedOptions {
     fn default() -> Self {
         ClosedOptions {
             terms: 10,
-            a: super::body::BODY_A,
+            a: super::parts::BODY_A,
             torso_sections: 13,
             leg_sections: 19,
             arm_sections: 16,
             head_sections: 16,
-            anchors: super::body::DEFAULT_ANCHORS,
-            samples: super::body::DEFAULT_SAMPLES,
-            pull: super::body::DEFAULT_PULL,
+            anchors: super::parts::DEFAULT_ANCHORS,
+            samples: super::parts::DEFAULT_SAMPLES,
+            pull: super::parts::DEFAULT_PULL,
             rings_per_height: 160.0,
             transition_rows: 10,
         }
@@ -133,13 +133,13 @@ fn fit_section(
     o: &ClosedOptions,
     what: &str,
     phase: f64,
-) -> Result<SectionSpec, Pde6Error> {
+) -> Result<SectionSpec, BodyError> {
     let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
     // a section whose centroid sees no crossing on the start ray (a
     // crescent) falls back to its convex hull
     let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
         .or_else(|_| {
-            let h = super::body_layout::hull(t.plane.clone());
+            let h = super::layout::hull(t.plane.clone());
             fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
         })
         .map_err(|e| e.in_section(what))?;
@@ -158,17 +158,17 @@ fn fit_section(
 }
 
 /// Picks `n` samples evenly in s over [s0, last] (nearest, strictly increasing).
-fn pick(tr: &[TraceSample], s0: f64, n: usize, what: &str) -> Result<Vec<usize>, Pde6Error> {
+fn pick(tr: &[TraceSample], s0: f64, n: usize, what: &str) -> Result<Vec<usize>, BodyError> {
     let first = tr.iter().position(|t| t.s >= s0);
     let last = tr.len().checked_sub(1);
     let (Some(first), Some(last)) = (first, last) else {
-        return Err(Pde6Error::LayoutNotFound {
+        return Err(BodyError::LayoutNotFound {
             what: "a limb",
             detail: format!("{what}: the trace found no sections"),
         });
     };
     if last < first + n {
-        return Err(Pde6Error::LayoutNotFound {
+        return Err(BodyError::LayoutNotFound {
             what: "a limb",
             detail: format!(
                 "{what}: the trace found {} sections, {n} needed",
@@ -190,7 +190,7 @@ fn pick(tr: &[TraceSample], s0: f64, n: usize, what: &str) -> Result<Vec<usize>,
     }
     out.dedup();
     if out.len() < n {
-        return Err(Pde6Error::LayoutNotFound {
+        return Err(BodyError::LayoutNotFound {
             what: "a limb",
             detail: format!("{what}: too few distinct sections"),
         });
@@ -223,7 +223,7 @@ fn part_from_trace(
     n: usize,
     tip_end: bool,
     o: &ClosedOptions,
-) -> Result<PartSpec, Pde6Error> {
+) -> Result<PartSpec, BodyError> {
     let fitted = if tip_end { n - 1 } else { n };
     let idx = pick(tr, s0, fitted, name)?;
     let mut sections = Vec::with_capacity(n);
@@ -260,22 +260,22 @@ fn part_from_trace(
     })
 }
 
-fn check_count(what: &'static str, n: usize) -> Result<(), Pde6Error> {
+fn check_count(what: &'static str, n: usize) -> Result<(), BodyError> {
     if n < 7 || (n - 7) % 3 != 0 || n > 7 + 3 * 30 {
-        return Err(Pde6Error::SectionCount { what, got: n });
+        return Err(BodyError::SectionCount { what, got: n });
     }
     Ok(())
 }
 
 /// Reconstructs the closed body of `skin` (a standing humanoid, Y up).
-pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, Pde6Error> {
+pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, BodyError> {
     check_count("torso sections", o.torso_sections)?;
     check_count("leg sections", o.leg_sections)?;
     check_count("arm sections", o.arm_sections)?;
     check_count("head sections", o.head_sections)?;
     let topo = topology(skin);
     if !topo.watertight {
-        return Err(Pde6Error::LayoutNotFound {
+        return Err(BodyError::LayoutNotFound {
             what: "a closed body",
             detail: format!(
                 "open mesh: {} boundary edges, {} non-manifold edges (the skin must be one closed surface)",
@@ -286,9 +286,9 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     let lay = find_layout(skin)?;
     let h = lay.height();
     let step = TRACE_STEP * h;
-    let centre_at = |y: f64, x_pick: f64| -> Result<([f64; 3], f64), Pde6Error> {
-        let f = super::sampling::section_frame(y)?;
-        let ls = super::body_layout::loops_in_plane(skin, &f);
+    let centre_at = |y: f64, x_pick: f64| -> Result<([f64; 3], f64), BodyError> {
+        let f = crate::pde6::sampling::section_frame(y)?;
+        let ls = super::layout::loops_in_plane(skin, &f);
         let l = ls
             .iter()
             .min_by(|a, b| {
@@ -296,7 +296,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                     .abs()
                     .total_cmp(&(b.centroid[0] - x_pick).abs())
             })
-            .ok_or_else(|| Pde6Error::LayoutNotFound {
+            .ok_or_else(|| BodyError::LayoutNotFound {
                 what: "a section",
                 detail: format!("no loop at y = {y:.3}"),
             })?;
@@ -308,7 +308,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
         follow: false,
         hull,
         skip: 0.0,
-        jump: super::body_layout::JUMP,
+        jump: super::layout::JUMP,
     };
     // torso: crotch + gap up to armpit - gap
     let y0 = lay.crotch + CROTCH_GAP * h;
@@ -321,13 +321,13 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     // legs: down from crotch - gap
     let yl = lay.crotch - CROTCH_GAP * h;
     for (name, x) in [("leg_l", -1.0), ("leg_r", 1.0)] {
-        let f = super::sampling::section_frame(yl)?;
-        let ls = super::body_layout::loops_in_plane(skin, &f);
+        let f = crate::pde6::sampling::section_frame(yl)?;
+        let ls = super::layout::loops_in_plane(skin, &f);
         let l = ls
             .iter()
             .filter(|l| l.centroid[0] * x > 0.0)
             .max_by(|a, b| a.radius.total_cmp(&b.radius))
-            .ok_or_else(|| Pde6Error::LayoutNotFound {
+            .ok_or_else(|| BodyError::LayoutNotFound {
                 what: "a leg",
                 detail: format!("{name}: no loop at y = {yl:.3}"),
             })?;
@@ -360,7 +360,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                 follow: true,
                 hull: true,
                 skip: 0.05 * h,
-                jump: super::body_layout::JUMP,
+                jump: super::layout::JUMP,
             },
         )?;
         specs.push(part_from_trace(
@@ -416,18 +416,18 @@ fn transitions(
     skin: &Mesh,
     lay: &Layout,
     specs: &[PartSpec],
-) -> Result<Vec<TransitionSpec>, Pde6Error> {
+) -> Result<Vec<TransitionSpec>, BodyError> {
     let h = lay.height();
     let bottom = specs[0].sections[0].centre;
     let top = specs[0].sections[specs[0].sections.len() - 1].centre;
     let crotch = [bottom[0], lay.crotch, bottom[2]];
-    let neck_f = super::sampling::section_frame(lay.neck)?;
-    let neck = super::body_layout::loops_in_plane(skin, &neck_f);
+    let neck_f = crate::pde6::sampling::section_frame(lay.neck)?;
+    let neck = super::layout::loops_in_plane(skin, &neck_f);
     let neck_x = neck
         .iter()
         .min_by(|a, b| a.centroid[0].abs().total_cmp(&b.centroid[0].abs()))
         .map(|l| l.x_range)
-        .ok_or_else(|| Pde6Error::LayoutNotFound {
+        .ok_or_else(|| BodyError::LayoutNotFound {
             what: "the neck",
             detail: format!("no loop at y = {:.3}", lay.neck),
         })?;
@@ -443,7 +443,7 @@ fn transitions(
             .map(|p| p[1])
             .fold(f64::NAN, f64::max);
         if !y.is_finite() {
-            return Err(Pde6Error::LayoutNotFound {
+            return Err(BodyError::LayoutNotFound {
                 what: "a shoulder top",
                 detail: format!("no skin vertex near x = {x:.3} between the armpits and the neck"),
             });

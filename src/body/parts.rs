@@ -2,7 +2,7 @@
 //! Figs 5-6): the MakeHuman skin is cut by horizontal planes into the parts
 //! torso, shoulders and neck, head, arms and legs; each cross section is
 //! fitted by a GEC in the common horizontal frame, its angle given by the
-//! anchored rule of [`super::sampling`] (theta = 0 on the ray in +z from the
+//! anchored rule of [`crate::pde6::sampling`] (theta = 0 on the ray in +z from the
 //! centroid, 16 rays pulling theta towards fixed directions, arc length in
 //! between: consistent from section to section), and each part becomes a C2
 //! [`Chain`] with u = the height of the section and a = [`BODY_A`]. The result
@@ -22,18 +22,19 @@
 //! [`legacy_options`] keeps the old settings; check `pde6.body_smoothness`.
 //!
 //! Not reconstructed here (as in the paper; `pde6 body --open-parts`): hands,
-//! feet, the crotch, the armpits and the chin. [`super::body_closed`] builds the
+//! feet, the crotch, the armpits and the chin. [`super::closed`] builds the
 //! whole closed body.
 
-use super::sampling::{
-    angular_slip, fit_anchored, roughness, section_frame, start_angle, Roughness, Sampling,
-};
-use super::{Chain, Pde6Error, Section};
+use super::BodyError;
 use crate::curve::gec::fit::{fit, FitOptions, FrameChoice};
 use crate::curve::gec::Correction;
 use crate::mesh::metrics::{point_distances, stats, DistanceStats};
 use crate::mesh::slice::{slice, Polyline};
 use crate::mesh::Mesh;
+use crate::pde6::sampling::{
+    angular_slip, fit_anchored, roughness, section_frame, start_angle, Roughness, Sampling,
+};
+use crate::pde6::{Chain, Section};
 use crate::surface::{tessellate, Joined, Tessellation};
 
 /// One body part: a height range cut into `sections` horizontal sections
@@ -101,10 +102,10 @@ pub struct BodyOptions {
     pub nu_per_piece: usize,
     pub nv: usize,
     /// How the chain is built.
-    pub method: super::Method,
+    pub method: crate::pde6::Method,
     /// How the slice points get their angle (phase alignment across
     /// sections matters: the chain interpolates harmonic by harmonic; see
-    /// [`super::sampling`]).
+    /// [`crate::pde6::sampling`]).
     #[serde(skip)]
     pub sampling: Sampling,
 }
@@ -116,7 +117,7 @@ impl Default for BodyOptions {
             a: BODY_A,
             nu_per_piece: 12,
             nv: 72,
-            method: super::Method::GlobalC2,
+            method: crate::pde6::Method::GlobalC2,
             sampling: Sampling::Anchored {
                 anchors: DEFAULT_ANCHORS,
                 samples: DEFAULT_SAMPLES,
@@ -233,7 +234,7 @@ fn dedupe(points: &[[f64; 3]], scale: f64) -> Vec<[f64; 3]> {
     out
 }
 
-fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, Pde6Error> {
+fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, BodyError> {
     slice(m, [0.0, y, 0.0], [0.0, 1.0, 0.0])
         .into_iter()
         .filter(|l| l.closed && l.points.len() >= 8)
@@ -242,7 +243,7 @@ fn pick_loop(m: &Mesh, y: f64, spec: &PartSpec) -> Result<Polyline, Pde6Error> {
             c[0] >= spec.x_range.0 && c[0] <= spec.x_range.1
         })
         .max_by(|a, b| a.length().total_cmp(&b.length()))
-        .ok_or_else(|| Pde6Error::NoSection {
+        .ok_or_else(|| BodyError::NoSection {
             part: spec.name.to_string(),
             y,
         })
@@ -253,7 +254,7 @@ pub fn reconstruct_part(
     skin: &Mesh,
     spec: &PartSpec,
     opts: &BodyOptions,
-) -> Result<Part, Pde6Error> {
+) -> Result<Part, BodyError> {
     let m = spec.sections;
     let mut polylines = Vec::with_capacity(m);
     let mut sections = Vec::with_capacity(m);
@@ -264,7 +265,9 @@ pub fn reconstruct_part(
         let pts = dedupe(&l.points, l.length());
         let frame = section_frame(y)?;
         let terms = opts.terms.min(pts.len().saturating_sub(1) / 2).max(1);
-        let here = |e: Pde6Error| e.in_section(format!("{} section {i}", spec.name));
+        let here = |e: crate::pde6::Pde6Error| {
+            BodyError::from(e.in_section(format!("{} section {i}", spec.name)))
+        };
         let (gec, erm_rel) = match opts.sampling {
             Sampling::Gec(param) => {
                 let mut fo = FitOptions::new(terms);
@@ -297,11 +300,11 @@ pub fn reconstruct_part(
         });
     }
     let chain = match opts.method {
-        super::Method::GlobalC2 => Chain::c2_global(opts.a, &sections)?,
-        super::Method::SharedCurves => {
+        crate::pde6::Method::GlobalC2 => Chain::c2_global(opts.a, &sections)?,
+        crate::pde6::Method::SharedCurves => {
             Chain::method1(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
         }
-        super::Method::CarriedDerivatives => {
+        crate::pde6::Method::CarriedDerivatives => {
             Chain::method2(opts.a, &sections[..m - 1], 3 * ((m - 7) / 6))?
         }
     };
@@ -329,9 +332,9 @@ pub fn reconstruct(
     skin: &Mesh,
     parts: &[PartSpec],
     opts: &BodyOptions,
-) -> Result<(Vec<Part>, Mesh, BodyReport), Pde6Error> {
+) -> Result<(Vec<Part>, Mesh, BodyReport), BodyError> {
     if skin.positions.is_empty() {
-        return Err(Pde6Error::EmptyMesh);
+        return Err(BodyError::EmptyMesh);
     }
     let (lo, hi) = skin.bbox();
     let height = hi[1] - lo[1];
@@ -353,7 +356,7 @@ pub fn reconstruct(
             .copied()
             .collect();
         let d = stats(&point_distances(&own, &p.mesh));
-        let j = p.chain.join_jumps(super::JOIN_SAMPLES);
+        let j = p.chain.join_jumps(crate::pde6::JOIN_SAMPLES);
         let r = stats(&point_distances(&p.mesh.positions, skin));
         let (roughness, slip_deg, start_angle_deg) = part_smoothness(&p);
         part_reports.push(PartReport {
@@ -404,7 +407,7 @@ pub fn reconstruct(
 /// The sampling named on the command line: `anchored` (with `anchors` rays
 /// and `pull`) or a GEC parameter rule (`chord`, `centripetal`, `uniform`,
 /// `polar`).
-pub fn sampling_from_name(name: &str, anchors: usize, pull: f64) -> Result<Sampling, Pde6Error> {
+pub fn sampling_from_name(name: &str, anchors: usize, pull: f64) -> Result<Sampling, BodyError> {
     if name == "anchored" {
         return Ok(Sampling::Anchored {
             anchors,
@@ -414,12 +417,39 @@ pub fn sampling_from_name(name: &str, anchors: usize, pull: f64) -> Result<Sampl
     }
     name.parse()
         .map(Sampling::Gec)
-        .map_err(|_| Pde6Error::SamplingName(name.to_string()))
+        .map_err(|_| BodyError::SamplingName(name.to_string()))
 }
 
 /// The seven open parts of paper 002 from the bundled MakeHuman body.
-pub fn reconstruct_base_parts(opts: &BodyOptions) -> Result<(Mesh, BodyReport), Pde6Error> {
+pub fn reconstruct_base_parts(opts: &BodyOptions) -> Result<(Mesh, BodyReport), BodyError> {
     let body = crate::makehuman::base_body()?;
     let (_, mesh, report) = reconstruct(&body.mesh, &makehuman_parts(), opts)?;
     Ok((mesh, report))
+}
+
+/// Text summary of the open-parts reconstruction (percent of the height).
+pub fn open_parts_summary(report: &BodyReport, output: &std::path::Path) -> String {
+    let h = 100.0;
+    let mut s = format!(
+        "wrote {} ({} triangles); body height {:.3}\n  reconstruction -> skin: RMS {:.3} %, max {:.3} % of the height\n  skin -> reconstruction: RMS {:.3} %, max {:.3} %\n",
+        output.display(),
+        report.recon_triangles,
+        report.body_height,
+        h * report.recon_to_skin_rms_rel,
+        h * report.recon_to_skin_max_rel,
+        h * report.skin_to_recon_rms_rel,
+        h * report.skin_to_recon_max_rel
+    );
+    for p in &report.parts {
+        s.push_str(&format!(
+            "  {:<15} RMS {:.3} % max {:.3} %  roughness u {:.4} v {:.4}  slip {:.2} deg\n",
+            p.name,
+            h * p.recon_to_skin_rms_rel,
+            h * p.recon_to_skin_max_rel,
+            p.roughness.u,
+            p.roughness.v,
+            p.slip_deg
+        ));
+    }
+    s
 }

@@ -2,13 +2,13 @@
 //! morphs of [`CHECKED_MORPHS`] reconstruct as one watertight, manifold,
 //! oriented mesh, C1 at every join, within the error targets.
 
-use super::super::body_closed::{
+use crate::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, JOIN_C1_MAX, MAX_MAX_REL,
     RMS_MAX_REL,
 };
 use crate::check::{Check, Kind};
 
-const FAMILY: &str = "pde6";
+const FAMILY: &str = "body";
 const PAPER: &str = "002";
 const WHERE: &str = "sec 4, Figs 5-6 (closed body)";
 

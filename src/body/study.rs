@@ -4,7 +4,7 @@
 //! from the mesh, for three surfaces through the **same** sections at three
 //! section densities.
 //!
-//! For a density, [`super::body_closed::reconstruct_closed`] finds the
+//! For a density, [`super::closed::reconstruct_closed`] finds the
 //! layout and fits the GEC sections of every part. Through each part's
 //! sections (its collapsed tips included) three tubes are built:
 //!
@@ -23,7 +23,7 @@
 //! same surface (the same assignment gives the part's share of the mesh's
 //! vertex coordinates). The `body` rows take every part together; the
 //! `pde6-closed` row is the closed body itself (parts and the hips and
-//! shoulders transitions, the numbers of [`super::body_report`]), the only
+//! shoulders transitions, the numbers of [`super::report`]), the only
 //! surface that covers the armpits and the crotch: the tubes alone leave
 //! those out, so their `skin -> recon` maxima sit there.
 //!
@@ -32,8 +32,8 @@
 //! `ode6` its (rho, eta, lambda), the loft nothing. The mesh stores 3
 //! coordinates per vertex (the triangles' indices not counted).
 
-use super::body_closed::{reconstruct_closed, ClosedOptions};
-use super::Pde6Error;
+use super::closed::{reconstruct_closed, ClosedOptions};
+use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
 use crate::curve::Fourier3;
 use crate::mesh::metrics::{point_distances, sample_points, stats};
@@ -164,7 +164,7 @@ fn spline_eval(x: &[f64], y: &[f64], m: &[f64], u: f64) -> f64 {
 }
 
 /// The three tubes of one part: `(method, mesh)`.
-fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, Pde6Error> {
+fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, BodyError> {
     let part = build_part(p)?;
     let us: Vec<f64> = p.sections.iter().map(|s| s.u).collect();
     let curves: Vec<Fourier3> = us.iter().map(|&u| part.section(u, 0)).collect();
@@ -232,7 +232,7 @@ pub fn data_size_study(
     skin: &Mesh,
     densities: &[Density],
     base: &ClosedOptions,
-) -> Result<Vec<StudyRow>, Pde6Error> {
+) -> Result<Vec<StudyRow>, BodyError> {
     let mut rows = Vec::new();
     for d in densities {
         let o = ClosedOptions {

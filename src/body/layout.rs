@@ -24,7 +24,7 @@
 //! their convex hull when `hull`, the nearest loop otherwise); `d` follows
 //! the centroids when `follow`.
 
-use super::Pde6Error;
+use super::BodyError;
 use crate::curve::gec::fit::polygon_area_centroid;
 use crate::curve::gec::Frame;
 use crate::mesh::slice::slice;
@@ -46,8 +46,8 @@ pub const MIN_AREA: f64 = 0.02;
 /// A trace stops when the radius grows by more than this factor in a step.
 pub const JUMP: f64 = 1.8;
 
-fn layout_err(what: &'static str, detail: impl Into<String>) -> Pde6Error {
-    Pde6Error::LayoutNotFound {
+fn layout_err(what: &'static str, detail: impl Into<String>) -> BodyError {
+    BodyError::LayoutNotFound {
         what,
         detail: detail.into(),
     }
@@ -113,7 +113,7 @@ fn loop2(points: Vec<[f64; 2]>) -> Option<Loop2> {
 /// The frame of a section plane with normal `n` through `origin`: e2 is -z
 /// made perpendicular to n (so anchor 0 of the sampling, at -e2, faces the
 /// front), e1 = e2 x n.
-pub fn plane_frame(origin: [f64; 3], n: [f64; 3]) -> Result<Frame, Pde6Error> {
+pub fn plane_frame(origin: [f64; 3], n: [f64; 3]) -> Result<Frame, BodyError> {
     let n = scale(n, 1.0 / norm(n).max(f64::MIN_POSITIVE));
     let mut e2 = sub([0.0, 0.0, -1.0], scale(n, -n[2]));
     if norm(e2) < 0.2 {
@@ -133,8 +133,8 @@ pub fn loops_in_plane(m: &Mesh, frame: &Frame) -> Vec<Loop2> {
         .collect()
 }
 
-fn horizontal(m: &Mesh, y: f64) -> Result<Vec<Loop2>, Pde6Error> {
-    let f = super::sampling::section_frame(y)?;
+fn horizontal(m: &Mesh, y: f64) -> Result<Vec<Loop2>, BodyError> {
+    let f = crate::pde6::sampling::section_frame(y)?;
     Ok(loops_in_plane(m, &f))
 }
 
@@ -147,14 +147,14 @@ fn central(loops: &[Loop2]) -> Option<&Loop2> {
 }
 
 /// Finds the [`Layout`] of a standing humanoid mesh.
-pub fn find_layout(m: &Mesh) -> Result<Layout, Pde6Error> {
+pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
     if m.positions.is_empty() || m.triangles.is_empty() {
         return Err(layout_err("a body", "the mesh is empty"));
     }
     let (lo, hi) = m.bbox();
     let ext = sub(hi, lo);
     if !ext.iter().all(|x| x.is_finite()) {
-        return Err(Pde6Error::NotFinite("mesh coordinates".into()));
+        return Err(BodyError::NotFinite("mesh coordinates".into()));
     }
     let h = ext[1];
     if h <= 0.0 || h < ext[0] * 0.9 || h < ext[2] {
@@ -348,7 +348,7 @@ pub fn trace(
     dir: [f64; 3],
     radius0: f64,
     o: TraceOptions,
-) -> Result<Vec<TraceSample>, Pde6Error> {
+) -> Result<Vec<TraceSample>, BodyError> {
     let mut d = scale(dir, 1.0 / norm(dir).max(f64::MIN_POSITIVE));
     let mut p = start;
     let mut radius = radius0;

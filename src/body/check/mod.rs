@@ -1,0 +1,18 @@
+//! The checks of the body reconstruction: family `body` in
+//! [`crate::verify`]; the check names keep their `pde6.body_*` prefix (the
+//! surfaces are pde6 chains, and scripts filter on those names).
+
+use crate::check::Check;
+
+mod closed;
+mod parts;
+
+pub use parts::{ROUGHNESS_RATIO_MAX, SLIP_MAX_DEG};
+
+/// All checks of the body reconstruction.
+pub fn checks() -> Vec<Check> {
+    let mut out = Vec::new();
+    parts::body_smoothness_checks(&mut out);
+    closed::body_closed_checks(&mut out);
+    out
+}
