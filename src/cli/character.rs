@@ -40,6 +40,11 @@ pub enum Sub {
         /// {"op": "shape_parameter", "part": "torso", "a": 0.3}.
         #[arg(long)]
         op: PathBuf,
+        /// For a `force_stroke` op: a closed stroke drawn in a view, JSON
+        /// {"view": "front", "points": [[x, y], ...]} (model units), projected
+        /// onto the op's part; it replaces the op's "stroke".
+        #[arg(long)]
+        drawn: Option<PathBuf>,
     },
     /// Undo the last active edit (moves the log's cursor back).
     Undo { doc: PathBuf },
@@ -95,9 +100,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             super::sketch::finish(&built, &output, json)
         }
-        Sub::Edit { doc, op } => {
+        Sub::Edit { doc, op, drawn } => {
             let mut d = CharacterDoc::load(&doc)?;
-            let e = read_edit(&op)?;
+            let mut e = read_edit(&op)?;
+            if let Some(p) = &drawn {
+                let text = std::fs::read_to_string(p)
+                    .map_err(|err| anyhow::anyhow!("{}: {err}", p.display()))?;
+                let s: pdesculpt::sasm::Stroke = serde_json::from_str(&text)
+                    .map_err(|err| anyhow::anyhow!("{}: not a drawn stroke: {err}", p.display()))?;
+                pdesculpt::character::edit::force4::project_force_stroke(&d, &mut e, &s)?;
+            }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
             push_checked(&mut d, e, &base)?;

@@ -297,3 +297,94 @@ fn cli_force_stroke_edits_and_bad_strokes_leave_the_file_unchanged() {
         assert_eq!(std::fs::read(&doc).expect("reads"), before, "{text}");
     }
 }
+
+/// The sample stroke on the front of the torso drawn in the front view
+/// (its surface points projected), and the stroke itself.
+fn drawn_front(
+    d: &pdesculpt::character::doc::CharacterDoc,
+) -> (pdesculpt::sasm::Stroke, Vec<[f64; 2]>) {
+    use pdesculpt::profile::View;
+    use pdesculpt::surface::Surface;
+    let spec = &d.parts[0];
+    let surf = pdesculpt::sketch::part::build_part(spec).expect("builds");
+    let um = 0.5 * (surf.u0 + surf.u1);
+    let front = (0..360)
+        .map(|k| 2.0 * PI * k as f64 / 360.0)
+        .max_by(|a, b| surf.chain.point(um, *a)[2].total_cmp(&surf.chain.point(um, *b)[2]))
+        .unwrap();
+    let stroke = sample_stroke(spec, front);
+    let points = stroke
+        .iter()
+        .map(|q| View::Front.project(surf.chain.point(q[0], q[1])))
+        .collect();
+    (
+        pdesculpt::sasm::Stroke {
+            view: View::Front,
+            points,
+        },
+        stroke,
+    )
+}
+
+#[test]
+fn a_stroke_drawn_in_a_view_is_projected_onto_the_part() {
+    use pdesculpt::character::edit::force4::project_force_stroke;
+    let d = female();
+    let (drawn, want) = drawn_front(&d);
+    let mut e = stroke_edit("torso", Vec::new(), None);
+    project_force_stroke(&d, &mut e, &drawn).expect("projects");
+    let Edit::ForceStroke { stroke, .. } = &e else {
+        unreachable!()
+    };
+    assert_eq!(stroke.len(), want.len());
+    for (g, w) in stroke.iter().zip(&want) {
+        let dt = (g[1] - w[1] + PI).rem_euclid(2.0 * PI) - PI;
+        assert!(
+            (g[0] - w[0]).abs() + dt.abs() <= tol::DETECTED,
+            "{g:?} vs {w:?}"
+        );
+    }
+    let mut d2 = d.clone();
+    d2.push_edit(e)
+        .expect("the projected stroke is a valid force stroke");
+}
+
+#[test]
+fn cli_edit_projects_a_drawn_stroke_and_refuses_one_that_misses() {
+    let dir = tmpdir("edit-stroke-drawn");
+    let doc = dir.join("char.json");
+    let d = female();
+    d.save(&doc).expect("saves");
+    let (drawn, _) = drawn_front(&d);
+    let (op, st) = (dir.join("op.json"), dir.join("drawn.json"));
+    std::fs::write(
+        &op,
+        r#"{"op": "force_stroke", "part": "torso", "stroke": [], "force": {"type": "uniform", "p": [0.0, 0.0, 0.5]}}"#,
+    )
+    .unwrap();
+    let mut far = drawn.clone();
+    far.points.iter_mut().for_each(|p| p[0] += 10.0);
+    std::fs::write(&st, serde_json::to_string(&far).unwrap()).unwrap();
+    let args = |s: &Path| {
+        vec![
+            "character".to_string(),
+            "edit".into(),
+            doc.to_str().unwrap().into(),
+            "--op".into(),
+            op.to_str().unwrap().into(),
+            "--drawn".into(),
+            s.to_str().unwrap().into(),
+        ]
+    };
+    let before = std::fs::read(&doc).unwrap();
+    let a = args(&st);
+    let o = pdesculpt(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_clear_error(&o, "force stroke");
+    assert_eq!(std::fs::read(&doc).unwrap(), before);
+    std::fs::write(&st, serde_json::to_string(&drawn).unwrap()).unwrap();
+    let o = pdesculpt(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = pdesculpt(&["character", "log", doc.to_str().unwrap()]);
+    let log = String::from_utf8_lossy(&o.stdout);
+    assert!(log.contains("inside a stroke of 97 points"), "{log}");
+}

@@ -153,3 +153,49 @@ pub const THETA_SPAN_MIN: f64 = 1e-2;
 /// Smallest u range of a 4-sided force (rectangle or stroke's bounding
 /// box) as a fraction of its part's u range.
 pub const U_SPAN_MIN_FRACTION: f64 = 1e-3;
+
+/// Sets the `stroke` of a stroke force edit from a stroke drawn in a view
+/// (`crate::sasm::Stroke`: 2D points in an orthographic view), projected
+/// onto the target part of `doc`'s current state (its stored parts with the
+/// active spec-level edits; an earlier force's displacement is not
+/// included) by ray casting (`sasm::project`); the angles are unwrapped
+/// along the stroke so that a stroke across `theta = 0` stays one curve.
+/// A point that misses the part is a named error.
+pub fn project_force_stroke(
+    doc: &crate::character::doc::CharacterDoc,
+    e: &mut Edit,
+    drawn: &crate::sasm::Stroke,
+) -> Result<(), EditError> {
+    let op = e.op();
+    let Edit::ForceStroke { part, stroke, .. } = e else {
+        return Err(EditError::Invalid {
+            op,
+            part: e.part().unwrap_or("").into(),
+            message: "a drawn stroke needs a force_stroke edit".into(),
+        });
+    };
+    let invalid = |m: String| EditError::Invalid {
+        op,
+        part: part.clone(),
+        message: m,
+    };
+    let parts = super::apply_to_parts(&doc.parts, doc.active_edits())?;
+    let spec = parts
+        .iter()
+        .find(|p| &p.name == part)
+        .ok_or_else(|| super::unknown_part(&parts, part))?;
+    let surf = crate::sketch::part::build_part(spec).map_err(|err| invalid(err.to_string()))?;
+    let pr = crate::sasm::project::Projector::new(&surf, drawn.view);
+    let hits = crate::sasm::project::project_stroke(&pr, "force stroke", &drawn.points)
+        .map_err(|err| invalid(err.to_string()))?;
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(hits.len());
+    for h in hits {
+        let t = match out.last() {
+            Some(l) => l[1] + (h.theta - l[1] + PI).rem_euclid(2.0 * PI) - PI,
+            None => h.theta,
+        };
+        out.push([h.u, t]);
+    }
+    *stroke = out;
+    Ok(())
+}
