@@ -5,7 +5,8 @@ use pdesculpt::verify as check;
 /// Arguments of `pdesculpt verify`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Only this family (jet, mesh, surface, gec, pde4, plate, pde6, ode6, conv).
+    /// Only this family: jet, mesh, surface, gec, pde4, plate, pde6, ode6,
+    /// conv, profile, sketch, template, edit, sasm, body, derivatives.
     #[arg(long)]
     pub family: Option<String>,
     /// Print only failing checks in the table.

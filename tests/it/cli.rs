@@ -42,6 +42,20 @@ fn help_lists_the_subcommands() {
 }
 
 #[test]
+fn verify_help_names_every_family() {
+    let out = pdesculpt(&["verify", "--help"]);
+    assert!(out.status.success());
+    let s = String::from_utf8_lossy(&out.stdout);
+    for f in pdesculpt::verify::families() {
+        assert!(
+            s.contains(f.name),
+            "`verify --help` omits family {}",
+            f.name
+        );
+    }
+}
+
+#[test]
 fn verify_json_lists_infrastructure_checks() {
     let out = pdesculpt(&["verify", "--family", "jet", "--json"]);
     assert!(
