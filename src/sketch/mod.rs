@@ -56,6 +56,7 @@ pub mod poly;
 pub mod quadruped;
 pub mod removed;
 pub mod report;
+pub mod seam;
 pub mod segment;
 pub mod transition;
 

@@ -17,7 +17,7 @@
 //!   good state;
 //! * [`autosave`]: the `CHAR.json.autosave` sidecar written after every
 //!   change and offered for recovery on the next start;
-//! * [`view`]: drawing; [`term`]: the crossterm event loop.
+//! * [`view`]: drawing (popups in `popup`); [`term`]: the crossterm event loop.
 //!
 //! * [`commands`]: add a part from an SVG profile, a key section, a prop
 //!   from a conv model (`character::props`), typed into a prompt.
@@ -46,6 +46,7 @@ pub mod history;
 pub mod keys;
 pub mod kitty;
 pub mod params;
+mod popup;
 pub mod preview;
 pub mod term;
 pub mod view;

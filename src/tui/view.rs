@@ -5,14 +5,13 @@
 
 use super::app::{App, Focus, ItemKind, Mode};
 use super::fit::{elide_left, fit};
-use super::keys::BINDINGS;
 use super::preview::{self, HalfBlocks};
 use crate::character::doc::ProfileInput;
 use crate::render::Image;
 use ratatui::layout::{Constraint, Direction, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Borders, Clear, List, ListItem, ListState, Paragraph, Wrap};
+use ratatui::widgets::{Block, Borders, List, ListItem, ListState, Paragraph, Wrap};
 use ratatui::Frame;
 
 /// The preview image of the last draw and what it was drawn for.
@@ -71,7 +70,7 @@ impl PreviewCache {
     }
 }
 
-fn block(title: &str, focused: bool) -> Block<'_> {
+pub(super) fn block(title: &str, focused: bool) -> Block<'_> {
     let style = if focused {
         Style::default().fg(Color::Yellow)
     } else {
@@ -118,7 +117,7 @@ pub fn draw(f: &mut Frame, app: &App, cache: &mut PreviewCache) {
     draw_log(f, app, right[1]);
     f.render_widget(Paragraph::new(status_line(app)), rows[1]);
     draw_message(f, app, rows[2]);
-    draw_popup(f, app);
+    super::popup::draw_popup(f, app);
 }
 
 fn draw_tree(f: &mut Frame, app: &App, area: Rect) {
@@ -479,58 +478,3 @@ fn draw_message(f: &mut Frame, app: &App, area: Rect) {
 
 /// Characters of a typed prompt kept on screen however long its error is.
 const PROMPT_MIN_SHOWN: usize = 16;
-
-fn centred(area: Rect, w: u16, h: u16) -> Rect {
-    let w = w.min(area.width);
-    let h = h.min(area.height);
-    Rect::new(
-        area.x + (area.width - w) / 2,
-        area.y + (area.height - h) / 2,
-        w,
-        h,
-    )
-}
-
-fn draw_popup(f: &mut Frame, app: &App) {
-    let (title, lines): (&str, Vec<Line>) = match &app.mode {
-        Mode::Help => (
-            "Keys (any key closes)",
-            BINDINGS
-                .iter()
-                .map(|(k, what)| {
-                    Line::from(vec![
-                        Span::styled(format!("{k:<16}"), Style::default().fg(Color::Yellow)),
-                        Span::raw(*what),
-                    ])
-                })
-                .collect(),
-        ),
-        Mode::ConfirmQuit => (
-            "Unsaved changes",
-            vec![
-                Line::from("The document has unsaved changes."),
-                Line::from("y: save and quit   n: quit without saving   Esc: stay"),
-            ],
-        ),
-        Mode::Recovery(_) => (
-            "Recover?",
-            vec![
-                Line::from(fit(
-                    &format!(
-                        "{} is newer than the document:",
-                        super::autosave::sidecar(&app.path).display()
-                    ),
-                    (f.area().width as usize).saturating_sub(4),
-                )),
-                Line::from("unsaved changes of an earlier session."),
-                Line::from("y: recover them   n: discard the autosave"),
-            ],
-        ),
-        _ => return,
-    };
-    let h = lines.len() as u16 + 2;
-    let w = lines.iter().map(|l| l.width() as u16).max().unwrap_or(10) + 4;
-    let area = centred(f.area(), w.max(title.len() as u16 + 4), h);
-    f.render_widget(Clear, area);
-    f.render_widget(Paragraph::new(lines).block(block(title, true)), area);
-}
