@@ -11,6 +11,7 @@
 
 use super::model::Model;
 use super::narrow::{self, FIELD_TOLERANCE};
+use super::sample::node_position;
 use crate::check::{Check, Kind};
 
 const FAMILY: &str = "conv";
@@ -54,7 +55,6 @@ pub fn compare_sides(m: &Model, resolution: usize) -> Result<Sides, String> {
         fast.spacing,
         fast.dims,
     );
-    let d = fast.dims;
     let mut out = Sides {
         settled: stats.reference_nodes,
         ..Sides::default()
@@ -63,9 +63,7 @@ pub fn compare_sides(m: &Model, resolution: usize) -> Result<Sides, String> {
         if (w - t).abs() > SIDE_SHELL * t {
             continue;
         }
-        let ijk = [id % d[0], (id / d[0]) % d[1], id / (d[0] * d[1])];
-        let x = [0, 1, 2].map(|a| fast.origin[a] + ijk[a] as f64 * fast.spacing[a]);
-        let r = b.group_field(0, x);
+        let r = b.group_field(0, node_position(fast.origin, fast.spacing, fast.dims, id));
         out.shell += 1;
         out.differ += usize::from((f > t) != (r > t));
         out.differ_raw += usize::from((w > t) != (r > t));

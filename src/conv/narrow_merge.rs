@@ -5,6 +5,7 @@
 
 use super::bvh::{Interaction, SegmentBvh};
 use super::narrow::NarrowStats;
+use super::sample::node_position;
 use crate::mesh::isosurface::ScalarGrid;
 
 /// A write of the sequential traversal (applied in order by [`merge`]).
@@ -113,12 +114,8 @@ fn evaluate_pending(
     threads: usize,
 ) -> (usize, usize) {
     let node = |id: usize, c: &LeafContext| {
-        let (i, j, k) = (
-            id % grid.dims[0],
-            (id / grid.dims[0]) % grid.dims[1],
-            id / (grid.dims[0] * grid.dims[1]),
-        );
-        c.far + grid.bvh.near_field(&c.near, grid.at(i, j, k))
+        let x = node_position(grid.origin, grid.spacing, grid.dims, id);
+        c.far + grid.bvh.near_field(&c.near, x)
     };
     let mut out = vec![0.0; pending.len()];
     let per = pending.len().div_ceil(threads.max(1)).max(1);

@@ -29,20 +29,27 @@ pub fn settle_near_threshold(
     margin: f64,
     reference: impl Fn([f64; 3]) -> f64,
 ) -> usize {
-    let d = grid.dims;
+    let (origin, spacing, dims) = (grid.origin, grid.spacing, grid.dims);
     let mut n = 0;
     for (id, v) in grid.values.iter_mut().enumerate() {
         if (*v - threshold).abs() <= margin {
-            let (i, j, k) = (id % d[0], (id / d[0]) % d[1], id / (d[0] * d[1]));
-            *v = reference([
-                grid.origin[0] + i as f64 * grid.spacing[0],
-                grid.origin[1] + j as f64 * grid.spacing[1],
-                grid.origin[2] + k as f64 * grid.spacing[2],
-            ]);
+            *v = reference(node_position(origin, spacing, dims, id));
             n += 1;
         }
     }
     n
+}
+
+/// Position of node `id` (x fastest, then y, then z) of the grid
+/// `origin + (i, j, k) * spacing` with `dims` nodes: the arithmetic of
+/// `ScalarGrid::sample`, so a value computed here is the reference's.
+pub fn node_position(origin: [f64; 3], spacing: [f64; 3], dims: [usize; 3], id: usize) -> [f64; 3] {
+    let ijk = [
+        id % dims[0],
+        (id / dims[0]) % dims[1],
+        id / (dims[0] * dims[1]),
+    ];
+    [0, 1, 2].map(|a| origin[a] + ijk[a] as f64 * spacing[a])
 }
 
 /// Largest allowed resolution (cells along the longest axis).
@@ -104,8 +111,7 @@ impl BuiltModel {
         threshold: f64,
     ) -> Result<Option<ScalarGrid>, ConvError> {
         let comps = self.group_members(g)?;
-        self.sample_group_with(g, resolution, threshold, |l, spacing, dims| {
-            let h = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * spacing[k]);
+        self.sample_group_with(g, resolution, threshold, |l, h, dims| {
             Ok(ScalarGrid::sample(l, h, dims, |r| {
                 components_field(&comps, r)
             })?)
@@ -133,7 +139,7 @@ impl BuiltModel {
         let bvh = self.group_bvh(g)?;
         let comps = self.group_members(g)?;
         let mut stats = NarrowStats::default();
-        let grid = self.sample_group_with(g, resolution, threshold, |l, spacing, dims| {
+        let grid = self.sample_group_with(g, resolution, threshold, |l, h, dims| {
             let total = dims[0].saturating_mul(dims[1]).saturating_mul(dims[2]);
             if total > MAX_NODES {
                 return Err(ConvError::Parameter(format!(
@@ -141,7 +147,6 @@ impl BuiltModel {
                 )));
             }
             // the reference's node positions (`ScalarGrid::sample`'s spacing)
-            let h = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * spacing[k]);
             let spacing = [0, 1, 2].map(|k| (h[k] - l[k]) / (dims[k] - 1) as f64);
             let budget = tolerance * threshold;
             let (mut grid, st) = narrow::sample(&bvh, threshold, budget, l, spacing, dims);
@@ -159,6 +164,7 @@ impl BuiltModel {
         g: usize,
         resolution: usize,
         threshold: f64,
+        // the sampler gets the first and last node and the node counts
         mut sample: impl FnMut([f64; 3], [f64; 3], [usize; 3]) -> Result<ScalarGrid, ConvError>,
     ) -> Result<Option<ScalarGrid>, ConvError> {
         check_resolution(resolution)?;
@@ -189,7 +195,8 @@ impl BuiltModel {
             let side = (0..3).map(|k| h[k] - l[k]).fold(0.0, f64::max);
             let cell = side / resolution as f64;
             let dims = [0, 1, 2].map(|k| (((h[k] - l[k]) / cell).ceil() as usize + 1).max(3));
-            let grid = sample(l, [cell; 3], dims)?;
+            let last = [0, 1, 2].map(|k| l[k] + (dims[k] - 1) as f64 * cell);
+            let grid = sample(l, last, dims)?;
             // does the surface reach the grid boundary? then grow the box
             let touches = (0..grid.values.len()).any(|i| {
                 let c = [

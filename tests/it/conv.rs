@@ -1095,6 +1095,7 @@ proptest! {
 #[test]
 fn narrow_band_is_identical_for_any_thread_count() {
     use pdesculpt::conv::narrow::{sample_sequential, sample_with_threads, FIELD_TOLERANCE};
+    use pdesculpt::conv::sample::node_position;
     let m = Model::from_json(include_str!("../../data/conv/teddy.json")).expect("teddy");
     let b = m.build().expect("build");
     let t = m.options.threshold;
@@ -1144,9 +1145,7 @@ fn narrow_band_is_identical_for_any_thread_count() {
     for (id, (&fast, &raw)) in grid.values.iter().zip(&one.values).enumerate() {
         if (raw - t).abs() <= FIELD_TOLERANCE * t {
             settled += 1;
-            let d = grid.dims;
-            let (i, j, k) = (id % d[0], (id / d[0]) % d[1], id / (d[0] * d[1]));
-            let x = [0, 1, 2].map(|a| grid.origin[a] + [i, j, k][a] as f64 * grid.spacing[a]);
+            let x = node_position(grid.origin, grid.spacing, grid.dims, id);
             assert_eq!(fast.to_bits(), b.group_field(0, x).to_bits(), "node {id}");
         } else {
             assert_eq!(fast.to_bits(), raw.to_bits(), "node {id}");
