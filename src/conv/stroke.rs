@@ -192,15 +192,15 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let diag = if raw.is_empty() { 0.0 } else { dist2(lo, hi) };
-    let size = if raw.is_empty() {
+    // hypot: the squares of a tiny stroke's extent underflow
+    let diag = if raw.is_empty() {
         0.0
     } else {
         (hi[0] - lo[0]).hypot(hi[1] - lo[1])
     };
-    if size > 0.0 && size < MIN_SIZE {
+    if diag > 0.0 && diag < MIN_SIZE {
         return Err(ConvError::TooSmall {
-            size,
+            size: diag,
             limit: MIN_SIZE,
         });
     }
