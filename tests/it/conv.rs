@@ -591,6 +591,27 @@ fn model_with_stroke(stroke: &str) -> String {
     format!(r#"{{"components": [{{"name": "c", "stroke": {stroke}}}]}}"#)
 }
 
+/// Runs `conv build MODEL -o OUT --resolution RES` and asserts a clear
+/// error containing `needle`, with no `out` written.
+fn assert_build_refused(model: &std::path::Path, out: &std::path::Path, res: &str, needle: &str) {
+    use crate::cli::{assert_clear_error, pdesculpt};
+    let o = pdesculpt(&[
+        "conv",
+        "build",
+        model.to_str().expect("utf8"),
+        "-o",
+        out.to_str().expect("utf8"),
+        "--resolution",
+        res,
+    ]);
+    assert_clear_error(&o, needle);
+    assert!(
+        !out.exists(),
+        "{}: an output file was written",
+        model.display()
+    );
+}
+
 #[test]
 fn cli_build_rejects_bad_strokes_clearly_without_writing() {
     use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
@@ -621,18 +642,7 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
     for (name, text, needle) in cases {
         let model = d.join(format!("{name}.json"));
         std::fs::write(&model, text).expect("write");
-        let out_path = d.join(format!("{name}.obj"));
-        let out = pdesculpt(&[
-            "conv",
-            "build",
-            model.to_str().expect("utf8"),
-            "-o",
-            out_path.to_str().expect("utf8"),
-            "--resolution",
-            "16",
-        ]);
-        assert_clear_error(&out, needle);
-        assert!(!out_path.exists(), "{name}: an output file was written");
+        assert_build_refused(&model, &d.join(format!("{name}.obj")), "16", needle);
     }
     // bad resolution and polygonizer
     let model = d.join("ok.json");
@@ -727,7 +737,7 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
 /// directory, and resolutions out of range.
 #[test]
 fn cli_build_refuses_out_of_range_models_clearly() {
-    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    use crate::cli::tmpdir;
     use pdesculpt::conv::model::MAX_COMPONENTS;
     let d = tmpdir("conv-range");
     let square = |s: f64| format!("[[0,0],[{s:e},0],[{s:e},{s:e}],[0,{s:e}]]");
@@ -791,18 +801,7 @@ fn cli_build_refuses_out_of_range_models_clearly() {
     for (name, bytes, needle) in cases {
         let model = d.join(format!("{name}.json"));
         std::fs::write(&model, bytes).expect("write");
-        let out_path = d.join(format!("{name}.obj"));
-        let out = pdesculpt(&[
-            "conv",
-            "build",
-            model.to_str().expect("utf8"),
-            "-o",
-            out_path.to_str().expect("utf8"),
-            "--resolution",
-            "16",
-        ]);
-        assert_clear_error(&out, needle);
-        assert!(!out_path.exists(), "{name}: an output file was written");
+        assert_build_refused(&model, &d.join(format!("{name}.obj")), "16", needle);
     }
     let ok = d.join("ok.json");
     std::fs::write(&ok, model_with_stroke(&square(1.0))).expect("write");
@@ -814,17 +813,7 @@ fn cli_build_refuses_out_of_range_models_clearly() {
         (&ok, "100000", "resolution"),
         (&ok, "3", "resolution"),
     ] {
-        let out = pdesculpt(&[
-            "conv",
-            "build",
-            model.to_str().expect("utf8"),
-            "-o",
-            o.to_str().expect("utf8"),
-            "--resolution",
-            res,
-        ]);
-        assert_clear_error(&out, needle);
-        assert!(!o.exists());
+        assert_build_refused(model, &o, res, needle);
     }
     let _ = std::fs::remove_dir_all(&d);
 }
