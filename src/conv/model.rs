@@ -297,7 +297,10 @@ impl Model {
                 })
                 .collect();
             if let Some(rot) = c.rotate {
-                if !(rot.degrees.is_finite() && crate::mesh::norm(rot.axis) > 0.0) {
+                // a finite length: an axis of norm overflowing to infinity
+                // made `rotate` scale the component by cos(angle) instead
+                let len = crate::mesh::norm(rot.axis);
+                if !(rot.degrees.is_finite() && len.is_finite() && len > 0.0) {
                     return Err(ConvError::Model(format!(
                         "component {:?}: bad rotation {rot:?}",
                         c.name

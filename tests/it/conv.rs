@@ -727,6 +727,22 @@ fn cli_build_rejects_bad_strokes_clearly_without_writing() {
     let _ = std::fs::remove_dir_all(&d);
 }
 
+/// A rotation axis whose length overflows, (1e300, 1e300, 0), divided the
+/// axis by an infinite norm, so the "rotation" scaled the component by
+/// cos(angle) and the build said "the surface is empty at this
+/// resolution"; it is now refused as a bad rotation.
+#[test]
+fn rotation_axis_of_overflowing_length_is_refused() {
+    use pdesculpt::conv::model::Rotation;
+    let mut m = Model::from_json(&model_with_stroke("[[0,0],[1,0],[1,1],[0,1]]")).expect("model");
+    m.components[0].rotate = Some(Rotation {
+        axis: [1e300, 1e300, 0.0],
+        degrees: 90.0,
+    });
+    let e = m.build().expect_err("an overflowing axis");
+    assert!(e.to_string().contains("bad rotation"), "{e}");
+}
+
 /// Every input path of `conv build` refuses out-of-range or malformed
 /// input clearly, before writing: duplicate component names (operations
 /// and copies would pick one silently), stroke coordinates beyond
