@@ -52,7 +52,8 @@ impl ConvOptions {
     /// `skeleton.area_samples` in 4..=1024, `stroke.dp_tolerance` in
     /// [0, 0.5), `stroke.spacing` in (1e-4, 0.25]) before any work.
     pub fn validate(&self) -> Result<(), ConvError> {
-        let bad = |what: &str, v: f64| Err(ConvError::Parameter(format!("{what} = {v}")));
+        // `{v:?}`: 1e300 as "1e300", not 301 digits
+        let bad = |what: &str, v: f64| Err(ConvError::Parameter(format!("{what} {v:?}")));
         if !(self.threshold.is_finite() && self.threshold > 0.0) {
             return bad("threshold must be positive and finite, got", self.threshold);
         }

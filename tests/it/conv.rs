@@ -743,6 +743,32 @@ fn rotation_axis_of_overflowing_length_is_refused() {
     assert!(e.to_string().contains("bad rotation"), "{e}");
 }
 
+/// An option far out of range was printed in full ("radius_factor must
+/// lie in (0, 2], got = 1000...000", 301 digits); it reads "got 1e300".
+#[test]
+fn option_out_of_range_is_printed_short() {
+    use pdesculpt::conv::sketch::ConvOptions;
+    for (o, needle) in [
+        (
+            ConvOptions {
+                radius_factor: 1e300,
+                ..ConvOptions::default()
+            },
+            "radius_factor must lie in (0, 2], got 1e300",
+        ),
+        (
+            ConvOptions {
+                threshold: -1.0,
+                ..ConvOptions::default()
+            },
+            "threshold must be positive and finite, got -1.0",
+        ),
+    ] {
+        let e = o.validate().expect_err("out of range").to_string();
+        assert!(e.contains(needle), "{e}");
+    }
+}
+
 /// Every input path of `conv build` refuses out-of-range or malformed
 /// input clearly, before writing: duplicate component names (operations
 /// and copies would pick one silently), stroke coordinates beyond
