@@ -156,6 +156,10 @@ pub fn envelope_pass(
     // a sketch this far beyond an arm is the trunk bulging past it; nearer,
     // the sketch's crossing is the arm itself
     let bulge_min = opts.tolerance * h;
+    // the sketch's span per row (used again for the hidden rows' fill)
+    let sketch_span: Vec<Option<(f64, f64)>> = (0..ROWS)
+        .map(|r| depth_span(side, y0 + r as f64 * dy))
+        .collect();
     let mut full = Rows::default();
     let mut body = Rows::default();
     let mut bulge = vec![0.0f64; ROWS];
@@ -165,7 +169,7 @@ pub fn envelope_pass(
     for r in 0..ROWS {
         let y = y0 + r as f64 * dy;
         let f = depth_span(&o, y);
-        let s = depth_span(side, y);
+        let s = sketch_span[r];
         let t = trunk.as_deref().and_then(|t| depth_span(t, y)).or(f);
         full.span.push(f);
         body.span.push(t);
@@ -243,9 +247,7 @@ pub fn envelope_pass(
     };
     let fills: Vec<(Option<f64>, Option<f64>)> = (0..ROWS)
         .map(|r| {
-            let (Some((tb, tf)), Some((sb, sf))) =
-                (body.span[r], depth_span(side, y0 + r as f64 * dy))
-            else {
+            let (Some((tb, tf)), Some((sb, sf))) = (body.span[r], sketch_span[r]) else {
                 return (None, None);
             };
             (
