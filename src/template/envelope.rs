@@ -37,9 +37,9 @@
 //! (bounded, reported, undone when it does not help).
 
 use super::fit::{FitOptions, Template};
-use super::polygon::{bbox, validated};
-use super::refine::{arm_mask, depth_span};
-use super::{OutlineFn, TemplateError, View};
+use super::polygon::bbox;
+use super::refine::{depth_span, side_outlines};
+use super::{OutlineFn, TemplateError};
 
 /// Rows per height of the correction profile.
 pub const ROWS: usize = 1024;
@@ -136,28 +136,6 @@ fn span_at(s: &[Option<(f64, f64)>], r: f64) -> Option<(f64, f64)> {
     })
 }
 
-/// The trunk's side outline (arm triangles left out), if it is a closed
-/// outline.
-fn trunk_outline(
-    template: &Template,
-    positions: &[[f64; 3]],
-    arms: &[bool],
-    outline: &OutlineFn,
-) -> Option<Vec<[f64; 2]>> {
-    let skin = template.skin_at(positions);
-    let keep: Vec<bool> = skin
-        .triangles
-        .iter()
-        .map(|t| {
-            t.iter()
-                .all(|&i| !arms[template.skin_index[i as usize] as usize])
-        })
-        .collect();
-    let (tm, _) = skin.filter_triangles(&keep);
-    let t = outline(&tm, View::Side).ok()?;
-    validated("the trunk's side outline", &t).ok()
-}
-
 /// One envelope correction pass on `positions` (every template vertex)
 /// towards the sketched side profile `side`.
 pub fn envelope_pass(
@@ -167,20 +145,8 @@ pub fn envelope_pass(
     opts: &FitOptions,
     outline: &OutlineFn,
 ) -> Result<EnvelopeStats, TemplateError> {
-    let o = outline(&template.skin_at(positions), View::Side)?;
-    let o = validated("the fitted side outline", &o).map_err(|e| TemplateError::NoOutline {
-        view: "side".into(),
-        problem: e.to_string(),
-    })?;
-    let arms = if opts.envelope_arms {
-        arm_mask(template, positions, opts, outline)
-    } else {
-        None
-    };
-    let trunk = arms
-        .as_ref()
-        .and_then(|a| trunk_outline(template, positions, a, outline));
-    let arms = if trunk.is_some() { arms } else { None };
+    let (o, split) = side_outlines(template, positions, opts.envelope_arms, opts, outline)?;
+    let (arms, trunk) = split.unzip();
     let (lo, hi) = bbox(&o);
     let (slo, shi) = bbox(side);
     let (y0, y1) = (lo[1].min(slo[1]), hi[1].max(shi[1]));
@@ -190,6 +156,10 @@ pub fn envelope_pass(
     // a sketch this far beyond an arm is the trunk bulging past it; nearer,
     // the sketch's crossing is the arm itself
     let bulge_min = opts.tolerance * h;
+    // the sketch's span per row (used again for the hidden rows' fill)
+    let sketch_span: Vec<Option<(f64, f64)>> = (0..ROWS)
+        .map(|r| depth_span(side, y0 + r as f64 * dy))
+        .collect();
     let mut full = Rows::default();
     let mut body = Rows::default();
     let mut bulge = vec![0.0f64; ROWS];
@@ -199,7 +169,7 @@ pub fn envelope_pass(
     for r in 0..ROWS {
         let y = y0 + r as f64 * dy;
         let f = depth_span(&o, y);
-        let s = depth_span(side, y);
+        let s = sketch_span[r];
         let t = trunk.as_deref().and_then(|t| depth_span(t, y)).or(f);
         full.span.push(f);
         body.span.push(t);
@@ -277,9 +247,7 @@ pub fn envelope_pass(
     };
     let fills: Vec<(Option<f64>, Option<f64>)> = (0..ROWS)
         .map(|r| {
-            let (Some((tb, tf)), Some((sb, sf))) =
-                (body.span[r], depth_span(side, y0 + r as f64 * dy))
-            else {
+            let (Some((tb, tf)), Some((sb, sf))) = (body.span[r], sketch_span[r]) else {
                 return (None, None);
             };
             (

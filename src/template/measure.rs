@@ -5,7 +5,9 @@
 
 use super::fit::{Sketch, Template};
 use super::{TemplateError, View};
+use crate::mesh::{dot, norm, Mesh};
 use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, Profile, ProfileDistance};
+use std::collections::HashMap;
 
 /// A mesh's outer outline in a view (default [`OutlineOptions`]).
 pub fn mesh_outline(m: &crate::mesh::Mesh, view: View) -> Result<Vec<[f64; 2]>, TemplateError> {
@@ -104,23 +106,13 @@ pub fn bbox_baseline(template: &Template, sketch: &Sketch) -> Vec<[f64; 3]> {
 /// Dihedral angle (radians, 0 for a flat pair) across every interior edge
 /// of `m` (edges with exactly two faces), keyed by the edge's vertices;
 /// `None` for an edge next to a degenerate face.
-pub fn dihedral_angles(
-    m: &crate::mesh::Mesh,
-) -> std::collections::HashMap<(u32, u32), Option<f64>> {
-    let p = &m.positions;
-    let normal = |t: &[u32; 3]| {
-        let (a, b, c) = (p[t[0] as usize], p[t[1] as usize], p[t[2] as usize]);
-        let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-        let n = [
-            u[1] * v[2] - u[2] * v[1],
-            u[2] * v[0] - u[0] * v[2],
-            u[0] * v[1] - u[1] * v[0],
-        ];
-        let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-        (l > 0.0).then(|| [n[0] / l, n[1] / l, n[2] / l])
+pub fn dihedral_angles(m: &Mesh) -> HashMap<(u32, u32), Option<f64>> {
+    let normal = |t: usize| {
+        let n = m.face_normal_area(t);
+        let l = norm(n);
+        (l > 0.0).then(|| n.map(|x| x / l))
     };
-    let mut faces: std::collections::HashMap<(u32, u32), Vec<usize>> = Default::default();
+    let mut faces: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
     for (f, t) in m.triangles.iter().enumerate() {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
@@ -129,34 +121,34 @@ pub fn dihedral_angles(
     }
     faces
         .into_iter()
-        .filter(|(_, f)| f.len() == 2)
-        .map(|(e, f)| {
-            let ang = match (normal(&m.triangles[f[0]]), normal(&m.triangles[f[1]])) {
-                (Some(a), Some(b)) => Some(
-                    (a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
-                        .clamp(-1.0, 1.0)
-                        .acos(),
-                ),
-                _ => None,
-            };
-            (e, ang)
+        .filter_map(|(e, f)| {
+            let [f0, f1] = f[..] else { return None };
+            let ang = normal(f0)
+                .zip(normal(f1))
+                .map(|(a, b)| dot(a, b).clamp(-1.0, 1.0).acos());
+            Some((e, ang))
         })
         .collect()
 }
-
 /// A crease: the largest increase of the dihedral angle (radians) across
 /// an interior edge of the skin from `rest` to `moved` (same topology),
 /// over edges whose two vertices (at rest) satisfy `region`.
-pub fn crease(
-    rest: &crate::mesh::Mesh,
-    moved: &crate::mesh::Mesh,
-    region: &dyn Fn(&[f64; 3]) -> bool,
-) -> f64 {
+pub fn crease(rest: &Mesh, moved: &Mesh, region: &dyn Fn(&[f64; 3]) -> bool) -> f64 {
+    creases(rest, moved, &[region])[0]
+}
+
+/// [`crease`] for each of `regions`, the dihedral angles computed once.
+pub fn creases(rest: &Mesh, moved: &Mesh, regions: &[&dyn Fn(&[f64; 3]) -> bool]) -> Vec<f64> {
     let (a, b) = (dihedral_angles(rest), dihedral_angles(moved));
-    a.iter()
-        .filter(|(e, _)| {
-            region(&rest.positions[e.0 as usize]) && region(&rest.positions[e.1 as usize])
+    regions
+        .iter()
+        .map(|region| {
+            a.iter()
+                .filter(|(e, _)| {
+                    region(&rest.positions[e.0 as usize]) && region(&rest.positions[e.1 as usize])
+                })
+                .filter_map(|(e, x)| Some(b.get(e).copied().flatten()? - (*x)?))
+                .fold(0.0, f64::max)
         })
-        .filter_map(|(e, x)| Some(b.get(e).copied().flatten()? - (*x)?))
-        .fold(0.0, f64::max)
+        .collect()
 }

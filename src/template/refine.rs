@@ -204,36 +204,12 @@ pub fn side_pass(
     outline: &OutlineFn,
     stats: &mut WarpStats,
 ) -> Result<(), TemplateError> {
-    let o = outline(&template.skin_at(positions), View::Side)?;
-    let o = super::polygon::validated("the fitted side outline", &o).map_err(|e| {
-        TemplateError::NoOutline {
-            view: "side".into(),
-            problem: e.to_string(),
-        }
-    })?;
     // with the envelope partners and `side_trunk`, the trunk's outline
     // (arms left out: a forearm in front of the belly hides it in the side
     // view)
-    let arms = match opts.side_partner {
-        SidePartner::Envelope if opts.side_trunk => arm_mask(template, positions, opts, outline),
-        _ => None,
-    };
-    let trunk = arms.as_ref().and_then(|mask| {
-        let skin = template.skin_at(positions);
-        let keep: Vec<bool> = skin
-            .triangles
-            .iter()
-            .map(|t| {
-                t.iter()
-                    .all(|&i| !mask[template.skin_index[i as usize] as usize])
-            })
-            .collect();
-        let (tm, _) = skin.filter_triangles(&keep);
-        let t = outline(&tm, View::Side).ok()?;
-        super::polygon::validated("the trunk's side outline", &t).ok()
-    });
-    let arms = if trunk.is_some() { arms } else { None };
-    let ot: &[[f64; 2]] = trunk.as_deref().unwrap_or(&o);
+    let trunk = opts.side_partner == SidePartner::Envelope && opts.side_trunk;
+    let (o, arms) = side_outlines(template, positions, trunk, opts, outline)?;
+    let ot: &[[f64; 2]] = arms.as_ref().map_or(&o, |(_, t)| t);
     let (lo, ls) = matched_landmarks(View::Side, opts.side_scheme, ot, side)?;
     let (ca, cb) = correspond(ot, &lo, side, &ls, opts.side_centres);
     let m = ca.len();
@@ -281,7 +257,7 @@ pub fn side_pass(
     })?;
     for (i, p) in positions.iter_mut().enumerate() {
         let (y, z) = (p[1], p[2]);
-        if arms.as_ref().is_some_and(|a| a[i]) {
+        if arms.as_ref().is_some_and(|(a, _)| a[i]) {
             // arms take the body's overall depth map only
             p[2] += affine(z);
             continue;
@@ -388,6 +364,48 @@ pub fn arm_mask(
             .map(|p| p[1] < top && p[1] > bottom && (p[0] < x0 || p[0] > x1))
             .collect(),
     )
+}
+
+/// The fitted skin's side outline and, when `trunk` asks for it and the
+/// arms are found ([`arm_mask`]), the arm mask (by template vertex) with
+/// the trunk's outline (the skin without the triangles touching an arm
+/// vertex) if that is a simple closed polygon.
+pub type SideOutlines = (Vec<[f64; 2]>, Option<(Vec<bool>, Vec<[f64; 2]>)>);
+
+/// See [`SideOutlines`]; errors when the whole outline is not simple.
+pub fn side_outlines(
+    template: &Template,
+    positions: &[[f64; 3]],
+    trunk: bool,
+    opts: &FitOptions,
+    outline: &OutlineFn,
+) -> Result<SideOutlines, TemplateError> {
+    let skin = template.skin_at(positions);
+    let o = outline(&skin, View::Side)?;
+    let o = super::polygon::validated("the fitted side outline", &o).map_err(|e| {
+        TemplateError::NoOutline {
+            view: "side".into(),
+            problem: e.to_string(),
+        }
+    })?;
+    let arms = trunk
+        .then(|| arm_mask(template, positions, opts, outline))
+        .flatten();
+    let split = arms.and_then(|mask| {
+        let keep: Vec<bool> = skin
+            .triangles
+            .iter()
+            .map(|t| {
+                t.iter()
+                    .all(|&i| !mask[template.skin_index[i as usize] as usize])
+            })
+            .collect();
+        let (tm, _) = skin.filter_triangles(&keep);
+        let t = outline(&tm, View::Side).ok()?;
+        let t = super::polygon::validated("the trunk's side outline", &t).ok()?;
+        Some((mask, t))
+    });
+    Ok((o, split))
 }
 
 /// The overall depth map of the side pass.

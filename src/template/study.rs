@@ -193,26 +193,21 @@ pub const CREASE_REGIONS: [(&str, f64, f64, f64); 2] =
 /// rest, per [`CREASE_REGIONS`].
 pub fn creases(template: &Template, positions: &[[f64; 3]]) -> [f64; 2] {
     let rest = &template.skin;
-    let (lo, hi) = rest.positions.iter().fold(
-        ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-        |(mut l, mut h), p| {
-            for k in 0..3 {
-                l[k] = l[k].min(p[k]);
-                h[k] = h[k].max(p[k]);
-            }
-            (l, h)
-        },
-    );
+    let (lo, hi) = rest.bbox();
     let (xc, zc) = (0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2]));
     let h = hi[1] - lo[1];
-    let moved = template.skin_at(positions);
-    CREASE_REGIONS.map(|(_, a, b, w)| {
-        let region = |p: &[f64; 3]| {
+    let regions = CREASE_REGIONS.map(|(_, a, b, w)| {
+        move |p: &[f64; 3]| {
             let f = (p[1] - lo[1]) / h;
             p[2] > zc && f >= a && f <= b && (p[0] - xc).abs() < w * h
-        };
-        super::measure::crease(rest, &moved, &region)
-    })
+        }
+    });
+    let c = super::measure::creases(
+        rest,
+        &template.skin_at(positions),
+        &[&regions[0], &regions[1]],
+    );
+    [c[0], c[1]]
 }
 
 /// A case's rows and the positions of the template and of every level.

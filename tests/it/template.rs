@@ -506,3 +506,53 @@ fn envelope_pass_fits_a_bulging_side_profile() {
     assert!(before > 4.0 * PROFILE_REL, "before {before}");
     assert!(after <= PROFILE_REL, "before {before}, after {after}");
 }
+
+/// `measure::crease` is the largest increase of the dihedral angle over
+/// the rest mesh: a flat square (two triangles) whose second triangle is
+/// folded by 0.7 rad about the diagonal creases by 0.7; the same mesh, or
+/// a region leaving out an end of the diagonal, by 0; an edge next to a
+/// degenerate face is left out.
+#[test]
+fn crease_of_a_folded_square() {
+    use pdesculpt::template::measure::{crease, creases, dihedral_angles};
+    let tris = vec![[0, 1, 2], [0, 2, 3]];
+    let flat = Mesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ],
+        tris.clone(),
+    );
+    // fold vertex 3 about the diagonal 0-2 by `t`
+    let fold = |t: f64| {
+        let mut m = flat.clone();
+        let (c, s) = (t.cos(), t.sin());
+        // distance of vertex 3 from the diagonal, along (-1, 1)/sqrt 2
+        let d = 0.5f64.sqrt();
+        let foot = [0.5, 0.5, 0.0];
+        let out = [-0.5f64.sqrt(), 0.5f64.sqrt(), 0.0];
+        m.positions[3] = [foot[0] + d * c * out[0], foot[1] + d * c * out[1], d * s];
+        m
+    };
+    let all = |_: &[f64; 3]| true;
+    let angle = 0.7;
+    let folded = fold(angle);
+    assert!((crease(&flat, &folded, &all) - angle).abs() <= tol::SOLVE);
+    assert!(crease(&flat, &flat, &all).abs() <= tol::ROUNDING);
+    // unfolding is not a crease (an increase only)
+    assert!(crease(&folded, &flat, &all).abs() <= tol::ROUNDING);
+    let no_origin = |p: &[f64; 3]| p[0] + p[1] > 0.5;
+    let c = creases(&flat, &folded, &[&all, &no_origin]);
+    assert!(
+        (c[0] - angle).abs() <= tol::SOLVE && c[1].abs() <= tol::ROUNDING,
+        "{c:?}"
+    );
+    // one interior edge; a degenerate face gives no angle
+    let mut flat_deg = flat.clone();
+    flat_deg.positions[3] = [0.5, 0.5, 0.0];
+    assert_eq!(dihedral_angles(&flat).len(), 1);
+    assert_eq!(dihedral_angles(&flat_deg).values().next(), Some(&None));
+    assert!(crease(&flat_deg, &folded, &all).abs() <= tol::ROUNDING);
+}
