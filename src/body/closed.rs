@@ -147,7 +147,7 @@ fn fit_section(
     // crescent) falls back to its convex hull
     let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
         .or_else(|_| {
-            let h = super::layout::hull(t.plane.clone());
+            let h = crate::profile::shapes::convex_hull(&t.plane);
             fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
         })
         .map_err(|e| e.in_section(what))?;
