@@ -5,10 +5,10 @@
 use super::closed::ClosedOptions;
 use super::intersect::{self_intersections, Intersections};
 use super::layout::Layout;
-use super::sites::{error_sites, ErrorSite};
+use super::sites::{closest_hits, error_sites, hit_distances, ErrorSite};
 use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
-use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
+use crate::mesh::metrics::{sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::Mesh;
 use crate::sketch::build::{JoinReport, Model, SeamReport};
@@ -51,9 +51,21 @@ pub fn measure(
     o: &ClosedOptions,
 ) -> ClosedReport {
     let h = lay.height();
-    let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
-    let s2r = stats(&point_distances(&skin.positions, &model.mesh));
-    let (r2s_at, s2r_at) = error_sites(&model.mesh, skin, specs, lay.sole, h);
+    // one closest-point query per sample, for the statistics and the sites
+    let r2s_points = sample_points(&model.mesh);
+    let r2s_hits = closest_hits(&r2s_points, skin);
+    let s2r_hits = closest_hits(&skin.positions, &model.mesh);
+    let r2s = stats(&hit_distances(&r2s_hits));
+    let s2r = stats(&hit_distances(&s2r_hits));
+    let (r2s_at, s2r_at) = error_sites(
+        &model.mesh,
+        &r2s_points,
+        &r2s_hits,
+        &s2r_hits,
+        skin,
+        specs,
+        lay,
+    );
     let mut max_join = [0.0f64; 3];
     for j in &model.joins {
         max_join[0] = max_join[0].max(j.c0);
