@@ -59,7 +59,8 @@ fn farthest(hits: &[Hit]) -> Option<usize> {
     best.map(|b| b.0)
 }
 
-fn group_of(m: &Mesh, t: usize) -> String {
+/// The name of triangle `t`'s group (empty when the mesh has none).
+pub fn group_of(m: &Mesh, t: usize) -> String {
     let g = m.tri_group.get(t).copied().unwrap_or(0) as usize;
     m.groups.get(g).cloned().unwrap_or_default()
 }
