@@ -121,7 +121,7 @@ pub fn plane_frame(origin: [f64; 3], n: [f64; 3]) -> Result<Frame, BodyError> {
         e2 = sub([0.0, -1.0, 0.0], scale(n, -n[1]));
     }
     let e2 = scale(e2, 1.0 / norm(e2));
-    let e1 = crate::sketch::transition::cross(e2, n);
+    let e1 = crate::vec3::cross(e2, n);
     Ok(Frame::new(origin, e1, e2)?)
 }
 
