@@ -408,7 +408,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             transition_rows: o.transition_rows,
         },
     )?;
-    let report = measure(skin, &lay, &model, &specs, o);
+    let report = measure(skin, &lay, &model, &specs);
     Ok(ClosedBody {
         model,
         specs,

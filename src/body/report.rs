@@ -2,7 +2,6 @@
 //! against the input skin, join jumps, data size; and loading the body to
 //! reconstruct.
 
-use super::closed::ClosedOptions;
 use super::intersect::{self_intersections, Intersections};
 use super::layout::Layout;
 use super::sites::{closest_hits, error_sites, hit_distances, ErrorSite};
@@ -43,13 +42,7 @@ pub struct ClosedReport {
 }
 
 /// Measures a built closed body against its skin.
-pub fn measure(
-    skin: &Mesh,
-    lay: &Layout,
-    model: &Model,
-    specs: &[PartSpec],
-    o: &ClosedOptions,
-) -> ClosedReport {
+pub fn measure(skin: &Mesh, lay: &Layout, model: &Model, specs: &[PartSpec]) -> ClosedReport {
     let h = lay.height();
     // one closest-point query per sample, for the statistics and the sites
     let r2s_points = sample_points(&model.mesh);
@@ -76,12 +69,6 @@ pub fn measure(
         .iter()
         .map(|p| (p.name.clone(), p.sections.len()))
         .collect();
-    let n_fitted: usize = specs
-        .iter()
-        .flat_map(|p| &p.sections)
-        .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
-        .count();
-    let n_tips = specs.iter().map(|p| p.sections.len()).sum::<usize>() - n_fitted;
     ClosedReport {
         layout: *lay,
         body_height: h,
@@ -99,12 +86,24 @@ pub fn measure(
         joins: model.joins.clone(),
         seams: model.seams.clone(),
         sections,
-        // u, frame (origin + two unit vectors: 9), centre 2, 4 per term;
-        // a tip: u and its point
-        gec_numbers: n_fitted * (1 + 9 + 2 + 4 * o.terms) + n_tips * 4,
+        gec_numbers: specs.iter().map(section_numbers).sum(),
         skin_vertex_numbers: 3 * skin.positions.len(),
         triangles: model.mesh.triangles.len(),
     }
+}
+
+/// Numbers a part's sections store: a fitted section u, its frame (origin
+/// and two unit vectors: 9), centre 2 and 4 per term it has (a section with
+/// few sliced points is fitted with fewer than the asked terms); a collapsed
+/// tip u and its point.
+pub fn section_numbers(p: &PartSpec) -> usize {
+    p.sections
+        .iter()
+        .map(|s| match &s.shape {
+            SectionShape::Gec { x, .. } => 1 + 9 + 2 + 4 * x.len(),
+            _ => 4,
+        })
+        .sum()
 }
 
 /// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body
