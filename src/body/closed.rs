@@ -147,7 +147,7 @@ fn fit_section(
     // crescent) falls back to its convex hull
     let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
         .or_else(|_| {
-            let h = super::layout::hull(t.plane.clone());
+            let h = crate::profile::shapes::convex_hull(&t.plane);
             fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
         })
         .map_err(|e| e.in_section(what))?;
@@ -408,7 +408,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             transition_rows: o.transition_rows,
         },
     )?;
-    let report = measure(skin, &lay, &model, &specs, o);
+    let report = measure(skin, &lay, &model, &specs);
     Ok(ClosedBody {
         model,
         specs,

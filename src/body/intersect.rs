@@ -8,6 +8,7 @@
 //! edges of a pair (two non-coplanar triangles intersect if and only if an
 //! edge of one meets the other); coplanar overlaps are not counted.
 
+use super::sites::group_of;
 use crate::mesh::{dot, sub, Mesh};
 use crate::vec3::cross;
 use std::collections::HashMap;
@@ -81,6 +82,12 @@ pub const CROSS_EPS: f64 = 1e-9;
 /// this bound is a regression guard, not the target.
 pub const SELF_CROSSINGS_KNOWN_MAX: f64 = 200.0;
 
+/// A triangle whose bounding box spans more grid cells than this along an
+/// axis is not put in the grid but tested against every other triangle: one
+/// long sliver (or a spike of a failed reconstruction) would otherwise visit
+/// up to (extent / cell)^3 cells.
+pub const GRID_SPAN_MAX: i64 = 16;
+
 /// Every crossing pair of triangles of `m` that share no vertex.
 pub fn self_intersections(m: &Mesh) -> Intersections {
     let n = m.triangles.len();
@@ -96,7 +103,6 @@ pub fn self_intersections(m: &Mesh) -> Intersections {
     }
     let cell = (2.0 * edge_sum / (3 * n) as f64).max(f64::MIN_POSITIVE);
     let key = |p: [f64; 3]| p.map(|x| (x / cell).floor() as i64);
-    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
     let boxes: Vec<([i64; 3], [i64; 3])> = (0..n)
         .map(|t| {
             let c = m.corners(t);
@@ -105,7 +111,12 @@ pub fn self_intersections(m: &Mesh) -> Intersections {
             (key(lo), key(hi))
         })
         .collect();
-    for (t, (lo, hi)) in boxes.iter().enumerate() {
+    let big: Vec<bool> = boxes
+        .iter()
+        .map(|(lo, hi)| (0..3).any(|k| hi[k].saturating_sub(lo[k]) > GRID_SPAN_MAX))
+        .collect();
+    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+    for (t, (lo, hi)) in boxes.iter().enumerate().filter(|(t, _)| !big[*t]) {
         for i in lo[0]..=hi[0] {
             for j in lo[1]..=hi[1] {
                 for k in lo[2]..=hi[2] {
@@ -116,8 +127,32 @@ pub fn self_intersections(m: &Mesh) -> Intersections {
     }
     let mut out = Intersections::default();
     let mut groups: HashMap<String, usize> = HashMap::new();
+    let mut test = |t: usize, s: usize| {
+        let (tv, sv) = (m.triangles[t], m.triangles[s]);
+        if tv.iter().any(|v| sv.contains(v)) {
+            return;
+        }
+        if let Some(p) = triangles_cross(m.corners(t), m.corners(s), CROSS_EPS) {
+            out.pairs += 1;
+            out.example.get_or_insert(p);
+            let (mut a, mut b) = (group_of(m, t), group_of(m, s));
+            if a > b {
+                std::mem::swap(&mut a, &mut b);
+            }
+            *groups.entry(format!("{a}/{b}")).or_default() += 1;
+        }
+    };
     let mut cand = Vec::new();
     for (t, (lo, hi)) in boxes.iter().enumerate() {
+        if big[t] {
+            // against every triangle after it, and every grid one before it
+            for s in (0..n).filter(|&s| s > t || !big[s]) {
+                if s != t {
+                    test(t, s);
+                }
+            }
+            continue;
+        }
         cand.clear();
         for i in lo[0]..=hi[0] {
             for j in lo[1]..=hi[1] {
@@ -130,26 +165,8 @@ pub fn self_intersections(m: &Mesh) -> Intersections {
         }
         cand.sort_unstable();
         cand.dedup();
-        let tv = m.triangles[t];
-        let ct = m.corners(t);
         for &s in &cand {
-            let sv = m.triangles[s as usize];
-            if tv.iter().any(|v| sv.contains(v)) {
-                continue;
-            }
-            if let Some(p) = triangles_cross(ct, m.corners(s as usize), CROSS_EPS) {
-                out.pairs += 1;
-                out.example.get_or_insert(p);
-                let name = |t: usize| {
-                    let g = m.tri_group.get(t).copied().unwrap_or(0) as usize;
-                    m.groups.get(g).cloned().unwrap_or_default()
-                };
-                let (mut a, mut b) = (name(t), name(s as usize));
-                if a > b {
-                    std::mem::swap(&mut a, &mut b);
-                }
-                *groups.entry(format!("{a}/{b}")).or_default() += 1;
-            }
+            test(t, s as usize);
         }
     }
     out.by_groups = groups.into_iter().collect();

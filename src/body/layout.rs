@@ -29,6 +29,7 @@ use crate::curve::gec::fit::polygon_area_centroid;
 use crate::curve::gec::Frame;
 use crate::mesh::slice::slice;
 use crate::mesh::{add, dist, dot, norm, scale, sub, Mesh};
+use crate::profile::shapes::convex_hull;
 
 /// Scan step of the landmark search, relative to the height.
 pub const SCAN_STEP: f64 = 0.005;
@@ -120,7 +121,7 @@ pub fn plane_frame(origin: [f64; 3], n: [f64; 3]) -> Result<Frame, BodyError> {
         e2 = sub([0.0, -1.0, 0.0], scale(n, -n[1]));
     }
     let e2 = scale(e2, 1.0 / norm(e2));
-    let e1 = crate::sketch::transition::cross(e2, n);
+    let e1 = crate::vec3::cross(e2, n);
     Ok(Frame::new(origin, e1, e2)?)
 }
 
@@ -311,35 +312,6 @@ pub struct TraceOptions {
     pub jump: f64,
 }
 
-/// Convex hull (counter-clockwise) of plane points.
-pub fn hull(mut p: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
-    p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    p.dedup();
-    if p.len() < 3 {
-        return p;
-    }
-    let cr = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
-    let mut h: Vec<[f64; 2]> = Vec::with_capacity(2 * p.len());
-    for pass in 0..2 {
-        let start = h.len();
-        let it: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in it {
-            while h.len() >= start + 2 && cr(h[h.len() - 2], h[h.len() - 1], q) <= 0.0 {
-                h.pop();
-            }
-            h.push(q);
-        }
-        h.pop();
-    }
-    h
-}
-
 /// Traces a limb from `start` in direction `dir` (see the module doc).
 /// `radius0` is the expected radius at the start.
 pub fn trace(
@@ -366,12 +338,11 @@ pub fn trace(
         let chosen = if caught.is_empty() {
             None
         } else if o.hull {
-            loop2(hull(
-                caught
-                    .iter()
-                    .flat_map(|l| l.points.iter().copied())
-                    .collect(),
-            ))
+            let pts: Vec<[f64; 2]> = caught
+                .iter()
+                .flat_map(|l| l.points.iter().copied())
+                .collect();
+            loop2(convex_hull(&pts))
         } else {
             caught
                 .iter()

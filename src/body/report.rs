@@ -2,13 +2,12 @@
 //! against the input skin, join jumps, data size; and loading the body to
 //! reconstruct.
 
-use super::closed::ClosedOptions;
 use super::intersect::{self_intersections, Intersections};
 use super::layout::Layout;
-use super::sites::{error_sites, ErrorSite};
+use super::sites::{closest_hits, error_sites, hit_distances, ErrorSite};
 use super::BodyError;
 use crate::character::doc::{PartSpec, SectionShape};
-use crate::mesh::metrics::{point_distances, sample_points, stats, DistanceStats};
+use crate::mesh::metrics::{sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::Mesh;
 use crate::sketch::build::{JoinReport, Model, SeamReport};
@@ -43,17 +42,23 @@ pub struct ClosedReport {
 }
 
 /// Measures a built closed body against its skin.
-pub fn measure(
-    skin: &Mesh,
-    lay: &Layout,
-    model: &Model,
-    specs: &[PartSpec],
-    o: &ClosedOptions,
-) -> ClosedReport {
+pub fn measure(skin: &Mesh, lay: &Layout, model: &Model, specs: &[PartSpec]) -> ClosedReport {
     let h = lay.height();
-    let r2s = stats(&point_distances(&sample_points(&model.mesh), skin));
-    let s2r = stats(&point_distances(&skin.positions, &model.mesh));
-    let (r2s_at, s2r_at) = error_sites(&model.mesh, skin, specs, lay.sole, h);
+    // one closest-point query per sample, for the statistics and the sites
+    let r2s_points = sample_points(&model.mesh);
+    let r2s_hits = closest_hits(&r2s_points, skin);
+    let s2r_hits = closest_hits(&skin.positions, &model.mesh);
+    let r2s = stats(&hit_distances(&r2s_hits));
+    let s2r = stats(&hit_distances(&s2r_hits));
+    let (r2s_at, s2r_at) = error_sites(
+        &model.mesh,
+        &r2s_points,
+        &r2s_hits,
+        &s2r_hits,
+        skin,
+        specs,
+        lay,
+    );
     let mut max_join = [0.0f64; 3];
     for j in &model.joins {
         max_join[0] = max_join[0].max(j.c0);
@@ -64,12 +69,6 @@ pub fn measure(
         .iter()
         .map(|p| (p.name.clone(), p.sections.len()))
         .collect();
-    let n_fitted: usize = specs
-        .iter()
-        .flat_map(|p| &p.sections)
-        .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
-        .count();
-    let n_tips = specs.iter().map(|p| p.sections.len()).sum::<usize>() - n_fitted;
     ClosedReport {
         layout: *lay,
         body_height: h,
@@ -87,12 +86,24 @@ pub fn measure(
         joins: model.joins.clone(),
         seams: model.seams.clone(),
         sections,
-        // u, frame (origin + two unit vectors: 9), centre 2, 4 per term;
-        // a tip: u and its point
-        gec_numbers: n_fitted * (1 + 9 + 2 + 4 * o.terms) + n_tips * 4,
+        gec_numbers: specs.iter().map(section_numbers).sum(),
         skin_vertex_numbers: 3 * skin.positions.len(),
         triangles: model.mesh.triangles.len(),
     }
+}
+
+/// Numbers a part's sections store: a fitted section u, its frame (origin
+/// and two unit vectors: 9), centre 2 and 4 per term it has (a section with
+/// few sliced points is fitted with fewer than the asked terms); a collapsed
+/// tip u and its point.
+pub fn section_numbers(p: &PartSpec) -> usize {
+    p.sections
+        .iter()
+        .map(|s| match &s.shape {
+            SectionShape::Gec { x, .. } => 1 + 9 + 2 + 4 * x.len(),
+            _ => 4,
+        })
+        .sum()
 }
 
 /// The body to reconstruct: the mesh at `path`, or the bundled MakeHuman body

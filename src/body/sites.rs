@@ -4,6 +4,7 @@
 //! of its triangle), the nearest key section of that part, its height above
 //! the sole (relative to the body height) and the point itself.
 
+use super::layout::Layout;
 use crate::character::doc::PartSpec;
 use crate::mesh::metrics::TriangleBvh;
 use crate::mesh::{dist, Mesh};
@@ -27,33 +28,39 @@ pub struct ErrorSite {
     pub height_rel: f64,
 }
 
-/// (sample index, point, closest point, closest triangle, distance).
-type Farthest = (usize, [f64; 3], [f64; 3], usize, f64);
+/// A sample's closest point on the other mesh, its distance and the
+/// closest triangle (as [`TriangleBvh::closest`]).
+pub type Hit = Option<([f64; 3], f64, usize)>;
 
-/// The farthest sample of `from` (vertices, then triangle centroids when
-/// `centroids`) from `to`: (sample index, point, closest point on `to`,
-/// closest triangle of `to`, distance).
-fn farthest(from: &Mesh, to: &Mesh, centroids: bool) -> Option<Farthest> {
+/// The closest point on `to` of every one of `points` (one BVH).
+pub fn closest_hits(points: &[[f64; 3]], to: &Mesh) -> Vec<Hit> {
     let bvh = TriangleBvh::new(to);
-    let mut pts = from.positions.clone();
-    if centroids {
-        pts.extend((0..from.triangles.len()).map(|t| {
-            let [a, b, c] = from.corners(t);
-            std::array::from_fn(|k| (a[k] + b[k] + c[k]) / 3.0)
-        }));
-    }
-    let mut best: Option<Farthest> = None;
-    for (i, p) in pts.into_iter().enumerate() {
-        if let Some((q, d, t)) = bvh.closest(p) {
-            if best.as_ref().is_none_or(|b| d > b.4) {
-                best = Some((i, p, q, t, d));
+    points.iter().map(|&p| bvh.closest(p)).collect()
+}
+
+/// The distances of `hits` (infinite where `to` had no triangle), as
+/// [`crate::mesh::metrics::point_distances`] gives them.
+pub fn hit_distances(hits: &[Hit]) -> Vec<f64> {
+    hits.iter()
+        .map(|c| c.map_or(f64::INFINITY, |c| c.1))
+        .collect()
+}
+
+/// Index of the first farthest hit.
+fn farthest(hits: &[Hit]) -> Option<usize> {
+    let mut best: Option<(usize, f64)> = None;
+    for (i, h) in hits.iter().enumerate() {
+        if let Some((_, d, _)) = *h {
+            if best.is_none_or(|b| d > b.1) {
+                best = Some((i, d));
             }
         }
     }
-    best
+    best.map(|b| b.0)
 }
 
-fn group_of(m: &Mesh, t: usize) -> String {
+/// The name of triangle `t`'s group (empty when the mesh has none).
+pub fn group_of(m: &Mesh, t: usize) -> String {
     let g = m.tri_group.get(t).copied().unwrap_or(0) as usize;
     m.groups.get(g).cloned().unwrap_or_default()
 }
@@ -84,16 +91,22 @@ fn site(
     }
 }
 
-/// (recon -> skin, skin -> recon) maxima of `recon` against `skin`; `sole`
-/// and `h` the layout's sole height and body height.
+/// (recon -> skin, skin -> recon) maxima of `recon` against the skin, from
+/// the hits already measured: `r2s` of `r2s_points` (the recon's vertices,
+/// then its triangle centroids, [`crate::mesh::metrics::sample_points`]) on
+/// the skin, `s2r` of the skin vertices on `recon`; heights from `lay`.
 pub fn error_sites(
     recon: &Mesh,
+    r2s_points: &[[f64; 3]],
+    r2s: &[Hit],
+    s2r: &[Hit],
     skin: &Mesh,
     specs: &[PartSpec],
-    sole: f64,
-    h: f64,
+    lay: &Layout,
 ) -> (Option<ErrorSite>, Option<ErrorSite>) {
-    let r2s = farthest(recon, skin, true).map(|(i, p, q, _, d)| {
+    let (sole, h) = (lay.sole, lay.height());
+    let r2s_at = farthest(r2s).and_then(|i| {
+        let (q, d, _) = r2s[i]?;
         // a vertex sample: the first triangle using it; a centroid: its own
         let t = if i < recon.positions.len() {
             recon
@@ -104,11 +117,29 @@ pub fn error_sites(
         } else {
             i - recon.positions.len()
         };
-        site(group_of(recon, t), p, q, d, specs, sole, h)
+        Some(site(
+            group_of(recon, t),
+            r2s_points[i],
+            q,
+            d,
+            specs,
+            sole,
+            h,
+        ))
     });
-    let s2r = farthest(skin, recon, false)
-        .map(|(_, p, q, t, d)| site(group_of(recon, t), p, q, d, specs, sole, h));
-    (r2s, s2r)
+    let s2r_at = farthest(s2r).and_then(|i| {
+        let (q, d, t) = s2r[i]?;
+        Some(site(
+            group_of(recon, t),
+            skin.positions[i],
+            q,
+            d,
+            specs,
+            sole,
+            h,
+        ))
+    });
+    (r2s_at, s2r_at)
 }
 
 impl ErrorSite {

@@ -33,8 +33,9 @@
 //! coordinates per vertex (the triangles' indices not counted).
 
 use super::closed::{reconstruct_closed, ClosedOptions};
+use super::report::section_numbers;
 use super::BodyError;
-use crate::character::doc::{PartSpec, SectionShape};
+use crate::character::doc::PartSpec;
 use crate::curve::Fourier3;
 use crate::mesh::metrics::{point_distances, sample_points, stats};
 use crate::mesh::Mesh;
@@ -101,16 +102,6 @@ pub struct StudyRow {
     pub recon_to_skin_max_rel: f64,
     pub skin_to_recon_rms_rel: f64,
     pub skin_to_recon_max_rel: f64,
-}
-
-fn section_numbers(p: &PartSpec) -> usize {
-    p.sections
-        .iter()
-        .map(|s| match &s.shape {
-            SectionShape::Gec { x, .. } => 1 + 9 + 2 + 4 * x.len(),
-            _ => 4,
-        })
-        .sum()
 }
 
 /// `sum w_i c_i` of Fourier curves with equal harmonic counts.

@@ -48,6 +48,11 @@ pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
             edges.entry((a.min(b), a.max(b))).or_default().push(t);
         }
     }
+    // in edge order, not the map's (seeded per map): the creased length is
+    // a sum and the maximum's place a first-found, so the report would
+    // otherwise change in its last bits from run to run
+    let mut edges: Vec<((u32, u32), Vec<usize>)> = edges.into_iter().collect();
+    edges.sort_unstable_by_key(|e| e.0);
     let normals: Vec<[f64; 3]> = (0..m.triangles.len()).map(|t| unit_normal(m, t)).collect();
     let mut out: Vec<CreaseReport> = m
         .groups
@@ -60,7 +65,7 @@ pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
             creased_length: 0.0,
         })
         .collect();
-    for (&(a, b), ts) in &edges {
+    for &((a, b), ref ts) in &edges {
         let [t0, t1] = ts[..] else { continue };
         let ang = dot(normals[t0], normals[t1])
             .clamp(-1.0, 1.0)

@@ -5,9 +5,10 @@
 //! they meet G1 along it.
 
 use super::part::PartSurface;
-use super::transition::{cross, cut_indices, hermite, RING_VERTICES};
+use super::transition::{cut_indices, hermite, RING_VERTICES};
 use crate::character::doc::End;
 use crate::mesh::{add, dot, norm, scale, sub};
+use crate::vec3::cross;
 use std::f64::consts::PI;
 
 /// Geometry of one seam: two cubic Hermite pieces, front cut to apex and

@@ -206,30 +206,35 @@ pub fn loop_eval(
     tau: f64,
 ) -> ([f64; 3], [f64; 3]) {
     let n = RING_VERTICES as f64;
-    let tau = tau.rem_euclid(ct.n as f64);
-    let mut start = 0.0;
     let p0 = parent.section(ct.parent_u, 0);
     let p1 = parent.section(ct.parent_u, 1);
     let ptan = |phi: f64| scale(p1.eval(phi), ct.sgn * ct.ell);
+    match locate(ct, tau) {
+        (Run::Arc { from, count }, f) => {
+            let phi = 2.0 * PI * (from as f64 + f * count as f64) / n;
+            (p0.eval(phi), ptan(phi))
+        }
+        (Run::Seam { j, reversed }, f) => {
+            let s = &seams[j];
+            let t = if reversed { 1.0 - f } else { f };
+            let side = ct.side.iter().find(|(jj, _)| *jj == j).map_or(0.0, |x| x.1);
+            (s.point(t), seam_tangent(s, t, ct.ell, side, &p1))
+        }
+    }
+}
+
+/// The run of the loop at continuous parameter `tau` (taken modulo the
+/// loop's length) and the fraction `f` in [0, 1] of the way along it.
+fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
+    let tau = tau.rem_euclid(ct.n as f64);
+    let mut start = 0.0;
     for r in &ct.runs {
         let len = match r {
             Run::Arc { count, .. } => *count as f64,
             Run::Seam { .. } => (SEAM_VERTICES + 1) as f64,
         };
         if tau < start + len || std::ptr::eq(r, ct.runs.last().unwrap_or(r)) {
-            let f = (tau - start) / len;
-            match *r {
-                Run::Arc { from, count } => {
-                    let phi = 2.0 * PI * (from as f64 + f * count as f64) / n;
-                    return (p0.eval(phi), ptan(phi));
-                }
-                Run::Seam { j, reversed } => {
-                    let s = &seams[j];
-                    let t = if reversed { 1.0 - f } else { f };
-                    let side = ct.side.iter().find(|(jj, _)| *jj == j).map_or(0.0, |x| x.1);
-                    return (s.point(t), seam_tangent(s, t, ct.ell, side, &p1));
-                }
-            }
+            return (*r, (tau - start) / len);
         }
         start += len;
     }
@@ -315,34 +320,21 @@ pub fn loop_second(
     tau: f64,
 ) -> [f64; 3] {
     let n = RING_VERTICES as f64;
-    let tau = tau.rem_euclid(ct.n as f64);
     let p2 = parent.section(ct.parent_u, 2);
     let e2 = ct.ell * ct.ell;
-    let mut start = 0.0;
-    for r in &ct.runs {
-        let len = match r {
-            Run::Arc { count, .. } => *count as f64,
-            Run::Seam { .. } => (SEAM_VERTICES + 1) as f64,
-        };
-        if tau < start + len || std::ptr::eq(r, ct.runs.last().unwrap_or(r)) {
-            let f = (tau - start) / len;
-            return match *r {
-                Run::Arc { from, count } => {
-                    scale(p2.eval(2.0 * PI * (from as f64 + f * count as f64) / n), e2)
-                }
-                Run::Seam { j, reversed } => {
-                    let s = &seams[j];
-                    let t = if reversed { 1.0 - f } else { f };
-                    let w = seam_weight(t);
-                    let af = p2.eval(2.0 * PI * s.i_front as f64 / n);
-                    let ab = p2.eval(2.0 * PI * s.i_back as f64 / n);
-                    scale(add(scale(af, 1.0 - t), scale(ab, t)), e2 * (1.0 - w))
-                }
-            };
+    match locate(ct, tau) {
+        (Run::Arc { from, count }, f) => {
+            scale(p2.eval(2.0 * PI * (from as f64 + f * count as f64) / n), e2)
         }
-        start += len;
+        (Run::Seam { j, reversed }, f) => {
+            let s = &seams[j];
+            let t = if reversed { 1.0 - f } else { f };
+            let w = seam_weight(t);
+            let af = p2.eval(2.0 * PI * s.i_front as f64 / n);
+            let ab = p2.eval(2.0 * PI * s.i_back as f64 / n);
+            scale(add(scale(af, 1.0 - t), scale(ab, t)), e2 * (1.0 - w))
+        }
     }
-    unreachable!("tau is reduced into the loop")
 }
 
 /// The transition's d-th s-derivative at `(s, tau)`.
@@ -443,13 +435,4 @@ pub fn child_transition(
 fn centroid(p: &[[f64; 3]]) -> [f64; 3] {
     let s = p.iter().fold([0.0; 3], |a, b| add(a, *b));
     scale(s, 1.0 / p.len().max(1) as f64)
-}
-
-/// Cross product.
-pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
 }

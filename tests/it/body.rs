@@ -149,6 +149,23 @@ fn self_intersection_detector_sees_crossings() {
     assert!(x.example.is_some());
 }
 
+/// A triangle a million grid cells long (a spike of a failed
+/// reconstruction) does not make the grid walk (extent / cell)^3 cells: it
+/// is tested against every other triangle, and its crossings are counted.
+#[test]
+fn self_intersections_of_a_huge_triangle_finish_and_count() {
+    use pdesculpt::body::intersect::self_intersections;
+    let mut m = box_mesh([0.0; 3], [1.0; 3]);
+    let n = m.positions.len() as u32;
+    // a huge triangle through the unit cube (crosses two of its faces)
+    m.positions
+        .extend([[0.5, 0.5, -1e6], [0.6, 0.5, 1e6], [0.5, 0.6, 1e6]]);
+    m.triangles.push([n, n + 1, n + 2]);
+    m.tri_group.push(0);
+    let x = self_intersections(&m);
+    assert!(x.pairs >= 2, "{x:?}");
+}
+
 /// Hausdorff distance between the reconstruction of the base body and that
 /// of a differently tessellated, scaled and moved copy (mapped back),
 /// relative to the height.
