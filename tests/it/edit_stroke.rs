@@ -388,3 +388,15 @@ fn cli_edit_projects_a_drawn_stroke_and_refuses_one_that_misses() {
     let log = String::from_utf8_lossy(&o.stdout);
     assert!(log.contains("inside a stroke of 97 points"), "{log}");
 }
+
+#[test]
+fn a_stroke_whose_u_width_overflows_is_refused_by_name() {
+    // finite points whose u width overflows to infinity: the box scaling
+    // made NaN of them and the error blamed the corners
+    let mut s = sample_stroke(&female().parts[0], 0.8);
+    s[3][0] = 1e308;
+    s[10][0] = -1e308;
+    let err = StrokeMap::new(&s, None).expect_err("an unbounded stroke");
+    assert!(matches!(err, StrokeError::UnboundedU { .. }), "{err}");
+    assert!(err.to_string().contains("no finite width"), "{err}");
+}

@@ -75,6 +75,8 @@ pub enum StrokeError {
         "the stroke spans {span:.4} rad of angle: it must span less than the whole ring (2 pi)"
     )]
     TooWide { span: f64 },
+    #[error("the stroke's u range [{lo:e}, {hi:e}] has no finite width (a stroke lies within its part's u range)")]
+    UnboundedU { lo: f64, hi: f64 },
     #[error("corners {corners:?}: {message}")]
     BadCorners {
         corners: [usize; 4],
@@ -141,6 +143,12 @@ impl StrokeMap {
             });
         }
         let ext = [hi[0] - lo[0], hi[1] - lo[1]];
+        if !ext[0].is_finite() {
+            return Err(StrokeError::UnboundedU {
+                lo: lo[0],
+                hi: hi[0],
+            });
+        }
         if !(ext[0] > 0.0 && ext[1] > 0.0) {
             return Err(StrokeError::Degenerate {
                 area: 0.0,
