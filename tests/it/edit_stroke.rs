@@ -400,3 +400,24 @@ fn a_stroke_whose_u_width_overflows_is_refused_by_name() {
     assert!(matches!(err, StrokeError::UnboundedU { .. }), "{err}");
     assert!(err.to_string().contains("no finite width"), "{err}");
 }
+
+#[test]
+fn a_drawn_stroke_over_the_point_limit_is_refused_before_it_is_projected() {
+    use pdesculpt::character::edit::force4::project_force_stroke;
+    use pdesculpt::character::edit::stroke::STROKE_POINTS_MAX;
+    let d = female();
+    // every point misses the part: projected first, the error would name
+    // a miss (after casting a ray for each of them)
+    let drawn = pdesculpt::sasm::Stroke {
+        view: pdesculpt::profile::View::Front,
+        points: vec![[10.0, 10.0]; STROKE_POINTS_MAX + 1],
+    };
+    let mut e = stroke_edit("torso", Vec::new(), None);
+    let err = project_force_stroke(&d, &mut e, &drawn).expect_err("too many points");
+    assert!(
+        err.to_string()
+            .contains(&format!("at most {STROKE_POINTS_MAX}")),
+        "{err}"
+    );
+    assert_eq!(e, stroke_edit("torso", Vec::new(), None));
+}
