@@ -48,7 +48,7 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
         .max_by(|a, b| surf.chain.point(um, *a)[2].total_cmp(&surf.chain.point(um, *b)[2]))
         .unwrap_or(0.0);
     let unit = sample_force_stroke(&spec, front, [0.0, 0.0, 1.0]);
-    let (u, field) = field_of(&unit).ok_or_else(|| anyhow::anyhow!("a force"))??;
+    let (_, field) = field_of(&unit).ok_or_else(|| anyhow::anyhow!("a force"))??;
     let mut peak = 0.0f64;
     for i in 1..64 {
         for j in 0..256 {
@@ -56,7 +56,6 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
             peak = peak.max(field.at(i as f64 / 64.0, th)[2].abs());
         }
     }
-    let _ = u;
     let p = 0.03 * base.report.height / peak;
     let edit = sample_force_stroke(&spec, front, [0.0, 0.0, p]);
     doc.push_edit(edit.clone())?;

@@ -54,29 +54,26 @@ pub const BINDINGS: &[(&str, &str)] = &[
 impl App {
     /// Undoes one step of the history: an edit or an input command.
     pub fn undo(&mut self) -> Vec<Effect> {
-        match self.history.undo(&mut self.doc) {
-            Ok(what) => {
-                self.log_sel = self.doc.cursor;
-                self.say(
-                    format!("undo: {what} (log cursor {})", self.doc.cursor),
-                    false,
-                );
-                self.changed()
-            }
-            Err(e) => {
-                self.say(e.to_string(), true);
-                Vec::new()
-            }
-        }
+        self.step_history(true)
     }
 
     /// Redoes one step of the history.
     pub fn redo(&mut self) -> Vec<Effect> {
-        match self.history.redo(&mut self.doc) {
+        self.step_history(false)
+    }
+
+    /// One step back (`undo`) or forward through the history.
+    fn step_history(&mut self, undo: bool) -> Vec<Effect> {
+        let (r, word) = if undo {
+            (self.history.undo(&mut self.doc), "undo")
+        } else {
+            (self.history.redo(&mut self.doc), "redo")
+        };
+        match r {
             Ok(what) => {
                 self.log_sel = self.doc.cursor;
                 self.say(
-                    format!("redo: {what} (log cursor {})", self.doc.cursor),
+                    format!("{word}: {what} (log cursor {})", self.doc.cursor),
                     false,
                 );
                 self.changed()

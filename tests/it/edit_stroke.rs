@@ -388,3 +388,36 @@ fn cli_edit_projects_a_drawn_stroke_and_refuses_one_that_misses() {
     let log = String::from_utf8_lossy(&o.stdout);
     assert!(log.contains("inside a stroke of 97 points"), "{log}");
 }
+
+#[test]
+fn a_stroke_whose_u_width_overflows_is_refused_by_name() {
+    // finite points whose u width overflows to infinity: the box scaling
+    // made NaN of them and the error blamed the corners
+    let mut s = sample_stroke(&female().parts[0], 0.8);
+    s[3][0] = 1e308;
+    s[10][0] = -1e308;
+    let err = StrokeMap::new(&s, None).expect_err("an unbounded stroke");
+    assert!(matches!(err, StrokeError::UnboundedU { .. }), "{err}");
+    assert!(err.to_string().contains("no finite width"), "{err}");
+}
+
+#[test]
+fn a_drawn_stroke_over_the_point_limit_is_refused_before_it_is_projected() {
+    use pdesculpt::character::edit::force4::project_force_stroke;
+    use pdesculpt::character::edit::stroke::STROKE_POINTS_MAX;
+    let d = female();
+    // every point misses the part: projected first, the error would name
+    // a miss (after casting a ray for each of them)
+    let drawn = pdesculpt::sasm::Stroke {
+        view: pdesculpt::profile::View::Front,
+        points: vec![[10.0, 10.0]; STROKE_POINTS_MAX + 1],
+    };
+    let mut e = stroke_edit("torso", Vec::new(), None);
+    let err = project_force_stroke(&d, &mut e, &drawn).expect_err("too many points");
+    assert!(
+        err.to_string()
+            .contains(&format!("at most {STROKE_POINTS_MAX}")),
+        "{err}"
+    );
+    assert_eq!(e, stroke_edit("torso", Vec::new(), None));
+}

@@ -179,6 +179,12 @@ pub fn project_force_stroke(
         part: part.clone(),
         message: m,
     };
+    // the stroke's own limit, before a ray is cast for every point
+    let count = drawn.points.len();
+    if count > super::stroke::STROKE_POINTS_MAX {
+        let err = super::stroke::StrokeError::TooManyPoints { count };
+        return Err(invalid(format!("stroke: {err}")));
+    }
     let parts = super::apply_to_parts(&doc.parts, doc.active_edits())?;
     let spec = parts
         .iter()

@@ -37,6 +37,7 @@
 //! `D phi` stays bounded: the edited part is C1 across the stroke
 //! (checked in `verify` family `edit`, `force_stroke_*`).
 
+use crate::template::polygon;
 use std::f64::consts::PI;
 
 /// Fewest distinct points of a stroke (one per corner).
@@ -74,6 +75,8 @@ pub enum StrokeError {
         "the stroke spans {span:.4} rad of angle: it must span less than the whole ring (2 pi)"
     )]
     TooWide { span: f64 },
+    #[error("the stroke's u range [{lo:e}, {hi:e}] has no finite width (a stroke lies within its part's u range)")]
+    UnboundedU { lo: f64, hi: f64 },
     #[error("corners {corners:?}: {message}")]
     BadCorners {
         corners: [usize; 4],
@@ -107,13 +110,6 @@ fn len(a: [f64; 2], b: [f64; 2]) -> f64 {
     (b[0] - a[0]).hypot(b[1] - a[1])
 }
 
-/// Twice the signed area of a polygon.
-pub fn signed_area2(p: &[[f64; 2]]) -> f64 {
-    (0..p.len())
-        .map(|i| cross(p[i], p[(i + 1) % p.len()]))
-        .sum()
-}
-
 impl StrokeMap {
     /// The map of `stroke` (points `(u, theta)`, closed: the last point
     /// returns to the first within [`CLOSE_GAP_MAX`] of the length) with
@@ -140,19 +136,19 @@ impl StrokeMap {
                 count: stroke.len(),
             });
         }
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in stroke {
-            for k in 0..2 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
+        let (lo, hi) = polygon::bbox(stroke);
         if hi[1] - lo[1] >= 2.0 * PI {
             return Err(StrokeError::TooWide {
                 span: hi[1] - lo[1],
             });
         }
         let ext = [hi[0] - lo[0], hi[1] - lo[1]];
+        if !ext[0].is_finite() {
+            return Err(StrokeError::UnboundedU {
+                lo: lo[0],
+                hi: hi[0],
+            });
+        }
         if !(ext[0] > 0.0 && ext[1] > 0.0) {
             return Err(StrokeError::Degenerate {
                 area: 0.0,
@@ -194,13 +190,13 @@ impl StrokeMap {
         if poly.len() < STROKE_POINTS_MIN {
             return Err(StrokeError::TooFewPoints { count: poly.len() });
         }
-        if let Some((a, b)) = crate::template::polygon::self_intersection(&poly) {
+        if let Some((a, b)) = polygon::self_intersection(&poly) {
             return Err(StrokeError::SelfIntersecting {
                 first: a,
                 second: b,
             });
         }
-        let a2 = signed_area2(&poly);
+        let a2 = polygon::signed_area2(&poly);
         if a2.abs() * 0.5 < FILL_MIN {
             return Err(StrokeError::Degenerate {
                 area: a2.abs() * 0.5 * ext[0] * ext[1],
