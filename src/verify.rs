@@ -112,20 +112,12 @@ pub fn derivative_checks() -> Vec<Check> {
         built(
             "ode6.chain_3_paper_params",
             "004",
-            crate::ode6::samples::chain_of([crate::ode6::Params::new(1.0, 3.0, 1.0); 3]),
+            crate::ode6::samples::paper_chain(),
         ),
         built(
             "pde4.deformed_revolution",
             "000",
-            crate::pde4::samples::four_sided().and_then(|f| {
-                crate::pde4::apply::Deformed::new(
-                    Revolution { r0: 1.0, r1: 0.3 },
-                    f,
-                    (0.1, 0.9),
-                    (0.05, 0.98),
-                    0.5,
-                )
-            }),
+            crate::pde4::samples::deformed_revolution(),
         ),
         built(
             "ode6.grid_3x2_column",

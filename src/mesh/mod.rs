@@ -92,10 +92,12 @@ impl Mesh {
     /// Two triangles per cell of a row-major grid of points (`nu x nv`,
     /// index `iu * nv + iv`), cut along the diagonal from `(iu, iv)` to
     /// `(iu + 1, iv + 1)`. A closed direction (`closed = [u, v]`) wraps: its
-    /// last cells join the last row of points to the first.
+    /// last cells join the last row of points to the first. Fewer than two
+    /// rows in an open direction (or none in a closed one) make no
+    /// triangles.
     pub fn grid(positions: Vec<[f64; 3]>, nu: usize, nv: usize, closed: [bool; 2]) -> Self {
-        let cells_u = if closed[0] { nu } else { nu - 1 };
-        let cells_v = if closed[1] { nv } else { nv - 1 };
+        let cells_u = if closed[0] { nu } else { nu.saturating_sub(1) };
+        let cells_v = if closed[1] { nv } else { nv.saturating_sub(1) };
         let idx = |i: usize, j: usize| ((i % nu) * nv + (j % nv)) as u32;
         let mut tris = Vec::with_capacity(2 * cells_u * cells_v);
         for i in 0..cells_u {
@@ -272,3 +274,27 @@ impl Mesh {
 }
 
 pub use crate::vec3::{add, dist, dot, norm, scale, sub};
+
+#[cfg(test)]
+mod tests {
+    use super::Mesh;
+
+    #[test]
+    fn grid_with_too_few_rows_has_no_triangles() {
+        // an open direction needs two rows of points for one row of cells;
+        // fewer (or no points at all) is an empty mesh, not an underflow
+        let p = vec![[0.0, 0.0, 0.0]];
+        assert!(Mesh::grid(Vec::new(), 0, 0, [false, false])
+            .triangles
+            .is_empty());
+        assert!(Mesh::grid(Vec::new(), 0, 0, [true, true])
+            .triangles
+            .is_empty());
+        assert!(Mesh::grid(p.clone(), 1, 1, [false, false])
+            .triangles
+            .is_empty());
+        assert!(Mesh::grid(p, 1, 1, [true, false]).triangles.is_empty());
+        let square = vec![[0.0; 3], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]];
+        assert_eq!(Mesh::grid(square, 2, 2, [false, false]).triangles.len(), 2);
+    }
+}

@@ -122,6 +122,13 @@ pub fn chain_of(params: [Params; 3]) -> Result<super::Chain, Ode6Error> {
     super::Chain::from_sections(&sections, bases)
 }
 
+/// The sections of [`chain`] with the paper's parameters `(1, 3, 1)` on
+/// all three patches: the sample of `derivatives.ode6.chain_3_paper_params`
+/// (see [`chain_of`] for why not [`chain`] itself).
+pub fn paper_chain() -> Result<super::Chain, Ode6Error> {
+    chain_of([Params::new(1.0, 3.0, 1.0); 3])
+}
+
 /// One patch between two test curves (approach 1, weights `[1, 0.5, -1, 2]`),
 /// the paper's shape parameters `(1, 3, 1)`.
 pub fn patch() -> Result<super::Ode6Surface, Ode6Error> {

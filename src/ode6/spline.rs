@@ -61,11 +61,12 @@ impl NaturalSpline {
 
     /// `s(u)`; outside `[t_0, t_n]` the end cubic is extended.
     pub fn eval(&self, u: f64) -> f64 {
-        let n = self.t.len();
-        let i = (0..n - 1)
-            .rfind(|&i| self.t[i] <= u)
-            .unwrap_or(0)
-            .min(n - 2);
+        // the last knot at or below `u` (binary search: the knots increase)
+        let i = self
+            .t
+            .partition_point(|&t| t <= u)
+            .saturating_sub(1)
+            .min(self.t.len() - 2);
         segment(
             [self.t[i], self.t[i + 1]],
             [self.y[i], self.y[i + 1]],

@@ -201,6 +201,7 @@ impl Joined for Chain {
     type Jumps = [f64; 3];
 
     fn join_jumps(&self, nv: usize) -> [f64; 3] {
+        let nv = nv.max(1);
         let mut out = [0.0f64; 3];
         for w in self.patches.windows(2) {
             for iv in 0..nv {
@@ -257,6 +258,7 @@ impl Joined for VSplit<'_> {
 
     fn join_jumps(&self, nu: usize) -> [f64; 3] {
         let (a, b) = (self.below, self.above);
+        let nu = nu.max(1);
         let v = a.v_range.1;
         let mut out = [0.0f64; 3];
         for iu in 0..=nu {
@@ -393,5 +395,30 @@ impl Joined for Grid {
             }
         }
         j
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::tol;
+
+    #[test]
+    fn zero_join_samples_still_measure_a_broken_join() {
+        // two pieces of one patch that do not meet: with `samples = 0` the
+        // measurement must still see the jump, not report a perfect join
+        let p = crate::ode6::samples::patch().expect("sample patch");
+        let chain = Chain {
+            patches: vec![p.clone(), p.clone()],
+        };
+        let below = p.clone().with_v_range(0.0, 0.3).expect("v range");
+        let above = p.with_v_range(0.6, 1.0).expect("v range");
+        let split = VSplit {
+            below: &below,
+            above: &above,
+        };
+        for jumps in [chain.join_jumps(0), split.join_jumps(0)] {
+            assert!(jumps[0] > tol::DETECTED, "{jumps:?}");
+        }
     }
 }

@@ -135,6 +135,21 @@ pub fn four_sided() -> Result<super::FourSided, super::Pde4Error> {
     )
 }
 
+/// [`four_sided`] applied to a surface of revolution (radii 1 and 0.3) on
+/// the window `u in [0.1, 0.9]`, `v in [0.05, 0.98]`, scaled by 0.5: the
+/// sample of the derivative check `derivatives.pde4.deformed_revolution`.
+pub fn deformed_revolution(
+) -> Result<super::apply::Deformed<crate::surface::Revolution, super::FourSided>, super::Pde4Error>
+{
+    super::apply::Deformed::new(
+        crate::surface::Revolution { r0: 1.0, r1: 0.3 },
+        four_sided()?,
+        (0.1, 0.9),
+        (0.05, 0.98),
+        0.5,
+    )
+}
+
 /// A closed curve drawn in the front view around a region to deform
 /// (paper 000 sec 5.1, the input of [`super::apply::deform_region`]): `k`
 /// points of the ellipse of half-axes `rx`, `ry` about `centre` in the plane

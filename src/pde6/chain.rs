@@ -323,6 +323,7 @@ impl Joined for Chain {
     type Jumps = [f64; 3];
 
     fn join_jumps(&self, samples: usize) -> [f64; 3] {
+        let samples = samples.max(1);
         let mut worst = [0.0f64; 3];
         for w in self.pieces.windows(2) {
             let u = w[1].start;

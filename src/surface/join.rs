@@ -12,6 +12,7 @@ pub trait Joined {
     type Jumps;
 
     /// Jumps of the derivatives of order 0, 1, 2 across every join,
-    /// maximised over `samples` points along each join.
+    /// maximised over `samples` points along each join (`samples = 0` is
+    /// taken as 1: a measurement of no points would report a perfect join).
     fn join_jumps(&self, samples: usize) -> Self::Jumps;
 }

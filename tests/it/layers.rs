@@ -54,17 +54,26 @@ fn arrows(roots: &[&str], modules: &[&str]) -> Vec<String> {
     arrows_in(&files, modules)
 }
 
+const PREFIXES: [&str; 3] = ["crate::", "pdesculpt::", "super::super::"];
+
 fn arrows_in(files: &[PathBuf], modules: &[&str]) -> Vec<String> {
     let mut found = Vec::new();
     for f in files {
         let text = std::fs::read_to_string(f).expect("readable source");
-        for (i, line) in text.lines().enumerate() {
+        let lines: Vec<&str> = text
+            .lines()
+            .map(|l| {
+                if l.trim_start().starts_with("//") {
+                    ""
+                } else {
+                    l
+                }
+            })
+            .collect();
+        for (i, line) in lines.iter().enumerate() {
             let code = line.trim_start();
-            if code.starts_with("//") {
-                continue;
-            }
             for m in modules {
-                for prefix in ["crate::", "pdesculpt::", "super::super::"] {
+                for prefix in PREFIXES {
                     let needle = format!("{prefix}{m}");
                     let hit = code.match_indices(&needle).any(|(k, _)| {
                         !code[k + needle.len()..]
@@ -76,8 +85,59 @@ fn arrows_in(files: &[PathBuf], modules: &[&str]) -> Vec<String> {
                 }
             }
         }
+        // grouped imports: `use crate::{pde6::Chain, mesh}` (one line or many)
+        let code = lines.join("\n");
+        for prefix in PREFIXES {
+            for (k, _) in code.match_indices(&format!("{prefix}{{")) {
+                for (at, head) in group_heads(&code[k + prefix.len()..]) {
+                    if modules.contains(&head) {
+                        let line = code[..k + prefix.len() + at].matches('\n').count();
+                        found.push(format!(
+                            "{}:{}: {} (in a grouped import)",
+                            f.display(),
+                            line + 1,
+                            lines[line].trim_start()
+                        ));
+                    }
+                }
+            }
+        }
     }
     found
+}
+
+/// The first path segment of every top-level item of the group `{...}` at
+/// the start of `s`, with its byte offset in `s`.
+fn group_heads(s: &str) -> Vec<(usize, &str)> {
+    let mut ends = Vec::new();
+    let mut depth = 0usize;
+    for (k, c) in s.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 1 => {
+                ends.push(k);
+                break;
+            }
+            '}' => depth -= 1,
+            ',' if depth == 1 => ends.push(k),
+            _ => {}
+        }
+    }
+    let mut out = Vec::new();
+    let mut start = 1;
+    for end in ends {
+        let item = &s[start..end];
+        let trimmed = item.trim_start();
+        let head = trimmed
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .next()
+            .unwrap_or("");
+        if !head.is_empty() {
+            out.push((start + item.len() - trimmed.len(), head));
+        }
+        start = end + 1;
+    }
+    out
 }
 
 #[test]
@@ -133,18 +193,26 @@ fn vec3_is_the_bottom() {
 
 #[test]
 fn the_scan_sees_an_upward_import() {
-    // The scanner itself: a line naming a family is found, a doc comment and
-    // a longer name (`crate::pde4x`) are not.
+    // The scanner itself: a line naming a family is found, also inside a
+    // grouped import; a doc comment and a longer name (`crate::pde4x`) are
+    // not.
     let dir = std::env::temp_dir().join(format!("pdesculpt-layers-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let f = dir.join("probe.rs");
     std::fs::write(
         &f,
-        "//! [`crate::pde4`]\nuse crate::pde4x::A;\nuse crate::pde6::B;\n",
+        "//! [`crate::pde4`]\nuse crate::pde4x::A;\nuse crate::pde6::B;\n\
+         use crate::{jet::Jet, ode6::C};\nuse crate::{\n    mesh,\n    plate::{D, E},\n};\n",
     )
     .expect("write probe");
     let hits = arrows_in(std::slice::from_ref(&f), UPPER);
     std::fs::remove_dir_all(&dir).ok();
-    assert_eq!(hits.len(), 1, "{hits:?}");
+    assert_eq!(hits.len(), 3, "{hits:?}");
     assert!(hits[0].contains(":3: use crate::pde6::B;"), "{hits:?}");
+    // grouped imports, on one line and over several
+    assert!(
+        hits[1].contains(":4: use crate::{jet::Jet, ode6::C};"),
+        "{hits:?}"
+    );
+    assert!(hits[2].contains(":7: plate::{D, E},"), "{hits:?}");
 }

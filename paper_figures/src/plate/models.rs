@@ -222,16 +222,9 @@ fn motion_for_peak(p: &PlateDeformer, s: f64, peak: f64) -> f64 {
 /// Cursor motion of length `len` along the region normal, oriented
 /// towards `outside`.
 fn outward(p: &PlateDeformer, outside: [f64; 3], len: f64) -> [f64; 3] {
-    let sgn = if dot(p.normal(), outside) < 0.0 {
-        -len
-    } else {
-        len
-    };
-    [
-        p.normal()[0] * sgn,
-        p.normal()[1] * sgn,
-        p.normal()[2] * sgn,
-    ]
+    let n = p.normal();
+    let sgn = if dot(n, outside) < 0.0 { -len } else { len };
+    pdesculpt::vec3::scale(n, sgn)
 }
 
 /// Fig 8: (a) region, (b, c) same sensitivity, two cursor directions,
