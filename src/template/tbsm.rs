@@ -327,8 +327,10 @@ pub fn part_from_view(
 
 /// The axis of MakeHuman's left foot (x > 0) in the base skin: heel to toe
 /// through the foot's vertices below [`FOOT_HEIGHT`] of the body's height,
-/// `e1` = +x; and the foot mesh itself (triangles entirely below that
-/// height, so sections of the forefoot are closed loops).
+/// `e1` = +x; and the foot mesh itself (triangles of the left foot, x > 0,
+/// entirely below that height, so sections of the forefoot are closed
+/// loops; the right foot was in it once, so a part created from a front
+/// profile was refused as two outlines).
 pub fn makehuman_left_foot() -> Result<(Mesh, [f64; 3], [f64; 3]), TemplateError> {
     let skin = super::study::makehuman_template(&[])?.skin;
     let (lo, hi) = skin
@@ -359,7 +361,12 @@ pub fn makehuman_left_foot() -> Result<(Mesh, [f64; 3], [f64; 3]), TemplateError
     let tris: Vec<[u32; 3]> = skin
         .triangles
         .iter()
-        .filter(|t| t.iter().all(|&i| skin.positions[i as usize][1] < cap))
+        .filter(|t| {
+            t.iter().all(|&i| {
+                let p = skin.positions[i as usize];
+                p[1] < cap && p[0] > 0.0
+            })
+        })
         .copied()
         .collect();
     Ok((
