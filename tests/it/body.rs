@@ -5,6 +5,7 @@ use pdesculpt::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, JOIN_C1_MAX, MAX_MAX_REL,
     RMS_MAX_REL,
 };
+use pdesculpt::body::intersect::SELF_CROSSINGS_KNOWN_MAX;
 use pdesculpt::body::BodyError;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::profile::shapes::box_mesh;
@@ -22,7 +23,29 @@ fn assert_closed(name: &str, skin: &Mesh, o: &ClosedOptions, errors: bool) {
         let max = r.recon_to_skin_max_rel.max(r.skin_to_recon_max_rel);
         assert!(rms <= RMS_MAX_REL, "{name}: RMS {rms}");
         assert!(max <= MAX_MAX_REL, "{name}: max {max}");
+        let x = &r.self_intersections;
+        assert!(
+            x.pairs as f64 <= SELF_CROSSINGS_KNOWN_MAX,
+            "{name}: {} crossing pairs {:?}",
+            x.pairs,
+            x.by_groups
+        );
     }
+}
+
+/// The shoulder's per-column scales (`sketch::transition::column_scales`)
+/// took the base body's crossing triangle pairs from 106 to 3: a guard on
+/// that fix, tighter than the checked morphs' bound.
+const BASE_CROSSINGS_MAX: usize = 5;
+
+#[test]
+fn base_body_shoulders_do_not_fold() {
+    let skin = load_body(None, &[]).unwrap();
+    let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
+    let x = &b.report.self_intersections;
+    assert!(x.pairs <= BASE_CROSSINGS_MAX, "{x:?}");
+    let c1 = b.report.max_join[1];
+    assert!(c1 <= JOIN_C1_MAX, "C1 {c1}");
 }
 
 #[test]
