@@ -46,10 +46,10 @@ pub(super) fn measure(
                 };
                 let f = (tau - start) / len;
                 let phi = 2.0 * PI * (from as f64 + f * count as f64) / n_ring;
-                (0.0, ct.parent_u, phi, ct.sgn * ct.ell, parent)
+                (0.0, ct.parent_u, phi, ct.sgn * ct.ell_at(tau), parent)
             } else {
                 let th = ct.theta0 + ct.sigma * 2.0 * PI * tau / ct.n as f64;
-                (1.0, ct.child_u, th, ct.ell, child)
+                (1.0, ct.child_u, th, ct.ell_at(tau), child)
             };
             let x0 = teval(ct, parent, child, &b.seams, s, tau, 0);
             let x1 = teval(ct, parent, child, &b.seams, s, tau, 1);
