@@ -28,9 +28,11 @@
 //!   not the envelope (MakeHuman's hands are in front of the belly).
 //!
 //! Likewise at the back. Each vertex then moves in depth by the
-//! correction of its part's front and back at its height, weighted
-//! linearly by its relative depth in its part's span, so a vertex on the
-//! envelope lands on the sketch's crossing of its height. The row
+//! correction of its part's front and back at its height, weighted by
+//! its relative depth in its part's span, so a vertex on the
+//! envelope lands on the sketch's crossing of its height (with
+//! [`FitOptions::envelope_falloff`] 2, by the square of the relative
+//! depth, so a belly's sides move less than its front). The row
 //! corrections are smoothed over [`SMOOTH_ROWS`] rows so an overhang (a
 //! chin, a nose) met at slightly different heights does not shear the
 //! skin. The fit repeats the pass while the view misses the tolerance
@@ -53,6 +55,11 @@ pub const BULGE_REACH: f64 = 0.03;
 /// fraction of the height beyond the trunk.
 pub const ARM_EPS: f64 = 1e-3;
 
+/// An arm in front of the sketch's front by more than this fraction of
+/// the height is absent from the sketch at that height (its end is higher
+/// or lower there), not misplaced.
+pub const ARM_ABSENT: f64 = 0.02;
+
 /// Row corrections of one part: front and back depth changes and the
 /// part's span, per row (`None`: the part does not reach that row).
 #[derive(Clone, Debug, Default)]
@@ -60,6 +67,15 @@ struct Rows {
     span: Vec<Option<(f64, f64)>>,
     front: Vec<f64>,
     back: Vec<f64>,
+}
+
+/// An arm's own row where the fitted outline shows it apart from the
+/// trunk: its span and its front and back corrections.
+#[derive(Clone, Copy, Debug)]
+struct ArmRow {
+    span: (f64, f64),
+    front: f64,
+    back: f64,
 }
 
 /// Statistics of one envelope pass.
@@ -74,6 +90,12 @@ pub struct EnvelopeStats {
     /// (two intervals or more): the trunk's front goes to the back-most
     /// interval's front.
     pub split_rows: usize,
+    /// Rows where the fitted outline shows a gap between the trunk and an
+    /// arm that the sketch does not: the trunk's front closes it.
+    pub closed_rows: usize,
+    /// Rows where an arm is the fitted outline's front but the sketch's
+    /// front is more than [`ARM_ABSENT`] of the height behind it.
+    pub absent_rows: usize,
     /// Largest row correction applied (model units).
     pub max_correction: f64,
 }
@@ -110,6 +132,23 @@ fn smooth(v: &mut [f64], known: &[bool]) {
             }
         }
         v[i] = s / w;
+    }
+}
+
+/// Replaces each NaN by the nearest finite value (0 when there is none).
+fn fill_nearest(v: &mut [f64]) {
+    let src = v.to_vec();
+    let n = v.len();
+    for i in 0..n {
+        if src[i].is_nan() {
+            v[i] = (1..n)
+                .find_map(|d| {
+                    let a = i.checked_sub(d).map(|j| src[j]).filter(|x| !x.is_nan());
+                    let b = src.get(i + d).copied().filter(|x| !x.is_nan());
+                    a.or(b)
+                })
+                .unwrap_or(0.0);
+        }
     }
 }
 
@@ -162,6 +201,10 @@ pub fn envelope_pass(
         .collect();
     let mut full = Rows::default();
     let mut body = Rows::default();
+    // the arm's own rows: the full outline's, except where the fitted
+    // outline shows the arm apart from the trunk (its back is the start of
+    // the second interval)
+    let mut arm_rows: Vec<Option<ArmRow>> = vec![None; ROWS];
     let mut bulge = vec![0.0f64; ROWS];
     let mut arm_front = vec![false; ROWS];
     let mut arm_back = vec![false; ROWS];
@@ -180,6 +223,11 @@ pub fn envelope_pass(
             body.back.push(0.0);
             continue;
         };
+        // the fitted outline's own gap between the trunk's front and an
+        // arm (intervals paired with the sketch's by order)
+        let fc = crossings(&o, y);
+        let fitted_gap =
+            (fc.len() >= 4 && (fc[1] - tf).abs() <= eps && fc[2] > fc[1] + eps).then(|| fc[2]);
         // front
         if ff > tf + eps {
             arm_front[r] = true;
@@ -189,14 +237,44 @@ pub fn envelope_pass(
                 // the sketch shows a gap in front of the trunk at this
                 // height (trunk, then the arm): the trunk's front goes to
                 // the end of the back-most interval, the arm to the front
+                // (and its back, when the fitted outline shows it, to the
+                // start of the sketch's second interval)
                 stats.split_rows += 1;
                 full.front.push(sf - ff);
                 body.front.push(sc[1] - tf);
+                if opts.envelope_arm_back {
+                    arm_rows[r] = fitted_gap.map(|ab| ArmRow {
+                        span: (ab, ff),
+                        front: sf - ff,
+                        back: sc[2] - ab,
+                    });
+                }
+            } else if let Some(ab) = fitted_gap.filter(|&ab| sf < ff + bulge_min && sf >= ab) {
+                // the fitted outline shows a gap the sketch does not: the
+                // arm moves as a whole to the sketch's front, the trunk's
+                // front closes the gap up to the arm's back
+                stats.closed_rows += 1;
+                full.front.push(sf - ff);
+                body.front.push(ab + (sf - ff) + eps - tf);
+                arm_rows[r] = Some(ArmRow {
+                    span: (ab, ff),
+                    front: sf - ff,
+                    back: sf - ff,
+                });
             } else if sf >= ff + bulge_min {
                 stats.bulge_rows += 1;
                 bulge[r] = sf - tf;
                 full.front.push(0.0);
                 body.front.push(sf - tf);
+            } else if sf < ff - ARM_ABSENT * h || (fc.len() >= 4 && sf < fc[fc.len() - 2]) {
+                // the sketch ends far behind the arm at this height, or
+                // behind the fitted outline's front-most interval (a
+                // fitted fingertip below the sketched one): pulling the
+                // arm's end back to the trunk would shear it; it takes the
+                // correction of the nearest rows where the sketch shows it
+                stats.absent_rows += 1;
+                full.front.push(f64::NAN);
+                body.front.push(f64::NAN);
             } else {
                 full.front.push(sf - ff);
                 body.front.push(f64::NAN);
@@ -271,6 +349,17 @@ pub fn envelope_pass(
             *v = 0.0;
         }
     }
+    fill_nearest(&mut full.front);
+    // the arm's rows: the full outline's, with the arm's own rows where the
+    // fitted outline shows it apart
+    let mut arm = full.clone();
+    for (r, a) in arm_rows.iter().enumerate() {
+        if let Some(a) = a {
+            arm.span[r] = Some(a.span);
+            arm.front[r] = a.front;
+            arm.back[r] = a.back;
+        }
+    }
     let known_full: Vec<bool> = full.span.iter().map(Option::is_some).collect();
     let known_body: Vec<bool> = body.span.iter().map(Option::is_some).collect();
     for (v, k) in [
@@ -278,6 +367,8 @@ pub fn envelope_pass(
         (&mut full.back, &known_full),
         (&mut body.front, &known_body),
         (&mut body.back, &known_body),
+        (&mut arm.front, &known_full),
+        (&mut arm.back, &known_full),
     ] {
         smooth(v, k);
     }
@@ -291,7 +382,7 @@ pub fn envelope_pass(
     for (i, p) in positions.iter_mut().enumerate() {
         let r = (p[1] - y0) / dy;
         let part = match &arms {
-            Some(a) if a[i] => &full,
+            Some(a) if a[i] => &arm,
             _ => &body,
         };
         let Some((zb, zf)) = span_at(&part.span, r) else {
@@ -302,7 +393,8 @@ pub fn envelope_pass(
         } else {
             0.5
         };
-        p[2] += s * at(&part.front, r) + (1.0 - s) * at(&part.back, r);
+        let k = opts.envelope_falloff;
+        p[2] += s.powi(k) * at(&part.front, r) + (1.0 - s).powi(k) * at(&part.back, r);
     }
     Ok(stats)
 }

@@ -118,14 +118,24 @@ pub struct FitOptions {
     pub band_anchors: usize,
     /// Envelope correction passes ([`super::envelope`]) after the medium
     /// and high levels while the side view misses the tolerance (default
-    /// 0: none. In the MakeHuman study 4 passes bring the medium side miss
-    /// to 0.36-0.73 % on six targets, pregnant 5.56 -> 0.66 %, but the
-    /// pregnant high level then loses to the bounding-box baseline, RMS
-    /// 0.43 % against 0.40 %: README).
+    /// 4; 0: none. In the MakeHuman study they bring the medium side miss
+    /// from 0.60-5.56 % to 0.28-0.73 % on six targets, female->old 2.28 %;
+    /// README).
     pub envelope_passes: usize,
     /// The envelope passes decide per height whether an arm or the trunk
     /// forms the fitted outline (default true).
     pub envelope_arms: bool,
+    /// Where both the fitted outline and the sketch show an arm apart from
+    /// the trunk, the envelope passes also move the arm's back to the
+    /// sketch's second interval (default false: in the MakeHuman study it
+    /// paired a fitted finger with the sketched palm on the pregnant case).
+    pub envelope_arm_back: bool,
+    /// Exponent of the envelope passes' relative-depth weights (default 2:
+    /// a vertex at relative depth `s` in its part's span takes `s^2` of the
+    /// front's correction and `(1 - s)^2` of the back's, so a belly's sides
+    /// move less than its front; 1, linear, made the pregnant high level
+    /// lose to the bounding-box baseline, RMS 0.42 % against 0.40 %).
+    pub envelope_falloff: i32,
 }
 
 impl Default for FitOptions {
@@ -148,8 +158,10 @@ impl Default for FitOptions {
             depth_map: DepthMap::Robust,
             depth_falloff: refine::DEPTH_FALLOFF,
             side_trunk: false,
-            envelope_passes: 0,
+            envelope_passes: 4,
             envelope_arms: true,
+            envelope_arm_back: false,
+            envelope_falloff: 2,
         }
     }
 }

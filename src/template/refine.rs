@@ -372,7 +372,10 @@ pub fn arm_mask(
 /// vertex) if that is a simple closed polygon.
 pub type SideOutlines = (Vec<[f64; 2]>, Option<(Vec<bool>, Vec<[f64; 2]>)>);
 
-/// See [`SideOutlines`]; errors when the whole outline is not simple.
+/// See [`SideOutlines`]; errors when the whole outline is not simple. The
+/// arms are found on the template at rest (its front outline shows them
+/// apart from the trunk; on a fitted fat body the belly's sides reach past
+/// the armpits and were taken for arm), the outlines on `positions`.
 pub fn side_outlines(
     template: &Template,
     positions: &[[f64; 3]],
@@ -389,7 +392,7 @@ pub fn side_outlines(
         }
     })?;
     let arms = trunk
-        .then(|| arm_mask(template, positions, opts, outline))
+        .then(|| arm_mask(template, &template.mesh.positions, opts, outline))
         .flatten();
     let split = arms.and_then(|mask| {
         let keep: Vec<bool> = skin

@@ -25,6 +25,15 @@ fn study_table() {
     if std::env::var("STUDY_ENVARMS").is_ok_and(|v| v == "0") {
         opts.envelope_arms = false;
     }
+    if std::env::var("STUDY_ARMBACK").is_ok() {
+        opts.envelope_arm_back = true;
+    }
+    if let Some(k) = std::env::var("STUDY_ENVFALLOFF")
+        .ok()
+        .and_then(|v| v.parse().ok())
+    {
+        opts.envelope_falloff = k;
+    }
     if std::env::var("STUDY_NOBAND").is_ok() {
         opts.band_anchors = 0;
     }
@@ -212,6 +221,25 @@ fn side_where(
             if d > worst.0 {
                 worst = (d, q, "sketch");
             }
+        }
+        if let Ok(dir) = std::env::var("STUDY_DUMP") {
+            let arm_pts: Vec<[f64; 2]> = match &arms {
+                Some(a) => skin
+                    .positions
+                    .iter()
+                    .enumerate()
+                    .filter(|(i, _)| a[template.skin_index[*i] as usize])
+                    .map(|(_, p)| [p[2], p[1]])
+                    .collect(),
+                None => Vec::new(),
+            };
+            let j = serde_json::json!({
+                "sketch": side.points(),
+                "fitted": fitted.points(),
+                "arms": arm_pts,
+            });
+            let f = format!("{dir}/{}-{k}.json", case.name.replace("->", "_"));
+            std::fs::write(f, j.to_string()).unwrap();
         }
         let q = worst.1;
         let near = skin
