@@ -77,6 +77,10 @@ impl Default for ClosedOptions {
 pub const RMS_MAX_REL: f64 = 0.005;
 pub const MAX_MAX_REL: f64 = 0.03;
 pub const JOIN_C1_MAX: f64 = 1e-6;
+/// Regression bound (not a target) on the skin -> recon max over every skin
+/// vertex, cavities included: the known state is up to 3.7 % (the mouth
+/// pocket of caucasian-male-old, README).
+pub const FULL_SKIN_MAX_KNOWN: f64 = 0.04;
 
 /// Bundled MakeHuman morphs whose closed reconstruction is checked.
 pub const CHECKED_MORPHS: &[&str] = &[
@@ -85,6 +89,11 @@ pub const CHECKED_MORPHS: &[&str] = &[
     "stomach-pregnant-incr=1",
     "caucasian-male-young=1",
     "universal-female-young-averagemuscle-maxweight=1",
+    // within the max target on the outer skin (their full-skin max, 3.4-3.7 %,
+    // sits in the mouth pocket: body::cavity)
+    "caucasian-male-old=1",
+    "caucasian-female-young=1",
+    "african-male-young=1",
 ];
 
 /// Gaps between the landmarks and the part ends, relative to the height.

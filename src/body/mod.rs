@@ -12,6 +12,8 @@
 //! * [`parts`]: the seven open parts of the paper (`pde6 body --open-parts`);
 //! * [`layout`]: the part layout found from the mesh (no vertex ids);
 //! * [`closed`]: one watertight body (`pde6 body`);
+//! * [`cavity`]: the skin vertices in pockets (mouth, eye sockets) no outer
+//!   section loop reaches;
 //! * [`report`]: its measurements against the input body, [`sites`]: where
 //!   its largest errors sit;
 //! * [`intersect`]: self-intersections of the closed mesh (grid + triangle
@@ -19,6 +21,7 @@
 //! * [`study`]: the data-size study (000 Fig 13);
 //! * [`check`]: the `pde6.body_*` checks (family `body` in `verify`).
 
+pub mod cavity;
 pub mod check;
 pub mod closed;
 pub mod intersect;

@@ -14,5 +14,6 @@ pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
     parts::body_smoothness_checks(&mut out);
     closed::body_closed_checks(&mut out);
+    closed::body_cavity_checks(&mut out);
     out
 }
