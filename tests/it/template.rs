@@ -556,3 +556,46 @@ fn crease_of_a_folded_square() {
     assert_eq!(dihedral_angles(&flat_deg).values().next(), Some(&None));
     assert!(crease(&flat_deg, &folded, &all).abs() <= tol::ROUNDING);
 }
+
+/// Fewest skin vertices a crease region of the MakeHuman templates holds
+/// (the male's belly region has hundreds; the old rule left it empty).
+const MIN_REGION_VERTICES: usize = 20;
+
+/// The crease regions' front half is the trunk's own (its mean depth at
+/// the vertex's height, arms left out): on both MakeHuman templates every
+/// region holds vertices, and moving the arms (hands) far in front of the
+/// body leaves the regions as they were. The old rule (the middle of the
+/// skin's depth range) left the male's belly region empty (the hands and
+/// toes pull the middle in front of the belly) and followed the hands.
+#[test]
+fn crease_regions_use_the_trunks_depth() {
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::refine::arm_mask;
+    use pdesculpt::template::study::{crease_regions, makehuman_template, CASES};
+    for case in [CASES[0], CASES[3]] {
+        let mut t = makehuman_template(case.template).unwrap();
+        let regions = crease_regions(&t);
+        for (r, name) in regions.iter().zip(["belly", "face"]) {
+            let n = r.iter().filter(|&&x| x).count();
+            assert!(
+                n >= MIN_REGION_VERTICES,
+                "{} {name}: {n} vertices",
+                case.name
+            );
+        }
+        let arms = arm_mask(&t, &t.mesh.positions, &FitOptions::default(), &mesh_outline)
+            .expect("the MakeHuman template's arms are found");
+        let forward = 0.5 * t.height();
+        for (p, &a) in t.mesh.positions.iter_mut().zip(&arms) {
+            if a {
+                p[2] += forward;
+            }
+        }
+        t.skin = t.skin_at(&t.mesh.positions);
+        assert!(
+            crease_regions(&t) == regions,
+            "{}: the hands moved the regions",
+            case.name
+        );
+    }
+}
