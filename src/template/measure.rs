@@ -137,8 +137,11 @@ pub fn crease(rest: &Mesh, moved: &Mesh, region: &dyn Fn(&[f64; 3]) -> bool) -> 
     creases(rest, moved, &[region])[0]
 }
 
+/// A region of the rest mesh: whether a vertex (at rest) lies in it.
+pub type Region<'a> = &'a dyn Fn(&[f64; 3]) -> bool;
+
 /// [`crease`] for each of `regions`, the dihedral angles computed once.
-pub fn creases(rest: &Mesh, moved: &Mesh, regions: &[&dyn Fn(&[f64; 3]) -> bool]) -> Vec<f64> {
+pub fn creases(rest: &Mesh, moved: &Mesh, regions: &[Region]) -> Vec<f64> {
     let masks: Vec<Vec<bool>> = regions
         .iter()
         .map(|region| rest.positions.iter().map(|p| region(p)).collect())
