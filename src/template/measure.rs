@@ -144,7 +144,7 @@ pub type Region<'a> = &'a dyn Fn(&[f64; 3]) -> bool;
 pub fn creases(rest: &Mesh, moved: &Mesh, regions: &[Region]) -> Vec<f64> {
     let masks: Vec<Vec<bool>> = regions
         .iter()
-        .map(|region| rest.positions.iter().map(|p| region(p)).collect())
+        .map(|region| rest.positions.iter().map(region).collect())
         .collect();
     let masks: Vec<&[bool]> = masks.iter().map(Vec::as_slice).collect();
     creases_in(rest, moved, &masks)

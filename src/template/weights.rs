@@ -55,7 +55,7 @@ impl SpanProfile {
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
                 (l.min(p[1]), h.max(p[1]))
             });
-        if !(hi > lo) {
+        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         let dy = (hi - lo) / (SPAN_ROWS - 1) as f64;
