@@ -52,7 +52,7 @@ enum Cmd {
         /// The JSON spec (see `pdesculpt pde4 --help` and src/cli/pde4.rs).
         spec: PathBuf,
         /// A parameter point `u,v` (repeatable).
-        #[arg(long = "at", required = true)]
+        #[arg(long = "at", required = true, allow_hyphen_values = true)]
         at: Vec<String>,
     },
     /// Deform a mesh: the region enclosed by a closed curve (four-sided
@@ -64,14 +64,19 @@ enum Cmd {
         #[arg(long, required_unless_present = "axis", conflicts_with = "axis")]
         curve: Option<PathBuf>,
         /// Part axis `x0,y0,z0,x1,y1,z1` (two-sided spec): u runs from the first point to the second.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         axis: Option<String>,
         /// Range `a,b` of the axis fraction deformed (with --axis; default
-        /// `pde4::apply::U_RANGE_DEFAULT`, the whole axis 0,1).
-        #[arg(long, requires = "axis")]
+        /// 0,1: the whole axis).
+        #[arg(long, requires = "axis", allow_hyphen_values = true)]
         u_range: Option<String>,
         /// Move only vertices within this distance of the axis (with --axis).
-        #[arg(long, default_value_t = pdesculpt::pde4::apply::RADIUS_DEFAULT, requires = "axis")]
+        #[arg(
+            long,
+            default_value_t = pdesculpt::pde4::apply::RADIUS_DEFAULT,
+            requires = "axis",
+            allow_hyphen_values = true
+        )]
         radius: f64,
         /// Input mesh (OBJ/STL/PLY).
         #[arg(long, conflicts_with = "makehuman")]
@@ -82,14 +87,14 @@ enum Cmd {
         /// Output mesh (format from the extension).
         #[arg(long)]
         out: PathBuf,
-        /// Largest displacement (the drag distance).
-        #[arg(long)]
+        /// Largest displacement (the drag distance; negative: inward).
+        #[arg(long, allow_hyphen_values = true)]
         drag: f64,
         /// Move only vertices within this distance of the curve plane (with --curve).
-        #[arg(long, default_value_t = pdesculpt::pde4::apply::DEPTH_DEFAULT)]
+        #[arg(long, default_value_t = pdesculpt::pde4::apply::DEPTH_DEFAULT, allow_hyphen_values = true)]
         depth: f64,
         /// Direction `x,y,z`; default the vertex normals.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         direction: Option<String>,
         #[command(flatten)]
         units: super::units::UnitArgs,

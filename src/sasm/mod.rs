@@ -66,6 +66,7 @@ pub mod silhouette;
 pub use apply::{apply_feature, ApplyReport};
 pub use feature::Feature;
 
+use crate::limits::Num;
 use crate::profile::View;
 use serde::{Deserialize, Serialize};
 
@@ -124,11 +125,11 @@ pub enum SasmError {
         count: usize,
         min: usize,
     },
-    #[error("{what} is open: its ends are {gap:.4} apart, more than {CLOSE_TOLERANCE} of its length {length:.4}")]
+    #[error("{what} is open: its ends are {} apart, more than {CLOSE_TOLERANCE} of its length {}", Num(*gap), Num(*length))]
     Open { what: String, gap: f64, length: f64 },
     #[error("{what}: {message}")]
     Shape { what: String, message: String },
-    #[error("{what}: point {index} at ({:.4}, {:.4}) misses part '{part}' (no ray hit in the {view} view)", at[0], at[1])]
+    #[error("{what}: point {index} at ({}, {}) misses part '{part}' (no ray hit in the {view} view)", Num(at[0]), Num(at[1]))]
     Misses {
         what: String,
         part: String,

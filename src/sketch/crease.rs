@@ -37,10 +37,9 @@ fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
     scale(n, 1.0 / norm(n).max(f64::MIN_POSITIVE))
 }
 
-/// Crease reports of every group of `m` (edges shared by exactly two
-/// triangles; the angle of a consistently oriented pair is the angle
-/// between their normals).
-pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
+/// The triangles on each undirected edge `(low, high)` of `m`, in triangle
+/// order.
+pub(super) fn edge_triangles(m: &Mesh) -> HashMap<(u32, u32), Vec<usize>> {
     let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
     for (t, tr) in m.triangles.iter().enumerate() {
         for e in 0..3 {
@@ -48,6 +47,14 @@ pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
             edges.entry((a.min(b), a.max(b))).or_default().push(t);
         }
     }
+    edges
+}
+
+/// Crease reports of every group of `m` (edges shared by exactly two
+/// triangles; the angle of a consistently oriented pair is the angle
+/// between their normals).
+pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
+    let edges = edge_triangles(m);
     // in edge order, not the map's (seeded per map): the creased length is
     // a sum and the maximum's place a first-found, so the report would
     // otherwise change in its last bits from run to run

@@ -136,14 +136,7 @@ pub(super) fn measure_seam(b: &Built, j: usize, parts: &[PartSurface]) -> SeamRe
 /// Makes triangle orientation consistent across shared edges (depth
 /// first) and each connected component outward (positive signed volume).
 pub fn orient(m: &mut Mesh) {
-    use std::collections::HashMap;
-    let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
-    for (t, tr) in m.triangles.iter().enumerate() {
-        for e in 0..3 {
-            let (a, b) = (tr[e], tr[(e + 1) % 3]);
-            edges.entry((a.min(b), a.max(b))).or_default().push(t);
-        }
-    }
+    let edges = super::crease::edge_triangles(m);
     let n = m.triangles.len();
     let mut seen = vec![false; n];
     for s in 0..n {

@@ -101,7 +101,7 @@ pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
 /// outline is longer than tall ([`longer_than_tall`]).
 pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
     match plan {
-        BodyPlan::Auto if super::quadruped::longer_than_tall(front) => BodyPlan::Quadruped,
+        BodyPlan::Auto if longer_than_tall(front) => BodyPlan::Quadruped,
         BodyPlan::Auto => BodyPlan::Humanoid,
         p => p,
     }

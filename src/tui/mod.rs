@@ -64,4 +64,6 @@ pub enum TuiError {
     Bundled(String),
     #[error("terminal: {0}")]
     Terminal(#[from] std::io::Error),
+    #[error("the TUI needs a terminal: its standard output is not one (a pipe or a file)")]
+    NotATerminal,
 }

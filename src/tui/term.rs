@@ -103,8 +103,13 @@ fn install_panic_hook() {
 /// Runs the TUI until the user quits.
 pub fn run(o: Options) -> Result<(), TuiError> {
     let mut app = open(&o)?;
+    // drawing into a pipe or a file would write escape sequences there, and
+    // without a controlling terminal ratatui's `init` panics
+    if !std::io::IsTerminal::is_terminal(&std::io::stdout()) {
+        return Err(TuiError::NotATerminal);
+    }
+    let mut terminal = ratatui::try_init().inspect_err(|_| ratatui::restore())?;
     let worker = Worker::spawn();
-    let mut terminal = ratatui::init();
     install_panic_hook();
     let kitty = super::kitty::detect();
     let mut cache = if kitty {

@@ -508,3 +508,72 @@ fn stale_temporaries_of_dead_processes_are_swept() {
     assert!(!stale.exists(), "the stale temporary is removed");
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// Rounding of a coordinate stored in an OBJ (32-bit floats) near 1.
+const OBJ_F32: f64 = 1e-6;
+
+/// `pde4 apply` takes negative numbers as values (an axis starting at a
+/// negative coordinate, an inward drag, a direction toward -x); before,
+/// clap read `-1,...` as an unknown flag and stopped with a usage error
+/// (exit 2) instead of deforming or naming the bad value. A negative
+/// radius is a named error, exit 1.
+#[test]
+fn pde4_apply_takes_negative_values() {
+    use pdesculpt::surface::{tessellate, Revolution, Tessellation};
+    let d = tmpdir("pde4-negative");
+    let part = tessellate(
+        &Revolution { r0: 1.0, r1: 0.2 },
+        Tessellation { nu: 20, nv: 16 },
+    );
+    let (mesh, out) = (d.join("part.obj"), d.join("out.obj"));
+    pdesculpt::mesh::io::write(&part, &mesh).expect("writes the part");
+    let spec = d.join("two.json");
+    std::fs::write(
+        &spec,
+        r#"{"patch":"two-sided","method":"exact","shape":{"a1":1,"a2":1,"a3":1},"terms":[12,6],"forces":[{"type":"area","u0":0.3,"u1":0.7,"v0":0.1,"v1":0.4,"p":[1,0,0]}]}"#,
+    )
+    .expect("writes the spec");
+    let run = |extra: &[&str]| {
+        let mut a = vec![
+            "pde4",
+            "apply",
+            path(&spec),
+            "--mesh",
+            path(&mesh),
+            "--out",
+            path(&out),
+        ];
+        a.extend_from_slice(extra);
+        pdesculpt(&a)
+    };
+    let ok = run(&[
+        "--axis",
+        "0,-1,0,0,2,0",
+        "--u-range",
+        "0.3,0.6",
+        "--drag",
+        "-0.05",
+        "--direction",
+        "-1,0,0",
+    ]);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let moved = pdesculpt::mesh::io::read(&out).expect("reads the output");
+    // a negative drag along -x: the largest move is |drag| toward +x (OBJ
+    // stores 32-bit floats)
+    let dx = moved
+        .positions
+        .iter()
+        .zip(&part.positions)
+        .map(|(p, q)| p[0] - q[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!((dx - 0.05).abs() < OBJ_F32, "largest move along +x {dx}");
+    std::fs::remove_file(&out).expect("removes the output");
+    let bad = run(&["--axis", "0,-1,0,0,2,0", "--radius", "-1", "--drag", "0.1"]);
+    assert_clear_error(&bad, "radius");
+    assert!(!out.exists(), "a refused apply wrote a file");
+    let _ = std::fs::remove_dir_all(&d);
+}

@@ -323,3 +323,26 @@ fn sasm_edit_round_trips_replays_and_undoes() {
     assert_eq!(undone.model.mesh.positions, plain.model.mesh.positions);
     assert_eq!(undone.model.mesh.triangles, plain.model.mesh.triangles);
 }
+
+/// A stroke point far out (1e300, reached through `character edit
+/// --drawn`) is named short in the error ("1e300"), not as 300 digits.
+#[test]
+fn far_out_stroke_points_are_printed_short() {
+    use pdesculpt::sasm::SasmError;
+    let e = SasmError::Misses {
+        what: "stroke".into(),
+        part: "torso".into(),
+        view: View::Front,
+        index: 3,
+        at: [1e300, -0.25],
+    }
+    .to_string();
+    assert!(e.contains("(1e300, -0.25)") && e.len() < 120, "{e}");
+    let e = SasmError::Open {
+        what: "stroke".into(),
+        gap: 2e300,
+        length: 1.5,
+    }
+    .to_string();
+    assert!(e.contains("2e300 apart") && e.contains("length 1.5"), "{e}");
+}

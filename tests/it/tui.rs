@@ -492,3 +492,22 @@ fn tui_kitty_protocol_sends_the_preview_as_png_and_removes_it_under_a_popup() {
     t.draw(|f| draw(f, &app, &mut plain)).expect("draws");
     assert!(plain.take_kitty().is_none());
 }
+
+/// `pdesculpt tui` with its output in a pipe (a script, CI) is a named
+/// error, exit 1, and writes nothing: ratatui's `init` used to panic there
+/// (no controlling terminal: "failed to initialize terminal") and left an
+/// escape sequence on stdout.
+#[test]
+fn tui_without_a_terminal_is_a_named_error_not_a_panic() {
+    let d = tmpdir("tui-no-terminal");
+    let doc = d.join("char.json");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_pdesculpt"))
+        .args(["tui", doc.to_str().expect("utf-8 path")])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the binary runs");
+    crate::cli::assert_clear_error(&out, "the TUI needs a terminal");
+    assert!(out.stdout.is_empty(), "wrote to stdout: {:?}", out.stdout);
+    assert!(!doc.exists(), "created the document");
+    let _ = std::fs::remove_dir_all(&d);
+}
