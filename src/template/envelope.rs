@@ -29,9 +29,10 @@
 //!
 //! Likewise at the back. Each vertex then moves in depth by the
 //! correction of its part's front and back at its height, weighted by
-//! its relative depth in its part's span, so a vertex on the
-//! envelope lands on the sketch's crossing of its height (with
-//! [`FitOptions::envelope_falloff`] 2, by the square of the relative
+//! its relative depth in its part's span (smoothed over heights,
+//! [`super::weights`], so the weights do not jump at overhangs), so a
+//! vertex on the envelope lands on the sketch's crossing of its height
+//! (with [`FitOptions::envelope_falloff`] 2, by the square of the relative
 //! depth, so a belly's sides move less than its front). The row
 //! corrections are smoothed over [`SMOOTH_ROWS`] rows so an overhang (a
 //! chin, a nose) met at slightly different heights does not shear the
@@ -41,6 +42,7 @@
 use super::fit::{FitOptions, Template};
 use super::polygon::bbox;
 use super::refine::{depth_span, side_outlines};
+use super::weights::{relative_depth, SpanProfile, SPAN_SMOOTH};
 use super::{OutlineFn, TemplateError};
 
 /// Rows per height of the correction profile.
@@ -159,20 +161,6 @@ fn at(v: &[f64], r: f64) -> f64 {
     let i = (r.floor() as usize).min(n - 2);
     let t = r - i as f64;
     (1.0 - t) * v[i] + t * v[i + 1]
-}
-
-/// The part's span at fractional row `r` (nearest known row).
-fn span_at(s: &[Option<(f64, f64)>], r: f64) -> Option<(f64, f64)> {
-    let n = s.len();
-    let i = (r.round().max(0.0) as usize).min(n - 1);
-    if let Some(x) = s[i] {
-        return Some(x);
-    }
-    (1..n).find_map(|d| {
-        let a = i.checked_sub(d).and_then(|j| s[j]);
-        let b = s.get(i + d).copied().flatten();
-        a.or(b)
-    })
 }
 
 /// One envelope correction pass on `positions` (every template vertex)
@@ -379,20 +367,21 @@ pub fn envelope_pass(
         .chain(&body.front)
         .chain(&body.back)
         .fold(0.0f64, |m, v| m.max(v.abs()));
+    // each part's span smoothed over heights: continuous weights
+    // ([`super::weights`]; the nearest row's span jumps at overhangs)
+    let smooth = SPAN_SMOOTH * h;
+    let arm_span = SpanProfile::of_rows(y0, dy, &arm.span, smooth);
+    let body_span = SpanProfile::of_rows(y0, dy, &body.span, smooth);
     for (i, p) in positions.iter_mut().enumerate() {
         let r = (p[1] - y0) / dy;
-        let part = match &arms {
-            Some(a) if a[i] => &arm,
-            _ => &body,
+        let (part, span) = match &arms {
+            Some(a) if a[i] => (&arm, &arm_span),
+            _ => (&body, &body_span),
         };
-        let Some((zb, zf)) = span_at(&part.span, r) else {
+        let Some(span) = span else {
             continue;
         };
-        let s = if zf > zb {
-            ((p[2] - zb) / (zf - zb)).clamp(0.0, 1.0)
-        } else {
-            0.5
-        };
+        let s = relative_depth(p[2], span.at(p[1]));
         let k = opts.envelope_falloff;
         p[2] += s.powi(k) * at(&part.front, r) + (1.0 - s).powi(k) * at(&part.back, r);
     }

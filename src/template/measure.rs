@@ -142,14 +142,24 @@ pub type Region<'a> = &'a dyn Fn(&[f64; 3]) -> bool;
 
 /// [`crease`] for each of `regions`, the dihedral angles computed once.
 pub fn creases(rest: &Mesh, moved: &Mesh, regions: &[Region]) -> Vec<f64> {
-    let (a, b) = (dihedral_angles(rest), dihedral_angles(moved));
-    regions
+    let masks: Vec<Vec<bool>> = regions
         .iter()
-        .map(|region| {
+        .map(|region| rest.positions.iter().map(region).collect())
+        .collect();
+    let masks: Vec<&[bool]> = masks.iter().map(Vec::as_slice).collect();
+    creases_in(rest, moved, &masks)
+}
+
+/// [`crease`] for each region given as a mask over `rest`'s vertices (an
+/// edge counts when both its vertices are in the region).
+pub fn creases_in(rest: &Mesh, moved: &Mesh, masks: &[&[bool]]) -> Vec<f64> {
+    let (a, b) = (dihedral_angles(rest), dihedral_angles(moved));
+    let inside = |m: &[bool], i: u32| m.get(i as usize).copied().unwrap_or(false);
+    masks
+        .iter()
+        .map(|m| {
             a.iter()
-                .filter(|(e, _)| {
-                    region(&rest.positions[e.0 as usize]) && region(&rest.positions[e.1 as usize])
-                })
+                .filter(|(e, _)| inside(m, e.0) && inside(m, e.1))
                 .filter_map(|(e, x)| Some(b.get(e).copied().flatten()? - (*x)?))
                 .fold(0.0, f64::max)
         })

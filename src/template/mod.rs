@@ -40,6 +40,7 @@ pub mod sections;
 pub mod shapes;
 pub mod study;
 pub mod tbsm;
+pub mod weights;
 
 pub use fit::{fit, FitOptions, FitResult, Level, LevelReport, Sketch, Template};
 pub use landmarks::{Scheme, Similarity};

@@ -195,7 +195,8 @@ pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
 /// [`FitOptions::depth_map`]) plus the partners' residuals, interpolated
 /// along the outline by a thin-plate spline and applied with
 /// [`FitOptions::depth_falloff`] weights of the
-/// vertex's relative depth at its height ([`depth_span`] of the outline).
+/// vertex's relative depth in its part's depth span at its height, smoothed
+/// over heights so the weights are continuous ([`super::weights`]).
 pub fn side_pass(
     template: &Template,
     positions: &mut [[f64; 3]],
@@ -255,6 +256,9 @@ pub fn side_pass(
             source,
         }
     })?;
+    // the vertex's part's span, smoothed over heights (continuous weights:
+    // [`super::weights`])
+    let spans = super::weights::DepthSpans::new(template, positions, &o, opts, outline)?;
     for (i, p) in positions.iter_mut().enumerate() {
         let (y, z) = (p[1], p[2]);
         if arms.as_ref().is_some_and(|(a, _)| a[i]) {
@@ -262,11 +266,14 @@ pub fn side_pass(
             p[2] += affine(z);
             continue;
         }
-        let r = match depth_span(ot, y) {
+        let r = match spans.at(i, y) {
             Some((zb, zf)) if zf > zb => {
-                let s = ((z - zb) / (zf - zb)).clamp(0.0, 1.0);
-                s.powi(opts.depth_falloff) * depth.eval(&[zf, y])[0]
-                    + (1.0 - s).powi(opts.depth_falloff) * depth.eval(&[zb, y])[0]
+                let s = super::weights::relative_depth(z, (zb, zf));
+                // read at the vertex's own depth when it lies beyond the
+                // smoothed span (on the outline: its partner's residual)
+                let (ef, eb) = (zf.max(z), zb.min(z));
+                s.powi(opts.depth_falloff) * depth.eval(&[ef, y])[0]
+                    + (1.0 - s).powi(opts.depth_falloff) * depth.eval(&[eb, y])[0]
             }
             _ => depth.eval(&[z, y])[0],
         };

@@ -182,28 +182,97 @@ pub struct Row {
     pub seconds: f64,
 }
 
-/// Crease regions, by the template's skin at rest: front half (z above the
-/// middle of the depth range) between two fractions of the height and
-/// within a half-width (fraction of the height) of the middle in x (no
-/// hands, no arms).
+/// Crease regions, by the template's skin at rest: the trunk's front half
+/// (depth beyond the trunk's mean depth at the vertex's height,
+/// [`trunk_depth`]) between two fractions of the height and within a
+/// half-width (fraction of the height) of the middle in x (no hands, no
+/// arms).
 pub const CREASE_REGIONS: [(&str, f64, f64, f64); 2] =
     [("belly", 0.50, 0.62, 0.07), ("face", 0.87, 1.0, 0.04)];
+
+/// Height bins of [`trunk_depth`].
+pub const DEPTH_BINS: usize = 100;
+
+/// The trunk's mean depth per height bin ([`DEPTH_BINS`] over the skin's
+/// height): the mean z of the skin's vertices at rest, arms left out
+/// ([`super::refine::arm_mask`] on the template; every vertex when the
+/// arms are not found); an empty bin takes the nearest filled one. The
+/// middle of the whole body's depth range is no reference for "front":
+/// MakeHuman's hands (and toes) reach in front of the belly, so the
+/// middle of the bounding box lies in front of it.
+pub fn trunk_depth(template: &Template) -> Vec<f64> {
+    let rest = &template.skin;
+    let (lo, hi) = rest.bbox();
+    let h = (hi[1] - lo[1]).max(f64::MIN_POSITIVE);
+    let arms = super::refine::arm_mask(
+        template,
+        &template.mesh.positions,
+        &FitOptions::default(),
+        &mesh_outline,
+    );
+    let is_arm = |i: usize| {
+        arms.as_ref()
+            .is_some_and(|a| a[template.skin_index[i] as usize])
+    };
+    let (mut sum, mut count) = (vec![0.0; DEPTH_BINS], vec![0usize; DEPTH_BINS]);
+    for (i, p) in rest.positions.iter().enumerate() {
+        if is_arm(i) {
+            continue;
+        }
+        let b = depth_bin(p[1], lo[1], h);
+        sum[b] += p[2];
+        count[b] += 1;
+    }
+    (0..DEPTH_BINS)
+        .map(|b| {
+            (0..DEPTH_BINS)
+                .flat_map(|d| [b.checked_sub(d), Some(b + d)])
+                .flatten()
+                .find(|&j| count.get(j).is_some_and(|&c| c > 0))
+                .map_or(0.5 * (lo[2] + hi[2]), |j| sum[j] / count[j] as f64)
+        })
+        .collect()
+}
+
+fn depth_bin(y: f64, lo: f64, h: f64) -> usize {
+    (((y - lo) / h * DEPTH_BINS as f64).max(0.0) as usize).min(DEPTH_BINS - 1)
+}
+
+/// The skin vertices (at rest) in each of [`CREASE_REGIONS`].
+pub fn crease_regions(template: &Template) -> [Vec<bool>; 2] {
+    let rest = &template.skin;
+    let (lo, hi) = rest.bbox();
+    let xc = 0.5 * (lo[0] + hi[0]);
+    let h = (hi[1] - lo[1]).max(f64::MIN_POSITIVE);
+    let depth = trunk_depth(template);
+    CREASE_REGIONS.map(|(_, a, b, w)| {
+        rest.positions
+            .iter()
+            .map(|p| {
+                let f = (p[1] - lo[1]) / h;
+                p[2] > depth[depth_bin(p[1], lo[1], h)]
+                    && f >= a
+                    && f <= b
+                    && (p[0] - xc).abs() < w * h
+            })
+            .collect()
+    })
+}
 
 /// The creases of `positions` (every template vertex) over the template at
 /// rest, per [`CREASE_REGIONS`].
 pub fn creases(template: &Template, positions: &[[f64; 3]]) -> [f64; 2] {
-    let rest = &template.skin;
-    let (lo, hi) = rest.bbox();
-    let (xc, zc) = (0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2]));
-    let h = hi[1] - lo[1];
-    let regions = CREASE_REGIONS.map(|(_, a, b, w)| {
-        move |p: &[f64; 3]| {
-            let f = (p[1] - lo[1]) / h;
-            p[2] > zc && f >= a && f <= b && (p[0] - xc).abs() < w * h
-        }
-    });
-    let c = super::measure::creases(
-        rest,
+    creases_of(template, &crease_regions(template), positions)
+}
+
+/// [`creases`] with the regions ([`crease_regions`]) given.
+pub fn creases_of(
+    template: &Template,
+    regions: &[Vec<bool>; 2],
+    positions: &[[f64; 3]],
+) -> [f64; 2] {
+    let c = super::measure::creases_in(
+        &template.skin,
         &template.skin_at(positions),
         &[&regions[0], &regions[1]],
     );
@@ -222,6 +291,8 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
     let h = hi[1] - lo[1];
     let skin_of = |pos: &[[f64; 3]]| template.skin_at(pos).positions;
     let bb = bbox_baseline(&template, &sketch);
+    let regions = crease_regions(&template);
+    let creases = |pos: &[[f64; 3]]| creases_of(&template, &regions, pos);
     let (rms, mx) = vertex_errors(&skin_of(&bb), &target.positions, h);
     let mut rows = vec![Row {
         case: case.name.into(),
@@ -229,7 +300,7 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
         rms_rel: rms,
         max_rel: mx,
         profiles: profile_errors(&template, &bb, &sketch)?,
-        creases: creases(&template, &bb),
+        creases: creases(&bb),
         seconds: 0.0,
     }];
     let r = fit(&template, &sketch, opts, &mesh_outline)?;
@@ -247,7 +318,7 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
             rms_rel: rms,
             max_rel: mx,
             profiles: profile_errors(&template, pos, &sketch)?,
-            creases: creases(&template, pos),
+            creases: creases(pos),
             seconds: rep.seconds,
         });
         meshes.push(pos.clone());
@@ -264,7 +335,7 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
         rms_rel: 0.0,
         max_rel: 0.0,
         profiles: Vec::new(),
-        creases: creases(&template, &tpos),
+        creases: creases(&tpos),
         seconds: 0.0,
     });
     Ok((rows, meshes))

@@ -556,3 +556,91 @@ fn crease_of_a_folded_square() {
     assert_eq!(dihedral_angles(&flat_deg).values().next(), Some(&None));
     assert!(crease(&flat_deg, &folded, &all).abs() <= tol::ROUNDING);
 }
+
+/// Fewest skin vertices a crease region of the MakeHuman templates holds
+/// (the male's belly region has hundreds; the old rule left it empty).
+const MIN_REGION_VERTICES: usize = 20;
+
+/// The crease regions' front half is the trunk's own (its mean depth at
+/// the vertex's height, arms left out): on both MakeHuman templates every
+/// region holds vertices, and moving the arms (hands) far in front of the
+/// body leaves the regions as they were. The old rule (the middle of the
+/// skin's depth range) left the male's belly region empty (the hands and
+/// toes pull the middle in front of the belly) and followed the hands.
+#[test]
+fn crease_regions_use_the_trunks_depth() {
+    use pdesculpt::template::measure::mesh_outline;
+    use pdesculpt::template::refine::arm_mask;
+    use pdesculpt::template::study::{crease_regions, makehuman_template, CASES};
+    for case in [CASES[0], CASES[3]] {
+        let mut t = makehuman_template(case.template).unwrap();
+        let regions = crease_regions(&t);
+        for (r, name) in regions.iter().zip(["belly", "face"]) {
+            let n = r.iter().filter(|&&x| x).count();
+            assert!(
+                n >= MIN_REGION_VERTICES,
+                "{} {name}: {n} vertices",
+                case.name
+            );
+        }
+        let arms = arm_mask(&t, &t.mesh.positions, &FitOptions::default(), &mesh_outline)
+            .expect("the MakeHuman template's arms are found");
+        let forward = 0.5 * t.height();
+        for (p, &a) in t.mesh.positions.iter_mut().zip(&arms) {
+            if a {
+                p[2] += forward;
+            }
+        }
+        t.skin = t.skin_at(&t.mesh.positions);
+        assert!(
+            crease_regions(&t) == regions,
+            "{}: the hands moved the regions",
+            case.name
+        );
+    }
+}
+
+/// Fraction of a step's height a smoothed span may change across
+/// `2 * PROBE` of height near the step (the ramp's slope is the step over
+/// the filter's half-width; the bound allows the rows' discretisation).
+const RAMP_SLACK: f64 = 1.5;
+
+/// The side passes' spans are continuous ([`template::weights`]): an
+/// outline with an overhang (a wider block on a narrower one: the front
+/// jumps by 1 at height 1) has a raw depth span that jumps by the whole
+/// step between two close heights, and a smoothed span that changes by no
+/// more than the filter's ramp allows; away from the step the smoothed
+/// span is the true one.
+#[test]
+fn smoothed_depth_span_is_continuous_at_an_overhang() {
+    use pdesculpt::template::refine::depth_span;
+    use pdesculpt::template::weights::{relative_depth, SpanProfile, SPAN_SMOOTH};
+    let outline = [
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 1.0],
+        [2.0, 1.0],
+        [2.0, 2.0],
+        [0.0, 2.0],
+    ];
+    let (height, step) = (2.0, 1.0);
+    let probe = 1e-4 * height;
+    let raw = |y: f64| depth_span(&outline, y).unwrap().1;
+    assert!((raw(1.0 + probe) - raw(1.0 - probe) - step).abs() <= tol::ROUNDING);
+    let s = SpanProfile::of_outline(&outline, SPAN_SMOOTH).unwrap();
+    let w = SPAN_SMOOTH * height;
+    let jump = s.at(1.0 + probe).1 - s.at(1.0 - probe).1;
+    assert!(
+        jump >= 0.0 && jump <= RAMP_SLACK * step * 2.0 * probe / w,
+        "smoothed front jumps by {jump}"
+    );
+    for y in [0.5, 1.5] {
+        let (b, f) = s.at(y);
+        let (rb, rf) = depth_span(&outline, y).unwrap();
+        assert!((b - rb).abs() <= tol::ROUNDING && (f - rf).abs() <= tol::ROUNDING);
+    }
+    // relative depth: clamped to [0, 1], one half for an empty span
+    assert!((relative_depth(3.0, (0.0, 2.0)) - 1.0).abs() <= tol::ROUNDING);
+    assert!((relative_depth(0.5, (0.0, 2.0)) - 0.25).abs() <= tol::ROUNDING);
+    assert!((relative_depth(0.5, (1.0, 1.0)) - 0.5).abs() <= tol::ROUNDING);
+}

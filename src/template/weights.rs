@@ -1,0 +1,193 @@
+//! Per-vertex depth weights of the side passes (issue 12: creases).
+//!
+//! The side passes ([`super::refine::side_pass`],
+//! [`super::envelope::envelope_pass`]) move a vertex in depth by the
+//! corrections of the front and back of the body at its height, weighted
+//! by its relative depth `s = (z - back) / (front - back)` in the depth
+//! span `[back, front]` of the side outline at that height. That span is
+//! not continuous in the height: where the outline overhangs (the tip of
+//! the nose, a pregnant belly's underside, the fingertips of MakeHuman's
+//! hands, which hang in front of the belly) the front-most crossing jumps
+//! from one part of the body to another between two neighbouring heights,
+//! and so do `s`, the point where the correction is read and the vertex's
+//! displacement: neighbouring skin vertices on either side of that height
+//! move apart, a crease (the MakeHuman female->pregnant medium level had a
+//! shelf across the lower belly at the fingertips' height, 2.21 rad; the
+//! boy's and girl's faces folded at the mouth).
+//!
+//! Two changes make the weights continuous:
+//! - the span is the vertex's own part's: the trunk's side outline (arm
+//!   triangles left out, arms by [`super::refine::arm_mask`]) for trunk
+//!   vertices, the whole outline for arm vertices, so a hand in front of
+//!   the belly does not set the belly's span;
+//! - the span is smoothed over heights ([`SpanProfile`]: sampled on
+//!   [`SPAN_ROWS`] rows, a triangle filter of half-width [`SPAN_SMOOTH`] of
+//!   the height), so an overhang's jump becomes a ramp.
+
+use super::fit::{FitOptions, Template};
+use super::refine::{depth_span, side_outlines};
+use super::{OutlineFn, TemplateError};
+
+/// Rows (heights) of a [`SpanProfile`].
+pub const SPAN_ROWS: usize = 1024;
+/// Half-width of the triangle filter smoothing a span over heights, as a
+/// fraction of the outline's height.
+pub const SPAN_SMOOTH: f64 = 0.01;
+
+/// A depth span `[back, front]` per height, smoothed over heights and
+/// interpolated linearly between rows: continuous in the height.
+#[derive(Clone, Debug)]
+pub struct SpanProfile {
+    y0: f64,
+    dy: f64,
+    back: Vec<f64>,
+    front: Vec<f64>,
+}
+
+impl SpanProfile {
+    /// The span of the closed polygon `outline` (depth, height) at every
+    /// row between its lowest and highest point, smoothed with half-width
+    /// `smooth` (fraction of its height); `None` for a flat or empty
+    /// outline.
+    pub fn of_outline(outline: &[[f64; 2]], smooth: f64) -> Option<SpanProfile> {
+        let (lo, hi) = outline
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
+                (l.min(p[1]), h.max(p[1]))
+            });
+        if hi.partial_cmp(&lo) != Some(std::cmp::Ordering::Greater) {
+            return None;
+        }
+        let dy = (hi - lo) / (SPAN_ROWS - 1) as f64;
+        let rows: Vec<Option<(f64, f64)>> = (0..SPAN_ROWS)
+            .map(|r| depth_span(outline, (lo + r as f64 * dy).clamp(lo, hi)))
+            .collect();
+        SpanProfile::of_rows(lo, dy, &rows, smooth * (hi - lo))
+    }
+
+    /// A profile from spans per row (`rows[r]` at height `y0 + r dy`;
+    /// `None`: no span there, filled from the nearest row that has one),
+    /// smoothed with half-width `smooth` (model units); `None` when no row
+    /// has a span.
+    pub fn of_rows(
+        y0: f64,
+        dy: f64,
+        rows: &[Option<(f64, f64)>],
+        smooth: f64,
+    ) -> Option<SpanProfile> {
+        let first = rows.iter().position(Option::is_some)?;
+        let mut last = rows[first].expect("found");
+        let mut filled: Vec<(f64, f64)> = Vec::with_capacity(rows.len());
+        // forward fill, then the rows before the first span
+        for r in rows {
+            if let Some(s) = r {
+                last = *s;
+            }
+            filled.push(last);
+        }
+        for f in filled.iter_mut().take(first) {
+            *f = rows[first].expect("found");
+        }
+        let k = if dy > 0.0 {
+            (smooth / dy).round().max(0.0) as usize
+        } else {
+            0
+        };
+        let back: Vec<f64> = filled.iter().map(|s| s.0).collect();
+        let front: Vec<f64> = filled.iter().map(|s| s.1).collect();
+        Some(SpanProfile {
+            y0,
+            dy,
+            back: triangle_filter(&back, k),
+            front: triangle_filter(&front, k),
+        })
+    }
+
+    /// The smoothed span `(back, front)` at height `y` (clamped to the
+    /// profile's heights).
+    pub fn at(&self, y: f64) -> (f64, f64) {
+        let n = self.front.len();
+        if n == 1 || self.dy <= 0.0 {
+            return (self.back[0], self.front[0]);
+        }
+        let r = ((y - self.y0) / self.dy).clamp(0.0, (n - 1) as f64);
+        let i = (r.floor() as usize).min(n - 2);
+        let t = r - i as f64;
+        (
+            (1.0 - t) * self.back[i] + t * self.back[i + 1],
+            (1.0 - t) * self.front[i] + t * self.front[i + 1],
+        )
+    }
+}
+
+/// `v` filtered by a triangle (two box filters of half-width `k / 2`, ends
+/// averaged over the part of the window inside).
+fn triangle_filter(v: &[f64], k: usize) -> Vec<f64> {
+    let h = k.div_ceil(2);
+    box_filter(&box_filter(v, h), h)
+}
+
+fn box_filter(v: &[f64], k: usize) -> Vec<f64> {
+    if k == 0 || v.is_empty() {
+        return v.to_vec();
+    }
+    let n = v.len();
+    let mut prefix = Vec::with_capacity(n + 1);
+    prefix.push(0.0);
+    for x in v {
+        prefix.push(prefix.last().copied().unwrap_or(0.0) + x);
+    }
+    (0..n)
+        .map(|i| {
+            let (lo, hi) = (i.saturating_sub(k), (i + k).min(n - 1));
+            (prefix[hi + 1] - prefix[lo]) / (hi + 1 - lo) as f64
+        })
+        .collect()
+}
+
+/// The relative-depth spans of a fitted state: per template vertex, its
+/// part's smoothed span (trunk or arm, see the module's notes).
+#[derive(Clone, Debug)]
+pub struct DepthSpans {
+    whole: Option<SpanProfile>,
+    trunk: Option<(Vec<bool>, SpanProfile)>,
+}
+
+impl DepthSpans {
+    /// The spans of the skin at `positions`; `whole` is its side outline
+    /// (already extracted by the caller). The trunk's span is used when the
+    /// arms are found ([`super::refine::arm_mask`]: the human front
+    /// scheme) and the trunk's outline is a simple polygon.
+    pub fn new(
+        template: &Template,
+        positions: &[[f64; 3]],
+        whole: &[[f64; 2]],
+        opts: &FitOptions,
+        outline: &OutlineFn,
+    ) -> Result<DepthSpans, TemplateError> {
+        let smooth = SPAN_SMOOTH;
+        let (_, split) = side_outlines(template, positions, true, opts, outline)?;
+        Ok(DepthSpans {
+            whole: SpanProfile::of_outline(whole, smooth),
+            trunk: split.and_then(|(mask, t)| Some((mask, SpanProfile::of_outline(&t, smooth)?))),
+        })
+    }
+
+    /// The span `(back, front)` for template vertex `i` at height `y`.
+    pub fn at(&self, i: usize, y: f64) -> Option<(f64, f64)> {
+        match &self.trunk {
+            Some((arms, t)) if !arms.get(i).copied().unwrap_or(false) => Some(t.at(y)),
+            _ => self.whole.as_ref().map(|w| w.at(y)),
+        }
+    }
+}
+
+/// The relative depth of `z` in the span `(back, front)`, in `[0, 1]`
+/// (`0.5` for an empty span).
+pub fn relative_depth(z: f64, (back, front): (f64, f64)) -> f64 {
+    if front > back {
+        ((z - back) / (front - back)).clamp(0.0, 1.0)
+    } else {
+        0.5
+    }
+}
