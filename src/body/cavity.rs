@@ -21,6 +21,7 @@
 //! two toes touch, the loops between them nest: 2 vertices per foot).
 
 use crate::mesh::Mesh;
+use crate::profile::{boundary_distance, contains_point};
 
 /// Cavity vertices of a skin and how they were found.
 #[derive(Clone, Debug, Default, serde::Serialize)]
@@ -153,38 +154,6 @@ fn loops_at(m: &Mesh, cand: &[u32], y: f64) -> Vec<Vec<[f64; 2]>> {
     out
 }
 
-fn seg_dist(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let l2 = dx * dx + dy * dy;
-    let t = if l2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
-}
-
-fn loop_dist(p: [f64; 2], l: &[[f64; 2]]) -> f64 {
-    (0..l.len())
-        .map(|i| seg_dist(p, l[i], l[(i + 1) % l.len()]))
-        .fold(f64::INFINITY, f64::min)
-}
-
-/// Even-odd point-in-polygon.
-pub fn inside(p: [f64; 2], l: &[[f64; 2]]) -> bool {
-    let mut c = false;
-    for i in 0..l.len() {
-        let (a, b) = (l[i], l[(i + 1) % l.len()]);
-        if (a[1] > p[1]) != (b[1] > p[1]) {
-            let x = a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]);
-            if x > p[0] {
-                c = !c;
-            }
-        }
-    }
-    c
-}
-
 /// The loops of one slice level, kept while consecutive vertices (sorted
 /// by height) ask for the same level.
 struct Level {
@@ -206,9 +175,9 @@ impl Level {
     /// Whether the loop nearest to `p` (x, z) lies inside another loop.
     fn nested(&self, p: [f64; 2]) -> bool {
         let loops = &self.loops;
-        let Some(own) = (0..loops.len())
-            .min_by(|&a, &b| loop_dist(p, &loops[a]).total_cmp(&loop_dist(p, &loops[b])))
-        else {
+        let Some(own) = (0..loops.len()).min_by(|&a, &b| {
+            boundary_distance(&loops[a], p).total_cmp(&boundary_distance(&loops[b], p))
+        }) else {
             return false;
         };
         let l = &loops[own];
@@ -221,7 +190,7 @@ impl Level {
             .iter()
             .enumerate()
             .filter(|&(i, _)| i != own)
-            .any(|(_, m)| 2 * votes.iter().filter(|&&q| inside(q, m)).count() > k)
+            .any(|(_, m)| 2 * votes.iter().filter(|&&q| contains_point(m, q)).count() > k)
     }
 }
 

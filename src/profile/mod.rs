@@ -67,7 +67,7 @@ mod svg;
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
 pub use json::{parse_json, read_json, to_json};
 pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
-pub use polygon::Profile;
+pub use polygon::{boundary_distance, contains_point, Profile};
 pub use svg::{parse_svg, read_svg, to_svg, write_svg, Cut, SvgSketch};
 
 use serde::{Deserialize, Serialize};

@@ -152,28 +152,13 @@ impl Profile {
     /// Whether `p` is inside (even-odd rule; points on the boundary may go
     /// either way).
     pub fn contains(&self, p: [f64; 2]) -> bool {
-        let mut inside = false;
-        for i in 0..self.len() {
-            let [a, b] = self.edge(i);
-            if (a[1] > p[1]) != (b[1] > p[1]) {
-                let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-                if p[0] < x {
-                    inside = !inside;
-                }
-            }
-        }
-        inside
+        contains_point(&self.points, p)
     }
 
     /// Distance from `p` to the boundary (exact, linear time; for many
     /// queries build a [`super::ProfileIndex`]).
     pub fn distance(&self, p: [f64; 2]) -> f64 {
-        (0..self.len())
-            .map(|i| {
-                let [a, b] = self.edge(i);
-                point_segment(p, a, b).0
-            })
-            .fold(f64::INFINITY, f64::min)
+        boundary_distance(&self.points, p)
     }
 
     /// The point at arc length `s` from vertex 0 along the boundary
@@ -306,4 +291,31 @@ pub(crate) fn bbox_of(pts: &[[f64; 2]]) -> Option<([f64; 2], [f64; 2])> {
         }
     }
     Some((lo, hi))
+}
+
+/// Whether `p` is inside the closed polygon `points` (even-odd rule, the
+/// closing edge implicit; points on the boundary may go either way). For
+/// any polygon, simple or not ([`Profile::contains`] on a validated one).
+pub fn contains_point(points: &[[f64; 2]], p: [f64; 2]) -> bool {
+    let n = points.len();
+    let mut inside = false;
+    for i in 0..n {
+        let (a, b) = (points[i], points[(i + 1) % n]);
+        if (a[1] > p[1]) != (b[1] > p[1]) {
+            let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
+            if p[0] < x {
+                inside = !inside;
+            }
+        }
+    }
+    inside
+}
+
+/// Distance from `p` to the boundary of the closed polygon `points` (exact,
+/// linear time; infinite for no points).
+pub fn boundary_distance(points: &[[f64; 2]], p: [f64; 2]) -> f64 {
+    let n = points.len();
+    (0..n)
+        .map(|i| point_segment(p, points[i], points[(i + 1) % n]).0)
+        .fold(f64::INFINITY, f64::min)
 }
