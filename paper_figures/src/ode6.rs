@@ -426,26 +426,6 @@ fn fig4_5(ctx: &Ctx) -> anyhow::Result<()> {
     Ok(())
 }
 
-fn lin(terms: &[(f64, &Fourier3)]) -> Fourier3 {
-    let n = terms.iter().map(|t| t.1.harmonics()).max().unwrap_or(0);
-    let mut out = Fourier3 {
-        c0: [0.0; 3],
-        cos: vec![[0.0; 3]; n],
-        sin: vec![[0.0; 3]; n],
-    };
-    for (w, f) in terms {
-        let f = f.with_harmonics(n);
-        for k in 0..3 {
-            out.c0[k] += w * f.c0[k];
-            for h in 0..n {
-                out.cos[h][k] += w * f.cos[h][k];
-                out.sin[h][k] += w * f.sin[h][k];
-            }
-        }
-    }
-    out
-}
-
 /// A linear combination of curves of one kind (Fourier, or splines with
 /// equal vertex counts): both representations are linear in their data.
 fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
@@ -458,7 +438,7 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                     _ => None,
                 })
                 .collect();
-            Curve::Fourier(lin(&fs))
+            Curve::Fourier(Fourier3::weighted_sum(&fs))
         }
         Curve::Spline { points, .. } => {
             let n = points.len();

@@ -104,26 +104,6 @@ pub struct StudyRow {
     pub skin_to_recon_max_rel: f64,
 }
 
-/// `sum w_i c_i` of Fourier curves with equal harmonic counts.
-fn combine(terms: &[(f64, &Fourier3)]) -> Fourier3 {
-    let n = terms[0].1.harmonics();
-    let mut out = Fourier3 {
-        c0: [0.0; 3],
-        cos: vec![[0.0; 3]; n],
-        sin: vec![[0.0; 3]; n],
-    };
-    for (w, c) in terms {
-        for k in 0..3 {
-            out.c0[k] += w * c.c0[k];
-            for i in 0..n {
-                out.cos[i][k] += w * c.cos[i][k];
-                out.sin[i][k] += w * c.sin[i][k];
-            }
-        }
-    }
-    out
-}
-
 /// Natural cubic spline second derivatives at `knots` of values `y`.
 fn spline_m2(x: &[f64], y: &[f64]) -> Vec<f64> {
     let n = x.len();
@@ -168,9 +148,9 @@ fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, BodyError> {
         .map(|i| {
             let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
             let w = 1.0 / (b - a) as f64;
-            let d1 = combine(&[(w, &curves[b]), (-w, &curves[a])]);
+            let d1 = Fourier3::weighted_sum(&[(w, &curves[b]), (-w, &curves[a])]);
             let m = i.clamp(1, n - 2);
-            let d2 = combine(&[
+            let d2 = Fourier3::weighted_sum(&[
                 (1.0, &curves[m - 1]),
                 (-2.0, &curves[m]),
                 (1.0, &curves[m + 1]),

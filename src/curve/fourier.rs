@@ -103,6 +103,29 @@ impl Fourier3 {
         }
     }
 
+    /// `sum w_i c_i` of the curves `c_i` (each zero-padded to the most
+    /// harmonics among them): Fourier curves form a vector space, so the
+    /// result evaluates to the same weighted sum of points.
+    pub fn weighted_sum(terms: &[(f64, &Fourier3)]) -> Fourier3 {
+        let n = terms.iter().map(|t| t.1.harmonics()).max().unwrap_or(0);
+        let mut out = Fourier3 {
+            c0: [0.0; 3],
+            cos: vec![[0.0; 3]; n],
+            sin: vec![[0.0; 3]; n],
+        };
+        for (w, f) in terms {
+            let f = f.with_harmonics(n);
+            for k in 0..3 {
+                out.c0[k] += w * f.c0[k];
+                for h in 0..n {
+                    out.cos[h][k] += w * f.cos[h][k];
+                    out.sin[h][k] += w * f.sin[h][k];
+                }
+            }
+        }
+        out
+    }
+
     /// `m` points at `theta = 2 pi k / m`.
     pub fn sample(&self, m: usize) -> Vec<[f64; 3]> {
         (0..m)

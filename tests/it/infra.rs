@@ -387,3 +387,33 @@ fn fourier_json_refuses_mismatched_lists_and_unknown_keys() {
     .to_string();
     assert!(e.contains("unknown field"), "{e}");
 }
+
+/// `Fourier3::weighted_sum` (the data-size study's and the ODE6 figures'
+/// curve differences) is linear: at every angle it evaluates to the same
+/// weighted sum of the curves' points, for curves of different harmonic
+/// counts (the shorter zero-padded).
+#[test]
+fn fourier_weighted_sum_is_the_weighted_sum_of_points() {
+    use pdesculpt::curve::Fourier3;
+    let a = Fourier3 {
+        c0: [1.0, -2.0, 0.5],
+        cos: vec![[0.3, 0.1, -0.2], [0.05, 0.0, 0.4]],
+        sin: vec![[-0.7, 0.2, 0.1], [0.0, -0.3, 0.2]],
+    };
+    let b = Fourier3 {
+        c0: [0.0, 1.0, -1.0],
+        cos: vec![[1.0, 0.0, 0.0]],
+        sin: vec![[0.0, 1.0, 0.5]],
+    };
+    let (wa, wb) = (0.75, -2.5);
+    let s = Fourier3::weighted_sum(&[(wa, &a), (wb, &b)]);
+    assert_eq!(s.harmonics(), 2);
+    for k in 0..16 {
+        let t = 2.0 * std::f64::consts::PI * k as f64 / 16.0;
+        let (p, pa, pb) = (s.eval(t), a.eval(t), b.eval(t));
+        for c in 0..3 {
+            assert!((p[c] - (wa * pa[c] + wb * pb[c])).abs() <= tol::ROUNDING);
+        }
+    }
+    assert_eq!(Fourier3::weighted_sum(&[]).harmonics(), 0);
+}
