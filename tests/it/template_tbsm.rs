@@ -248,49 +248,24 @@ mod cli_tests {
         );
         let obj = d.join("cube.obj");
         std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
-        assert_clear_error(
-            &replace(&[
-                "--part",
-                "torso",
-                "--template",
-                obj.to_str().unwrap(),
-                "--axis",
-                "0,0,0,0,1,0",
-                "--e1",
-                "NaN,0,0",
-            ]),
-            "finite",
-        );
-        assert_clear_error(
-            &replace(&[
-                "--part",
-                "torso",
-                "--template",
-                obj.to_str().unwrap(),
-                "--axis",
-                "0,0,0,0,1,0",
-                "--e1",
-                "1,0",
-            ]),
-            "--e1 takes 3 numbers",
-        );
-        // the comma form of --axis counted as one value (clap num_args = 6
-        // counted raw arguments): now split and counted by the command
-        assert_clear_error(
-            &replace(&[
-                "--part",
-                "torso",
-                "--template",
-                obj.to_str().unwrap(),
-                "--axis",
-                "0,0,0,0,1",
-            ]),
-            "--axis takes 6 numbers",
-        );
-        assert_clear_error(
-            &replace(&["--part", "torso", "--template", obj.to_str().unwrap()]),
-            "--axis",
-        );
+        // a mesh template's --axis / --e1, each with what its error names
+        let mesh = obj.to_str().unwrap();
+        for (extra, needle) in [
+            (&["--axis", "0,0,0,0,1,0", "--e1", "NaN,0,0"][..], "finite"),
+            (
+                &["--axis", "0,0,0,0,1,0", "--e1", "1,0"][..],
+                "--e1 takes 3 numbers",
+            ),
+            // the comma form of --axis counted as one value (clap num_args
+            // = 6 counted raw arguments): now split and counted by the
+            // command
+            (&["--axis", "0,0,0,0,1"][..], "--axis takes 6 numbers"),
+            (&[][..], "--axis"),
+        ] {
+            let mut args = vec!["--part", "torso", "--template", mesh];
+            args.extend_from_slice(extra);
+            assert_clear_error(&replace(&args), needle);
+        }
         let broken = d.join("broken.json");
         std::fs::write(&broken, "{\"version\": ").unwrap();
         let o = pdesculpt(&[
