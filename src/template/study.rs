@@ -283,9 +283,15 @@ pub fn creases_of(
 pub type CaseResult = (Vec<Row>, Vec<Vec<[f64; 3]>>);
 
 /// Runs one case: the bounding-box baseline, then every level.
+/// A case's MakeHuman target: the base body with the case's targets
+/// applied (weight 1).
+pub fn target_mesh(case: &Case) -> Result<Mesh, TemplateError> {
+    Ok(makehuman::body(&targets(case.target)?)?.mesh)
+}
+
 pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateError> {
     let template = makehuman_template(case.template)?;
-    let target = makehuman::body(&targets(case.target)?)?.mesh;
+    let target = target_mesh(case)?;
     let sketch = sketch_of(&target)?;
     let (lo, hi) = super::polygon::bbox(&sketch.front);
     let h = hi[1] - lo[1];

@@ -284,12 +284,7 @@ mod cli_tests {
     fn cli_fits_makehuman_to_a_front_profile() {
         let d = tmpdir("template-fit");
         let case = CASES.iter().find(|c| c.name == "male->boy").unwrap();
-        let ts: Vec<_> = case
-            .target
-            .iter()
-            .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
-            .collect();
-        let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+        let target = pdesculpt::template::study::target_mesh(case).unwrap();
         let front = d.join("front.json");
         write_profile(
             &front,

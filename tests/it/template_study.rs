@@ -115,12 +115,7 @@ fn one_case(case: &pdesculpt::template::study::Case, opts: &FitOptions) {
 fn bands(case: &pdesculpt::template::study::Case, meshes: &[Vec<[f64; 3]>]) {
     use pdesculpt::template::study::makehuman_template;
     let template = makehuman_template(case.template).unwrap();
-    let ts: Vec<_> = case
-        .target
-        .iter()
-        .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
-        .collect();
-    let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+    let target = pdesculpt::template::study::target_mesh(case).unwrap();
     let (lo, hi) = target
         .positions
         .iter()
@@ -189,12 +184,7 @@ fn side_where(
     use pdesculpt::template::measure::mesh_outline;
     use pdesculpt::template::study::{makehuman_template, sketch_of};
     let template = makehuman_template(case.template).unwrap();
-    let ts: Vec<_> = case
-        .target
-        .iter()
-        .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
-        .collect();
-    let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+    let target = pdesculpt::template::study::target_mesh(case).unwrap();
     let sketch = sketch_of(&target).unwrap();
     let side = Profile::new(View::Side, sketch.side.clone().unwrap()).unwrap();
     let (lo, hi) = side
@@ -281,12 +271,7 @@ fn bench_centres() {
     use pdesculpt::template::{fit, Sketch, View};
     let template = makehuman_template(&[]).unwrap();
     let case = CASES.iter().find(|c| c.name == "male->boy").unwrap();
-    let ts: Vec<_> = case
-        .target
-        .iter()
-        .map(|n| (pdesculpt::makehuman::target(n).unwrap(), 1.0))
-        .collect();
-    let target = pdesculpt::makehuman::body(&ts).unwrap().mesh;
+    let target = pdesculpt::template::study::target_mesh(case).unwrap();
     let sketch = Sketch {
         front: mesh_outline(&target, View::Front).unwrap(),
         ..Default::default()
