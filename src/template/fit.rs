@@ -287,6 +287,15 @@ pub fn level_partner(p: &[[f64; 2]], y: f64, near: f64) -> f64 {
     best
 }
 
+/// Largest [`FitOptions::envelope_falloff`] (a weight `s^k` is below
+/// 0.004 at `s = 1/2` by then; a negative `k` would divide by a zero depth
+/// weight).
+pub const ENVELOPE_FALLOFF_MAX: i32 = 8;
+
+/// Most [`FitOptions::envelope_passes`] (each re-extracts the fitted
+/// outlines; the study's cases keep at most 4).
+pub const ENVELOPE_PASSES_MAX: usize = 64;
+
 /// Envelope correction passes ([`super::envelope::envelope_pass`]) while
 /// the side view misses the tolerance, at most
 /// [`FitOptions::envelope_passes`]; a pass that does not reduce the miss
@@ -342,6 +351,17 @@ pub fn fit(
             problem: format!(
                 "tolerance must be finite and positive, got {}",
                 opts.tolerance
+            ),
+        });
+    }
+    if !(1..=ENVELOPE_FALLOFF_MAX).contains(&opts.envelope_falloff)
+        || opts.envelope_passes > ENVELOPE_PASSES_MAX
+    {
+        return Err(TemplateError::BadProfile {
+            what: "the fit options".into(),
+            problem: format!(
+                "envelope_falloff must lie in 1..={ENVELOPE_FALLOFF_MAX} (got {}) and envelope_passes in 0..={ENVELOPE_PASSES_MAX} (got {})",
+                opts.envelope_falloff, opts.envelope_passes
             ),
         });
     }

@@ -639,3 +639,27 @@ fn smoothed_depth_span_is_continuous_at_an_overhang() {
     assert!((relative_depth(0.5, (0.0, 2.0)) - 0.25).abs() <= tol::ROUNDING);
     assert!((relative_depth(0.5, (1.0, 1.0)) - 0.5).abs() <= tol::ROUNDING);
 }
+
+/// Out-of-range envelope options are refused by name before any work: a
+/// negative falloff divided by a zero depth weight, a huge pass count
+/// re-extracted the outlines without end.
+#[test]
+fn envelope_options_out_of_range_are_refused() {
+    let t = template();
+    let sketch = Sketch {
+        front: sketch_of(Figure::default()),
+        ..Default::default()
+    };
+    for (falloff, passes) in [(-1, 4), (0, 4), (9, 4), (2, 65), (2, usize::MAX)] {
+        let mut opts = FitOptions::default();
+        (opts.envelope_falloff, opts.envelope_passes) = (falloff, passes);
+        let e = fit(&t, &sketch, &opts, &prism_outline).expect_err("refused");
+        assert!(
+            e.to_string().contains("envelope_falloff must lie in"),
+            "{e}"
+        );
+    }
+    let mut ok = FitOptions::default();
+    (ok.envelope_falloff, ok.envelope_passes) = (1, 0);
+    assert!(fit(&t, &sketch, &ok, &prism_outline).is_ok());
+}
