@@ -296,6 +296,13 @@ fn displace<D: Surface>(
         for k in 0..3 {
             out.positions[*i][k] += magnitude * wi * d[k];
         }
+        // a finite drag near f64::MAX still overflows the coordinates
+        if !out.positions[*i].iter().all(|x| x.is_finite()) {
+            return Err(Pde4Error::Region(format!(
+                "drag {} moves vertex {i} to a non-finite position: use a smaller drag",
+                crate::limits::Num(drag)
+            )));
+        }
     }
     Ok(RegionDeformation {
         mesh: out,

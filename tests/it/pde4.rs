@@ -677,3 +677,57 @@ fn cli_apply_curve_and_part_match_library() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A finite drag near `f64::MAX` (reachable since `--drag` takes negative
+/// values) overflows the moved coordinates: refused by name, the drag in
+/// short form, not blamed on a vertex at the writer.
+#[test]
+fn a_drag_that_overflows_the_coordinates_is_refused_by_name() {
+    use pdesculpt::pde4::apply::{deform_part, Direction};
+    use pdesculpt::surface::{tessellate, Revolution, Tessellation};
+    let part = tessellate(
+        &Revolution { r0: 1.0, r1: 0.2 },
+        Tessellation { nu: 24, nv: 16 },
+    );
+    let t = TwoSided::new(
+        [ShapeParams {
+            a1: 1.0,
+            a2: 1.0,
+            a3: 1.0,
+        }; 3],
+        &sample_forces(),
+        8,
+        4,
+        two_sided::Method::Exact,
+        None,
+    )
+    .unwrap();
+    let axis = ([0.0; 3], [0.0, 1.0, 0.0]);
+    for drag in [-1e308, 1e308] {
+        let e = deform_part(
+            &part,
+            axis,
+            (0.2, 0.8),
+            f64::INFINITY,
+            &t,
+            Direction::Normal,
+            drag,
+        )
+        .expect_err("overflows");
+        let e = e.to_string();
+        assert!(
+            e.contains("non-finite position") && e.contains("e308"),
+            "{e}"
+        );
+    }
+    assert!(deform_part(
+        &part,
+        axis,
+        (0.2, 0.8),
+        f64::INFINITY,
+        &t,
+        Direction::Normal,
+        -0.1
+    )
+    .is_ok());
+}
