@@ -154,6 +154,83 @@ fn fill_nearest(v: &mut [f64]) {
     }
 }
 
+/// Half-width (rows) of the triangle window over which an arm vertex
+/// averages the paired rows' remaps ([`remap_near`]).
+pub const PAIR_ROWS: usize = 4;
+
+/// The depth change at depth `z` of one paired row: the arm's fitted
+/// crossings `c` moved onto the sketched ones `d` (paired in order),
+/// linear between them and constant beyond the first and last.
+fn remap(pairs: &[(f64, f64)], z: f64) -> f64 {
+    let (first, last) = (pairs[0], pairs[pairs.len() - 1]);
+    if z <= first.0 {
+        return first.1 - first.0;
+    }
+    for w in pairs.windows(2) {
+        let ((c0, d0), (c1, d1)) = (w[0], w[1]);
+        if z <= c1 {
+            let t = if c1 > c0 { (z - c0) / (c1 - c0) } else { 0.0 };
+            return (1.0 - t) * (d0 - c0) + t * (d1 - c1);
+        }
+    }
+    last.1 - last.0
+}
+
+/// Rows over which a paired row's remap carries to rows that do not pair
+/// (a finger's web or tip where the fitted outline and the sketch cross a
+/// row a different number of times), fading linearly.
+pub const PAIR_REACH: usize = 16;
+
+/// Per row, the nearest paired row and its distance (rows), within
+/// [`PAIR_REACH`].
+fn nearest_paired(paired: &[Option<Vec<(f64, f64)>>]) -> Vec<Option<(usize, usize)>> {
+    let n = paired.len();
+    (0..n)
+        .map(|r| {
+            (0..PAIR_REACH).find_map(|d| {
+                let below = r.checked_sub(d).filter(|&j| paired[j].is_some());
+                let above = Some(r + d).filter(|&j| j < n && paired[j].is_some());
+                below.or(above).map(|j| (j, d))
+            })
+        })
+        .collect()
+}
+
+/// An arm vertex's remap at fractional row `r`, depth `z`: over a triangle
+/// window of [`PAIR_ROWS`] rows, each row's nearest paired row's remap,
+/// weighted by the window and by its fading with the distance to that
+/// row; with the share `w` of the window's weight it carries (the vertex
+/// blends `w` of it with the envelope correction, so the remap fades out
+/// continuously away from the paired rows).
+fn remap_near(
+    paired: &[Option<Vec<(f64, f64)>>],
+    nearest: &[Option<(usize, usize)>],
+    r: f64,
+    z: f64,
+) -> Option<(f64, f64)> {
+    let k = PAIR_ROWS as f64 + 1.0;
+    let lo = (r - k).ceil().max(0.0) as usize;
+    let hi = ((r + k).floor().max(0.0) as usize).min(paired.len() - 1);
+    let (mut all, mut wp, mut sum) = (0.0, 0.0, 0.0);
+    for (j, near) in nearest.iter().enumerate().take(hi + 1).skip(lo) {
+        let w = 1.0 - (j as f64 - r).abs() / k;
+        if w <= 0.0 {
+            continue;
+        }
+        all += w;
+        let Some((jj, d)) = *near else {
+            continue;
+        };
+        let Some(p) = paired[jj].as_deref().filter(|p| !p.is_empty()) else {
+            continue;
+        };
+        let w = w * (1.0 - d as f64 / PAIR_REACH as f64);
+        wp += w;
+        sum += w * remap(p, z);
+    }
+    (wp > 0.0).then(|| (wp / all, sum / wp))
+}
+
 /// Linear interpolation of a per-row value at fractional row `r`.
 fn at(v: &[f64], r: f64) -> f64 {
     let n = v.len();
@@ -193,6 +270,10 @@ pub fn envelope_pass(
     // outline shows the arm apart from the trunk (its back is the start of
     // the second interval)
     let mut arm_rows: Vec<Option<ArmRow>> = vec![None; ROWS];
+    // rows where the fitted outline and the sketch both show the arm apart
+    // from the trunk with as many crossings: the arm's crossings, fitted
+    // and sketched, paired in order
+    let mut paired: Vec<Option<Vec<(f64, f64)>>> = vec![None; ROWS];
     let mut bulge = vec![0.0f64; ROWS];
     let mut arm_front = vec![false; ROWS];
     let mut arm_back = vec![false; ROWS];
@@ -221,6 +302,21 @@ pub fn envelope_pass(
             arm_front[r] = true;
             stats.arm_rows += 1;
             let sc = crossings(side, y);
+            // the fitted outline and the sketch cross this row a different
+            // number of times (a fingertip ends above the row in one and
+            // below it in the other): their front-most intervals need not
+            // be the same finger, the arm takes the nearest rows' correction
+            let unpaired = fc.len() != sc.len();
+            let front_of = |c: f64| if unpaired { f64::NAN } else { c };
+            if opts.envelope_pairs && !unpaired && fitted_gap.is_some() && sc[1] > tb {
+                paired[r] = Some(
+                    fc[2..]
+                        .iter()
+                        .copied()
+                        .zip(sc[2..].iter().copied())
+                        .collect(),
+                );
+            }
             if sc.len() >= 4 && sc[1] > tb {
                 // the sketch shows a gap in front of the trunk at this
                 // height (trunk, then the arm): the trunk's front goes to
@@ -228,7 +324,7 @@ pub fn envelope_pass(
                 // (and its back, when the fitted outline shows it, to the
                 // start of the sketch's second interval)
                 stats.split_rows += 1;
-                full.front.push(sf - ff);
+                full.front.push(front_of(sf - ff));
                 body.front.push(sc[1] - tf);
                 if opts.envelope_arm_back {
                     arm_rows[r] = fitted_gap.map(|ab| ArmRow {
@@ -264,7 +360,7 @@ pub fn envelope_pass(
                 full.front.push(f64::NAN);
                 body.front.push(f64::NAN);
             } else {
-                full.front.push(sf - ff);
+                full.front.push(front_of(sf - ff));
                 body.front.push(f64::NAN);
             }
         } else {
@@ -372,18 +468,28 @@ pub fn envelope_pass(
     let smooth = SPAN_SMOOTH * h;
     let arm_span = SpanProfile::of_rows(y0, dy, &arm.span, smooth);
     let body_span = SpanProfile::of_rows(y0, dy, &body.span, smooth);
+    let nearest = nearest_paired(&paired);
     for (i, p) in positions.iter_mut().enumerate() {
         let r = (p[1] - y0) / dy;
-        let (part, span) = match &arms {
-            Some(a) if a[i] => (&arm, &arm_span),
-            _ => (&body, &body_span),
+        let is_arm = matches!(&arms, Some(a) if a[i]);
+        let (part, span) = if is_arm {
+            (&arm, &arm_span)
+        } else {
+            (&body, &body_span)
         };
         let Some(span) = span else {
             continue;
         };
         let s = relative_depth(p[2], span.at(p[1]));
         let k = opts.envelope_falloff;
-        p[2] += s.powi(k) * at(&part.front, r) + (1.0 - s).powi(k) * at(&part.back, r);
+        let d = s.powi(k) * at(&part.front, r) + (1.0 - s).powi(k) * at(&part.back, r);
+        p[2] += match is_arm
+            .then(|| remap_near(&paired, &nearest, r, p[2]))
+            .flatten()
+        {
+            Some((w, m)) => w * m + (1.0 - w) * d,
+            None => d,
+        };
     }
     Ok(stats)
 }

@@ -136,6 +136,11 @@ pub struct FitOptions {
     /// move less than its front; 1, linear, made the pregnant high level
     /// lose to the bounding-box baseline, RMS 0.42 % against 0.40 %).
     pub envelope_falloff: i32,
+    /// Where the fitted outline and the sketch both show an arm apart from
+    /// the trunk with as many crossings at a height, the envelope passes
+    /// move the arm's vertices by the paired crossings (the fingers'
+    /// edges, in order), blended over a few rows (default true).
+    pub envelope_pairs: bool,
 }
 
 impl Default for FitOptions {
@@ -162,6 +167,7 @@ impl Default for FitOptions {
             envelope_arms: true,
             envelope_arm_back: false,
             envelope_falloff: 2,
+            envelope_pairs: true,
         }
     }
 }

@@ -34,6 +34,9 @@ fn study_table() {
     {
         opts.envelope_falloff = k;
     }
+    if std::env::var("STUDY_PAIRS").is_ok_and(|v| v == "0") {
+        opts.envelope_pairs = false;
+    }
     if std::env::var("STUDY_NOBAND").is_ok() {
         opts.band_anchors = 0;
     }
