@@ -136,6 +136,11 @@ pub struct FitOptions {
     /// move less than its front; 1, linear, made the pregnant high level
     /// lose to the bounding-box baseline, RMS 0.42 % against 0.40 %).
     pub envelope_falloff: i32,
+    /// Before each side pass, move the face in height so the fitted side
+    /// outline's head landmarks (neck, chin, nose) sit at the sketch's
+    /// ([`super::weights::remap_heights`]; default true). The medium
+    /// level then measures the front view again.
+    pub side_landmarks: bool,
 }
 
 impl Default for FitOptions {
@@ -162,6 +167,7 @@ impl Default for FitOptions {
             envelope_arms: true,
             envelope_arm_back: false,
             envelope_falloff: 2,
+            side_landmarks: true,
         }
     }
 }
@@ -460,6 +466,13 @@ pub fn fit(
         passes += 1;
     }
     passes += envelope_passes(template, &mut medium, &mut side_err, &side, opts, outline)?;
+    // the side landmarks move the face in height: the front view again
+    let front_fit = if opts.side_landmarks {
+        let err = refine::measure(template, &medium, View::Front, &front, outline)?;
+        refine::view_fit(View::Front, err, opts)
+    } else {
+        front_fit
+    };
     let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
     refine::enforce(Level::Medium, &fits, passes, opts)?;
     let rep = LevelReport {
