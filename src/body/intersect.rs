@@ -82,7 +82,7 @@ pub const CROSS_EPS: f64 = 1e-9;
 /// 56-185 before the shoulder's per-column tangent scales,
 /// [`crate::sketch::transition::column_scales`]). The issue asks for none:
 /// this bound is a regression guard, not the target.
-pub const SELF_CROSSINGS_KNOWN_MAX: f64 = 100.0;
+pub const SELF_CROSSINGS_KNOWN_MAX: f64 = 110.0;
 
 /// A triangle whose bounding box spans more grid cells than this along an
 /// axis is not put in the grid but tested against every other triangle: one
