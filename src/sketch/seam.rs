@@ -104,7 +104,8 @@ impl Seam {
 
 /// The cross tangent of a transition along a seam, on the side `side`
 /// (+1 or -1): the parent's scaled u-tangent at the cuts, turning into
-/// `side ell` times [`Seam::across`] toward the apex.
+/// `side ell` times [`Seam::across`] toward the apex: `(1 - w) c(t) S'(t)
+/// + a side ell D(t)`, `w` [`seam_weight`], `a` [`seam_across_weight`].
 pub(super) fn seam_tangent(
     s: &Seam,
     t: f64,
@@ -119,7 +120,24 @@ pub(super) fn seam_tangent(
     let c1 = -ell * pb / norm(s.d_back).max(f64::MIN_POSITIVE);
     let w = seam_weight(t);
     let base = scale(s.eval(t, 1), (1.0 - t) * c0 + t * c1);
-    add(scale(base, 1.0 - w), scale(s.across(t), w * side * ell))
+    add(
+        scale(base, 1.0 - w),
+        scale(s.across(t), seam_across_weight(t) * side * ell),
+    )
+}
+
+/// Weight of the across-seam direction `D` in a seam's cross tangent,
+/// `sin(pi t)`: 0 at the cuts, 1 at the apex, rising linearly from the
+/// cuts. With `sin^2(pi t)` (the fade of the along-seam part,
+/// [`seam_weight`]) the two transitions beside a seam left it near the
+/// cuts almost along the seam itself (at the first seam vertex 0.12 of
+/// their tangent across it), nearly coplanar, and where their scales
+/// differed (the arm's corner column against the head's) their first rows
+/// crossed: one pair on the base, stomach-pregnant-incr, african-, asian-
+/// and caucasian-male-young. The along-seam part and the tangent plane
+/// `span(S', D)` are unchanged, so the seam stays G1.
+pub fn seam_across_weight(t: f64) -> f64 {
+    (PI * t).sin()
 }
 
 /// Weight of the across-seam direction in a seam's cross tangent,

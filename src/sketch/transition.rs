@@ -36,8 +36,8 @@
 //! reconstruction error 2.4 % -> 4.7 %); C2 is measured and claimed only
 //! for transitions that ask for it.
 //!
-//! Along a seam the cross tangent is `T = (1 - w) c(t) S'(t) + w side ell D(t)`,
-//! `w = sin^2(pi t)`, with `D` the unit direction across the seam in the
+//! Along a seam the cross tangent is `T = (1 - w) c(t) S'(t) + a side ell D(t)`,
+//! `w = sin^2(pi t)`, `a = sin(pi t)`, with `D` the unit direction across the seam in the
 //! tangent plane ([`Seam::across`]: perpendicular to `S'` and to a normal
 //! blended from the parent's at the cuts to the seam plane's at the apex)
 //! and `c(t) S'(t)` equal to the parent's scaled tangent at the cuts. The
@@ -64,7 +64,7 @@ use crate::mesh::{add, dist, dot, norm, scale, sub};
 use std::f64::consts::PI;
 
 pub(super) use super::seam::seam_tangent;
-pub use super::seam::{seam_weight, seams, Seam};
+pub use super::seam::{seam_across_weight, seam_weight, seams, Seam};
 
 /// Vertices on the parent's end ring (divisible by 4 and 6).
 pub const RING_VERTICES: usize = 48;
@@ -268,12 +268,12 @@ fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
 
 /// Cross tangent of a child's transition along seam `s` at `t` (`side`:
 /// -1 left of the seam, +1 right). Along the seam it is
-/// `(1 - w) c(t) S'(t) + w side ell D(t)`, `w = sin^2(pi t)`, `D` the
+/// `(1 - w) c(t) S'(t) + a side ell D(t)`, `w = sin^2(pi t)`, `a = sin(pi t)`, `D` the
 /// seam's [`Seam::across`], `c` linear with `c(0) S'(0)` the parent's
 /// scaled tangent `sgn ell dP/du` at the front cut and `c(1) S'(1)` the one
 /// at the back cut (the seam leaves the ring along it), so the loop's cross
 /// tangent is continuous at the cuts. Modulo `S'` the two sides' tangents
-/// are `-+w ell D`: opposite, so the two transitions meet G1 along the
+/// are `-+a ell D`: opposite, so the two transitions meet G1 along the
 /// whole seam, and at the cuts both are tangent to the parent.
 /// Cubic Hermite basis values and derivatives (d = 0, 1, 2) at s:
 /// `[h00, h10, h01, h11]`.
@@ -465,12 +465,12 @@ pub fn child_transition(
 /// ([`column_scales`]). Measured on the closed body (README): crossing
 /// triangle pairs of the base and the five checked morphs, 703 with one
 /// scale, 249 at 3, 202 at 4.5, 169 at 6 (95 of them in the mitten hands,
-/// which this does not touch); at 6 caucasian-female-young's max rises
-/// 2.56 -> 3.06 %. At 5 with [`TURN_BACK_SCALE_MAX`] the male bodies'
-/// shoulders have no crossing pair left (at 4.5 the base kept 3: a fold at
-/// loop columns 2-3, rows 2-4, where the scale fell too slowly from the
-/// back corner).
-pub const TURN_BACK_EXPONENT: f64 = 5.0;
+/// which this does not touch); uncapped, 6 raised caucasian-female-young's
+/// max 2.56 -> 3.06 %. With [`TURN_BACK_SCALE_MAX`] 6 leaves no shoulder
+/// crossing on the base and the male bodies (at 4.5 the base kept a fold
+/// at loop columns 2-3, rows 2-4, where the scale fell too slowly from the
+/// back corner) and the error columns within 0.2 % of the height.
+pub const TURN_BACK_EXPONENT: f64 = 6.0;
 
 /// Largest per-column scale of a turning-back child, relative to its
 /// `ell` ([`column_scales`]). At a cut the seam leaves the parent ring
@@ -479,7 +479,7 @@ pub const TURN_BACK_EXPONENT: f64 = 5.0;
 /// corner's long chord the uncapped scale (up to 2.3 `ell`) pushed them
 /// past the neighbouring arc column (caucasian-male-old: loop columns
 /// 15-16, rows 0-1, at the front of the armpit).
-pub const TURN_BACK_SCALE_MAX: f64 = 1.5;
+pub const TURN_BACK_SCALE_MAX: f64 = 1.3;
 
 /// Per loop vertex cross-tangent scales of a child that turns back against
 /// its parent (an arm hanging from the shoulder: the parent's end tangent

@@ -17,13 +17,20 @@ fn shoulder_crossings(morph: Option<&str>) -> usize {
         .sum()
 }
 
-/// The bodies whose shoulders have no crossing pair (measured before the
-/// capped per-column scales of `sketch::transition::column_scales`:
-/// universal-male maxweight 2, caucasian-male-old 2). The female armpits
-/// are not fixed (README, Self-intersections).
+/// The bodies whose shoulders have no crossing pair. Measured before the
+/// capped per-column scales of `sketch::transition::column_scales` and the
+/// seam's `seam_across_weight`: base 3, stomach-pregnant-incr 3,
+/// universal-male maxweight 2, caucasian-male-old 2, african-, asian- and
+/// caucasian-male-young 1 each. The female armpits are not fixed (README,
+/// Self-intersections).
 const NO_SHOULDER_CROSSINGS: &[Option<&str>] = &[
+    None,
+    Some("stomach-pregnant-incr"),
     Some("universal-male-young-averagemuscle-maxweight"),
     Some("caucasian-male-old"),
+    Some("african-male-young"),
+    Some("asian-male-young"),
+    Some("caucasian-male-young"),
 ];
 
 #[test]
