@@ -465,10 +465,21 @@ pub fn child_transition(
 /// ([`column_scales`]). Measured on the closed body (README): crossing
 /// triangle pairs of the base and the five checked morphs, 703 with one
 /// scale, 249 at 3, 202 at 4.5, 169 at 6 (95 of them in the mitten hands,
-/// which this does not touch); the error columns move by at most 0.1 % of
-/// the height at 4.5, but at 6 caucasian-female-young's max rises 2.56 ->
-/// 3.06 %.
-pub const TURN_BACK_EXPONENT: f64 = 4.5;
+/// which this does not touch); at 6 caucasian-female-young's max rises
+/// 2.56 -> 3.06 %. At 5 with [`TURN_BACK_SCALE_MAX`] the male bodies'
+/// shoulders have no crossing pair left (at 4.5 the base kept 3: a fold at
+/// loop columns 2-3, rows 2-4, where the scale fell too slowly from the
+/// back corner).
+pub const TURN_BACK_EXPONENT: f64 = 5.0;
+
+/// Largest per-column scale of a turning-back child, relative to its
+/// `ell` ([`column_scales`]). At a cut the seam leaves the parent ring
+/// along the parent's u-tangent, which is also the corner column's cross
+/// tangent, so the corner column's first rows run along the seam; with the
+/// corner's long chord the uncapped scale (up to 2.3 `ell`) pushed them
+/// past the neighbouring arc column (caucasian-male-old: loop columns
+/// 15-16, rows 0-1, at the front of the armpit).
+pub const TURN_BACK_SCALE_MAX: f64 = 1.5;
 
 /// Per loop vertex cross-tangent scales of a child that turns back against
 /// its parent (an arm hanging from the shoulder: the parent's end tangent
@@ -479,7 +490,7 @@ pub const TURN_BACK_EXPONENT: f64 = 4.5;
 /// the armpit, and their short Hermite tangents make them sweep flat across
 /// the rising neighbours: the sheet folds through itself at rows 1-5
 /// (`body::diagnose_self_crossings`). Here column i gets
-/// `ell (c_i / c_mean)^(TURN_BACK_EXPONENT g)`, `c_i` its chord
+/// `ell min((c_i / c_mean)^(TURN_BACK_EXPONENT g), TURN_BACK_SCALE_MAX)`, `c_i` its chord
 /// `|Q(theta_i) - L_i|`, `c_mean` the loop's mean chord, `g = max(0, -cos)` of the angle between the parent's end
 /// direction and the loop-centroid-to-ring-centre direction: 0 for a child
 /// that continues the parent (legs, a head, every sketch transition: the
@@ -520,6 +531,7 @@ pub fn column_scales(
                 * (c / mean)
                     .max(f64::MIN_POSITIVE)
                     .powf(TURN_BACK_EXPONENT * g)
+                    .min(TURN_BACK_SCALE_MAX)
         })
         .collect()
 }

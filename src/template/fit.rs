@@ -141,6 +141,11 @@ pub struct FitOptions {
     /// move the arm's vertices by the paired crossings (the fingers'
     /// edges, in order), blended over a few rows (default true).
     pub envelope_pairs: bool,
+    /// Before each side pass, move the face in height so the fitted side
+    /// outline's head landmarks (neck, chin, nose) sit at the sketch's
+    /// ([`super::weights::remap_heights`]; default true). The medium
+    /// level then measures the front view again.
+    pub side_landmarks: bool,
 }
 
 impl Default for FitOptions {
@@ -168,6 +173,7 @@ impl Default for FitOptions {
             envelope_arm_back: false,
             envelope_falloff: 2,
             envelope_pairs: true,
+            side_landmarks: true,
         }
     }
 }
@@ -466,6 +472,13 @@ pub fn fit(
         passes += 1;
     }
     passes += envelope_passes(template, &mut medium, &mut side_err, &side, opts, outline)?;
+    // the side landmarks move the face in height: the front view again
+    let front_fit = if opts.side_landmarks {
+        let err = refine::measure(template, &medium, View::Front, &front, outline)?;
+        refine::view_fit(View::Front, err, opts)
+    } else {
+        front_fit
+    };
     let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
     refine::enforce(Level::Medium, &fits, passes, opts)?;
     let rep = LevelReport {

@@ -289,3 +289,94 @@ pub fn arc_fractions(p: &[[f64; 2]], marks: &[usize]) -> Vec<f64> {
         })
         .collect()
 }
+
+/// Rows (heights) on which [`face_marks`] reads an outline's depth span.
+pub const FACE_ROWS: usize = 1024;
+/// Heights (fractions of the outline's height from its lowest point)
+/// searched for the neck, the narrowest depth span of the upper body.
+pub const NECK_BAND: (f64, f64) = (0.75, 0.95);
+/// Half-width (fraction of the height) of the window over which the chin's
+/// underside is found as the front's largest change in depth.
+pub const CHIN_WINDOW: f64 = 0.005;
+/// The chin is searched from this far (fraction of the height) below the
+/// neck up to [`NOSE_CLEAR`] below the nose tip (the nose's own underside
+/// is a shallow stretch too).
+pub const CHIN_BELOW_NECK: f64 = 0.02;
+/// See [`CHIN_BELOW_NECK`].
+pub const NOSE_CLEAR: f64 = 0.015;
+
+/// Landmarks of a side outline's head (issue 12, "jaw"): heights in model
+/// units. The side outline of a human is read by rows: its front (largest
+/// depth) and back at each height.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct FaceMarks {
+    /// The narrowest depth span in [`NECK_BAND`].
+    pub neck: f64,
+    /// The front-most point above the neck.
+    pub nose: f64,
+    /// The chin's underside: between the neck and the nose, the height
+    /// where the front moves most in depth within [`CHIN_WINDOW`] (the
+    /// shallow stretch from the chin's front back to the throat).
+    pub chin: f64,
+    /// The outline's highest point (top of the head).
+    pub top: f64,
+    /// The outline's lowest point.
+    pub bottom: f64,
+}
+
+/// [`FaceMarks`] of the closed side outline `p` (depth, height); `what`
+/// names it in errors.
+pub fn face_marks(p: &[[f64; 2]], what: &str) -> Result<FaceMarks, TemplateError> {
+    let missing = |name: &str, why: &str| TemplateError::Landmark {
+        outline: what.into(),
+        landmark: name.into(),
+        problem: why.into(),
+    };
+    let (lo, hi) = super::polygon::bbox(p);
+    let h = hi[1] - lo[1];
+    if !(h.is_finite() && h > 0.0) {
+        return Err(missing("neck", "the outline has no height"));
+    }
+    let n = FACE_ROWS;
+    let y = |r: usize| lo[1] + h * r as f64 / (n - 1) as f64;
+    let rows: Vec<Option<(f64, f64)>> =
+        (0..n).map(|r| super::refine::depth_span(p, y(r))).collect();
+    let row = |f: f64| ((f * (n - 1) as f64).round() as usize).min(n - 1);
+    let width = |r: usize| rows[r].map_or(f64::INFINITY, |(b, f)| f - b);
+    let neck = (row(NECK_BAND.0)..=row(NECK_BAND.1))
+        .min_by(|&a, &b| width(a).total_cmp(&width(b)))
+        .filter(|&r| width(r).is_finite())
+        .ok_or_else(|| missing("neck", "the outline does not cross the neck's heights"))?;
+    let front = |r: usize| rows[r].map_or(f64::NEG_INFINITY, |s| s.1);
+    let nose = (neck..n)
+        .max_by(|&a, &b| front(a).total_cmp(&front(b)))
+        .unwrap_or(neck);
+    let w = row(CHIN_WINDOW).max(1);
+    let (from, to) = (
+        neck.saturating_sub(row(CHIN_BELOW_NECK)).max(w),
+        nose.saturating_sub(row(NOSE_CLEAR)).min(n - 1 - w),
+    );
+    if from >= to {
+        return Err(missing(
+            "chin",
+            "the nose tip is not far enough above the neck for a chin between them",
+        ));
+    }
+    let jump = |r: usize| front(r + w) - front(r - w);
+    let chin = (from..to)
+        .max_by(|&a, &b| jump(a).total_cmp(&jump(b)))
+        .filter(|&r| jump(r).is_finite() && jump(r) > 0.0)
+        .ok_or_else(|| {
+            missing(
+                "chin",
+                "the front does not step forward anywhere between the neck and the nose",
+            )
+        })?;
+    Ok(FaceMarks {
+        neck: y(neck),
+        nose: y(nose),
+        chin: y(chin),
+        top: hi[1],
+        bottom: lo[1],
+    })
+}

@@ -208,6 +208,9 @@ pub fn side_pass(
     // with the envelope partners and `side_trunk`, the trunk's outline
     // (arms left out: a forearm in front of the belly hides it in the side
     // view)
+    if opts.side_landmarks {
+        super::weights::remap_heights(template, positions, side, opts, outline)?;
+    }
     let trunk = opts.side_partner == SidePartner::Envelope && opts.side_trunk;
     let (o, arms) = side_outlines(template, positions, trunk, opts, outline)?;
     let ot: &[[f64; 2]] = arms.as_ref().map_or(&o, |(_, t)| t);

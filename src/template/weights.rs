@@ -25,6 +25,7 @@
 //!   the height), so an overhang's jump becomes a ramp.
 
 use super::fit::{FitOptions, Template};
+use super::landmarks::{face_marks, FaceMarks};
 use super::refine::{depth_span, side_outlines};
 use super::{OutlineFn, TemplateError};
 
@@ -190,4 +191,151 @@ pub fn relative_depth(z: f64, (back, front): (f64, f64)) -> f64 {
     } else {
         0.5
     }
+}
+
+/// Fraction of the height below the lower of the two necks
+/// ([`FaceMarks::neck`]) where the head's height remap ends.
+pub const NECK_ANCHOR: f64 = 0.04;
+
+/// Below this largest landmark shift (fraction of the height) the head
+/// is not remapped: the landmarks' rows (1/[`super::landmarks::FACE_ROWS`]
+/// of the height) jitter by about this much on outlines that match.
+pub const REMAP_MIN: f64 = 0.004;
+
+/// A smooth increasing map of heights taking the template's side-outline
+/// landmarks of the head ([`FaceMarks`]: neck, chin, nose) to the
+/// sketch's, the identity below an anchor under the necks and at the top
+/// of the head (a monotone cubic, Fritsch-Butland slopes, slope 1 at both
+/// ends so it joins the identity smoothly).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeightRemap {
+    /// Knots (template height, sketch height), strictly increasing in both.
+    pub knots: Vec<(f64, f64)>,
+    slopes: Vec<f64>,
+}
+
+impl HeightRemap {
+    /// The remap from the template's landmarks `t` to the sketch's `s`;
+    /// `None` when they are not in the same order on both (no monotone
+    /// map). The neck knot is left out when a chin lies below its neck.
+    pub fn between(t: &FaceMarks, s: &FaceMarks) -> Option<HeightRemap> {
+        let anchor = t.neck.min(s.neck) - NECK_ANCHOR * (t.top - t.bottom);
+        let mut knots = vec![(anchor, anchor)];
+        if t.chin > t.neck && s.chin > s.neck {
+            knots.push((t.neck, s.neck));
+        }
+        knots.extend([(t.chin, s.chin), (t.nose, s.nose), (t.top, t.top)]);
+        let finite = knots.iter().all(|k| k.0.is_finite() && k.1.is_finite());
+        if !finite
+            || knots
+                .windows(2)
+                .any(|w| w[1].0 <= w[0].0 || w[1].1 <= w[0].1)
+        {
+            return None;
+        }
+        let d: Vec<f64> = knots
+            .windows(2)
+            .map(|w| (w[1].1 - w[0].1) / (w[1].0 - w[0].0))
+            .collect();
+        let m = knots.len();
+        let slopes = (0..m)
+            .map(|k| match k {
+                // slope 1 at the ends (joins the identity), limited so the
+                // cubic stays monotone (at most 3 times the secant)
+                0 => 1.0f64.min(3.0 * d[0]),
+                k if k == m - 1 => 1.0f64.min(3.0 * d[m - 2]),
+                k => 2.0 / (1.0 / d[k - 1] + 1.0 / d[k]),
+            })
+            .collect();
+        Some(HeightRemap { knots, slopes })
+    }
+
+    /// The largest change of height at a knot.
+    pub fn largest(&self) -> f64 {
+        self.knots
+            .iter()
+            .map(|k| (k.1 - k.0).abs())
+            .fold(0.0, f64::max)
+    }
+
+    /// The change of height `map(y) - y` (0 outside the knots).
+    pub fn shift(&self, y: f64) -> f64 {
+        let k = &self.knots;
+        let Some(i) = k.windows(2).position(|w| y >= w[0].0 && y <= w[1].0) else {
+            return 0.0;
+        };
+        let (x0, x1, y0, y1) = (k[i].0, k[i + 1].0, k[i].1, k[i + 1].1);
+        let hx = x1 - x0;
+        let t = (y - x0) / hx;
+        let (t2, t3) = (t * t, t * t * t);
+        let v = (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+            + (t3 - 2.0 * t2 + t) * hx * self.slopes[i]
+            + (-2.0 * t3 + 3.0 * t2) * y1
+            + (t3 - t2) * hx * self.slopes[i + 1];
+        v - y
+    }
+}
+
+/// Moves the head of the fitted state `positions` in height so that its
+/// side outline's landmarks ([`FaceMarks`]: neck, chin, nose) sit at the
+/// sketch's heights ([`HeightRemap`]): a vertex takes the shift of its
+/// height times `s^p` of its relative depth `s` in its part's smoothed
+/// span ([`DepthSpans`], `p` = [`FitOptions::depth_falloff`]) and
+/// `(1 - u^2)^2` of its place `u` across the front outline's width at its
+/// height (-1 and 1 at the silhouette), so the face moves and neither the
+/// back of the head nor the front view's silhouette (ears, jaw, neck). Without it the
+/// side pass, which matches heights, pushes the template's neck out to
+/// form a chin that is lower on the sketch (a child's, an old woman's).
+/// Returns the largest shift applied; 0 (nothing moved) when either
+/// outline has no face landmarks or they do not match in order, or for a
+/// front scheme other than [`super::Scheme::Human`].
+pub fn remap_heights(
+    template: &Template,
+    positions: &mut [[f64; 3]],
+    side: &[[f64; 2]],
+    opts: &FitOptions,
+    outline: &OutlineFn,
+) -> Result<f64, TemplateError> {
+    if opts.front_scheme != super::Scheme::Human {
+        return Ok(0.0);
+    }
+    let (o, _) = side_outlines(template, positions, false, opts, outline)?;
+    let (Ok(t), Ok(s)) = (
+        face_marks(&o, "fitted side outline"),
+        face_marks(side, "sketched side profile"),
+    ) else {
+        return Ok(0.0);
+    };
+    let Some(remap) = HeightRemap::between(&t, &s) else {
+        return Ok(0.0);
+    };
+    if remap.largest() < REMAP_MIN * (t.top - t.bottom) {
+        return Ok(0.0);
+    }
+    let spans = DepthSpans::new(template, positions, &o, opts, outline)?;
+    // the front outline's span per height: its silhouette stays put
+    let f = outline(&template.skin_at(positions), super::View::Front)?;
+    let width = SpanProfile::of_outline(&f, SPAN_SMOOTH);
+    let mut largest = 0.0f64;
+    for (i, p) in positions.iter_mut().enumerate() {
+        let d = remap.shift(p[1]);
+        if d == 0.0 {
+            continue;
+        }
+        let s = spans
+            .at(i, p[1])
+            .map_or(0.0, |span| relative_depth(p[2], span));
+        let u = width.as_ref().map_or(0.0, |w| {
+            let (l, r) = w.at(p[1]);
+            if r > l {
+                ((2.0 * p[0] - l - r) / (r - l)).clamp(-1.0, 1.0)
+            } else {
+                1.0
+            }
+        });
+        let d = s.powi(opts.depth_falloff) * (1.0 - u * u).powi(2) * d;
+        p[1] += d;
+        largest = largest.max(d.abs());
+    }
+    Ok(largest)
 }

@@ -11,6 +11,7 @@ mod tolerances;
 mod units;
 
 mod body;
+mod body_shoulders;
 mod conv;
 mod edit;
 mod edit_stroke;
