@@ -160,9 +160,12 @@ pub const PAIR_ROWS: usize = 4;
 
 /// The depth change at depth `z` of one paired row: the arm's fitted
 /// crossings `c` moved onto the sketched ones `d` (paired in order),
-/// linear between them and constant beyond the first and last.
-fn remap(pairs: &[(f64, f64)], z: f64) -> f64 {
-    let (first, last) = (pairs[0], pairs[pairs.len() - 1]);
+/// linear between them and constant beyond the first and last (0 for no
+/// pairs).
+pub fn remap(pairs: &[(f64, f64)], z: f64) -> f64 {
+    let (Some(&first), Some(&last)) = (pairs.first(), pairs.last()) else {
+        return 0.0;
+    };
     if z <= first.0 {
         return first.1 - first.0;
     }

@@ -26,6 +26,7 @@ mod sasm;
 mod sketch;
 mod sketch_animal;
 mod template;
+mod template_side;
 mod template_study;
 mod template_tbsm;
 mod tui;

@@ -96,7 +96,7 @@ fn one_case(case: &pdesculpt::template::study::Case, opts: &FitOptions) {
             let prof: Vec<String> = r
                 .profiles
                 .iter()
-                .map(|p| format!("{} {:.2}", p.view.name(), 100.0 * p.distance.max_rel))
+                .map(|p| format!("{} {:.3}", p.view.name(), 100.0 * p.distance.max_rel))
                 .collect();
             println!(
                 "STUDY {:18} {:6} rms {:.2} max {:.2} | {} | crease belly {:.2} face {:.2} rad | {:.2} s",
