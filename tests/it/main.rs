@@ -27,6 +27,7 @@ mod sketch;
 mod sketch_animal;
 mod template;
 mod template_side;
+mod template_jaw;
 mod template_study;
 mod template_tbsm;
 mod tui;
