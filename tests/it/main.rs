@@ -25,6 +25,7 @@ mod sasm;
 mod sketch;
 mod sketch_animal;
 mod template;
+mod template_belly;
 mod template_study;
 mod template_tbsm;
 mod tui;
