@@ -79,9 +79,11 @@ fn pregnant_high_miss() -> Option<f64> {
     let case = super::study::CASES
         .iter()
         .find(|c| c.name == "female->pregnant")?;
-    let mut opts = super::fit::FitOptions::default();
-    opts.condition = false;
-    opts.on_miss = super::OnMiss::Report;
+    let opts = super::fit::FitOptions {
+        condition: false,
+        on_miss: super::OnMiss::Report,
+        ..Default::default()
+    };
     let template = super::study::makehuman_template(case.template).ok()?;
     let target = super::study::target_mesh(case).ok()?;
     let (_, meshes) = super::study::run_case(case, &opts).ok()?;
