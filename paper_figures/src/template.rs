@@ -152,7 +152,7 @@ fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
         "000-fig7.json",
         &json!({
             "figure": "000-fig7",
-            "sketch": "the MakeHuman target's front and side outlines (profile::outline_of_mesh) and 4 torso sections",
+            "sketch": "the MakeHuman target's front and side outlines (profile::outline_of_mesh) and 6 torso sections",
             "errors": "vertex: RMS / max distance to the target's vertex, over height; profile: fitted outline vs sketch, max over height",
             "cases": data,
         }),

@@ -291,5 +291,6 @@ pub fn checks() -> Vec<Check> {
     figure_checks(&mut out);
     study_checks(&mut out);
     crease_checks(&mut out);
+    super::belly::belly_checks(&mut out);
     out
 }

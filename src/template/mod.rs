@@ -28,6 +28,7 @@
 //! their order (for MakeHuman every `v` line of the base OBJ, helper
 //! geometry included, so MakeHuman targets still apply to the result).
 
+pub mod belly;
 pub mod check;
 pub mod envelope;
 pub mod fit;

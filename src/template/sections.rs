@@ -113,6 +113,32 @@ pub fn gec_loop(
     Ok(rep.gec.sample_plane(m))
 }
 
+/// The sketched loop GEC-fitted ([`gec_loop`]) when the fitted curve is a
+/// simple loop; otherwise (a deep notch, e.g. the cleft of a section just
+/// above the crotch, makes the truncated Fourier series ring into a
+/// self-intersection) the sketched loop itself, `m` points by arc length.
+pub fn gec_or_sketched(
+    y: f64,
+    lp: &[[f64; 2]],
+    terms: usize,
+    m: usize,
+) -> Result<Vec<[f64; 2]>, TemplateError> {
+    let what = format!("cross-section at y = {y}");
+    match validated(&what, &gec_loop(y, lp, terms, m)?) {
+        Ok(t) => Ok(t),
+        Err(_) => {
+            let cum = cumulative(lp);
+            let per = cum[lp.len()];
+            validated(
+                &what,
+                &(0..m)
+                    .map(|k| point_at(lp, &cum, per * k as f64 / m as f64))
+                    .collect::<Vec<_>>(),
+            )
+        }
+    }
+}
+
 fn centroid(p: &[[f64; 2]]) -> [f64; 2] {
     let n = p.len() as f64;
     p.iter()
@@ -165,10 +191,7 @@ pub fn section_pairs(
     for (k, lp) in s.loops.iter().enumerate() {
         let what = format!("cross-section at y = {}, loop {k}", s.y);
         let lp = validated(&what, lp)?;
-        let target = validated(
-            &what,
-            &gec_loop(s.y, &lp, opts.gec_terms, 4 * opts.section_points)?,
-        )?;
+        let target = gec_or_sketched(s.y, &lp, opts.gec_terms, 4 * opts.section_points)?;
         let c = centroid(&target);
         let (best, _) = model
             .iter()

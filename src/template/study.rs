@@ -14,8 +14,11 @@ use crate::mesh::slice::slice;
 use crate::mesh::Mesh;
 
 /// Heights of the key cross-sections, as fractions of the body's height
-/// from its lowest point (belly, waist, chest).
-pub const SECTION_HEIGHTS: [f64; 4] = [0.56, 0.61, 0.66, 0.72];
+/// from its lowest point (lower belly, belly, waist, chest). The two lowest
+/// cut the underside of a pregnant belly (0.50-0.56 on the side outline):
+/// with the lowest at 0.56 the medium level's full-width depth push stayed
+/// there (README, `000-fig7`).
+pub const SECTION_HEIGHTS: [f64; 6] = [0.51, 0.535, 0.56, 0.61, 0.66, 0.72];
 
 /// One study case: template targets and the morphed body's targets.
 #[derive(Clone, Copy, Debug)]
@@ -156,7 +159,9 @@ pub fn sketch_of(m: &Mesh) -> Result<Sketch, TemplateError> {
         .iter()
         .filter_map(|f| {
             let y = lo[1] + f * (hi[1] - lo[1]);
-            torso_section(m, y).map(|l| SectionSketch { y, loops: vec![l] })
+            torso_section(m, y)
+                .filter(|l| super::polygon::validated("torso section", l).is_ok())
+                .map(|l| SectionSketch { y, loops: vec![l] })
         })
         .collect();
     Ok(Sketch {

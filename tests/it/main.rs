@@ -28,6 +28,7 @@ mod sketch_animal;
 mod template;
 mod template_side;
 mod template_jaw;
+mod template_belly;
 mod template_study;
 mod template_tbsm;
 mod tui;
