@@ -703,8 +703,8 @@ fn a_drag_that_overflows_the_coordinates_is_refused_by_name() {
     )
     .unwrap();
     let axis = ([0.0; 3], [0.0, 1.0, 0.0]);
-    for drag in [-1e308, 1e308] {
-        let e = deform_part(
+    let apply = |drag: f64| {
+        deform_part(
             &part,
             axis,
             (0.2, 0.8),
@@ -713,21 +713,13 @@ fn a_drag_that_overflows_the_coordinates_is_refused_by_name() {
             Direction::Normal,
             drag,
         )
-        .expect_err("overflows");
-        let e = e.to_string();
+    };
+    for drag in [-1e308, 1e308] {
+        let e = apply(drag).expect_err("overflows").to_string();
         assert!(
             e.contains("non-finite position") && e.contains("e308"),
             "{e}"
         );
     }
-    assert!(deform_part(
-        &part,
-        axis,
-        (0.2, 0.8),
-        f64::INFINITY,
-        &t,
-        Direction::Normal,
-        -0.1
-    )
-    .is_ok());
+    assert!(apply(-0.1).is_ok());
 }
