@@ -722,3 +722,121 @@ pub fn feature_warp(
     }
     Ok(pairs.len())
 }
+
+/// Outline stretches flatter than this (|dy/ds|) are shelves
+/// ([`shelf_warp`]).
+pub const SHELF_STEEP: f64 = 0.5;
+/// Shelves are looked for above this fraction of the height (from the
+/// fitted side outline's lowest point; above the hands and the crotch).
+pub const SHELF_FROM: f64 = 0.6;
+
+/// Moves the trunk and head in height where the fitted side outline's
+/// front is a shelf (a shallow stretch: a chin's underside, a throat, a
+/// bust's underside) that lies above or below the sketch: each shelf
+/// vertex of the fitted outline (|dy/ds| below [`SHELF_STEEP`]) between
+/// [`SHELF_FROM`] of the height and the nose tip
+/// ([`super::landmarks::face_marks`]) and in the front half of its
+/// height's span is a centre with the height change to its nearest point
+/// on the sketch (within [`FEATURE_PAIR`] of the height); the trunk's
+/// vertices take the centres' Gaussian-weighted mean change (width
+/// [`FEATURE_SIGMA`] of the height, in the side plane) times the centres'
+/// total weight (at most 1), times `s^2` of their relative depth and
+/// `(1 - u^2)^2` of their place across the front outline (as the head's
+/// height remap, [`super::weights::remap_heights`]), so the front
+/// silhouette stays. The depth passes cannot fit a shelf at another
+/// height: moving the rows below it in depth left the old woman's throat
+/// as a hook 0.67 % of the height off. Returns the centres used.
+pub fn shelf_warp(
+    template: &Template,
+    positions: &mut [[f64; 3]],
+    side: &[[f64; 2]],
+    opts: &FitOptions,
+    outline: &OutlineFn,
+) -> Result<usize, TemplateError> {
+    if opts.front_scheme != super::Scheme::Human {
+        return Ok(0);
+    }
+    let (o, split) = side_outlines(template, positions, true, opts, outline)?;
+    let Ok(marks) = super::landmarks::face_marks(&o, "fitted side outline") else {
+        return Ok(0);
+    };
+    let h = (marks.top - marks.bottom).max(f64::MIN_POSITIVE);
+    let (y_lo, y_hi) = (marks.bottom + SHELF_FROM * h, marks.nose);
+    let n = o.len();
+    let mut centres: Vec<([f64; 2], f64)> = Vec::new();
+    for i in 0..n {
+        let q = o[i];
+        if q[1] < y_lo || q[1] > y_hi {
+            continue;
+        }
+        let (a, b) = (o[(i + n - 1) % n], o[(i + 1) % n]);
+        let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2)).sqrt();
+        if len <= 0.0 {
+            continue;
+        }
+        let shallow = ((b[1] - a[1]) / len).abs() < SHELF_STEEP;
+        let Some((zb, zf)) = depth_span(&o, q[1]) else {
+            continue;
+        };
+        if q[0] < 0.5 * (zb + zf) {
+            continue;
+        }
+        // nearest point of the sketch
+        let m = side.len();
+        let mut best = (f64::INFINITY, q);
+        for j in 0..m {
+            let (c, d) = (side[j], side[(j + 1) % m]);
+            let e = [d[0] - c[0], d[1] - c[1]];
+            let l2 = e[0] * e[0] + e[1] * e[1];
+            let t = if l2 > 0.0 {
+                (((q[0] - c[0]) * e[0] + (q[1] - c[1]) * e[1]) / l2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let p = [c[0] + t * e[0], c[1] + t * e[1]];
+            let dd = (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2);
+            if dd < best.0 {
+                best = (dd, p);
+            }
+        }
+        if shallow && best.0.sqrt() <= FEATURE_PAIR * h {
+            centres.push((q, best.1[1] - q[1]));
+        }
+    }
+    if centres.is_empty() {
+        return Ok(0);
+    }
+    let arms = split.map(|(a, _)| a);
+    let spans = super::weights::DepthSpans::new(template, positions, &o, opts, outline)?;
+    let f = outline(&template.skin_at(positions), super::View::Front)?;
+    let width = SpanProfile::of_outline(&f, SPAN_SMOOTH);
+    let s2 = (FEATURE_SIGMA * h).powi(2);
+    let reach = 4.0 * FEATURE_SIGMA * h;
+    for (i, p) in positions.iter_mut().enumerate() {
+        if p[1] < y_lo - reach || p[1] > y_hi + reach || arms.as_ref().is_some_and(|a| a[i]) {
+            continue;
+        }
+        let (mut sw, mut sd) = (0.0, 0.0);
+        for (c, d) in &centres {
+            let w = (-((p[2] - c[0]).powi(2) + (p[1] - c[1]).powi(2)) / s2).exp();
+            sw += w;
+            sd += w * d;
+        }
+        if sw <= 1e-12 {
+            continue;
+        }
+        let s = spans
+            .at(i, p[1])
+            .map_or(0.0, |span| relative_depth(p[2], span));
+        let u = width.as_ref().map_or(0.0, |w| {
+            let (l, r) = w.at(p[1]);
+            if r > l {
+                ((2.0 * p[0] - l - r) / (r - l)).clamp(-1.0, 1.0)
+            } else {
+                1.0
+            }
+        });
+        p[1] += sd / sw * sw.min(1.0) * s * s * (1.0 - u * u).powi(2);
+    }
+    Ok(centres.len())
+}

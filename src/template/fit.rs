@@ -146,6 +146,10 @@ pub struct FitOptions {
     /// sketch's ([`super::envelope::feature_warp`]; default true). A pass
     /// that takes the front view past the tolerance is undone.
     pub envelope_features: bool,
+    /// Each envelope pass first moves the face in height where the fitted
+    /// side outline's front is a shelf off the sketch
+    /// ([`super::envelope::shelf_warp`]).
+    pub envelope_shelves: bool,
     /// Before each side pass, move the face in height so the fitted side
     /// outline's head landmarks (neck, chin, nose) sit at the sketch's
     /// ([`super::weights::remap_heights`]; default true). The medium
@@ -179,6 +183,7 @@ impl Default for FitOptions {
             envelope_falloff: 2,
             envelope_pairs: true,
             envelope_features: true,
+            envelope_shelves: true,
             side_landmarks: true,
         }
     }
@@ -333,6 +338,9 @@ fn envelope_passes(
         let mut next = positions.clone();
         let features = opts.envelope_features
             && super::envelope::feature_warp(template, &mut next, side, opts, outline)? > 0;
+        let shelves = opts.envelope_shelves
+            && super::envelope::shelf_warp(template, &mut next, side, opts, outline)? > 0;
+        let features = features || shelves;
         super::envelope::envelope_pass(template, &mut next, side, opts, outline)?;
         let err = refine::measure(template, &next, View::Side, side, outline)?;
         if err >= *side_err {
