@@ -484,7 +484,8 @@ pub fn fit(
     let Some(side) = side else {
         return Ok(done(levels));
     };
-    // medium: depth only, so the front projection (and its fit) is kept
+    // medium: depth (the envelope passes' hand features and shelves, and
+    // the head's remap, also heights: the front view is measured again)
     let t1 = Instant::now();
     let low = &levels[0].1;
     let mut medium = low.clone();
@@ -511,8 +512,9 @@ pub fn fit(
         opts,
         outline,
     )?;
-    // the side landmarks move the face in height: the front view again
-    let front_fit = if opts.side_landmarks {
+    // the side landmarks, hand features and shelves move heights: the
+    // front view again
+    let front_fit = if opts.side_landmarks || opts.envelope_features || opts.envelope_shelves {
         let err = refine::measure(template, &medium, View::Front, &front, outline)?;
         refine::view_fit(View::Front, err, opts)
     } else {
