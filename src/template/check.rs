@@ -134,8 +134,19 @@ pub const BEATS_BBOX: f64 = 0.99;
 
 /// Study cases whose side profile is within [`PROFILE_REL`] at the medium
 /// and high levels (checks `study-<case>-medium-side-profile`,
-/// `-high-side-profile`); the others are named in the README as not met.
-pub const SIDE_MET: &[&str] = &["male->fat", "male->old", "female->fat", "female->pregnant"];
+/// `-high-side-profile`): all seven since the envelope passes move the
+/// hand's webs and fingertips ([`super::envelope::feature_warp`]) and the
+/// front's shelves ([`super::envelope::shelf_warp`]) in height.
+/// female->girl is met narrowly (0.499 / 0.492 %).
+pub const SIDE_MET: &[&str] = &[
+    "male->fat",
+    "male->boy",
+    "male->old",
+    "female->fat",
+    "female->girl",
+    "female->old",
+    "female->pregnant",
+];
 
 fn study_checks(out: &mut Vec<Check>) {
     for case in CASES {
@@ -228,12 +239,12 @@ pub const CREASE_MARGIN: f64 = 0.5;
 
 /// The study cases and crease regions (index into
 /// [`super::study::CREASE_REGIONS`]: 0 belly, 1 face) checked by
-/// [`crease_checks`]. Not met, so not checked (README, "Creases"; with
-/// the head's height remap, [`super::weights::remap_heights`]):
-/// female->girl belly (2.19 rad at medium against the target's 0.24: a
-/// spike where the sketch's fingertips are the trunk's partner) and face
-/// (2.61 against 1.40), female->old face (1.79 against 1.14; 2.69 before
-/// the remap) and belly (1.60 against 0.92, the envelope passes).
+/// [`crease_checks`]. Not met, so not checked (README, "Creases"):
+/// female->girl belly (2.10 rad at medium against the target's 0.24) and
+/// face (2.16 against 1.40). female->old's belly (1.60 rad before the
+/// envelope passes' uncovered rows, [`super::envelope::uncovered_split`];
+/// 0.60 now, target 0.92) and face (1.79 before the shelf warp,
+/// [`super::envelope::shelf_warp`]; 0.84 now, target 1.14) are checked.
 pub const CREASE_CASES: &[(&str, usize)] = &[
     ("male->fat", 0),
     ("male->fat", 1),
@@ -243,6 +254,8 @@ pub const CREASE_CASES: &[(&str, usize)] = &[
     ("male->old", 1),
     ("female->fat", 0),
     ("female->fat", 1),
+    ("female->old", 0),
+    ("female->old", 1),
     ("female->pregnant", 0),
     ("female->pregnant", 1),
 ];

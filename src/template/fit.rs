@@ -141,6 +141,15 @@ pub struct FitOptions {
     /// move the arm's vertices by the paired crossings (the fingers'
     /// edges, in order), blended over a few rows (default true).
     pub envelope_pairs: bool,
+    /// Each envelope pass first moves the arm's vertices in depth and
+    /// height so the fitted side outline's webs and fingertips land on the
+    /// sketch's ([`super::envelope::feature_warp`]; default true). A pass
+    /// that takes the front view past the tolerance is undone.
+    pub envelope_features: bool,
+    /// Each envelope pass first moves the face in height where the fitted
+    /// side outline's front is a shelf off the sketch
+    /// ([`super::envelope::shelf_warp`]).
+    pub envelope_shelves: bool,
     /// Before each side pass, move the face in height so the fitted side
     /// outline's head landmarks (neck, chin, nose) sit at the sketch's
     /// ([`super::weights::remap_heights`]; default true). The medium
@@ -173,6 +182,8 @@ impl Default for FitOptions {
             envelope_arm_back: false,
             envelope_falloff: 2,
             envelope_pairs: true,
+            envelope_features: true,
+            envelope_shelves: true,
             side_landmarks: true,
         }
     }
@@ -316,17 +327,37 @@ fn envelope_passes(
     template: &Template,
     positions: &mut Vec<[f64; 3]>,
     side_err: &mut f64,
+    front: &[[f64; 2]],
     side: &[[f64; 2]],
     opts: &FitOptions,
     outline: &OutlineFn,
 ) -> Result<usize, TemplateError> {
     let mut kept = 0;
+    let mut front_err = None;
     while *side_err > opts.tolerance && kept < opts.envelope_passes {
         let mut next = positions.clone();
+        let features = opts.envelope_features
+            && super::envelope::feature_warp(template, &mut next, side, opts, outline)? > 0;
+        let shelves = opts.envelope_shelves
+            && super::envelope::shelf_warp(template, &mut next, side, opts, outline)? > 0;
+        let features = features || shelves;
         super::envelope::envelope_pass(template, &mut next, side, opts, outline)?;
         let err = refine::measure(template, &next, View::Side, side, outline)?;
         if err >= *side_err {
             break;
+        }
+        if features {
+            // heights moved: the front view must stay within the tolerance
+            // (or no worse than it was)
+            let before = match front_err {
+                Some(e) => e,
+                None => refine::measure(template, positions, View::Front, front, outline)?,
+            };
+            let after = refine::measure(template, &next, View::Front, front, outline)?;
+            if after > before.max(opts.tolerance) {
+                break;
+            }
+            front_err = Some(after);
         }
         (*positions, *side_err) = (next, err);
         kept += 1;
@@ -453,7 +484,8 @@ pub fn fit(
     let Some(side) = side else {
         return Ok(done(levels));
     };
-    // medium: depth only, so the front projection (and its fit) is kept
+    // medium: depth (the envelope passes' hand features and shelves, and
+    // the head's remap, also heights: the front view is measured again)
     let t1 = Instant::now();
     let low = &levels[0].1;
     let mut medium = low.clone();
@@ -471,9 +503,18 @@ pub fn fit(
         (medium, side_err) = (next, err);
         passes += 1;
     }
-    passes += envelope_passes(template, &mut medium, &mut side_err, &side, opts, outline)?;
-    // the side landmarks move the face in height: the front view again
-    let front_fit = if opts.side_landmarks {
+    passes += envelope_passes(
+        template,
+        &mut medium,
+        &mut side_err,
+        &front,
+        &side,
+        opts,
+        outline,
+    )?;
+    // the side landmarks, hand features and shelves move heights: the
+    // front view again
+    let front_fit = if opts.side_landmarks || opts.envelope_features || opts.envelope_shelves {
         let err = refine::measure(template, &medium, View::Front, &front, outline)?;
         refine::view_fit(View::Front, err, opts)
     } else {
@@ -500,7 +541,15 @@ pub fn fit(
     let (rep, mut high) =
         sections::fit_sections(template, medium, &front, &side, &sketch.sections, opts)?;
     let mut side_err = refine::measure(template, &high, View::Side, &side, outline)?;
-    let passes = envelope_passes(template, &mut high, &mut side_err, &side, opts, outline)?;
+    let passes = envelope_passes(
+        template,
+        &mut high,
+        &mut side_err,
+        &front,
+        &side,
+        opts,
+        outline,
+    )?;
     let fits = vec![
         refine::view_fit(
             View::Front,

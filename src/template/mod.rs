@@ -17,7 +17,12 @@
 //!    - *Medium level* (sec 4.2.2): a scalar thin-plate spline
 //!      $d(z, y)$ on the side plane moves depth only, $z \mapsto z + d(z, y)$,
 //!      fitting the side outline while leaving the front projection, and so
-//!      the front fit, untouched.
+//!      the front fit, untouched. The correction passes after it
+//!      ([`envelope`]) also move heights where the side view shows them and
+//!      depth cannot fit them: the head's landmarks ([`weights`]), the
+//!      hand's webs and fingertips ([`envelope::feature_warp`]) and the
+//!      front's shelves ([`envelope::shelf_warp`]), weighted so the front
+//!      silhouette stays; the front view is measured again.
 //!    - *High level* (sec 4.2.3): key cross-sections at chosen heights,
 //!      GEC-fitted ([`crate::curve::gec`]); a 3D biharmonic spline
 //!      ($\varphi = r$) per horizontal component moves the model's section

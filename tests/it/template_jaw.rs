@@ -219,3 +219,63 @@ fn remap_moves_a_templates_chin_to_the_sketched_chins_height() {
     .unwrap();
     assert_eq!(none, 0.0);
 }
+
+/// The envelope passes' shelf warp ([`envelope::shelf_warp`]) moves a
+/// template's chin underside (a shelf of the side outline) towards a
+/// sketch whose chin is 0.5 % of the height lower: the side outlines come
+/// closer and the chin's landmark moves down; the front silhouette stays
+/// within the tolerance; between equal outlines nothing moves.
+#[test]
+fn shelf_warp_moves_a_chins_underside_to_the_sketched_height() {
+    use pdesculpt::template::envelope;
+    use pdesculpt::template::polygon::{boundary_distance, hausdorff};
+    let (from, to) = (8.6, 8.55);
+    let template = Template::whole(body_mesh(from, 16));
+    let sketch = side_outline(to);
+    let opts = FitOptions::default();
+    let side_of = |pos: &[[f64; 3]]| mesh_outline(&template.skin_at(pos), View::Side).unwrap();
+    let mut pos = template.mesh.positions.clone();
+    // the fitted outline's mean distance to the sketch around the chin
+    let near_chin = |o: &[[f64; 2]]| {
+        let d: Vec<f64> = o
+            .iter()
+            .filter(|q| (8.4..8.8).contains(&q[1]) && q[0] > 0.0)
+            .map(|&q| boundary_distance(&sketch, q))
+            .collect();
+        d.iter().sum::<f64>() / d.len().max(1) as f64
+    };
+    let before = near_chin(&side_of(&pos));
+    let centres = envelope::shelf_warp(&template, &mut pos, &sketch, &opts, &mesh_outline).unwrap();
+    assert!(centres > 0, "no shelf found");
+    let after = near_chin(&side_of(&pos));
+    assert!(
+        after < 0.8 * before,
+        "side miss near the chin {before} -> {after}"
+    );
+    let chin = |p: &[[f64; 2]]| face_marks(p, "side").unwrap().chin;
+    let c0 = chin(&side_of(&template.mesh.positions));
+    let c1 = chin(&side_of(&pos));
+    assert!(c1 < c0, "chin {c0} -> {c1}");
+    let fa = mesh_outline(&template.skin, View::Front).unwrap();
+    let fb = mesh_outline(&template.skin_at(&pos), View::Front).unwrap();
+    let d = hausdorff(&fa, &fb, 0.01) / HEIGHT;
+    assert!(
+        d < pdesculpt::template::check::PROFILE_REL,
+        "front moved {d}"
+    );
+    let mut same = template.mesh.positions.clone();
+    envelope::shelf_warp(
+        &template,
+        &mut same,
+        &side_outline(from),
+        &opts,
+        &mesh_outline,
+    )
+    .unwrap();
+    let moved = same
+        .iter()
+        .zip(&template.mesh.positions)
+        .map(|(a, b)| (a[1] - b[1]).abs())
+        .fold(0.0, f64::max);
+    assert!(moved < 1e-9, "equal outlines moved {moved}");
+}

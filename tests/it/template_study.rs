@@ -37,6 +37,12 @@ fn study_table() {
     if std::env::var("STUDY_PAIRS").is_ok_and(|v| v == "0") {
         opts.envelope_pairs = false;
     }
+    if std::env::var("STUDY_FEATURES").is_ok_and(|v| v == "0") {
+        opts.envelope_features = false;
+    }
+    if std::env::var("STUDY_SHELVES").is_ok_and(|v| v == "0") {
+        opts.envelope_shelves = false;
+    }
     if std::env::var("STUDY_NOBAND").is_ok() {
         opts.band_anchors = 0;
     }
