@@ -22,7 +22,7 @@
 //! vertices nearer to this part's tube than to any other part's tube of the
 //! same surface (the same assignment gives the part's share of the mesh's
 //! vertex coordinates). The `body` rows take every part together; the
-//! `pde6-closed` row is the closed body itself (parts and the hips and
+//! `pde6-closed` row is the closed body itself (parts and the hips, wrist and
 //! shoulders transitions, the numbers of [`super::report`]), the only
 //! surface that covers the armpits and the crotch: the tubes alone leave
 //! those out, so their `skin -> recon` maxima sit there.
