@@ -8,18 +8,36 @@
 //! [`crate::sketch::build_model`] — one implementation for sketched and
 //! reconstructed characters.
 //!
-//! Ends. The crown, the soles and the hands are closed by a collapsed ring:
-//! the last section of the chain is a point (a circle of radius 0) at the
-//! extreme skin point along the part's axis, so the PDE chain itself closes
-//! the part, C2 along u, and the mesh ends in a pole. Hands and feet are
-//! mittens: their sections are the convex hull of every loop the section
-//! plane cuts near the axis (fingers and toes merged), since separate
-//! fingers would need a branching part per finger (transition surfaces
-//! from the palm to five tubes), which the section data of a hand (loops
-//! of a few millimetres) do not support at this resolution. The chin is not
-//! a separate part: the head's horizontal sections run from the neck to the
+//! Ends. The crown, the soles and the tips of the hands and thumbs are
+//! closed by a collapsed ring: the last section of the chain is a point (a
+//! circle of radius 0) at the extreme skin point along the part's axis, so
+//! the PDE chain itself closes the part, C2 along u, and the mesh ends in a
+//! pole. Feet are mittens: their sections are the convex hull of every loop
+//! the section plane cuts near the axis (toes merged). The chin is not a
+//! separate part: the head's horizontal sections run from the neck to the
 //! crown, through the jaw.
+//!
+//! Hands. Each arm ends at the wrist, [`WRIST_GAP`] before the plane of
+//! its trace where the thumb's loop separates from the palm's
+//! ([`super::hand`]: found from the section loops, no vertex ids). A
+//! **wrist transition** (`wrist_l`, `wrist_r`: the same Hermite transition
+//! as the hips, one parent end ring branching into two children with a
+//! seam through an apex, the crotch between thumb and index finger) joins
+//! the arm's end ring to the hand (`hand_l`/`hand_r`: palm and fingers, a
+//! mitten of convex hulls with the thumb's loops left out) and the thumb
+//! (`thumb_l`/`thumb_r`: its own pde6 chain traced along the thumb's axis,
+//! closed by a collapsed tip). The thumb is the transition's last child,
+//! so it gets the wrist ring's arc around theta = 0 ([`THUMB_ARC_SHARE`],
+//! `TransitionSpec::cut_angles`); the arm's sections are fitted with the
+//! phase that puts theta = 0 towards the thumb (`phase_towards`). The
+//! arm is a child of the shoulders and the parent of its wrist: its tube
+//! switches from the shoulder loop's angles to the uniform ring halfway
+//! (`sketch::build`). Separate fingers are not built: they would need a
+//! branching part per finger (a transition from the palm to four tubes),
+//! and the finger loops of the MakeHuman hand (a few millimetres, curled)
+//! separate at planes where the palm's trace already swings.
 
+use super::hand::find_hand;
 use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
 use super::report::measure;
 pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
@@ -45,6 +63,10 @@ pub struct ClosedOptions {
     pub leg_sections: usize,
     pub arm_sections: usize,
     pub head_sections: usize,
+    /// Sections of each hand's palm-and-fingers mitten and of each thumb
+    /// (7 + 3k, counting the collapsed tip).
+    pub hand_sections: usize,
+    pub thumb_sections: usize,
     /// Anchored sampling (see [`crate::pde6::sampling`]).
     pub anchors: usize,
     pub samples: usize,
@@ -61,8 +83,10 @@ impl Default for ClosedOptions {
             a: super::parts::BODY_A,
             torso_sections: 13,
             leg_sections: 19,
-            arm_sections: 16,
+            arm_sections: 10,
             head_sections: 16,
+            hand_sections: 7,
+            thumb_sections: 7,
             anchors: super::parts::DEFAULT_ANCHORS,
             samples: super::parts::DEFAULT_SAMPLES,
             pull: super::parts::DEFAULT_PULL,
@@ -81,6 +105,11 @@ pub const JOIN_C1_MAX: f64 = 1e-6;
 /// vertex, cavities included: the known state is up to 3.7 % (the mouth
 /// pocket of caucasian-male-old, README).
 pub const FULL_SKIN_MAX_KNOWN: f64 = 0.04;
+
+/// Bound on the skin -> recon max over the skin's thumb vertices
+/// ([`super::hand::thumb_vertices`]), relative to the height: measured
+/// 0.085-0.101 % on the base and the checked morphs (README).
+pub const THUMB_SKIN_MAX_REL: f64 = 0.002;
 
 /// Bundled MakeHuman morphs whose closed reconstruction is checked.
 pub const CHECKED_MORPHS: &[&str] = &[
@@ -110,6 +139,32 @@ pub const ARM_OFFSET: f64 = 0.04;
 /// universal-female-young-averagemuscle-maxweight 3.78 -> 2.80 %), at a
 /// cost on the base (2.51 -> 2.94 %); 0.5 overshoots (base 3.2 %).
 pub const SHOULDER_TANGENT_SCALE: f64 = 0.7;
+/// The arm ends this far (relative to the height) along its trace before
+/// the plane where the thumb's loop separates from the palm's
+/// ([`super::hand`]); the wrist transition spans the gap.
+pub const WRIST_GAP: f64 = 0.012;
+/// The palm-and-fingers mitten starts this far past that plane.
+pub const PALM_GAP: f64 = 0.006;
+/// The wrist ring's arc given to the thumb, radians either side of the
+/// thumb's direction: this factor times pi times the thumb's share of the
+/// thumb's and palm's loop perimeters at the split, clamped to
+/// [`THUMB_ARC_MIN`, `THUMB_ARC_MAX`]. Measured (README): at 1 (the
+/// perimeter share itself, +-0.76 rad on the base) the thumb's transition
+/// folded at the seam's front cut (26 crossing pairs on the base's left
+/// wrist); 0.7 leaves none there.
+pub const THUMB_ARC_SHARE: f64 = 0.7;
+/// Cross-tangent scale of the wrist transitions. Measured with
+/// [`THUMB_ARC_SHARE`] 0.7 (README): at 0.7 african-male-young kept 10
+/// crossing pairs in its left wrist, caucasian-male-old 2, at 0.8 25; at
+/// 0.5 and 0.6 none on the base and the checked morphs.
+pub const WRIST_TANGENT_SCALE: f64 = 0.5;
+pub const THUMB_ARC_MIN: f64 = std::f64::consts::PI / 16.0;
+pub const THUMB_ARC_MAX: f64 = std::f64::consts::PI / 3.0;
+/// The arm's sections keep the spacing of a chain of this many sections
+/// (with the collapsed tip) over the whole arm trace, to the fingertips,
+/// at the default 10 arm sections; `n` arm sections keep that of
+/// `(n - 1) 14 / 9 + 1` fitted ones ([`arm_picks`]).
+pub const ARM_SPACING_SECTIONS: usize = 16;
 /// Trace step, relative to the height.
 pub const TRACE_STEP: f64 = 0.004;
 
@@ -144,6 +199,20 @@ pub fn shift_phase(g: &Gec, delta: f64) -> Gec {
 /// is evaluated at theta + pi / 2.
 pub const TORSO_PHASE: f64 = std::f64::consts::FRAC_PI_2;
 
+fn fit_gec(t: &TraceSample, o: &ClosedOptions, what: &str) -> Result<Gec, BodyError> {
+    let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
+    // a section whose centroid sees no crossing on the start ray (a
+    // crescent) falls back to its convex hull
+    Ok(
+        fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
+            .or_else(|_| {
+                let h = crate::profile::shapes::convex_hull(&t.plane);
+                fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
+            })
+            .map_err(|e| e.in_section(what))?,
+    )
+}
+
 fn fit_section(
     t: &TraceSample,
     u: f64,
@@ -151,16 +220,7 @@ fn fit_section(
     what: &str,
     phase: f64,
 ) -> Result<SectionSpec, BodyError> {
-    let terms = o.terms.min(t.plane.len().saturating_sub(1) / 2).max(1);
-    // a section whose centroid sees no crossing on the start ray (a
-    // crescent) falls back to its convex hull
-    let g = fit_anchored(&t.plane, t.frame, terms, o.anchors, o.samples, o.pull)
-        .or_else(|_| {
-            let h = crate::profile::shapes::convex_hull(&t.plane);
-            fit_anchored(&h, t.frame, terms, o.anchors, o.samples, o.pull)
-        })
-        .map_err(|e| e.in_section(what))?;
-    let g = shift_phase(&g, phase);
+    let g = shift_phase(&fit_gec(t, o, what)?, phase);
     Ok(SectionSpec {
         u,
         centre: t.frame.origin,
@@ -172,6 +232,29 @@ fn fit_section(
             y: g.y,
         },
     })
+}
+
+/// The phase that puts theta = 0 of the section `end` (a GEC fitted by the
+/// anchored rule) on the ray from its centre towards `towards`: the wrist
+/// transition gives its last child (the thumb) the arc around theta = 0.
+fn phase_towards(t: &TraceSample, towards: [f64; 3], o: &ClosedOptions) -> Result<f64, BodyError> {
+    let g = fit_gec(t, o, "the arm's end section")?;
+    let (q, _) = t.frame.project(towards);
+    let v = [q[0] - g.centre[0], q[1] - g.centre[1]];
+    let steps = 1440;
+    let best = (0..steps)
+        .map(|i| 2.0 * std::f64::consts::PI * i as f64 / steps as f64)
+        .max_by(|&a, &b| {
+            let c = |th: f64| {
+                let p = g.eval_plane(th);
+                let w = [p[0] - g.centre[0], p[1] - g.centre[1]];
+                (w[0] * v[0] + w[1] * v[1])
+                    / (w[0].hypot(w[1]) * v[0].hypot(v[1])).max(f64::MIN_POSITIVE)
+            };
+            c(a).total_cmp(&c(b))
+        })
+        .unwrap_or(0.0);
+    Ok(best)
 }
 
 /// Picks `n` samples evenly in s over [s0, last] (nearest, strictly increasing).
@@ -240,9 +323,25 @@ fn part_from_trace(
     n: usize,
     tip_end: bool,
     o: &ClosedOptions,
+    phase: f64,
 ) -> Result<PartSpec, BodyError> {
     let fitted = if tip_end { n - 1 } else { n };
     let idx = pick(tr, s0, fitted, name)?;
+    part_from_picks(m, name, tr, &idx, tip_end, o, phase)
+}
+
+/// [`part_from_trace`] with the trace samples of the fitted sections given.
+fn part_from_picks(
+    m: &Mesh,
+    name: &str,
+    tr: &[TraceSample],
+    idx: &[usize],
+    tip_end: bool,
+    o: &ClosedOptions,
+    phase: f64,
+) -> Result<PartSpec, BodyError> {
+    let fitted = idx.len();
+    let n = if tip_end { fitted + 1 } else { fitted };
     let mut sections = Vec::with_capacity(n);
     for (i, &k) in idx.iter().enumerate() {
         sections.push(fit_section(
@@ -250,7 +349,7 @@ fn part_from_trace(
             tr[k].s,
             o,
             &format!("{name} section {i}"),
-            if name == "torso" { TORSO_PHASE } else { 0.0 },
+            phase,
         )?);
     }
     if tip_end {
@@ -277,6 +376,37 @@ fn part_from_trace(
     })
 }
 
+/// The arm's sections: the first `n - 1` where a chain of
+/// [`ARM_SPACING_SECTIONS`] sections over the whole trace (wrist, hand and
+/// fingers: the arm of the mitten body; scaled for other `n`) has them, and
+/// the last at the wrist
+/// (`end` samples of `tr` are the arm's). The shoulder transition then sees
+/// the arm it was tuned on (its crossings depend on the arm's first
+/// sections: 10 sections spread evenly to the wrist left 2 crossing pairs
+/// at the shoulders of caucasian-male-child and caucasian-male-old). Falls
+/// back to `n` sections evenly to the wrist when the wrist comes before
+/// the `n - 1`-th of those.
+fn arm_picks(
+    tr: &[TraceSample],
+    end: usize,
+    s0: f64,
+    n: usize,
+    what: &str,
+) -> Result<Vec<usize>, BodyError> {
+    let arm = &tr[..end];
+    let even = || pick(arm, s0, n, what);
+    let m = ((n.saturating_sub(1) * (ARM_SPACING_SECTIONS - 2)) as f64 / 9.0).round() as usize + 1;
+    let Ok(whole) = pick(tr, s0, m, what) else {
+        return even();
+    };
+    if n < 2 || whole.len() < n || whole[n - 2] + 1 >= end {
+        return even();
+    }
+    let mut idx = whole[..n - 1].to_vec();
+    idx.push(end - 1);
+    Ok(idx)
+}
+
 fn check_count(what: &'static str, n: usize) -> Result<(), BodyError> {
     if n < 7 || (n - 7) % 3 != 0 || n > 7 + 3 * 30 {
         return Err(BodyError::SectionCount { what, got: n });
@@ -290,6 +420,8 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     check_count("leg sections", o.leg_sections)?;
     check_count("arm sections", o.arm_sections)?;
     check_count("head sections", o.head_sections)?;
+    check_count("hand sections", o.hand_sections)?;
+    check_count("thumb sections", o.thumb_sections)?;
     let topo = topology(skin);
     if !topo.watertight {
         return Err(BodyError::LayoutNotFound {
@@ -332,7 +464,16 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     let y1 = lay.armpit - ARMPIT_GAP * h;
     let (c, r) = centre_at(y0, 0.0)?;
     let tt = trace(skin, c, [0.0, 1.0, 0.0], r, straight(y1 - y0, false))?;
-    let torso = part_from_trace(skin, "torso", &tt, 0.0, o.torso_sections, false, o)?;
+    let torso = part_from_trace(
+        skin,
+        "torso",
+        &tt,
+        0.0,
+        o.torso_sections,
+        false,
+        o,
+        TORSO_PHASE,
+    )?;
     // the torso's start must be its bottom: u increases upwards, fine.
     let mut specs = vec![torso];
     // legs: down from crotch - gap
@@ -358,11 +499,17 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             o.leg_sections,
             true,
             o,
+            0.0,
         )?);
     }
-    // arms: from the arm loop under the armpit, following the arm
+    // arms: from the arm loop under the armpit, following the arm, to the
+    // wrist; each hand a mitten and a thumb (super::hand)
     let ya = lay.arm_left[1];
-    for (name, start) in [("arm_l", lay.arm_left), ("arm_r", lay.arm_right)] {
+    let mut hand_specs = Vec::new();
+    let mut wrists = Vec::new();
+    let mut hands = Vec::new();
+    for (side, start) in [("l", lay.arm_left), ("r", lay.arm_right)] {
+        let name = format!("arm_{side}");
         let (c0, r0) = centre_at(ya, start[0])?;
         let (c1, _) = centre_at(ya - 0.04 * h, start[0] + 0.5 * start[0].signum() * 0.04 * h)?;
         let d = sub(c1, c0);
@@ -380,15 +527,49 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                 jump: super::layout::JUMP,
             },
         )?;
-        specs.push(part_from_trace(
+        let hand = find_hand(skin, &tr, h, step)?;
+        let s_end = tr[hand.split].s - WRIST_GAP * h;
+        let arm: Vec<TraceSample> = tr.iter().take_while(|t| t.s <= s_end).cloned().collect();
+        let last = arm.last().ok_or_else(|| BodyError::LayoutNotFound {
+            what: "a wrist",
+            detail: format!("{name}: the thumb separates at the start of the arm's trace"),
+        })?;
+        let phase = phase_towards(last, hand.track[0].0, o)?;
+        let idx = arm_picks(&tr, arm.len(), ARM_OFFSET * h, o.arm_sections, &name)?;
+        specs.push(part_from_picks(skin, &name, &tr, &idx, false, o, phase)?);
+        let (palm, thumb) = (format!("hand_{side}"), format!("thumb_{side}"));
+        hand_specs.push(part_from_trace(
             skin,
-            name,
-            &tr,
-            ARM_OFFSET * h,
-            o.arm_sections,
+            &palm,
+            &hand.palm,
+            PALM_GAP * h,
+            o.hand_sections,
             true,
             o,
+            0.0,
         )?);
+        hand_specs.push(part_from_trace(
+            skin,
+            &thumb,
+            &hand.thumb,
+            0.0,
+            o.thumb_sections,
+            true,
+            o,
+            0.0,
+        )?);
+        wrists.push(TransitionSpec {
+            name: format!("wrist_{side}"),
+            parent: name,
+            parent_end: End::End,
+            children: vec![palm, thumb],
+            seam_apex: vec![hand.apex],
+            cut_angles: vec![(THUMB_ARC_SHARE * std::f64::consts::PI * hand.thumb_share)
+                .clamp(THUMB_ARC_MIN, THUMB_ARC_MAX)],
+            tangent_scale: WRIST_TANGENT_SCALE,
+            continuity: Default::default(),
+        });
+        hands.push((hand, wrists[wrists.len() - 1].cut_angles[0]));
     }
     // head: from the neck up to the crown
     let yn = lay.neck + NECK_GAP * h;
@@ -406,8 +587,11 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
         o.head_sections,
         true,
         o,
+        0.0,
     )?);
-    let transitions = transitions(skin, &lay, &specs)?;
+    specs.extend(hand_specs);
+    let mut transitions = transitions(skin, &lay, &specs)?;
+    transitions.extend(wrists);
     let model = build_model(
         &specs,
         &transitions,
@@ -417,7 +601,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             transition_rows: o.transition_rows,
         },
     )?;
-    let report = measure(skin, &lay, &model, &specs);
+    let report = measure(skin, &lay, &model, &specs, &hands);
     Ok(ClosedBody {
         model,
         specs,

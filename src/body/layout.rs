@@ -321,6 +321,19 @@ pub fn trace(
     radius0: f64,
     o: TraceOptions,
 ) -> Result<Vec<TraceSample>, BodyError> {
+    trace_excluding(m, start, dir, radius0, o, &|_| false)
+}
+
+/// [`trace`] leaving out every loop whose centroid (model coordinates)
+/// `exclude` names: a palm traced without the thumb's loops.
+pub fn trace_excluding(
+    m: &Mesh,
+    start: [f64; 3],
+    dir: [f64; 3],
+    radius0: f64,
+    o: TraceOptions,
+    exclude: &dyn Fn([f64; 3]) -> bool,
+) -> Result<Vec<TraceSample>, BodyError> {
     let mut d = scale(dir, 1.0 / norm(dir).max(f64::MIN_POSITIVE));
     let mut p = start;
     let mut radius = radius0;
@@ -334,6 +347,7 @@ pub fn trace(
             .iter()
             .filter(|l| l.centroid[0].hypot(l.centroid[1]) <= CAPTURE * radius)
             .filter(|l| l.area >= MIN_AREA * radius * radius)
+            .filter(|l| !exclude(f.place(l.centroid[0], l.centroid[1])))
             .collect();
         let chosen = if caught.is_empty() {
             None

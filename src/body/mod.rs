@@ -12,6 +12,8 @@
 //! * [`parts`]: the seven open parts of the paper (`pde6 body --open-parts`);
 //! * [`layout`]: the part layout found from the mesh (no vertex ids);
 //! * [`closed`]: one watertight body (`pde6 body`);
+//! * [`hand`]: where the thumb separates from the palm, the thumb's and
+//!   the palm's traces;
 //! * [`cavity`]: the skin vertices in pockets (mouth, eye sockets) no outer
 //!   section loop reaches;
 //! * [`report`]: its measurements against the input body, [`sites`]: where
@@ -24,6 +26,7 @@
 pub mod cavity;
 pub mod check;
 pub mod closed;
+pub mod hand;
 pub mod intersect;
 pub mod layout;
 pub mod parts;

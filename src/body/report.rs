@@ -50,11 +50,56 @@ pub struct ClosedReport {
     pub gec_numbers: usize,
     pub skin_vertex_numbers: usize,
     pub triangles: usize,
+    /// Per hand (left, right): the thumb against the skin.
+    pub hands: Vec<HandReport>,
+}
+
+/// The thumb of one hand against the skin ([`super::hand`]).
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct HandReport {
+    /// The skin's thumb vertices ([`super::hand::thumb_vertices`]) and their
+    /// largest distance to the reconstruction, relative to the height.
+    pub thumb_vertices: usize,
+    pub thumb_skin_to_recon_max_rel: f64,
+    /// Air points of the web between thumb and index finger (middles of the
+    /// gaps between their loops along the arm trace), and how many of them
+    /// the reconstruction encloses (winding number above 1/2: a mitten
+    /// fills the web).
+    pub web_points: usize,
+    pub web_points_inside: usize,
+    /// The thumb's arc of the wrist ring (radians either side of it).
+    pub thumb_arc: f64,
 }
 
 /// Measures a built closed body against its skin.
-pub fn measure(skin: &Mesh, lay: &Layout, model: &Model, specs: &[PartSpec]) -> ClosedReport {
+pub fn measure(
+    skin: &Mesh,
+    lay: &Layout,
+    model: &Model,
+    specs: &[PartSpec],
+    hands: &[(super::hand::Hand, f64)],
+) -> ClosedReport {
     let h = lay.height();
+    let hand_reports = hands
+        .iter()
+        .map(|(hand, arc)| {
+            let tv = super::hand::thumb_vertices(skin, hand);
+            let pts: Vec<[f64; 3]> = tv.iter().map(|&i| skin.positions[i]).collect();
+            let d = stats(&hit_distances(&closest_hits(&pts, &model.mesh)));
+            let inside = hand
+                .web
+                .iter()
+                .filter(|p| super::hand::winding_number(&model.mesh, **p).abs() > 0.5)
+                .count();
+            HandReport {
+                thumb_vertices: tv.len(),
+                thumb_skin_to_recon_max_rel: if tv.is_empty() { f64::NAN } else { d.max / h },
+                web_points: hand.web.len(),
+                web_points_inside: inside,
+                thumb_arc: *arc,
+            }
+        })
+        .collect();
     // one closest-point query per sample, for the statistics and the sites
     let r2s_points = sample_points(&model.mesh);
     let r2s_hits = closest_hits(&r2s_points, skin);
@@ -119,6 +164,7 @@ pub fn measure(skin: &Mesh, lay: &Layout, model: &Model, specs: &[PartSpec]) -> 
         gec_numbers: specs.iter().map(section_numbers).sum(),
         skin_vertex_numbers: 3 * skin.positions.len(),
         triangles: model.mesh.triangles.len(),
+        hands: hand_reports,
     }
 }
 

@@ -22,7 +22,7 @@
 //! vertices nearer to this part's tube than to any other part's tube of the
 //! same surface (the same assignment gives the part's share of the mesh's
 //! vertex coordinates). The `body` rows take every part together; the
-//! `pde6-closed` row is the closed body itself (parts and the hips and
+//! `pde6-closed` row is the closed body itself (parts and the hips, wrist and
 //! shoulders transitions, the numbers of [`super::report`]), the only
 //! surface that covers the armpits and the crotch: the tubes alone leave
 //! those out, so their `skin -> recon` maxima sit there.
@@ -60,21 +60,21 @@ pub const DENSITIES: [Density; 3] = [
         name: "coarse",
         torso: 7,
         leg: 10,
-        arm: 10,
+        arm: 7,
         head: 10,
     },
     Density {
         name: "default",
         torso: 13,
         leg: 19,
-        arm: 16,
+        arm: 10,
         head: 16,
     },
     Density {
         name: "dense",
         torso: 19,
         leg: 28,
-        arm: 25,
+        arm: 16,
         head: 25,
     },
 ];

@@ -433,7 +433,8 @@ pub fn build() -> Result<Demo, DemoError> {
             &belly,
         ),
     ];
-    // one closed body: parts, mittens, crown and the hips/shoulders transitions
+    // one closed body: parts, mitten hands with thumbs, crown and the
+    // hips/shoulders/wrists transitions
     let closed = reconstruct_closed(&belly, &ClosedOptions::default())?;
     let (reconstruction, body_report) = (closed.model.mesh, closed.report);
     let (skirt, skirt_report) =

@@ -151,18 +151,71 @@ fn band(m: &mut Mesh, g: u32, a: &[u32], b: &[u32]) {
     }
 }
 
+/// Triangles between two rows of one part sampled at different angles
+/// (`ta`, `tb`: each row's theta per vertex, each running once around the
+/// circle, in either direction): the rows are merged by angle, measured
+/// from `a`'s first vertex in `a`'s direction of travel, so every triangle
+/// spans neighbouring angles (orientation is fixed by [`orient`]).
+fn zip(m: &mut Mesh, g: u32, a: &[u32], ta: &[f64], b: &[u32], tb: &[f64]) {
+    let tau = 2.0 * PI;
+    let sigma = if ((ta[1] - ta[0] + PI).rem_euclid(tau) - PI) < 0.0 {
+        -1.0
+    } else {
+        1.0
+    };
+    let alpha = |i: usize| {
+        if i >= a.len() {
+            tau
+        } else {
+            (sigma * (ta[i] - ta[0])).rem_euclid(tau)
+        }
+    };
+    let mut order: Vec<(f64, u32)> = b
+        .iter()
+        .zip(tb)
+        .map(|(&v, &t)| ((sigma * (t - ta[0])).rem_euclid(tau), v))
+        .collect();
+    order.sort_by(|x, y| x.0.total_cmp(&y.0));
+    let beta = |j: usize| {
+        if j >= order.len() {
+            order[0].0 + tau
+        } else {
+            order[j].0
+        }
+    };
+    let (na, nb) = (a.len(), order.len());
+    let (mut i, mut j) = (0, 0);
+    while i < na || j < nb {
+        let bi = |j: usize| order[j % nb].1;
+        if j >= nb || (i < na && alpha(i + 1) <= beta(j + 1)) {
+            tri(m, g, a[i], a[(i + 1) % na], bi(j));
+            i += 1;
+        } else {
+            tri(m, g, a[i % na], bi(j + 1), bi(j));
+            j += 1;
+        }
+    }
+}
+
 fn tube(
     m: &mut Mesh,
     p: &PartSurface,
     thetas: &[f64],
+    end_thetas: Option<&[f64]>,
     rows: usize,
     g: u32,
     disp: &[&Displacement],
 ) -> Tube {
     let mut prev: Vec<u32> = Vec::new();
     let mut first = Vec::new();
+    let switch = rows / 2;
+    let mut prev_th = thetas;
     for r in 0..=rows {
         let u = p.u0 + (p.u1 - p.u0) * r as f64 / rows as f64;
+        let thetas = match end_thetas {
+            Some(e) if r >= switch.max(1) => e,
+            _ => thetas,
+        };
         let sec = p.chain.pieces[p.chain.piece_at(u)].global_section(u, 0);
         let pole = (r == 0 && p.closed_start) || (r == rows && p.closed_end);
         let row: Vec<u32> = if pole {
@@ -182,10 +235,13 @@ fn tube(
         };
         if r == 0 {
             first = row.clone();
+        } else if prev.len() > 1 && row.len() > 1 && !std::ptr::eq(prev_th, thetas) {
+            zip(m, g, &prev, prev_th, &row, thetas);
         } else {
             band(m, g, &prev, &row);
         }
         prev = row;
+        prev_th = thetas;
     }
     Tube {
         start: first,
@@ -322,12 +378,20 @@ pub fn build_model_with(
             cts,
         });
     }
+    // a part that is a child (its start ring follows its transition's loop)
+    // and the parent of a transition at its end (whose ring is the uniform
+    // one the cuts index) switches from one ring to the other halfway
+    // along its tube ([`zip`]): an arm under the shoulders ending at a wrist
+    let mut end_uniform = vec![false; parts.len()];
     for b in &built {
         if thetas[b.parent].is_some() {
-            return Err(SketchError::Document(format!(
-                "part '{}' is both a child and a parent of transitions (not supported in version 1)",
-                parts[b.parent].name
-            )));
+            if b.spec.parent_end == End::Start {
+                return Err(SketchError::Document(format!(
+                    "part '{}' is a child and the parent of transition '{}' at the same end (its start)",
+                    parts[b.parent].name, b.spec.name
+                )));
+            }
+            end_uniform[b.parent] = true;
         }
     }
     let mut mesh = Mesh::default();
@@ -339,7 +403,8 @@ pub fn build_model_with(
             .max(8.0) as usize;
         let g = mesh.group_index(&p.name);
         let disp: Vec<&Displacement> = displacements.iter().filter(|d| d.part == p.name).collect();
-        tubes.push(tube(&mut mesh, p, &th, rows, g, &disp));
+        let end = end_uniform[i].then_some(uniform.as_slice());
+        tubes.push(tube(&mut mesh, p, &th, end, rows, g, &disp));
     }
     for b in &built {
         let g = mesh.group_index(&b.spec.name);

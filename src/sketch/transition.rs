@@ -57,6 +57,17 @@
 //! column's chord to the child ring, which stops the armpit's corner
 //! columns folding through their neighbours. Everywhere else it is one
 //! scale per child.
+//!
+//! Nothing here assumes a vertical axis: the cuts are ring angles of the
+//! parent's own section parameter, the seams are built from the parent's
+//! end tangent and the apex, and [`column_scales`]'s turn-back measure is
+//! the angle between the parent's end tangent and the loop-to-ring
+//! direction (a wrist, whose arm points down and forward and whose thumb
+//! leaves it at ~30 degrees, has none: one scale per child). A part may be
+//! a child of one transition and the parent of another at its end (an
+//! arm: child of the shoulders, parent of its wrist): its tube switches
+//! from the first transition's loop angles to the uniform end ring the
+//! second's cuts index, halfway along (`sketch::build`).
 
 use super::part::PartSurface;
 use crate::character::doc::{Continuity, End};

@@ -12,6 +12,7 @@ mod units;
 
 mod body;
 mod body_shoulders;
+mod body_thumb;
 mod conv;
 mod edit;
 mod edit_stroke;

@@ -4,7 +4,7 @@
 
 use crate::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX,
-    MAX_MAX_REL, RMS_MAX_REL,
+    MAX_MAX_REL, RMS_MAX_REL, THUMB_SKIN_MAX_REL,
 };
 use crate::body::intersect::SELF_CROSSINGS_KNOWN_MAX;
 use crate::check::{Check, Kind};
@@ -23,9 +23,34 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
     for (name, morphs) in bodies {
         let run = load_body(None, &morphs)
             .and_then(|skin| reconstruct_closed(&skin, &ClosedOptions::default()));
-        let (topo, c1, rms, max, note, crossings) = match run {
+        let (topo, c1, rms, max, note, crossings, thumb) = match run {
             Ok(b) => {
                 let r = b.report;
+                let thumb = (
+                    r.hands
+                        .iter()
+                        .map(|h| h.thumb_skin_to_recon_max_rel)
+                        .fold(f64::NAN, f64::max),
+                    r.hands
+                        .iter()
+                        .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })
+                        .sum::<f64>(),
+                    format!(
+                        "per hand (left, right): {}",
+                        r.hands
+                            .iter()
+                            .map(|h| format!(
+                                "{} thumb vertices, max {:.3} %; {} of {} web points inside; thumb arc +-{:.3} rad",
+                                h.thumb_vertices,
+                                100.0 * h.thumb_skin_to_recon_max_rel,
+                                h.web_points_inside,
+                                h.web_points,
+                                h.thumb_arc
+                            ))
+                            .collect::<Vec<_>>()
+                            .join("; ")
+                    ),
+                );
                 let t = &r.topology;
                 let bad = (t.boundary_edges
                     + t.nonmanifold_edges
@@ -60,6 +85,7 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
                     [r.judged_max_rel(), r.skin_to_recon_max_rel],
                     note,
                     crossings,
+                    thumb,
                 )
             }
             Err(e) => (
@@ -69,8 +95,17 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
                 [f64::NAN; 2],
                 format!("failed: {e}"),
                 (f64::NAN, String::new()),
+                (f64::NAN, f64::NAN, String::new()),
             ),
         };
+        out.push(
+            Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_thumb_{name}"), Kind::Threshold, thumb.0, THUMB_SKIN_MAX_REL)
+                .note(format!("largest distance from the skin's thumb vertices (body::hand::thumb_vertices: near the sections of the thumb traced along its own axis) to the reconstruction, relative to the height, over both hands; {}", thumb.2)),
+        );
+        out.push(
+            Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_thumb_web_{name}"), Kind::Threshold, thumb.1, 0.0)
+                .note(format!("web points (air between the thumb and the palm or index finger: middles of the gaps between their loops in the arm trace's planes past the split) enclosed by the reconstruction (generalised winding number > 1/2), both hands: a mitten without a thumb fills the web and encloses them; infinite when a hand found no web point; {}", thumb.2)),
+        );
         out.push(
             Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_topology_{name}"), Kind::Threshold, topo, 0.0)
                 .note(format!("boundary + non-manifold + misoriented edges + non-manifold vertices of the closed body (0 = watertight, manifold, oriented); {note}")),
