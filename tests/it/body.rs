@@ -6,7 +6,7 @@ use pdesculpt::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX,
     MAX_MAX_REL, RMS_MAX_REL,
 };
-use pdesculpt::body::intersect::SELF_CROSSINGS_KNOWN_MAX;
+use pdesculpt::body::intersect::known_crossings;
 use pdesculpt::body::BodyError;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::profile::shapes::box_mesh;
@@ -36,7 +36,7 @@ fn assert_closed(name: &str, skin: &Mesh, o: &ClosedOptions, errors: bool) {
         assert!(max <= MAX_MAX_REL, "{name}: max {max}");
         let x = &r.self_intersections;
         assert!(
-            x.pairs as f64 <= SELF_CROSSINGS_KNOWN_MAX,
+            x.pairs <= known_crossings(name.split('=').next().unwrap_or(name)),
             "{name}: {} crossing pairs {:?}",
             x.pairs,
             x.by_groups
@@ -72,6 +72,25 @@ fn base_and_morphs_reconstruct_closed_within_the_targets() {
         let skin = load_body(None, &[m.to_string()]).unwrap();
         assert_closed(m, &skin, &o, true);
     }
+}
+
+/// Every body of `KNOWN_CROSSINGS` is a checked body, listed once, and not
+/// at 0 (a body that reaches the target leaves the table).
+#[test]
+fn known_crossings_name_checked_bodies_only() {
+    use pdesculpt::body::intersect::KNOWN_CROSSINGS;
+    let checked: Vec<&str> = std::iter::once("base")
+        .chain(CHECKED_MORPHS.iter().map(|m| m.split('=').next().unwrap()))
+        .collect();
+    for (i, (b, n)) in KNOWN_CROSSINGS.iter().enumerate() {
+        assert!(checked.contains(b), "{b} is not checked");
+        assert!(*n > 0, "{b}: 0 is the target, not a known state");
+        assert!(
+            KNOWN_CROSSINGS[..i].iter().all(|(c, _)| c != b),
+            "{b} twice"
+        );
+    }
+    assert_eq!(known_crossings("base"), 0);
 }
 
 /// A coarse, fast resolution for the property test.
