@@ -295,3 +295,70 @@ fn sweep_shoulder_cuts() {
         );
     }
 }
+
+/// Diagnostic (run by hand): the shoulders' cuts and crossings of the
+/// data-size study's densities (base body) and of the demo's closed body.
+#[test]
+#[ignore]
+fn study_and_demo_shoulder_cuts() {
+    use pdesculpt::body::study::DENSITIES;
+    let skin = load_body(None, &[]).unwrap();
+    for d in DENSITIES {
+        let o = ClosedOptions {
+            torso_sections: d.torso,
+            leg_sections: d.leg,
+            arm_sections: d.arm,
+            head_sections: d.head,
+            ..ClosedOptions::default()
+        };
+        let b = reconstruct_closed(&skin, &o).unwrap();
+        let t = b
+            .transitions
+            .iter()
+            .find(|t| t.name == "shoulders")
+            .unwrap();
+        let r = &b.report;
+        println!(
+            "study {}: cuts {:?} crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
+            d.name,
+            t.cut_angles,
+            r.self_intersections.by_groups,
+            100.0 * r.recon_to_skin_rms_rel,
+            100.0 * r.recon_to_skin_max_rel,
+            100.0 * r.skin_to_recon_rms_rel,
+            100.0 * r.skin_to_recon_max_rel
+        );
+        if !t.cut_angles.is_empty() {
+            use pdesculpt::body::layout::find_layout;
+            use pdesculpt::body::report::measure;
+            use pdesculpt::sketch::build::{build_model, Resolution};
+            let lay = find_layout(&skin).unwrap();
+            let mut tr = b.transitions.clone();
+            tr.iter_mut().for_each(|t| t.cut_angles.clear());
+            let m = build_model(
+                &b.specs,
+                &tr,
+                lay.height(),
+                Resolution {
+                    rings_per_height: o.rings_per_height,
+                    transition_rows: o.transition_rows,
+                },
+            )
+            .unwrap();
+            let r = measure(&skin, &lay, &m, &b.specs);
+            println!(
+                "  fixed cuts: crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
+                r.self_intersections.by_groups,
+                100.0 * r.recon_to_skin_rms_rel,
+                100.0 * r.recon_to_skin_max_rel,
+                100.0 * r.skin_to_recon_rms_rel,
+                100.0 * r.skin_to_recon_max_rel
+            );
+        }
+    }
+    let demo = pdesculpt::character::demo::build().unwrap();
+    println!(
+        "demo: crossings {:?}",
+        demo.report.reconstruction.self_intersections.by_groups
+    );
+}
