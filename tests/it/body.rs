@@ -289,8 +289,9 @@ fn a_retessellated_moved_copy_reconstructs_the_same() {
 
 /// Where a triangle of the closed body sits: its group and, inside a
 /// transition, the child, the row band (0 = at the parent's ring) and the
-/// loop column; inside a part, the ring band and the column.
-fn crossing_cell(m: &Mesh, t: usize) -> String {
+/// loop column; inside a part, the ring band and the column. `cuts`: the
+/// shoulders' cut table of the body (`cut_table` of its `cut_angles`).
+fn crossing_cell(m: &Mesh, t: usize, cuts: &[(usize, usize)]) -> String {
     use pdesculpt::sketch::transition::{loop_len, loop_runs};
     let g = m.tri_group[t];
     let name = &m.groups[g as usize];
@@ -305,8 +306,8 @@ fn crossing_cell(m: &Mesh, t: usize) -> String {
         let width = match name.as_str() {
             "torso" => 48,
             "leg_l" | "leg_r" => loop_len(&loop_runs(0, 2, &[])),
-            "arm_l" | "arm_r" => loop_len(&loop_runs(0, 3, &[])),
-            _ => loop_len(&loop_runs(1, 3, &[])),
+            "arm_l" | "arm_r" => loop_len(&loop_runs(0, 3, cuts)),
+            _ => loop_len(&loop_runs(1, 3, cuts)),
         };
         return format!(
             "{name} ring {} col {}",
@@ -314,9 +315,10 @@ fn crossing_cell(m: &Mesh, t: usize) -> String {
             (local / 2) % width
         );
     }
+    let cuts = if name == "shoulders" { cuts } else { &[] };
     let mut start = 0;
     for (c, kid) in kids.iter().enumerate() {
-        let n = loop_len(&loop_runs(c, kids.len(), &[]));
+        let n = loop_len(&loop_runs(c, kids.len(), cuts));
         if local < start + 2 * n * rows {
             let l = local - start;
             return format!("{name}->{kid} row {} col {}/{n}", l / (2 * n), (l / 2) % n);
@@ -343,6 +345,14 @@ fn diagnose_self_crossings() {
     let m = &b.model.mesh;
     let pairs = crossing_pairs(m);
     println!("{} crossing pairs", pairs.len());
+    // the shoulders' cuts of this body (body::closed::shoulder_cuts)
+    let shoulders = b
+        .transitions
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .unwrap();
+    let cuts = pdesculpt::sketch::transition::cut_table(3, &shoulders.cut_angles);
+    println!("shoulder cuts {cuts:?} (empty: the fixed cuts)");
     // the left arm's transition alone, crossing triangles red, four views
     let arm = m.groups.iter().position(|g| g == "shoulders").unwrap() as u32;
     let crossing: std::collections::HashSet<usize> =
@@ -353,7 +363,7 @@ fn diagnose_self_crossings() {
         ..Mesh::default()
     };
     for (t, tri) in m.triangles.iter().enumerate() {
-        if m.tri_group[t] == arm && crossing_cell(m, t).contains("arm_l") {
+        if m.tri_group[t] == arm && crossing_cell(m, t, &cuts).contains("arm_l") {
             sub.triangles.push(*tri);
             sub.tri_group.push(u32::from(crossing.contains(&t)));
         }
@@ -394,8 +404,8 @@ fn diagnose_self_crossings() {
     for (t, s, p) in pairs {
         println!(
             "{:<40} x {:<40} at ({:.3}, {:.3}, {:.3})",
-            crossing_cell(m, t),
-            crossing_cell(m, s),
+            crossing_cell(m, t, &cuts),
+            crossing_cell(m, s, &cuts),
             p[0],
             p[1],
             p[2]
