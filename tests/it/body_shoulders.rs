@@ -192,8 +192,12 @@ fn shoulder_crossings_print() {
     println!("{}", shoulder_crossings(m.as_deref()));
 }
 
-/// Experiment (run by hand): sweeps the shoulders' front cut index of seam 1
-/// (seam 2 mirrored) for `XING_MORPH`, printing crossings by group and errors.
+/// Diagnostic (run by hand, `--ignored --nocapture`): for `XING_MORPH`
+/// prints the measured cuts and errors, the torso's end ring near the left
+/// arm (point, unit u-tangent), then builds the body with each cut pair of
+/// `XING_CUTS` (`f/b`: seam 1's back and front ring index, seam 2 mirrored;
+/// `f`: the back index, front mirrored) and prints its crossings by group and
+/// errors; with `XING_PNG` set, renders its shoulders to the temp dir.
 #[test]
 #[ignore]
 fn sweep_shoulder_cuts() {
@@ -281,6 +285,16 @@ fn sweep_shoulder_cuts() {
             },
         )
         .unwrap();
+        if std::env::var("XING_PNG").is_ok() {
+            let png = std::env::temp_dir().join(format!("xing_cut_{}.png", name.replace('/', "_")));
+            shoulder_png(
+                &model.mesh,
+                lay.armpit - 0.08 * lay.height(),
+                lay.neck,
+                &png,
+            );
+            println!("wrote {}", png.display());
+        }
         let r = measure(&skin, &lay, &model, &b.specs);
         println!(
             "cut {name} {c:?}: {} pairs {:?}; r->s {:.2} outer s->r {:.2} rms {:.3} at {:?}",
@@ -361,4 +375,43 @@ fn study_and_demo_shoulder_cuts() {
         "demo: crossings {:?}",
         demo.report.reconstruction.self_intersections.by_groups
     );
+}
+
+/// Renders the triangles of `m` between heights `y0` and `y1` (front and a
+/// three-quarter view) to `png`.
+fn shoulder_png(m: &pdesculpt::mesh::Mesh, y0: f64, y1: f64, png: &std::path::Path) {
+    use pdesculpt::render::{render_views, RenderOptions, View};
+    let mut sub = pdesculpt::mesh::Mesh::default();
+    let mut map = std::collections::HashMap::new();
+    for tri in &m.triangles {
+        let inside = tri.iter().all(|&v| {
+            let y = m.positions[v as usize][1];
+            y >= y0 && y <= y1
+        });
+        if !inside {
+            continue;
+        }
+        let t = tri.map(|v| {
+            *map.entry(v).or_insert_with(|| {
+                sub.positions.push(m.positions[v as usize]);
+                (sub.positions.len() - 1) as u32
+            })
+        });
+        sub.triangles.push(t);
+        sub.tri_group.push(0);
+    }
+    sub.groups = vec!["shoulders".into()];
+    let views = [
+        View::Front,
+        View::Perspective {
+            yaw: 35.0,
+            pitch: 10.0,
+        },
+    ];
+    let o = RenderOptions {
+        width: 600,
+        height: 600,
+        ..RenderOptions::default()
+    };
+    render_views(&sub, &views, &o).save_png(png).unwrap();
 }
