@@ -36,8 +36,16 @@
 //! branching part per finger (a transition from the palm to four tubes),
 //! and the finger loops of the MakeHuman hand (a few millimetres, curled)
 //! separate at planes where the palm's trace already swings.
+//!
+//! Shoulder cuts. Where the shoulders' seams cut the torso's end ring is
+//! measured per body ([`shoulder_cuts`]): the fixed cuts (a third of the
+//! ring per child) unless the shoulders built with them cross themselves
+//! (the female armpits, where the ring runs over the upper slope of the
+//! breasts); then the smallest shift of the cuts toward the arms whose
+//! shoulders do not cross, within the max error target.
 
 use super::hand::find_hand;
+use super::intersect::crossing_pairs;
 use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
 use super::report::measure;
 pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
@@ -46,10 +54,12 @@ use crate::character::doc::{
     End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
 use crate::curve::gec::Gec;
+use crate::mesh::metrics::TriangleBvh;
 use crate::mesh::topology::report as topology;
 use crate::mesh::{add, dot, norm, scale, sub, Mesh};
 use crate::pde6::sampling::fit_anchored;
-use crate::sketch::build::{build_model, Model, Resolution};
+use crate::sketch::build::{build_model_with, Model, PartCache, Resolution};
+use crate::sketch::transition::{cut_indices, RING_VERTICES};
 
 /// Options of the closed reconstruction.
 #[derive(Clone, Copy, Debug, serde::Serialize)]
@@ -592,9 +602,10 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     specs.extend(hand_specs);
     let mut transitions = transitions(skin, &lay, &specs)?;
     transitions.extend(wrists);
-    let model = build_model(
+    let (transitions, model) = shoulder_cuts(
+        skin,
         &specs,
-        &transitions,
+        transitions,
         h,
         Resolution {
             rings_per_height: o.rings_per_height,
@@ -608,6 +619,122 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
         transitions,
         report,
     })
+}
+
+/// How far (ring vertices of [`RING_VERTICES`]) [`shoulder_cuts`] may move
+/// each shoulder cut from the fixed angles toward its arm: 5 of 48 keeps at
+/// least a third of the end ring between an arm's cuts.
+pub const SHOULDER_CUT_SHIFT_MAX: usize = 5;
+
+/// The shoulders' cut indices with seam 1's back cut moved `a` and its
+/// front cut `b` ring vertices toward the left arm, seam 2's mirrored toward
+/// the right arm, as `[(front, back); 2]` in
+/// [`crate::sketch::transition::cut_table`]'s order. Ring index 0 is +x, and
+/// the indices (0, n / 2) lie behind the torso (z < 0), (n / 2, n) in front.
+pub fn shifted_shoulder_cuts(a: usize, b: usize) -> [(usize, usize); 2] {
+    let (f1, b1) = cut_indices(1, 3, &[]);
+    let (f2, b2) = cut_indices(2, 3, &[]);
+    [(f1 + a, b1 - b), (f2 - a, b2 + b)]
+}
+
+/// `cuts` as `TransitionSpec::cut_angles` (the angles of the cuts in
+/// (0, pi), then those in (pi, 2 pi)).
+pub fn shoulder_cut_angles(cuts: [(usize, usize); 2]) -> Vec<f64> {
+    let a = |i: usize| 2.0 * std::f64::consts::PI * i as f64 / RING_VERTICES as f64;
+    vec![a(cuts[0].0), a(cuts[1].0), a(cuts[0].1), a(cuts[1].1)]
+}
+
+/// Crossing triangle pairs with a triangle in the shoulders transition, and
+/// the largest distance (relative to the height) from the transition's
+/// vertices and triangle centroids to the skin.
+fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64) {
+    let Some(g) = m.groups.iter().position(|g| g == "shoulders") else {
+        return (0, 0.0);
+    };
+    let g = g as u32;
+    let crossings = crossing_pairs(m)
+        .iter()
+        .filter(|&&(t, u, _)| m.tri_group[t] == g || m.tri_group[u] == g)
+        .count();
+    let mut far = 0.0f64;
+    for (t, tri) in m.triangles.iter().enumerate() {
+        if m.tri_group[t] != g {
+            continue;
+        }
+        let [a, b, c] = tri.map(|v| m.positions[v as usize]);
+        for p in [a, b, c, scale(add(add(a, b), c), 1.0 / 3.0)] {
+            if let Some(hit) = skin_bvh.closest(p) {
+                far = far.max(hit.1);
+            }
+        }
+    }
+    (crossings, far / h)
+}
+
+/// The shoulders' cuts of one body, measured (issue 15's female armpits).
+///
+/// With the fixed cuts (`pi - j pi / 3`) the arm's loop starts at a third
+/// of the torso's end ring from the side. On the female chests that ring
+/// runs over the upper slope of the breasts, where the torso's u-tangent
+/// (the loop's cross tangent there, for C1) points up, back and in and is
+/// up to 3 times as long as elsewhere; the arm's front columns leave the
+/// ring toward the midline and turn back out to the arm ring, across one
+/// another, and the back corner likewise. Where the cuts should go differs
+/// per body and is not monotonic in the cut (README, Self-intersections:
+/// moving them one vertex can double the crossings), so the cuts are
+/// measured: when the shoulders built with the fixed cuts have a crossing
+/// pair, every shift `(a, b)` of the back and front cut toward the arm
+/// (0..=[`SHOULDER_CUT_SHIFT_MAX`] each, seam 2 mirrored) is built, the
+/// smallest total shift with no crossing pair in the shoulders wins, else
+/// the fewest pairs; a candidate is admitted only when the shoulders'
+/// distance to the skin stays within the max target ([`MAX_MAX_REL`]; a
+/// larger head loop bulges more in front of the throat) or within that of
+/// the fixed cuts. Bodies whose shoulders do not cross (the base, the male
+/// bodies) keep the fixed cuts untouched. Returns the chosen transitions
+/// and model.
+fn shoulder_cuts(
+    skin: &Mesh,
+    specs: &[PartSpec],
+    mut transitions: Vec<TransitionSpec>,
+    h: f64,
+    res: Resolution,
+) -> Result<(Vec<TransitionSpec>, Model), BodyError> {
+    let mut cache = PartCache::default();
+    let model = build_model_with(specs, &transitions, h, res, &[], Some(&mut cache))?;
+    let bvh = TriangleBvh::new(skin);
+    let (x0, far0) = shoulder_state(&bvh, &model.mesh, h);
+    if x0 == 0 {
+        return Ok((transitions, model));
+    }
+    let Some(k) = transitions.iter().position(|t| t.name == "shoulders") else {
+        return Ok((transitions, model));
+    };
+    let bound = MAX_MAX_REL.max(far0);
+    let mut shifts: Vec<(usize, usize)> = (0..=SHOULDER_CUT_SHIFT_MAX)
+        .flat_map(|a| (0..=SHOULDER_CUT_SHIFT_MAX).map(move |b| (a, b)))
+        .filter(|&s| s != (0, 0))
+        .collect();
+    shifts.sort_by_key(|&(a, b)| (a + b, a));
+    let mut best: (usize, Vec<f64>, Option<Model>) = (x0, Vec::new(), None);
+    for (a, b) in shifts {
+        let mut tr = transitions.clone();
+        tr[k].cut_angles = shoulder_cut_angles(shifted_shoulder_cuts(a, b));
+        let m = build_model_with(specs, &tr, h, res, &[], Some(&mut cache))?;
+        let (x, far) = shoulder_state(&bvh, &m.mesh, h);
+        if x < best.0 && far <= bound {
+            best = (x, tr[k].cut_angles.clone(), Some(m));
+            if x == 0 {
+                break;
+            }
+        }
+    }
+    match best {
+        (_, angles, Some(m)) => {
+            transitions[k].cut_angles = angles;
+            Ok((transitions, m))
+        }
+        _ => Ok((transitions, model)),
+    }
 }
 
 /// The hips and shoulders transitions with their seam apexes: the crotch,
@@ -668,6 +795,7 @@ fn transitions(
             parent_end: End::End,
             children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
             seam_apex: apex,
+            // measured per body by shoulder_cuts
             cut_angles: Vec::new(),
             tangent_scale: SHOULDER_TANGENT_SCALE,
             continuity: Default::default(),

@@ -267,7 +267,9 @@ pub struct TransitionSpec {
     /// One apex per seam (children - 1).
     pub seam_apex: Vec<[f64; 3]>,
     /// Where each seam cuts the parent's end ring: the front cut's ring
-    /// angle in (0, pi), one per seam, decreasing (the back cut mirrors it).
+    /// angle in (0, pi), one per seam, decreasing (the back cut mirrors it),
+    /// or those followed by the back cuts' angles in (pi, 2 pi), one per
+    /// seam, increasing (`sketch::transition::cut_table`).
     /// Empty: the fixed angles `pi - j pi / k` (`sketch::transition`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub cut_angles: Vec<f64>,

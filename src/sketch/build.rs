@@ -332,7 +332,7 @@ pub fn build_model_with(
         }
         if !t.cut_angles.is_empty() && cuts.is_empty() {
             return Err(SketchError::Document(format!(
-                "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing",
+                "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing, optionally followed by one back angle per seam in (pi, 2 pi), increasing",
                 t.name,
                 k.saturating_sub(1)
             )));

@@ -104,29 +104,55 @@ pub fn cut_indices(j: usize, k: usize, cuts: &[(usize, usize)]) -> (usize, usize
     (f % n, b % n)
 }
 
-/// Ring indices of the cuts at the given front angles (radians in (0, pi),
-/// decreasing): rounded to ring vertices, kept strictly decreasing and
-/// inside (0, pi). Empty when `angles` does not have one angle per seam
-/// (the fixed angles are used).
+/// Ring indices of the cuts at the given angles: either one front angle
+/// per seam (radians in (0, pi), decreasing; the back cut mirrors it,
+/// `2 pi - angle`), or one front angle per seam followed by one back angle
+/// per seam (in (pi, 2 pi), increasing), for a ring whose front and back
+/// differ. Rounded to ring vertices, kept strictly monotonic and inside
+/// (0, pi) (fronts) or (pi, 2 pi) (backs). Empty when `angles` has neither
+/// length (the fixed angles are used).
 pub fn cut_table(k: usize, angles: &[f64]) -> Vec<(usize, usize)> {
     let n = RING_VERTICES;
-    if k < 2 || angles.len() != k - 1 || angles.iter().any(|a| !a.is_finite()) {
+    if k < 2
+        || (angles.len() != k - 1 && angles.len() != 2 * (k - 1))
+        || angles.iter().any(|a| !a.is_finite())
+    {
         return Vec::new();
     }
+    let (front, back) = angles.split_at(k - 1);
+    let Some(f) = front_indices(front) else {
+        return Vec::new();
+    };
+    let b = if back.is_empty() {
+        f.clone()
+    } else {
+        let mirrored: Vec<f64> = back.iter().map(|a| 2.0 * PI - a).collect();
+        match front_indices(&mirrored) {
+            Some(b) => b,
+            None => return Vec::new(),
+        }
+    };
+    f.into_iter().zip(b).map(|(x, y)| (x, n - y)).collect()
+}
+
+/// Ring indices of front angles in (0, pi), decreasing: rounded, kept
+/// strictly decreasing, each at least 1 and below n / 2 (angles outside
+/// (0, pi) are clamped there).
+fn front_indices(angles: &[f64]) -> Option<Vec<usize>> {
+    let n = RING_VERTICES;
     let mut f: Vec<usize> = angles
         .iter()
         .map(|a| ((a / (2.0 * PI) * n as f64).round() as usize).clamp(1, n / 2 - 1))
         .collect();
-    // strictly decreasing, each at least 1 and below n / 2
     for j in 1..f.len() {
         if f[j] >= f[j - 1] {
             f[j] = f[j - 1].saturating_sub(1);
         }
     }
     if f.last().is_some_and(|&x| x < 1) || f[0] >= n / 2 {
-        return Vec::new();
+        return None;
     }
-    f.into_iter().map(|x| (x, n - x)).collect()
+    Some(f)
 }
 
 /// The runs of child `c` (0-based) of `k`.

@@ -6,7 +6,7 @@ use pdesculpt::body::closed::{
     load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX,
     MAX_MAX_REL, RMS_MAX_REL,
 };
-use pdesculpt::body::intersect::SELF_CROSSINGS_KNOWN_MAX;
+use pdesculpt::body::intersect::known_crossings;
 use pdesculpt::body::BodyError;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::profile::shapes::box_mesh;
@@ -36,7 +36,7 @@ fn assert_closed(name: &str, skin: &Mesh, o: &ClosedOptions, errors: bool) {
         assert!(max <= MAX_MAX_REL, "{name}: max {max}");
         let x = &r.self_intersections;
         assert!(
-            x.pairs as f64 <= SELF_CROSSINGS_KNOWN_MAX,
+            x.pairs <= known_crossings(name.split('=').next().unwrap_or(name)),
             "{name}: {} crossing pairs {:?}",
             x.pairs,
             x.by_groups
@@ -72,6 +72,25 @@ fn base_and_morphs_reconstruct_closed_within_the_targets() {
         let skin = load_body(None, &[m.to_string()]).unwrap();
         assert_closed(m, &skin, &o, true);
     }
+}
+
+/// Every body of `KNOWN_CROSSINGS` is a checked body, listed once, and not
+/// at 0 (a body that reaches the target leaves the table).
+#[test]
+fn known_crossings_name_checked_bodies_only() {
+    use pdesculpt::body::intersect::KNOWN_CROSSINGS;
+    let checked: Vec<&str> = std::iter::once("base")
+        .chain(CHECKED_MORPHS.iter().map(|m| m.split('=').next().unwrap()))
+        .collect();
+    for (i, (b, n)) in KNOWN_CROSSINGS.iter().enumerate() {
+        assert!(checked.contains(b), "{b} is not checked");
+        assert!(*n > 0, "{b}: 0 is the target, not a known state");
+        assert!(
+            KNOWN_CROSSINGS[..i].iter().all(|(c, _)| c != b),
+            "{b} twice"
+        );
+    }
+    assert_eq!(known_crossings("base"), 0);
 }
 
 /// A coarse, fast resolution for the property test.
@@ -270,8 +289,9 @@ fn a_retessellated_moved_copy_reconstructs_the_same() {
 
 /// Where a triangle of the closed body sits: its group and, inside a
 /// transition, the child, the row band (0 = at the parent's ring) and the
-/// loop column; inside a part, the ring band and the column.
-fn crossing_cell(m: &Mesh, t: usize) -> String {
+/// loop column; inside a part, the ring band and the column. `cuts`: the
+/// shoulders' cut table of the body (`cut_table` of its `cut_angles`).
+fn crossing_cell(m: &Mesh, t: usize, cuts: &[(usize, usize)]) -> String {
     use pdesculpt::sketch::transition::{loop_len, loop_runs};
     let g = m.tri_group[t];
     let name = &m.groups[g as usize];
@@ -286,8 +306,8 @@ fn crossing_cell(m: &Mesh, t: usize) -> String {
         let width = match name.as_str() {
             "torso" => 48,
             "leg_l" | "leg_r" => loop_len(&loop_runs(0, 2, &[])),
-            "arm_l" | "arm_r" => loop_len(&loop_runs(0, 3, &[])),
-            _ => loop_len(&loop_runs(1, 3, &[])),
+            "arm_l" | "arm_r" => loop_len(&loop_runs(0, 3, cuts)),
+            _ => loop_len(&loop_runs(1, 3, cuts)),
         };
         return format!(
             "{name} ring {} col {}",
@@ -295,9 +315,10 @@ fn crossing_cell(m: &Mesh, t: usize) -> String {
             (local / 2) % width
         );
     }
+    let cuts = if name == "shoulders" { cuts } else { &[] };
     let mut start = 0;
     for (c, kid) in kids.iter().enumerate() {
-        let n = loop_len(&loop_runs(c, kids.len(), &[]));
+        let n = loop_len(&loop_runs(c, kids.len(), cuts));
         if local < start + 2 * n * rows {
             let l = local - start;
             return format!("{name}->{kid} row {} col {}/{n}", l / (2 * n), (l / 2) % n);
@@ -324,6 +345,14 @@ fn diagnose_self_crossings() {
     let m = &b.model.mesh;
     let pairs = crossing_pairs(m);
     println!("{} crossing pairs", pairs.len());
+    // the shoulders' cuts of this body (body::closed::shoulder_cuts)
+    let shoulders = b
+        .transitions
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .unwrap();
+    let cuts = pdesculpt::sketch::transition::cut_table(3, &shoulders.cut_angles);
+    println!("shoulder cuts {cuts:?} (empty: the fixed cuts)");
     // the left arm's transition alone, crossing triangles red, four views
     let arm = m.groups.iter().position(|g| g == "shoulders").unwrap() as u32;
     let crossing: std::collections::HashSet<usize> =
@@ -334,7 +363,7 @@ fn diagnose_self_crossings() {
         ..Mesh::default()
     };
     for (t, tri) in m.triangles.iter().enumerate() {
-        if m.tri_group[t] == arm && crossing_cell(m, t).contains("arm_l") {
+        if m.tri_group[t] == arm && crossing_cell(m, t, &cuts).contains("arm_l") {
             sub.triangles.push(*tri);
             sub.tri_group.push(u32::from(crossing.contains(&t)));
         }
@@ -375,8 +404,8 @@ fn diagnose_self_crossings() {
     for (t, s, p) in pairs {
         println!(
             "{:<40} x {:<40} at ({:.3}, {:.3}, {:.3})",
-            crossing_cell(m, t),
-            crossing_cell(m, s),
+            crossing_cell(m, t, &cuts),
+            crossing_cell(m, s, &cuts),
             p[0],
             p[1],
             p[2]

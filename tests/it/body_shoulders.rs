@@ -4,17 +4,28 @@
 use pdesculpt::body::closed::{load_body, reconstruct_closed, ClosedOptions};
 use pdesculpt::body::intersect::self_intersections;
 
-/// Crossing pairs with both triangles in the shoulders transition.
-fn shoulder_crossings(morph: Option<&str>) -> usize {
+/// Crossing pairs with both triangles in the shoulders transition, and the
+/// shoulders' cut angles (empty: the fixed cuts).
+fn shoulders(morph: Option<&str>) -> (usize, Vec<f64>) {
     let morphs: Vec<String> = morph.map(|m| vec![format!("{m}=1")]).unwrap_or_default();
     let skin = load_body(None, &morphs).unwrap();
     let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
-    self_intersections(&b.model.mesh)
+    let n = self_intersections(&b.model.mesh)
         .by_groups
         .iter()
         .filter(|(g, _)| g == "shoulders/shoulders")
         .map(|(_, n)| *n)
-        .sum()
+        .sum();
+    let t = b
+        .transitions
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .unwrap();
+    (n, t.cut_angles.clone())
+}
+
+fn shoulder_crossings(morph: Option<&str>) -> usize {
+    shoulders(morph).0
 }
 
 /// The bodies whose shoulders have no crossing pair. Measured before the
@@ -36,8 +47,63 @@ const NO_SHOULDER_CROSSINGS: &[Option<&str>] = &[
 #[test]
 fn the_male_bodies_and_the_base_have_no_shoulder_crossings() {
     for m in NO_SHOULDER_CROSSINGS {
-        assert_eq!(shoulder_crossings(*m), 0, "{}", m.unwrap_or("base"));
+        let (n, cuts) = shoulders(*m);
+        assert_eq!(n, 0, "{}", m.unwrap_or("base"));
+        // no crossing with the fixed cuts: body::closed::shoulder_cuts keeps them
+        assert!(cuts.is_empty(), "{}: {cuts:?}", m.unwrap_or("base"));
     }
+}
+
+/// The female armpits: with the fixed cuts the shoulders cross (measured:
+/// universal-female maxweight 70 pairs, caucasian-female-young 32);
+/// `body::closed::shoulder_cuts` moves the cuts
+/// toward the arms until they do not, and the cuts it chose are not the
+/// fixed ones.
+#[test]
+fn the_female_armpits_have_no_shoulder_crossings_with_measured_cuts() {
+    use pdesculpt::body::closed::{shifted_shoulder_cuts, shoulder_cut_angles};
+    for m in [
+        "universal-female-young-averagemuscle-maxweight",
+        "caucasian-female-young",
+    ] {
+        let (n, cuts) = shoulders(Some(m));
+        assert_eq!(n, 0, "{m}");
+        assert_eq!(cuts.len(), 4, "{m}: {cuts:?}");
+        assert_ne!(
+            cuts,
+            shoulder_cut_angles(shifted_shoulder_cuts(0, 0)),
+            "{m}"
+        );
+    }
+}
+
+/// `cut_table` with one angle per seam mirrors the back cut; with a front
+/// and a back angle per seam it keeps both; other lengths fall back to the
+/// fixed angles. `shifted_shoulder_cuts` moves seam 1 toward the left arm
+/// (ring index n / 2) and mirrors seam 2 in x.
+#[test]
+fn cut_table_takes_front_and_back_angles() {
+    use pdesculpt::body::closed::{shifted_shoulder_cuts, shoulder_cut_angles};
+    use pdesculpt::sketch::transition::{cut_indices, cut_table, loop_len, loop_runs};
+    use std::f64::consts::PI;
+    let a = |i: usize| i as f64 * PI / 24.0;
+    assert_eq!(cut_table(3, &[a(16), a(8)]), vec![(16, 32), (8, 40)]);
+    assert_eq!(
+        cut_table(3, &[a(17), a(7), a(29), a(43)]),
+        vec![(17, 29), (7, 43)]
+    );
+    assert!(cut_table(3, &[a(17), a(7), a(29)]).is_empty());
+    assert_eq!(
+        shifted_shoulder_cuts(0, 0),
+        [cut_indices(1, 3, &[]), cut_indices(2, 3, &[])]
+    );
+    let c = shifted_shoulder_cuts(1, 3);
+    assert_eq!(c, [(17, 29), (7, 43)]);
+    assert_eq!(cut_table(3, &shoulder_cut_angles(c)), c.to_vec());
+    // the left arm's loop: its arc from the back cut to the front cut, 12
+    // ring steps instead of 16, then the seam
+    let runs = loop_runs(0, 3, &c);
+    assert_eq!(loop_len(&runs), 12 + 9);
 }
 
 /// Diagnostic (run by hand, `--ignored --nocapture`, `XING_MORPH=NAME`):
@@ -124,4 +190,228 @@ fn dump_shoulder_columns() {
 fn shoulder_crossings_print() {
     let m = std::env::var("XING_MORPH").ok();
     println!("{}", shoulder_crossings(m.as_deref()));
+}
+
+/// Diagnostic (run by hand, `--ignored --nocapture`): for `XING_MORPH`
+/// prints the measured cuts and errors, the torso's end ring near the left
+/// arm (point, unit u-tangent), then builds the body with each cut pair of
+/// `XING_CUTS` (`f/b`: seam 1's back and front ring index, seam 2 mirrored;
+/// `f`: the back index, front mirrored) and prints its crossings by group and
+/// errors; with `XING_PNG` set, renders its shoulders to the temp dir.
+#[test]
+#[ignore]
+fn sweep_shoulder_cuts() {
+    use pdesculpt::body::closed::shoulder_cut_angles;
+    use pdesculpt::body::layout::find_layout;
+    use pdesculpt::body::report::measure;
+    use pdesculpt::sketch::build::{build_model, Resolution};
+    use std::f64::consts::PI;
+    let m = std::env::var("XING_MORPH").ok();
+    let morphs: Vec<String> = m.iter().map(|m| format!("{m}=1")).collect();
+    let skin = load_body(None, &morphs).unwrap();
+    let o = ClosedOptions::default();
+    let b = reconstruct_closed(&skin, &o).unwrap();
+    let lay = find_layout(&skin).unwrap();
+    let r = &b.report;
+    println!(
+        "rule {:?}: {} pairs {:?}; r->s {:.2} outer s->r {:.2} rms {:.3} at {:?} / {:?}",
+        b.transitions[1]
+            .cut_angles
+            .iter()
+            .map(|a| (a * 24.0 / PI).round())
+            .collect::<Vec<_>>(),
+        r.self_intersections.pairs,
+        r.self_intersections.by_groups,
+        100.0 * r.recon_to_skin_max_rel,
+        100.0 * r.skin_to_recon_outer_max_rel,
+        100.0 * r.judged_rms_rel(),
+        r.recon_to_skin_max_at
+            .as_ref()
+            .map(|a| (a.point, a.height_rel)),
+        r.skin_to_recon_outer_max_at
+            .as_ref()
+            .map(|a| (&a.group, a.section, a.point, a.height_rel)),
+    );
+    // "f" (back mirrored) or "f/b": ring indices of seam 1's cuts, seam 2
+    // mirrored in x
+    let part = |n: &str| b.model.parts.iter().find(|p| p.name == n).unwrap();
+    let range: Vec<(String, [(usize, usize); 2])> = std::env::var("XING_CUTS")
+        .ok()
+        .map(|s| {
+            s.split(',')
+                .map(|x| {
+                    let (f, bk) = if let Some((f, b)) = x.split_once('/') {
+                        (f.parse::<usize>().unwrap(), b.parse::<usize>().unwrap())
+                    } else {
+                        (x.parse().unwrap(), 48 - x.parse::<usize>().unwrap())
+                    };
+                    (x.to_string(), [(f, bk), (24 - f, 72 - bk)])
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    // the torso's end ring near the left arm: point and unit u-tangent
+    let torso = part("torso");
+    let u1 = torso.end_u(pdesculpt::character::doc::End::End);
+    let (p0, p1) = (torso.section(u1, 0), torso.section(u1, 1));
+    for i in 12..=36 {
+        let th = 2.0 * PI * i as f64 / 48.0;
+        let (p, d) = (p0.eval(th), p1.eval(th));
+        let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        println!(
+            "ring {i}: p ({:.3}, {:.3}, {:.3}) |dP/du| {:.2} dir ({:.2}, {:.2}, {:.2})",
+            p[0],
+            p[1],
+            p[2],
+            l,
+            d[0] / l,
+            d[1] / l,
+            d[2] / l
+        );
+    }
+    let arm = part("arm_l");
+    let q = arm.section(arm.u0, 0);
+    println!("arm_l start centre {:?} layout {:?}", q.c0, b.report.layout);
+    for (name, c) in range {
+        let mut tr = b.transitions.clone();
+        tr[1].cut_angles = shoulder_cut_angles(c);
+        let model = build_model(
+            &b.specs,
+            &tr,
+            lay.height(),
+            Resolution {
+                rings_per_height: o.rings_per_height,
+                transition_rows: o.transition_rows,
+            },
+        )
+        .unwrap();
+        if std::env::var("XING_PNG").is_ok() {
+            let png = std::env::temp_dir().join(format!("xing_cut_{}.png", name.replace('/', "_")));
+            shoulder_png(
+                &model.mesh,
+                lay.armpit - 0.08 * lay.height(),
+                lay.neck,
+                &png,
+            );
+            println!("wrote {}", png.display());
+        }
+        let r = measure(&skin, &lay, &model, &b.specs);
+        println!(
+            "cut {name} {c:?}: {} pairs {:?}; r->s {:.2} outer s->r {:.2} rms {:.3} at {:?}",
+            r.self_intersections.pairs,
+            r.self_intersections.by_groups,
+            100.0 * r.recon_to_skin_max_rel,
+            100.0 * r.skin_to_recon_outer_max_rel,
+            100.0 * r.judged_rms_rel(),
+            r.recon_to_skin_max_at
+                .as_ref()
+                .map(|a| (a.point, a.height_rel))
+        );
+    }
+}
+
+/// Diagnostic (run by hand): the shoulders' cuts and crossings of the
+/// data-size study's densities (base body) and of the demo's closed body.
+#[test]
+#[ignore]
+fn study_and_demo_shoulder_cuts() {
+    use pdesculpt::body::study::DENSITIES;
+    let skin = load_body(None, &[]).unwrap();
+    for d in DENSITIES {
+        let o = ClosedOptions {
+            torso_sections: d.torso,
+            leg_sections: d.leg,
+            arm_sections: d.arm,
+            head_sections: d.head,
+            ..ClosedOptions::default()
+        };
+        let b = reconstruct_closed(&skin, &o).unwrap();
+        let t = b
+            .transitions
+            .iter()
+            .find(|t| t.name == "shoulders")
+            .unwrap();
+        let r = &b.report;
+        println!(
+            "study {}: cuts {:?} crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
+            d.name,
+            t.cut_angles,
+            r.self_intersections.by_groups,
+            100.0 * r.recon_to_skin_rms_rel,
+            100.0 * r.recon_to_skin_max_rel,
+            100.0 * r.skin_to_recon_rms_rel,
+            100.0 * r.skin_to_recon_max_rel
+        );
+        if !t.cut_angles.is_empty() {
+            use pdesculpt::body::layout::find_layout;
+            use pdesculpt::body::report::measure;
+            use pdesculpt::sketch::build::{build_model, Resolution};
+            let lay = find_layout(&skin).unwrap();
+            let mut tr = b.transitions.clone();
+            tr.iter_mut().for_each(|t| t.cut_angles.clear());
+            let m = build_model(
+                &b.specs,
+                &tr,
+                lay.height(),
+                Resolution {
+                    rings_per_height: o.rings_per_height,
+                    transition_rows: o.transition_rows,
+                },
+            )
+            .unwrap();
+            let r = measure(&skin, &lay, &m, &b.specs);
+            println!(
+                "  fixed cuts: crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
+                r.self_intersections.by_groups,
+                100.0 * r.recon_to_skin_rms_rel,
+                100.0 * r.recon_to_skin_max_rel,
+                100.0 * r.skin_to_recon_rms_rel,
+                100.0 * r.skin_to_recon_max_rel
+            );
+        }
+    }
+    let demo = pdesculpt::character::demo::build().unwrap();
+    println!(
+        "demo: crossings {:?}",
+        demo.report.reconstruction.self_intersections.by_groups
+    );
+}
+
+/// Renders the triangles of `m` between heights `y0` and `y1` (front and a
+/// three-quarter view) to `png`.
+fn shoulder_png(m: &pdesculpt::mesh::Mesh, y0: f64, y1: f64, png: &std::path::Path) {
+    use pdesculpt::render::{render_views, RenderOptions, View};
+    let mut sub = pdesculpt::mesh::Mesh::default();
+    let mut map = std::collections::HashMap::new();
+    for tri in &m.triangles {
+        let inside = tri.iter().all(|&v| {
+            let y = m.positions[v as usize][1];
+            y >= y0 && y <= y1
+        });
+        if !inside {
+            continue;
+        }
+        let t = tri.map(|v| {
+            *map.entry(v).or_insert_with(|| {
+                sub.positions.push(m.positions[v as usize]);
+                (sub.positions.len() - 1) as u32
+            })
+        });
+        sub.triangles.push(t);
+        sub.tri_group.push(0);
+    }
+    sub.groups = vec!["shoulders".into()];
+    let views = [
+        View::Front,
+        View::Perspective {
+            yaw: 35.0,
+            pitch: 10.0,
+        },
+    ];
+    let o = RenderOptions {
+        width: 600,
+        height: 600,
+        ..RenderOptions::default()
+    };
+    render_views(&sub, &views, &o).save_png(png).unwrap();
 }
