@@ -77,6 +77,12 @@ pub struct ClosedOptions {
     /// (7 + 3k, counting the collapsed tip).
     pub hand_sections: usize,
     pub thumb_sections: usize,
+    /// Build each hand as a mitten and a thumb joined at the wrist (default
+    /// true). Off, or where an arm's trace finds no thumb separating from the
+    /// palm (a mesh with mitten hands), the whole arm is one chain ending in
+    /// a mitten of convex hulls, thumb merged (the arm is then named in
+    /// [`ClosedReport::thumbless`] with the reason).
+    pub thumbs: bool,
     /// Anchored sampling (see [`crate::pde6::sampling`]).
     pub anchors: usize,
     pub samples: usize,
@@ -97,6 +103,7 @@ impl Default for ClosedOptions {
             head_sections: 16,
             hand_sections: 7,
             thumb_sections: 7,
+            thumbs: true,
             anchors: super::parts::DEFAULT_ANCHORS,
             samples: super::parts::DEFAULT_SAMPLES,
             pull: super::parts::DEFAULT_PULL,
@@ -518,6 +525,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     let mut hand_specs = Vec::new();
     let mut wrists = Vec::new();
     let mut hands = Vec::new();
+    let mut thumbless = Vec::new();
     for (side, start) in [("l", lay.arm_left), ("r", lay.arm_right)] {
         let name = format!("arm_{side}");
         let (c0, r0) = centre_at(ya, start[0])?;
@@ -537,7 +545,32 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                 jump: super::layout::JUMP,
             },
         )?;
-        let hand = find_hand(skin, &tr, h, step)?;
+        let found = if o.thumbs {
+            find_hand(skin, &tr, h, step)
+        } else {
+            Err(BodyError::LayoutNotFound {
+                what: "a thumb",
+                detail: "thumbs off (ClosedOptions::thumbs)".into(),
+            })
+        };
+        let hand = match found {
+            Ok(hand) => hand,
+            Err(e) => {
+                // no thumb: the whole arm one chain ending in a mitten
+                specs.push(part_from_trace(
+                    skin,
+                    &name,
+                    &tr,
+                    ARM_OFFSET * h,
+                    o.arm_sections,
+                    true,
+                    o,
+                    0.0,
+                )?);
+                thumbless.push(format!("{name}: {e}"));
+                continue;
+            }
+        };
         let s_end = tr[hand.split].s - WRIST_GAP * h;
         let arm: Vec<TraceSample> = tr.iter().take_while(|t| t.s <= s_end).cloned().collect();
         let last = arm.last().ok_or_else(|| BodyError::LayoutNotFound {
@@ -612,7 +645,8 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             transition_rows: o.transition_rows,
         },
     )?;
-    let report = measure(skin, &lay, &model, &specs, &hands);
+    let mut report = measure(skin, &lay, &model, &specs, &hands);
+    report.thumbless = thumbless;
     Ok(ClosedBody {
         model,
         specs,

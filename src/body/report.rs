@@ -52,6 +52,10 @@ pub struct ClosedReport {
     pub triangles: usize,
     /// Per hand (left, right): the thumb against the skin.
     pub hands: Vec<HandReport>,
+    /// Arms built without a thumb (a mitten, thumb merged), each with the
+    /// reason ([`super::closed::ClosedOptions::thumbs`]); empty when both
+    /// hands have their thumb.
+    pub thumbless: Vec<String>,
 }
 
 /// The thumb of one hand against the skin ([`super::hand`]).
@@ -165,6 +169,7 @@ pub fn measure(
         skin_vertex_numbers: 3 * skin.positions.len(),
         triangles: model.mesh.triangles.len(),
         hands: hand_reports,
+        thumbless: Vec::new(),
     }
 }
 

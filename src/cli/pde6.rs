@@ -228,6 +228,9 @@ fn body_closed(
     let b = reconstruct_closed_from(mesh.as_deref(), morph, output, opts)?;
     let unit = units.write(&b.model.mesh, output, pdesculpt::mesh::unit::MAKEHUMAN)?;
     let r = &b.report;
+    for arm in &r.thumbless {
+        eprintln!("pde6 body: warning: no thumb, the hand is a mitten ({arm})");
+    }
     let mut out = serde_json::to_value(r)?;
     out["unit"] = serde_json::json!(unit);
     emit(json, &out, &r.summary(output))

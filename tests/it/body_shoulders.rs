@@ -295,7 +295,7 @@ fn sweep_shoulder_cuts() {
             );
             println!("wrote {}", png.display());
         }
-        let r = measure(&skin, &lay, &model, &b.specs);
+        let r = measure(&skin, &lay, &model, &b.specs, &[]);
         println!(
             "cut {name} {c:?}: {} pairs {:?}; r->s {:.2} outer s->r {:.2} rms {:.3} at {:?}",
             r.self_intersections.pairs,
@@ -359,7 +359,7 @@ fn study_and_demo_shoulder_cuts() {
                 },
             )
             .unwrap();
-            let r = measure(&skin, &lay, &m, &b.specs);
+            let r = measure(&skin, &lay, &m, &b.specs, &[]);
             println!(
                 "  fixed cuts: crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
                 r.self_intersections.by_groups,

@@ -65,3 +65,31 @@ fn a_convex_hull_mitten_fills_the_web() {
     assert!((winding_number(&cube, [0.5, 0.5, 0.5]).abs() - 1.0).abs() < 1e-9);
     assert!(winding_number(&cube, [1.5, 0.5, 0.5]).abs() < 1e-9);
 }
+
+/// Without thumbs (`ClosedOptions::thumbs` off, the path a mesh whose
+/// hands show no separate thumb takes) each arm is one chain ending in a
+/// mitten: still one watertight, manifold, oriented body, C1 at the joins,
+/// no wrist, and the report names both arms as thumbless.
+#[test]
+fn without_thumbs_each_arm_ends_in_a_mitten_and_the_report_says_so() {
+    let skin = load_body(None, &[]).unwrap();
+    let o = ClosedOptions {
+        thumbs: false,
+        ..ClosedOptions::default()
+    };
+    let b = reconstruct_closed(&skin, &o).unwrap();
+    let r = &b.report;
+    let t = &r.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    assert!(r.max_join[1] <= JOIN_C1_MAX, "C1 {}", r.max_join[1]);
+    assert!(b.transitions.iter().all(|t| !t.name.starts_with("wrist")));
+    assert!(b
+        .specs
+        .iter()
+        .all(|p| !p.name.starts_with("thumb") && !p.name.starts_with("hand")));
+    let arm = b.specs.iter().find(|p| p.name == "arm_l").unwrap();
+    assert!(arm.closed_end, "the arm ends in a mitten tip");
+    assert!(r.hands.is_empty());
+    assert_eq!(r.thumbless.len(), 2, "{:?}", r.thumbless);
+    assert!(r.thumbless[0].starts_with("arm_l: ") && r.thumbless[0].contains("thumbs off"));
+}

@@ -35,7 +35,8 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
                     r.hands
                         .iter()
                         .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })
-                        .sum::<f64>(),
+                        .sum::<f64>()
+                        + if r.hands.len() == 2 { 0.0 } else { f64::INFINITY },
                     format!(
                         "per hand (left, right): {}",
                         r.hands
@@ -105,7 +106,7 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
         );
         out.push(
             Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_thumb_web_{name}"), Kind::Threshold, thumb.1, 0.0)
-                .note(format!("web points (air between the thumb and the palm or index finger: middles of the gaps between their loops in the arm trace's planes past the split) enclosed by the reconstruction (generalised winding number > 1/2), both hands: a mitten without a thumb fills the web and encloses them; infinite when a hand found no web point; {}", thumb.2)),
+                .note(format!("web points (air between the thumb and the palm or index finger: middles of the gaps between their loops in the arm trace's planes past the split) enclosed by the reconstruction (generalised winding number > 1/2), both hands: a mitten without a thumb fills the web and encloses them; infinite when a hand found no web point or has no thumb; {}", thumb.2)),
         );
         out.push(
             Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_topology_{name}"), Kind::Threshold, topo, 0.0)
