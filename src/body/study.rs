@@ -54,6 +54,19 @@ pub struct Density {
     pub head: usize,
 }
 
+impl Density {
+    /// `base` with this density's section counts.
+    pub fn options(&self, base: &ClosedOptions) -> ClosedOptions {
+        ClosedOptions {
+            torso_sections: self.torso,
+            leg_sections: self.leg,
+            arm_sections: self.arm,
+            head_sections: self.head,
+            ..*base
+        }
+    }
+}
+
 /// The study's densities: coarse, the default of [`ClosedOptions`], dense.
 pub const DENSITIES: [Density; 3] = [
     Density {
@@ -206,13 +219,7 @@ pub fn data_size_study(
 ) -> Result<Vec<StudyRow>, BodyError> {
     let mut rows = Vec::new();
     for d in densities {
-        let o = ClosedOptions {
-            torso_sections: d.torso,
-            leg_sections: d.leg,
-            arm_sections: d.arm,
-            head_sections: d.head,
-            ..*base
-        };
+        let o = d.options(base);
         let body = reconstruct_closed(skin, &o)?;
         let r = &body.report;
         let h = r.body_height;

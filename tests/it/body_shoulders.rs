@@ -204,7 +204,6 @@ fn sweep_shoulder_cuts() {
     use pdesculpt::body::closed::shoulder_cut_angles;
     use pdesculpt::body::layout::find_layout;
     use pdesculpt::body::report::measure;
-    use pdesculpt::sketch::build::{build_model, Resolution};
     use std::f64::consts::PI;
     let m = std::env::var("XING_MORPH").ok();
     let morphs: Vec<String> = m.iter().map(|m| format!("{m}=1")).collect();
@@ -273,18 +272,7 @@ fn sweep_shoulder_cuts() {
     let q = arm.section(arm.u0, 0);
     println!("arm_l start centre {:?} layout {:?}", q.c0, b.report.layout);
     for (name, c) in range {
-        let mut tr = b.transitions.clone();
-        tr[1].cut_angles = shoulder_cut_angles(c);
-        let model = build_model(
-            &b.specs,
-            &tr,
-            lay.height(),
-            Resolution {
-                rings_per_height: o.rings_per_height,
-                transition_rows: o.transition_rows,
-            },
-        )
-        .unwrap();
+        let model = with_shoulder_cuts(&b, shoulder_cut_angles(c), lay.height(), &o);
         if std::env::var("XING_PNG").is_ok() {
             let png = std::env::temp_dir().join(format!("xing_cut_{}.png", name.replace('/', "_")));
             shoulder_png(
@@ -318,13 +306,7 @@ fn study_and_demo_shoulder_cuts() {
     use pdesculpt::body::study::DENSITIES;
     let skin = load_body(None, &[]).unwrap();
     for d in DENSITIES {
-        let o = ClosedOptions {
-            torso_sections: d.torso,
-            leg_sections: d.leg,
-            arm_sections: d.arm,
-            head_sections: d.head,
-            ..ClosedOptions::default()
-        };
+        let o = d.options(&ClosedOptions::default());
         let b = reconstruct_closed(&skin, &o).unwrap();
         let t = b
             .transitions
@@ -345,20 +327,8 @@ fn study_and_demo_shoulder_cuts() {
         if !t.cut_angles.is_empty() {
             use pdesculpt::body::layout::find_layout;
             use pdesculpt::body::report::measure;
-            use pdesculpt::sketch::build::{build_model, Resolution};
             let lay = find_layout(&skin).unwrap();
-            let mut tr = b.transitions.clone();
-            tr.iter_mut().for_each(|t| t.cut_angles.clear());
-            let m = build_model(
-                &b.specs,
-                &tr,
-                lay.height(),
-                Resolution {
-                    rings_per_height: o.rings_per_height,
-                    transition_rows: o.transition_rows,
-                },
-            )
-            .unwrap();
+            let m = with_shoulder_cuts(&b, Vec::new(), lay.height(), &o);
             let r = measure(&skin, &lay, &m, &b.specs, &[]);
             println!(
                 "  fixed cuts: crossings {:?}; recon->skin {:.2} / {:.2} (skin->recon {:.2} / {:.2}) %",
@@ -414,4 +384,27 @@ fn shoulder_png(m: &pdesculpt::mesh::Mesh, y0: f64, y1: f64, png: &std::path::Pa
         ..RenderOptions::default()
     };
     render_views(&sub, &views, &o).save_png(png).unwrap();
+}
+
+/// The closed body `b` rebuilt with the shoulders' `cut_angles` replaced
+/// (empty: the fixed cuts); the other transitions (hips, wrists) as built.
+fn with_shoulder_cuts(
+    b: &pdesculpt::body::closed::ClosedBody,
+    cuts: Vec<f64>,
+    height: f64,
+    o: &ClosedOptions,
+) -> pdesculpt::sketch::build::Model {
+    let mut tr = b.transitions.clone();
+    let k = tr.iter().position(|t| t.name == "shoulders").unwrap();
+    tr[k].cut_angles = cuts;
+    pdesculpt::sketch::build::build_model(
+        &b.specs,
+        &tr,
+        height,
+        pdesculpt::sketch::build::Resolution {
+            rings_per_height: o.rings_per_height,
+            transition_rows: o.transition_rows,
+        },
+    )
+    .unwrap()
 }
