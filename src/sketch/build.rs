@@ -330,6 +330,19 @@ pub fn build_model_with(
                 crate::limits::Num(t.tangent_scale)
             )));
         }
+        let km1 = k.saturating_sub(1);
+        let out_of_range = t.cut_angles.iter().enumerate().find(|&(i, &a)| {
+            let (lo, hi) = if i < km1 { (0.0, PI) } else { (PI, 2.0 * PI) };
+            !(lo..=hi).contains(&a)
+        });
+        if let Some((i, &a)) = out_of_range {
+            return Err(SketchError::Document(format!(
+                "transition '{}': cut_angles[{i}] = {} is outside {} (front angles in [0, pi], back angles in [pi, 2 pi])",
+                t.name,
+                crate::limits::Num(a),
+                if i < km1 { "[0, pi]" } else { "[pi, 2 pi]" }
+            )));
+        }
         if !t.cut_angles.is_empty() && cuts.is_empty() {
             return Err(SketchError::Document(format!(
                 "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing, optionally followed by one back angle per seam in (pi, 2 pi), increasing",

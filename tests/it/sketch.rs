@@ -520,3 +520,34 @@ fn crease_report_is_the_same_on_every_call() {
         assert_eq!(a[0].interior_at, b[0].interior_at);
     }
 }
+
+/// A document's `cut_angles` outside their range (front angles in
+/// [0, pi], back angles in [pi, 2 pi]) are refused by name: they used to
+/// be clamped silently onto the ring (1e308 built as a cut just short of pi).
+#[test]
+fn cut_angles_out_of_range_are_refused_by_name() {
+    let doc = bundled("female", Level::Final).expect("bundled");
+    let b = build_document(&doc, Path::new("."), Resolution::default(), true).expect("builds");
+    let hips = b
+        .doc
+        .transitions
+        .iter()
+        .position(|t| t.name == "hips")
+        .expect("hips");
+    for (angles, what) in [
+        (vec![1e308], "cut_angles[0] = 1e308 is outside [0, pi]"),
+        (vec![-0.5], "cut_angles[0] = -0.5 is outside [0, pi]"),
+        (vec![1.5, 0.5], "cut_angles[1] = 0.5 is outside [pi, 2 pi]"),
+    ] {
+        let mut d = b.doc.clone();
+        d.transitions[hips].cut_angles = angles;
+        let Err(e) = build_document(&d, Path::new("."), Resolution::default(), false) else {
+            panic!("{what}: built");
+        };
+        assert!(e.to_string().contains(what), "{e}");
+    }
+    // in range, front and back: builds
+    let mut d = b.doc.clone();
+    d.transitions[hips].cut_angles = vec![1.5, 4.5];
+    assert!(build_document(&d, Path::new("."), Resolution::default(), false).is_ok());
+}
