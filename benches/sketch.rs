@@ -29,7 +29,7 @@ const RING: usize = 48;
 fn derived() -> (Derived, f64) {
     let svg = parse_svg(FRONT, View::Front, TOL).expect("bundled SVG");
     let pts = ProfileInput::Points(svg.outline.points().to_vec());
-    let front = read_profile(&pts, Path::new("."), ViewKind::Front, TOL).expect("front");
+    let front = read_profile(&pts, Path::new("."), ViewKind::Front, Some(TOL)).expect("front");
     let (lo, hi) = front
         .points
         .iter()

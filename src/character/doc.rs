@@ -11,7 +11,8 @@
 //!     "front": {"path": "front.svg"} | {"points": [[x, y], ...]},
 //!     "side": null | {"path": "side.svg"} | {"points": [[z, y], ...]},
 //!     "sections": [{"part": "torso", "y": 1.2, "points": [[x, z], ...]}],
-//!     "tolerance": 0.002
+//!     "tolerance": 0.002,
+//!     "height": 1.75
 //!   },
 //!   "parts": [ PartSpec ... ],
 //!   "transitions": [ TransitionSpec ... ],
@@ -183,17 +184,18 @@ pub struct Inputs {
     pub side: Option<ProfileInput>,
     #[serde(default)]
     pub sections: Vec<KeySection>,
-    /// SVG flattening tolerance in model units.
-    #[serde(default = "default_tolerance")]
-    pub tolerance: f64,
+    /// SVG flattening tolerance in metres of the drawing as drawn (None:
+    /// 1/1000 of its height, `sketch::input::DEFAULT_FLATNESS`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// The model's height in metres: the drawing is scaled uniformly to it
+    /// (None: the drawing's physical size, `sketch::place`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height: Option<f64>,
     /// Humanoid or quadruped segmentation (default: decided from the front
     /// outline's shape).
     #[serde(default, skip_serializing_if = "BodyPlan::is_auto")]
     pub body_plan: BodyPlan,
-}
-
-fn default_tolerance() -> f64 {
-    2e-3
 }
 
 /// The curve of one key section in its frame.
@@ -419,11 +421,15 @@ impl CharacterDoc {
             crate::character::edit::validate_params(e)
                 .map_err(|err| DocError::Invalid(format!("edit {i}: {err}")))?;
         }
-        if !(self.inputs.tolerance.is_finite() && self.inputs.tolerance > 0.0) {
-            return Err(DocError::Invalid(format!(
-                "inputs.tolerance must be positive, got {}",
-                self.inputs.tolerance
-            )));
+        for (name, v) in [
+            ("inputs.tolerance", self.inputs.tolerance),
+            ("inputs.height", self.inputs.height),
+        ] {
+            if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+                return Err(DocError::Invalid(format!(
+                    "{name} must be positive, got {v}"
+                )));
+            }
         }
         let mut names: Vec<&str> = self.parts.iter().map(|p| p.name.as_str()).collect();
         names.extend(self.transitions.iter().map(|t| t.name.as_str()));

@@ -42,10 +42,11 @@ pub struct Derived {
     pub transitions: Vec<TransitionSpec>,
 }
 
-struct Sample {
-    y: f64,
-    c: f64,
-    w: f64,
+/// One slice of a region: height, centre and half width.
+pub(super) struct Sample {
+    pub(super) y: f64,
+    pub(super) c: f64,
+    pub(super) w: f64,
 }
 
 fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
@@ -75,7 +76,7 @@ fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
 /// profile at each sample's height), that of the side profile the same way:
 /// key sections are placed where either profile's curvature changes (paper
 /// 000 sec 4.1.2, "key sections are re-placed from the curvature of both").
-fn place(s: &[Sample], depth: Option<&[(f64, f64)]>, m: usize) -> Vec<usize> {
+pub(super) fn place(s: &[Sample], depth: Option<&[(f64, f64)]>, m: usize) -> Vec<usize> {
     let n = s.len();
     let mut len = vec![0.0; n];
     let mut inc = vec![0.0; n];
@@ -392,6 +393,67 @@ pub fn derive(
     Ok(d)
 }
 
+/// The two arms traced from the armpits ([`super::limb`]): their parts
+/// and their shoulder points (left, right). An arm starts a join band
+/// ([`super::segment::GAP_FRACTION`] of the height) out from its cut, or
+/// where a user's cut path crosses it.
+fn traced_arms(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &Landmarks,
+    joins: &super::cuts::JoinHeights,
+) -> Result<(Vec<PartSpec>, [[f64; 2]; 2]), SketchError> {
+    let g = super::segment::GAP_FRACTION * lm.height();
+    let neck = super::segment::neck_interval(front, lm)
+        .ok_or_else(|| SketchError::Segmentation("no neck found above the armpits".into()))?;
+    // hidden in the side view: the arms hang at the torso's centre depth
+    // at the armpits' height
+    let ya = lm.armpit_l[1].min(lm.armpit_r[1]);
+    let z = side
+        .and_then(|sd| {
+            let s = slice(sd, ya);
+            Some(0.5 * (s.first()?[0] + s.last()?[1]))
+        })
+        .unwrap_or(0.0);
+    let mut parts = Vec::new();
+    let mut shoulders = [[0.0; 2]; 2];
+    for (k, (name, armpit, sign, neck_x)) in [
+        ("arm_l", lm.armpit_l, -1.0, neck[0]),
+        ("arm_r", lm.armpit_r, 1.0, neck[1]),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let t = super::limb::trace_arm(front, armpit, sign, neck_x, name)?;
+        let cut_mid = [
+            0.5 * (t.armpit[0] + t.shoulder[0]),
+            0.5 * (t.armpit[1] + t.shoulder[1]),
+        ];
+        let start = match joins.limb(name) {
+            // the arc length along the traced axis to where its centre
+            // passes the cut's height
+            Some(yc) => {
+                let mut s = 0.0;
+                let mut prev = cut_mid;
+                let mut found = None;
+                for c in &t.centre {
+                    s += (c[0] - prev[0]).hypot(c[1] - prev[1]);
+                    prev = *c;
+                    if c[1] <= yc {
+                        found = Some(s);
+                        break;
+                    }
+                }
+                found.unwrap_or(g)
+            }
+            None => g,
+        };
+        parts.push(super::limb::part_from_trace(front, name, &t, start, z)?);
+        shoulders[k] = t.shoulder;
+    }
+    Ok((parts, shoulders))
+}
+
 fn derive_upright(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
@@ -411,6 +473,11 @@ fn derive_upright(
         .iter()
         .map(|r| part_from_region(front, side, r))
         .collect::<Result<Vec<_>, _>>()?;
+    let (arms, shoulders) = traced_arms(front, side, &lm, &joins)?;
+    // parts in the order torso, head, arm_l, arm_r, leg_l, leg_r
+    for (k, arm) in arms.into_iter().enumerate() {
+        parts.insert(2 + k, arm);
+    }
     if level == Level::Final {
         for k in sections {
             super::keysection::apply_key_section(&mut parts, k)?;
@@ -427,11 +494,7 @@ fn derive_upright(
     let top_c = torso.sections.last().map(|s| s.centre).unwrap_or([0.0; 3]);
     // shoulder apex: the top of the outline halfway between the neck's side
     // and the shoulder's outer side (at the armpits' height)
-    let neck_iv = interval(
-        front,
-        super::segment::Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
-        lm.neck_base,
-    );
+    let neck_iv = super::segment::neck_interval(front, &lm);
     let outer = slice(front, ya + g);
     let apex = |sign: f64| -> [f64; 3] {
         let neck_x = match neck_iv {
@@ -444,16 +507,13 @@ fn derive_upright(
             }
             None => top_c[0] + sign * 0.5 * r_top,
         };
-        let out_x = match (outer.first(), outer.last()) {
-            (Some(a), Some(b)) => {
-                if sign < 0.0 {
-                    a[0]
-                } else {
-                    b[1]
-                }
-            }
-            _ => top_c[0] + sign * r_top,
+        // the arm's shoulder point (the upper end of its cut)
+        let out_x = if sign < 0.0 {
+            shoulders[0][0]
+        } else {
+            shoulders[1][0]
         };
+        let _ = &outer;
         let x = 0.5 * (neck_x + out_x);
         let y = shoulder_top(front, x)
             .filter(|y| *y < lm.neck_base + g)

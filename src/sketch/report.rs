@@ -58,7 +58,20 @@ pub struct ProfileErrorReport {
 #[derive(Clone, Debug, Serialize)]
 pub struct SketchReport {
     pub level: Level,
+    /// The model's unit (always `"m"`).
+    pub unit: &'static str,
+    /// The model's height in metres (the front outline's, after scaling).
+    pub height_m: f64,
     pub height: f64,
+    /// The drawing's size and placement ([`super::place`]).
+    pub drawing: super::place::DrawingReport,
+    /// Everything the build warns about (also printed on stderr by the
+    /// CLI): a side view scaled to the front's height, a measure over its
+    /// bound ([`super::quality`]).
+    pub warnings: Vec<String>,
+    /// Profile error, outside distance, dihedral and creased length per
+    /// part and for the whole model ([`super::quality`]).
+    pub quality: super::quality::Quality,
     pub parts: Vec<PartReport>,
     pub transitions: Vec<TransitionReport>,
     pub topology: TopologyReport,
@@ -96,6 +109,71 @@ pub struct Built {
     pub side: Option<Outline>,
 }
 
+/// Reads the document's front and side profiles at their physical size;
+/// with an explicit tolerance (metres of the model) and an asked height,
+/// the tolerance is turned into metres of the drawing as drawn (a first
+/// read at the default flatness gives the scale). Returns the tolerance as
+/// drawn for the removed parts.
+fn read_views(
+    doc: &CharacterDoc,
+    base: &Path,
+) -> Result<(Outline, Option<Outline>, Option<f64>), SketchError> {
+    let read = |tol: Option<f64>| -> Result<(Outline, Option<Outline>), SketchError> {
+        let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
+        let side = match &doc.inputs.side {
+            Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
+            None => None,
+        };
+        Ok((front, side))
+    };
+    match (doc.inputs.tolerance, doc.inputs.height) {
+        (Some(t), Some(h)) => {
+            let (f, _) = read(None)?;
+            let (yr, _) = super::poly::bounds(&f.points);
+            let k = super::place::model_scale(yr[1] - yr[0], Some(h))?;
+            let (f, s) = read(Some(t / k))?;
+            Ok((f, s, Some(t / k)))
+        }
+        (t, _) => {
+            let (f, s) = read(t)?;
+            Ok((f, s, t))
+        }
+    }
+}
+
+/// Where the document's drawings go in the model's frame (its removed
+/// parts, drawn on the same pages, follow the same placement).
+pub fn placement(doc: &CharacterDoc, base: &Path) -> Result<super::place::Placement, SketchError> {
+    let (front, side, _) = read_views(doc, base)?;
+    let placed = super::place::place(
+        &front,
+        side.as_ref(),
+        doc.inputs.height,
+        doc.inputs.body_plan,
+    )?;
+    Ok(placed.report.placement)
+}
+
+/// Key cross-section sketches drawn in the drawings' frame, moved with
+/// them: heights and x as the front view, z as the side view.
+fn placed_sections(
+    sections: &[crate::character::doc::KeySection],
+    p: &super::place::Placement,
+) -> Vec<crate::character::doc::KeySection> {
+    sections
+        .iter()
+        .map(|k| crate::character::doc::KeySection {
+            part: k.part.clone(),
+            y: p.front([0.0, k.y])[1],
+            points: k
+                .points
+                .iter()
+                .map(|q| [p.front([q[0], 0.0])[0], p.side([q[1], 0.0])[0]])
+                .collect(),
+        })
+        .collect()
+}
+
 fn shape_name(s: &SectionShape) -> &'static str {
     match s {
         SectionShape::Circle { r } if *r == 0.0 => "point",
@@ -131,12 +209,16 @@ pub fn build_document_with(
     cache: Option<&mut PartCache>,
 ) -> Result<Built, SketchError> {
     doc.validate()?;
-    let tol = doc.inputs.tolerance;
-    let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
-    let side = match &doc.inputs.side {
-        Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
-        None => None,
-    };
+    let (front, side, tol) = read_views(doc, base)?;
+    let placed = super::place::place(
+        &front,
+        side.as_ref(),
+        doc.inputs.height,
+        doc.inputs.body_plan,
+    )?;
+    let mut warnings = placed.warnings.clone();
+    let placement = placed.report.placement;
+    let (front, side) = (placed.front, placed.side);
     if doc.level != Level::Initial && side.is_none() {
         return Err(SketchError::Document(format!(
             "level {} needs a side profile",
@@ -151,7 +233,7 @@ pub fn build_document_with(
     let removed = doc
         .removed_parts
         .iter()
-        .map(|r| super::removed::removed_part(r, base, tol))
+        .map(|r| super::removed::removed_part(r, base, tol, &placement))
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
     let (yr, _) = super::poly::bounds(&front.points);
@@ -160,7 +242,7 @@ pub fn build_document_with(
         let d = derive(
             &front.points,
             side.as_ref().map(|s| s.points.as_slice()),
-            &doc.inputs.sections,
+            &placed_sections(&doc.inputs.sections, &placement),
             &front.cuts,
             doc.level,
             doc.inputs.body_plan,
@@ -254,9 +336,31 @@ pub fn build_document_with(
     let body = super::check::without_groups(&model.mesh, &names);
     let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
     let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
+    let part_names: Vec<String> = edited
+        .iter()
+        .map(|p| p.name.clone())
+        .filter(|n| !names.contains(&n.as_str()))
+        .chain(out.transitions.iter().map(|t| t.name.clone()))
+        .collect();
+    let quality = super::quality::measure(
+        &body,
+        &front.points,
+        side.as_ref().map(|s| s.points.as_slice()),
+        height,
+        &part_names,
+    );
+    warnings.extend(super::quality::warnings(
+        &quality,
+        &super::quality::Bounds::ISSUE,
+    ));
     let report = SketchReport {
         level: out.level,
+        unit: "m",
+        height_m: height,
         height,
+        drawing: placed.report,
+        warnings,
+        quality,
         parts,
         transitions,
         topology: topo,

@@ -26,6 +26,7 @@ mod profile;
 mod sasm;
 mod sketch;
 mod sketch_animal;
+mod sketch_draw;
 mod template;
 mod template_belly;
 mod template_jaw;

@@ -122,7 +122,7 @@ fn max_position_difference(a: &Mesh, b: &Mesh) -> f64 {
 }
 
 fn svg(body: &str) -> String {
-    format!("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-1 -2 2 2\">{body}</svg>")
+    format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200cm\" height=\"200cm\" viewBox=\"-1 -2 2 2\">{body}</svg>")
 }
 
 fn front_path() -> String {
