@@ -7,6 +7,7 @@ use crate::body::closed::{
     MAX_MAX_REL, RMS_MAX_REL, THUMB_SKIN_MAX_REL,
 };
 use crate::body::intersect::known_crossings;
+use crate::check::worst;
 use crate::check::{Check, Kind};
 
 const FAMILY: &str = "body";
@@ -31,7 +32,7 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
                     r.hands
                         .iter()
                         .map(|h| h.thumb_skin_to_recon_max_rel)
-                        .fold(f64::NAN, f64::max),
+                        .fold(f64::NAN, worst),
                     r.hands
                         .iter()
                         .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })
