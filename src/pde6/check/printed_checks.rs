@@ -15,8 +15,6 @@ fn rel(x: f64, y: f64) -> f64 {
     (x - y).abs() / y.abs().worst(1.0)
 }
 
-/// Max that keeps NaN (a failed computation fails the check).
-
 /// A patch's point from the printed series (eqs 3-5 / 14): x = A_x0 +
 /// sum(A_xn cos nv + B_xn sin nv), y = A_y0 + sum(A_yn sin nv + B_yn cos nv),
 /// z = A_z0, each function from the project's closed form.
