@@ -4,7 +4,7 @@
 #   scripts/mutants.sh FAMILY [--list] [--shard K/N] [extra cargo-mutants args]
 #
 # FAMILY is one of: jet gec pde4 plate pde6 ode6 conv. The oracle is the
-# family's verify checks (`src/mutants_oracle.rs`, the same checks as
+# family's verify checks (`src/verify/mutants_oracle.rs`, the same checks as
 # `pdesculpt verify --family FAMILY`) plus the family's own unit tests in the
 # library, all in the library's unit-test binary, so each mutant costs one
 # incremental dev-profile build of the library in test mode. Integration

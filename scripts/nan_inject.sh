@@ -7,7 +7,7 @@
 # Each injection is one statement, `return <NaN>;`, put at the top of the
 # function below (in a scratch copy of the tree; the checkout is never
 # touched). The oracle is the same as scripts/mutants.sh's: the family's
-# checks in the library's unit-test binary (src/mutants_oracle.rs). A family
+# checks in the library's unit-test binary (src/verify/mutants_oracle.rs). A family
 # passes this test when the oracle FAILS with the NaN in place and the same
 # build without it passed (scripts/mutants.sh's baseline). Shares the
 # scratch copy and its target/ with scripts/mutants.sh: do not run both at

@@ -134,3 +134,6 @@ pub fn derivative_checks() -> Vec<Check> {
     }
     out
 }
+
+#[cfg(test)]
+mod mutants_oracle;

@@ -12,7 +12,7 @@
 fn family_checks_pass() {
     let family = std::env::var("PDESCULPT_MUTANTS_FAMILY")
         .expect("PDESCULPT_MUTANTS_FAMILY names the family whose checks are the oracle");
-    let checks = crate::verify::run(Some(&family));
+    let checks = super::run(Some(&family));
     assert!(!checks.is_empty(), "no checks in family {family}");
     let failed: Vec<String> = checks
         .iter()
