@@ -3,6 +3,8 @@
 mod cli;
 mod fuzz;
 mod fuzz_harness;
+mod gltf;
+mod gltf_bad;
 mod infra;
 mod layers;
 mod registry;
