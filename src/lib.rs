@@ -39,6 +39,7 @@ pub mod pde4;
 pub mod pde6;
 pub mod plate;
 pub mod profile;
+pub mod progress;
 pub mod render;
 pub mod sasm;
 pub mod sketch;

@@ -7,6 +7,7 @@ mod gltf;
 mod gltf_bad;
 mod infra;
 mod layers;
+mod progress;
 mod registry;
 mod strategies;
 mod tolerances;
