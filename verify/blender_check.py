@@ -9,7 +9,9 @@ For each of OUT_DIR/demo.glb, demo-sketch.glb and demo-pde6.glb:
      height agrees with pdesculpt's within HEIGHT_TOL_M, then exports the
      scene back to GLB;
   3. pdesculpt reads Blender's GLB (`convert --json`, `render`): the same
-     parts, triangle count and height.
+     parts, triangle count and height; the body of Blender's demo.glb goes
+     through `profile extract`, `template fit --template` and
+     `pde6 body --mesh` (watertight).
 Expected names: demo.glb body, skirt, teddy (the demo's three models);
 demo-sketch.glb the bundled female document's parts, transitions and
 removed parts as demo.json lists them (`sketched.parts`); demo-pde6.glb the
@@ -58,6 +60,27 @@ def read(pdesculpt, glb, tmp):
     return info
 
 
+def body_inputs(pdesculpt, body, tmp):
+    """The body of Blender's export as the input of every mesh-reading
+    command: its outlines, a template fit to them, a pde6 reconstruction."""
+    failures = []
+    svg = {}
+    for view in ["front", "side"]:
+        svg[view] = os.path.join(tmp, f"{view}.svg")
+        run([pdesculpt, "profile", "extract", body, "--view", view, "-o", svg[view]])
+    fit = json.loads(run([pdesculpt, "--json", "template", "fit", "--template", body,
+                          "--front", svg["front"], "--side", svg["side"],
+                          "-o", os.path.join(tmp, "fit.glb")]))
+    recon = json.loads(run([pdesculpt, "--json", "pde6", "body", "--mesh", body,
+                            "-o", os.path.join(tmp, "recon.glb")]))
+    if not recon["topology"]["watertight"]:
+        failures.append("pde6 body --mesh on Blender's body is not watertight")
+    print(f"blender_check: Blender's body read by profile extract, template fit "
+          f"({fit['vertices']} vertices), pde6 body --mesh (watertight "
+          f"{recon['topology']['watertight']}, {recon['triangles']} triangles)")
+    return failures
+
+
 def main():
     out_dir, pdesculpt = sys.argv[1], sys.argv[2]
     blender = sys.argv[3] if len(sys.argv) > 3 else "blender"
@@ -97,6 +120,8 @@ def main():
                 failures.append(f"{name}: Blender's export has {theirs['triangles']} triangles, ours {ours['triangles']}")
             if abs(theirs["height"] - ours["height"]) > HEIGHT_TOL_M:
                 failures.append(f"{name}: Blender's export is {theirs['height']:.4f} m tall, ours {ours['height']:.4f} m")
+            if name == "demo.glb":
+                failures += body_inputs(pdesculpt, back + "#body", tmp)
             png = os.path.join(out_dir, name.replace(".glb", "-blender.png"))
             run([pdesculpt, "render", back, "-o", png])
             print(f"blender_check: {name}: {len(objects)} objects, {ours['height']:.3f} m; "
