@@ -63,9 +63,12 @@ pub struct BuildArgs {
     /// (auto: a quadruped when the outline is longer than tall).
     #[arg(long, default_value = "auto")]
     pub body_plan: BodyPlan,
-    /// Output mesh (.obj, .glb, .stl, .ply).
+    /// Output mesh (.obj, .glb, .gltf, .stl, .ply): one node/object per
+    /// part and transition.
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub layout: super::units::LayoutArgs,
     /// Also save the character document (with the derived parts).
     #[arg(long)]
     pub save_doc: Option<PathBuf>,
@@ -122,17 +125,24 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         body_plan: a.body_plan,
     };
     let doc = CharacterDoc::from_inputs(inputs, level);
+    let progress = pdesculpt::progress::Progress::spinner("sketch build", json);
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
+    progress.finish();
     if let Some(p) = &a.save_doc {
         built.doc.save(p)?;
         eprintln!("wrote {}", p.display());
     }
-    finish(&built, &a.output, json)
+    finish(&built, &a.output, a.layout, json)
 }
 
 /// Writes the mesh and prints the report (shared with `character build`).
-pub fn finish(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
-    io::write(&built.model.mesh, output)?;
+pub fn finish(
+    built: &Built,
+    output: &Path,
+    layout: super::units::LayoutArgs,
+    json: bool,
+) -> anyhow::Result<i32> {
+    layout.write(&built.model.mesh, output)?;
     let r = &built.report;
     eprintln!(
         "wrote {} ({} vertices, {} triangles; watertight {}, manifold {}, oriented {}; max C1 jump {:.2e})",
