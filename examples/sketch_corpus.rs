@@ -13,10 +13,10 @@
 //! then figures drawn at random (fixed seed) from `HumanoidRanges::WIDE`,
 //! wider than the item's ranges. Every third generated drawing is held out.
 
-use pdesculpt::sketch::corpus::{document, page_position, Style};
-use pdesculpt::sketch::corpus_measure::{
+use pdesculpt::pipeline::corpus::{
     build_entry, measure_entry, read_manifest, table, Entry, Manifest,
 };
+use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
 use pdesculpt::sketch::figure_animal::{Quadruped, Tail};
 use std::path::Path;
@@ -354,7 +354,7 @@ fn grid(rows: &[pdesculpt::render::Image]) -> pdesculpt::render::Image {
 
 /// A tile: the model's front and side renders (pink when it fails).
 fn contact(
-    built: &Result<pdesculpt::sketch::Built, pdesculpt::sketch::SketchError>,
+    built: &Result<pdesculpt::pipeline::Built, pdesculpt::sketch::SketchError>,
 ) -> pdesculpt::render::Image {
     use pdesculpt::render::View;
     let o = pdesculpt::render::RenderOptions {

@@ -1,9 +1,11 @@
 //! `pdesculpt character build|edit|undo|redo|log`.
 
 use pdesculpt::character::doc::CharacterDoc;
-use pdesculpt::character::edit::{push_checked, Edit};
+use pdesculpt::character::log::Edit;
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
-use pdesculpt::sketch::{build_document, Resolution};
+use pdesculpt::pipeline::build_document;
+use pdesculpt::pipeline::push_checked;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
@@ -24,9 +26,12 @@ pub enum Sub {
         /// The character document (JSON, version 1; schema in the docs of
         /// `pdesculpt::character::doc`).
         doc: PathBuf,
-        /// Output mesh (.obj, .glb, .stl, .ply).
+        /// Output mesh (.obj, .glb, .gltf, .stl, .ply): one node/object
+        /// per part, transition, removed part and prop.
         #[arg(short, long)]
         output: PathBuf,
+        #[command(flatten)]
+        layout: super::units::LayoutArgs,
         /// Also save the document with its derived parts filled in.
         #[arg(long)]
         save_doc: Option<PathBuf>,
@@ -88,17 +93,20 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         Sub::Build {
             doc,
             output,
+            layout,
             save_doc,
         } => {
             io::Format::from_path(&output)?;
             let d = CharacterDoc::load(&doc)?;
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
+            let progress = pdesculpt::progress::Progress::spinner("character build", json);
             let built = build_document(&d, &base, Resolution::default(), false)?;
+            progress.finish();
             if let Some(p) = &save_doc {
                 built.doc.save(p)?;
                 eprintln!("wrote {}", p.display());
             }
-            super::sketch::finish(&built, &output, json)
+            super::sketch::finish(&built, &output, layout, json)
         }
         Sub::Edit { doc, op, drawn } => {
             let mut d = CharacterDoc::load(&doc)?;
@@ -108,7 +116,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     .map_err(|err| anyhow::anyhow!("{}: {err}", p.display()))?;
                 let s: pdesculpt::sasm::Stroke = serde_json::from_str(&text)
                     .map_err(|err| anyhow::anyhow!("{}: not a drawn stroke: {err}", p.display()))?;
-                pdesculpt::character::edit::force4::project_force_stroke(&d, &mut e, &s)?;
+                pdesculpt::pipeline::project_force_stroke(&d, &mut e, &s)?;
             }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();

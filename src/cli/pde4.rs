@@ -78,7 +78,7 @@ enum Cmd {
             allow_hyphen_values = true
         )]
         radius: f64,
-        /// Input mesh (OBJ/STL/PLY).
+        /// Input mesh (OBJ/GLB/glTF/STL/PLY).
         #[arg(long, conflicts_with = "makehuman")]
         mesh: Option<PathBuf>,
         /// Use the MakeHuman base body.

@@ -52,7 +52,8 @@ pub enum Command {
 
 #[derive(clap::Args, Debug)]
 pub struct ExtractArgs {
-    /// Input mesh (.obj, .stl, .ply).
+    /// Input mesh (.obj, .glb, .gltf, .stl, .ply; FILE.glb#NODE,... reads
+    /// only the named nodes).
     pub mesh: PathBuf,
     /// View: front, side or top.
     #[arg(long)]

@@ -2,8 +2,9 @@
 //! [--level L] -o OUT [--save-doc CHAR.json] [--json]`.
 
 use pdesculpt::character::doc::{BodyPlan, CharacterDoc, Inputs, KeySection, Level, ProfileInput};
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
-use pdesculpt::sketch::{build_document, Built, Resolution};
+use pdesculpt::pipeline::{build_document, Built};
 use std::path::{Path, PathBuf};
 
 const CONVENTIONS: &str = "Input conventions: the model is the drawing's physical size in metres: \
@@ -73,9 +74,12 @@ pub struct BuildArgs {
     /// (auto: a quadruped when the outline is longer than tall).
     #[arg(long, default_value = "auto")]
     pub body_plan: BodyPlan,
-    /// Output mesh (.obj, .glb, .stl, .ply).
+    /// Output mesh (.obj, .glb, .gltf, .stl, .ply): one node/object per
+    /// part and transition.
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub layout: super::units::LayoutArgs,
     /// Also save the character document (with the derived parts).
     #[arg(long)]
     pub save_doc: Option<PathBuf>,
@@ -156,17 +160,24 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         body_plan: a.body_plan,
     };
     let doc = CharacterDoc::from_inputs(inputs, level);
+    let progress = pdesculpt::progress::Progress::spinner("sketch build", json);
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
+    progress.finish();
     if let Some(p) = &a.save_doc {
         built.doc.save(p)?;
         eprintln!("wrote {}", p.display());
     }
-    finish(&built, &a.output, json)
+    finish(&built, &a.output, a.layout, json)
 }
 
 /// Writes the mesh and prints the report (shared with `character build`).
-pub fn finish(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
-    io::write(&built.model.mesh, output)?;
+pub fn finish(
+    built: &Built,
+    output: &Path,
+    layout: super::units::LayoutArgs,
+    json: bool,
+) -> anyhow::Result<i32> {
+    layout.write(&built.model.mesh, output)?;
     let r = &built.report;
     for w in &r.warnings {
         eprintln!("warning: {w}");

@@ -25,7 +25,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             );
         }
     }
+    let progress = pdesculpt::progress::Progress::spinner("verify: running the checks", json);
     let checks = check::run(args.family.as_deref());
+    progress.finish();
     let failed = checks.iter().filter(|c| !c.passed).count();
     if json {
         super::print_json(&serde_json::json!({
@@ -40,7 +42,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         );
         for c in checks.iter().filter(|c| !args.failures || !c.passed) {
             let verdict = match (c.passed, c.paper_differs) {
-                (true, true) => "ok (printed form differs, see ERRATA.md)",
+                (true, true) => "ok (differs, as ERRATA.md records)",
                 (true, false) => "ok",
                 (false, _) => "FAILED",
             };

@@ -54,6 +54,12 @@ pub enum MeshError {
         offset: usize,
         message: String,
     },
+    #[error("{path}: {source}")]
+    Gltf {
+        path: String,
+        #[source]
+        source: io::GltfError,
+    },
     #[error("the mesh has no triangles")]
     Empty,
     #[error("{0}")]

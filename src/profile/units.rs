@@ -139,31 +139,3 @@ pub fn document_units(root: roxmltree::Node) -> Result<DocumentUnits, ProfileErr
         ),
     })
 }
-
-impl super::SvgSketch {
-    /// The sketch at its physical size: outline and cuts scaled from user
-    /// units to metres by [`DocumentUnits::metres_per_unit`] (a uniform
-    /// scale unless the document says `preserveAspectRatio="none"`).
-    pub fn into_metres(self) -> Result<super::SvgSketch, ProfileError> {
-        let [sx, sy] = self.units.metres_per_unit;
-        let (h, v) = (sx, sy);
-        let scale = |p: &[f64; 2]| [h * p[0], v * p[1]];
-        let outline = super::Profile::new(
-            self.outline.view(),
-            self.outline.points().iter().map(scale).collect(),
-        )?;
-        let cuts = self
-            .cuts
-            .into_iter()
-            .map(|c| super::Cut {
-                id: c.id,
-                points: c.points.iter().map(scale).collect(),
-            })
-            .collect();
-        Ok(super::SvgSketch {
-            outline,
-            cuts,
-            units: self.units,
-        })
-    }
-}

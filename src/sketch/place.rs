@@ -30,8 +30,9 @@
 use super::input::Outline;
 use super::poly::{bounds, slice};
 use super::SketchError;
-use crate::character::doc::BodyPlan;
+use crate::character::doc::{BodyPlan, CharacterDoc, KeySection};
 use serde::Serialize;
+use std::path::Path;
 
 /// Accepted model heights in metres: from a 1 mm figurine to a 1 km giant.
 /// Outside, the floating-point tolerances of the build (relative to the
@@ -273,4 +274,76 @@ pub fn place(
 
 fn height_of(o: &Outline) -> f64 {
     height(&o.points)
+}
+
+/// Reads the document's front and side profiles at their physical size;
+/// with an explicit tolerance (metres of the model) and an asked height,
+/// the tolerance is turned into metres of the drawing as drawn (a first
+/// read at the default flatness gives the scale). Returns the tolerance as
+/// drawn for the removed parts.
+pub fn read_views(
+    doc: &CharacterDoc,
+    base: &Path,
+) -> Result<(Outline, Option<Outline>, Option<f64>), SketchError> {
+    let read = |tol: Option<f64>| -> Result<(Outline, Option<Outline>), SketchError> {
+        let front = super::input::read_profile(
+            &doc.inputs.front,
+            base,
+            super::input::ViewKind::Front,
+            tol,
+        )?;
+        let side = match &doc.inputs.side {
+            Some(s) => Some(super::input::read_profile(
+                s,
+                base,
+                super::input::ViewKind::Side,
+                tol,
+            )?),
+            None => None,
+        };
+        Ok((front, side))
+    };
+    match (doc.inputs.tolerance, doc.inputs.height) {
+        (Some(t), Some(h)) => {
+            let (f, _) = read(None)?;
+            let (yr, _) = super::poly::bounds(&f.points);
+            let k = model_scale(yr[1] - yr[0], Some(h))?;
+            let (f, s) = read(Some(t / k))?;
+            Ok((f, s, Some(t / k)))
+        }
+        (t, _) => {
+            let (f, s) = read(t)?;
+            Ok((f, s, t))
+        }
+    }
+}
+
+/// Where the document's drawings go in the model's frame (its removed
+/// parts, drawn on the same pages, follow the same placement).
+pub fn placement(doc: &CharacterDoc, base: &Path) -> Result<Placement, SketchError> {
+    let (front, side, _) = read_views(doc, base)?;
+    let placed = place(
+        &front,
+        side.as_ref(),
+        doc.inputs.height,
+        doc.inputs.body_plan,
+    )?;
+    Ok(placed.report.placement)
+}
+
+/// Key cross-section sketches drawn in the drawings' frame, moved with
+/// them: heights and x as the front view, z as the side view.
+pub fn placed_sections(sections: &[KeySection], p: &Placement) -> Vec<KeySection> {
+    sections
+        .iter()
+        .map(|k| KeySection {
+            part: k.part.clone(),
+            y: p.front([0.0, k.y])[1],
+            points: k
+                .points
+                .iter()
+                .map(|q| [p.front([q[0], 0.0])[0], p.side([q[1], 0.0])[0]])
+                .collect(),
+        })
+        .collect()
 }

@@ -212,7 +212,7 @@ fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
 /// Largest dihedral and creased length per group (edges between two
 /// groups count for both) and for the whole mesh.
 fn dihedrals(m: &Mesh) -> (Vec<(f64, f64)>, (f64, f64)) {
-    let edges = super::crease::edge_triangles(m);
+    let edges = crate::character::crease::edge_triangles(m);
     let normals: Vec<[f64; 3]> = (0..m.triangles.len()).map(|t| unit_normal(m, t)).collect();
     let mut per = vec![(0.0f64, 0.0f64); m.groups.len()];
     let mut whole = (0.0f64, 0.0f64);

@@ -23,6 +23,7 @@ fn parsers_never_panic_hang_or_return_non_finite_numbers() {
         "OBJ documents",
         "PLY documents",
         "STL documents",
+        "GLB documents",
         "pde4 spec JSON",
         "GEC JSON",
     ] {

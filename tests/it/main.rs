@@ -3,8 +3,12 @@
 mod cli;
 mod fuzz;
 mod fuzz_harness;
+mod gltf;
+mod gltf_bad;
 mod infra;
 mod layers;
+mod nan;
+mod progress;
 mod registry;
 mod strategies;
 mod tolerances;

@@ -4,11 +4,13 @@
 
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::character::doc::{CharacterDoc, Inputs, Level, ProfileInput};
+use pdesculpt::character::Resolution;
 use pdesculpt::check::tol;
+use pdesculpt::pipeline::{build_document, Built};
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
 use pdesculpt::sketch::quality::{warnings, Bounds};
-use pdesculpt::sketch::{build_document, Built, Resolution, SketchError};
+use pdesculpt::sketch::SketchError;
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
 

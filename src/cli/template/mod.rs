@@ -45,7 +45,8 @@ pub enum Command {
 
 #[derive(clap::Args, Debug)]
 pub struct FitArgs {
-    /// `makehuman` (the bundled base body, every OBJ vertex) or a mesh file.
+    /// `makehuman` (the bundled base body, every OBJ vertex) or a mesh file
+    /// (.obj, .glb, .gltf, .stl, .ply).
     #[arg(long)]
     pub template: String,
     /// Front profile (SVG or JSON).
@@ -57,9 +58,11 @@ pub struct FitArgs {
     /// Key cross-sections (JSON): high level (needs --side).
     #[arg(long)]
     pub sections: Option<PathBuf>,
-    /// Output mesh (.obj, .glb, .stl, .ply).
+    /// Output mesh (.obj, .glb, .gltf, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub layout: super::units::LayoutArgs,
     /// Refuse (an error, no output) when a fitted profile stays farther
     /// than 0.5 % of the height from the sketch. Default: write the best
     /// fit, warn with the measured miss on stderr (and `within: false` in
@@ -78,6 +81,14 @@ pub struct FitArgs {
 #[derive(serde::Serialize)]
 struct Report {
     output: String,
+    /// The written mesh's unit (always metres).
+    unit: &'static str,
+    /// The model's height in metres (the placed front drawing's).
+    height_m: f64,
+    /// The drawings' size and placement (as `sketch build` reports it).
+    drawing: pdesculpt::sketch::place::DrawingReport,
+    /// Placement warnings (side height scaled).
+    warnings: Vec<String>,
     vertices: usize,
     levels: Vec<LevelReport>,
     profile_errors: Vec<ViewError>,
@@ -166,7 +177,9 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     } else {
         OnMiss::Report
     };
+    let progress = pdesculpt::progress::Progress::spinner("template fit", json);
     let r = fit(&template, &sketch, &opts, &mesh_outline)?;
+    progress.finish();
     let errors = profile_errors(&template, r.last(), &sketch)?;
     let mut out = template.mesh.clone();
     out.positions = r.last().to_vec();
@@ -176,9 +189,20 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     } else {
         pdesculpt::mesh::unit::Unit::M
     };
-    io::write_in_unit(&out, &a.output, source, pdesculpt::mesh::unit::Unit::M)?;
+    let scene = io::Scene::single(&io::model_name(&a.output), out.clone());
+    io::write_scene_in_unit(
+        &scene,
+        &a.output,
+        source,
+        pdesculpt::mesh::unit::Unit::M,
+        a.layout.layout(),
+    )?;
     let report = Report {
         output: a.output.display().to_string(),
+        unit: "m",
+        height_m: placed.report.height_m,
+        drawing: placed.report.clone(),
+        warnings: placed.warnings.clone(),
         vertices: out.positions.len(),
         levels: r.levels.iter().map(|(l, _)| l.clone()).collect(),
         profile_errors: errors,
