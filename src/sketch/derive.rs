@@ -168,7 +168,7 @@ pub(super) fn part_from_region(
     let s = samples(front, r);
     if s.len() < SECTIONS_PER_PART + 2 {
         return Err(SketchError::Segmentation(format!(
-            "{}: only {} slices",
+            "{}: only {} slices: draw it larger (longer or wider)",
             r.name,
             s.len()
         )));
@@ -405,7 +405,9 @@ fn traced_arms(
 ) -> Result<(Vec<PartSpec>, [[f64; 2]; 2]), SketchError> {
     let g = super::segment::GAP_FRACTION * lm.height();
     let neck = super::segment::neck_interval(front, lm)
-        .ok_or_else(|| SketchError::Segmentation("no neck found above the armpits".into()))?;
+        .ok_or_else(|| SketchError::Segmentation(
+            "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
+        ))?;
     // hidden in the side view: the arms hang at the torso's centre depth
     // at the armpits' height
     let ya = lm.armpit_l[1].min(lm.armpit_r[1]);

@@ -80,7 +80,9 @@ pub fn trace_arm(
     let n = front.len();
     let ia = (0..n)
         .min_by(|&i, &j| dist(front[i], armpit).total_cmp(&dist(front[j], armpit)))
-        .ok_or_else(|| SketchError::Segmentation(format!("{name}: empty outline")))?;
+        .ok_or_else(|| {
+            SketchError::Segmentation(format!("{name}: empty outline: draw a closed outline"))
+        })?;
     let step = |k: usize| -> usize {
         if side > 0.0 {
             (ia + k) % n

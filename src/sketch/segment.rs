@@ -203,7 +203,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     }
     if !neck.0.is_finite() {
         return Err(SketchError::Segmentation(
-            "no neck found above the armpits".into(),
+            "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
         ));
     }
     let mut base = neck.1;
@@ -339,7 +339,7 @@ pub fn regions(
         let y1 = cuts.limb(name).unwrap_or(top - g);
         if interval(front, pick, y1).is_none() {
             return Err(SketchError::Segmentation(format!(
-                "{name}: no outline below its join"
+                "{name}: no outline below its join: draw each leg reaching down to the ground"
             )));
         }
         // lowest height where the region still has an interval

@@ -6,6 +6,7 @@ use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::character::doc::{CharacterDoc, Inputs, Level, ProfileInput};
 use pdesculpt::character::Resolution;
 use pdesculpt::check::tol;
+use pdesculpt::pipeline::corpus::{build_entry, measure_entry, read_manifest, table, Entry, Row};
 use pdesculpt::pipeline::{build_document, Built};
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
@@ -326,10 +327,10 @@ proptest! {
 
     /// The issue's bounds on the same humanoids (profile error, outside
     /// distance, dihedral, creased length). NOT MET YET: the shoulders and
-    /// the feet fold on most of them (docs/sketch-corpus.md); ignored so the
+    /// the feet fold on most of them (docs/drawing-corpus.md); ignored so the
     /// suite stays green, run with `--ignored` to measure.
     #[test]
-    #[ignore = "issue 28's shape bounds are not met yet (docs/sketch-corpus.md)"]
+    #[ignore = "issue 28's shape bounds are not met yet (docs/drawing-corpus.md)"]
     fn humanoids_in_the_issue_ranges_meet_the_bounds(u in proptest::array::uniform16(0.0f64..=1.0)) {
         let h = HumanoidRanges::ISSUE.at(&u, 1.7);
         let dir = tmpdir("draw-prop-bounds");
@@ -339,4 +340,69 @@ proptest! {
             prop_assert!(w.is_empty(), "{h:?}: {w:?}");
         }
     }
+}
+
+fn corpus_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sketch/corpus")
+}
+
+/// Builds and measures the corpus entries `keep` selects; prints the table
+/// (stderr) and returns the rows.
+fn measure_corpus(keep: impl Fn(&Entry) -> bool) -> Vec<Row> {
+    let dir = corpus_dir();
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let rows: Vec<Row> = m
+        .entries
+        .iter()
+        .filter(|e| keep(e))
+        .map(|e| measure_entry(e, &build_entry(&dir, e)))
+        .collect();
+    eprintln!("{}", table(&rows));
+    rows
+}
+
+/// Every development drawing of the corpus (the held-out ones excluded,
+/// `data/sketch/corpus/corpus.json`) builds at the intermediate level with
+/// no flag but its `--height`: closed (watertight, manifold, oriented) at
+/// its drawn size or asked height within 0.5 %, or refused by a
+/// segmentation error saying what to change in the drawing. The issue's
+/// shape bounds are measured, not asserted (docs/drawing-corpus.md: most
+/// drawings miss them).
+#[test]
+fn corpus_drawings_build_closed_at_their_size_or_say_why() {
+    let rows = measure_corpus(|e| !e.held_out);
+    assert!(!rows.is_empty(), "the corpus has development drawings");
+    for r in &rows {
+        match &r.error {
+            None => {
+                assert!(r.watertight_manifold_oriented, "{}: not closed", r.name);
+                assert!(
+                    r.height_error <= HEIGHT_REL,
+                    "{}: height off by {:.3} %",
+                    r.name,
+                    100.0 * r.height_error
+                );
+            }
+            Some(m) => assert!(
+                m.starts_with("segmentation") && (m.contains("draw") || m.contains("cut")),
+                "{}: {m}",
+                r.name
+            ),
+        }
+    }
+}
+
+/// The whole corpus with the held-out drawings, against every bound of
+/// issue 28 (the Done-means): run with `--ignored`; fails today
+/// (docs/drawing-corpus.md has the measured table).
+#[test]
+#[ignore = "issue 28's shape bounds are not met yet (docs/drawing-corpus.md)"]
+fn corpus_drawings_meet_the_issue_bounds() {
+    let rows = measure_corpus(|_| true);
+    let failed: Vec<&str> = rows
+        .iter()
+        .filter(|r| !r.passed)
+        .map(|r| r.name.as_str())
+        .collect();
+    assert!(failed.is_empty(), "over the bounds: {failed:?}");
 }
