@@ -271,9 +271,6 @@ pub fn contour(
     Some(out)
 }
 
-/// Shortest torso (crotch to shoulders), a fraction of the height.
-pub const MIN_TORSO: f64 = 0.12;
-
 /// Unit vector at `deg` degrees below the horizontal, pointing to `side`
 /// (-1: the figure's left, negative x; +1: right).
 fn down_dir(deg: f64, side: f64) -> [f64; 2] {
@@ -281,7 +278,7 @@ fn down_dir(deg: f64, side: f64) -> [f64; 2] {
     [side * a.cos(), -a.sin()]
 }
 
-pub use super::figure_params::{Humanoid, HumanoidRanges};
+pub use super::figure_params::{Humanoid, HumanoidRanges, MIN_TORSO};
 
 /// A figure's two traced outlines (front, side), model units.
 pub type OutlinePair = (Vec<[f64; 2]>, Vec<[f64; 2]>);

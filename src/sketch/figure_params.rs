@@ -158,11 +158,13 @@ impl HumanoidRanges {
             leg_gap: l(self.leg_gap, u[10]),
             stance: l(self.stance, u[11]),
             // the torso keeps `figure::MIN_TORSO` below the shoulders
-            crotch: l(self.crotch, u[12])
-                .min(1.0 - head - (0.35 * head).min(0.06) - super::figure::MIN_TORSO),
+            crotch: l(self.crotch, u[12]).min(1.0 - head - (0.35 * head).min(0.06) - MIN_TORSO),
             leg_radius: l(self.leg_radius, u[13]),
             depth: l(self.depth, u[14]),
             belly: l(self.belly, u[15]),
         }
     }
 }
+
+/// Shortest torso (crotch to shoulders), a fraction of the height.
+pub const MIN_TORSO: f64 = 0.12;

@@ -143,7 +143,7 @@ pub fn trace_arm(
 /// The arm's part: key sections along the traced central curve from
 /// `start` (arc length from the cut's midpoint, the join band left to the
 /// shoulder transition) to the tip, placed where the width and the curve
-/// change ([`super::derive::place`]), each a circle perpendicular to the
+/// change ([`super::section_place::place`]), each a circle perpendicular to the
 /// curve (arms are hidden in the side view) at depth `z`; the last one
 /// collapses to the tip.
 pub fn part_from_trace(
@@ -153,7 +153,7 @@ pub fn part_from_trace(
     start: f64,
     z: f64,
 ) -> Result<crate::character::doc::PartSpec, SketchError> {
-    use super::derive::{place, Sample, SECTIONS_PER_PART};
+    use super::section_place::{place, Sample, SECTIONS_PER_PART};
     use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
     let mut s_len = vec![0.0; t.centre.len()];
     for i in 1..t.centre.len() {

@@ -62,6 +62,7 @@ pub mod quadruped;
 pub mod quality;
 pub mod removed;
 pub mod report;
+pub mod section_place;
 pub mod segment;
 
 pub use report::SketchReport;
