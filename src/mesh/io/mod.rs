@@ -8,15 +8,19 @@
 //! loses the previous one.
 
 mod atomic;
+mod files;
 mod glb;
 mod in_unit;
+mod lock;
 mod obj;
 mod ply;
 mod stl;
 
-pub use atomic::{refuse_overwriting_input, same_file, write_atomic};
+pub use atomic::{refuse_overwriting_input, same_file, write_all_atomic, write_atomic};
+pub use files::{check_outputs, read_input, read_input_text, strip_bom, write_target};
 pub use glb::{encode_glb, group_colour as group_colour_rgb};
 pub use in_unit::{output_unit, write_in_unit};
+pub use lock::FileLock;
 pub use obj::{encode_obj, parse_obj};
 pub use ply::{encode_ply, parse_ply};
 pub use stl::{encode_stl, parse_stl};
@@ -59,10 +63,7 @@ impl Format {
 pub fn read(path: &Path) -> Result<Mesh, MeshError> {
     let fmt = Format::from_path(path)?;
     let name = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| MeshError::Io {
-        path: name.clone(),
-        source,
-    })?;
+    let bytes = read_input(path, "mesh")?;
     let m = match fmt {
         Format::Obj => {
             let text = String::from_utf8_lossy(&bytes);
