@@ -12,6 +12,7 @@
 
 pub mod demo;
 pub mod doc;
+pub mod doc_ranges;
 pub mod edit;
 pub mod props;
 pub mod skirt;

@@ -272,6 +272,7 @@ pub fn build_document_with(
         removed: removed_reports,
         props,
     };
+    crate::character::edit::effect::finite_result(&model.mesh, &report)?;
     Ok(Built {
         doc: out,
         model,

@@ -77,6 +77,7 @@
 mod apply;
 pub mod check;
 pub mod check_stroke;
+pub mod effect;
 pub mod force4;
 mod mesh;
 pub mod stroke;
@@ -86,7 +87,8 @@ mod validate;
 pub use apply::{apply_to_parts, section_gec};
 pub use force4::{field_of, force_region_field, ForceField, FORCE4_TERMS};
 pub use mesh::{
-    apply_mesh_edits, apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS,
+    apply_mesh_edits, apply_plates, displacements, force_field, push_checked, redo_checked,
+    Session, FORCE_TERMS,
 };
 pub use validate::validate_params;
 
