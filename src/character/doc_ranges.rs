@@ -14,12 +14,13 @@
 //! | `parts[i].sections[j].e1, e2` | orthonormal within [`FRAME_TOL`] |
 //! | `...shape.gec.x, y` | equal lengths, at most [`SECTION_HARMONICS`] harmonics |
 //! | a collapsed section (circle `r = 0`, ellipse `a = 0` or `b = 0`) | only as the first section of a part with `closed_start` or the last with `closed_end` |
-//! | `transitions[i].cut_angles`, `tangent_scale` | checked by name when built (`sketch::build`: front angles in `[0, pi]`, back in `[pi, 2 pi]`; `(0,` [`crate::sketch::build::TANGENT_SCALE_MAX`]`]`) |
+//! | `transitions[i].cut_angles`, `tangent_scale` | checked by name when built (`character::assembly`: front angles in `[0, pi]`, back in `[pi, 2 pi]`; `(0,` [`crate::character::assembly::TANGENT_SCALE_MAX`]`]`) |
 //! | `edits` | at most [`LOG_EDITS`]; each its own ranges (`character::edit::validate_params`) |
 //! | `props` | at most [`DOC_PROPS`]; each `PropSpec::validate` |
 //! | names of parts, transitions, removed parts, props | non-empty, unique |
 
-use super::doc::{CharacterDoc, DocError, PartSpec, ProfileInput, SectionShape, SectionSpec};
+use super::doc::{CharacterDoc, DocError, ProfileInput};
+use super::spec::{PartSpec, SectionShape, SectionSpec};
 use crate::limits::{
     Num, Range, DOC_PROPS, KEY_SECTION_POINTS, LOG_EDITS, MODEL_COORD, PART_SECTIONS,
     SECTION_HARMONICS, SVG_POINTS,
@@ -136,7 +137,7 @@ pub fn check(doc: &CharacterDoc) -> Result<(), DocError> {
             coords(|| format!("{f}.seam_apex[{j}]"), a)?;
         }
         // cut_angles and tangent_scale: refused by name by the build
-        // (`sketch::build`), which knows the finer rules
+        // (`character::assembly`), which knows the finer rules
     }
     for (k, r) in doc.removed_parts.iter().enumerate() {
         profile_input(
@@ -199,7 +200,7 @@ fn names(doc: &CharacterDoc) -> Result<(), DocError> {
 }
 
 fn part(f: &str, p: &PartSpec) -> Result<(), DocError> {
-    let crate::character::doc::SurfaceSpec::Pde6C2 { a } = p.surface;
+    let super::spec::SurfaceSpec::Pde6C2 { a } = p.surface;
     if !(a.is_finite() && a.abs() <= crate::pde6::A_MAX) {
         return Err(range_err(
             format!("{f}.surface.a"),

@@ -4,6 +4,7 @@
 
 use super::fit::{fit, FitOptions, Sketch, Template};
 use super::landmarks::Similarity;
+pub use super::options::PROFILE_REL;
 use super::polygon::hausdorff;
 use super::rbf::Rbf;
 use super::shapes::{figure, prism, refined, Figure};
@@ -11,8 +12,6 @@ use super::study::{run_case, CASES};
 use super::{TemplateError, View};
 use crate::check::{tol, Check, Kind};
 
-/// Profile error allowed by issue 12: 0.5 % of the height.
-pub const PROFILE_REL: f64 = 5e-3;
 /// TBSM round trip on the MakeHuman foot: Hausdorff distance of the new
 /// sections (10-term GECs) from the foot's own, over the largest section's
 /// diameter.

@@ -24,11 +24,11 @@ pub fn base_doc() -> &'static CharacterDoc {
     static DOC: OnceLock<CharacterDoc> = OnceLock::new();
     DOC.get_or_init(|| {
         let d = pdesculpt::sketch::check::bundled("male", Level::Intermediate).expect("bundled");
-        let res = pdesculpt::sketch::Resolution {
+        let res = pdesculpt::character::Resolution {
             rings_per_height: 40.0,
             transition_rows: 4,
         };
-        pdesculpt::sketch::build_document(&d, Path::new("."), res, true)
+        pdesculpt::pipeline::build_document(&d, Path::new("."), res, true)
             .expect("the bundled male builds")
             .doc
     })
@@ -184,10 +184,10 @@ pub fn parse_doc(b: &[u8]) -> Result<Vec<f64>, String> {
     parts_numbers(&d.parts)
 }
 
-fn parts_numbers(parts: &[pdesculpt::character::doc::PartSpec]) -> Result<Vec<f64>, String> {
+fn parts_numbers(parts: &[pdesculpt::character::spec::PartSpec]) -> Result<Vec<f64>, String> {
     let mut out = Vec::new();
     for p in parts {
-        let s = pdesculpt::sketch::part::build_part(p).map_err(|e| e.to_string())?;
+        let s = pdesculpt::character::part::build_part(p).map_err(|e| e.to_string())?;
         for k in 0..=4 {
             let u = s.u0 + (s.u1 - s.u0) * k as f64 / 4.0;
             out.extend(s.section(u, 0).eval(0.7f64));
@@ -245,12 +245,12 @@ pub fn gen_edit(p: &mut Pick) -> Vec<u8> {
 
 /// An edit that is accepted must leave every edited part finite.
 pub fn apply_edit(b: &[u8]) -> Result<Vec<f64>, String> {
-    let e: pdesculpt::character::edit::Edit =
+    let e: pdesculpt::character::log::Edit =
         serde_json::from_slice(b).map_err(|e| e.to_string())?;
     let mut d = base_doc().clone();
     d.push_edit(e).map_err(|e| e.to_string())?;
-    let parts = pdesculpt::character::edit::apply_to_parts(&d.parts, d.active_edits())
-        .map_err(|e| e.to_string())?;
+    let parts =
+        pdesculpt::edit::apply_to_parts(&d.parts, d.active_edits()).map_err(|e| e.to_string())?;
     parts_numbers(&parts)
 }
 

@@ -4,8 +4,9 @@
 
 use crate::edit::low;
 use pdesculpt::character::doc::{CharacterDoc, Level};
-use pdesculpt::character::edit::{push_checked, redo_checked, Edit};
-use pdesculpt::sketch::build_document;
+use pdesculpt::character::log::Edit;
+use pdesculpt::pipeline::build_document;
+use pdesculpt::pipeline::{push_checked, redo_checked};
 use pdesculpt::sketch::check::bundled;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -261,8 +262,8 @@ fn a_build_with_a_non_finite_vertex_names_its_part() {
         let doc = stored();
         build_document(&doc, Path::new("."), low(), false).expect("builds")
     };
-    let e = pdesculpt::character::edit::effect::finite_result(&m, &built.report).expect_err("NaN");
+    let e = pdesculpt::pipeline::effect::finite_result(&m, &built.report).expect_err("NaN");
     assert!(e.to_string().contains("part 'arm_l'"), "{e}");
     m.positions[2][1] = 1.0;
-    pdesculpt::character::edit::effect::finite_result(&m, &built.report).expect("finite");
+    pdesculpt::pipeline::effect::finite_result(&m, &built.report).expect("finite");
 }

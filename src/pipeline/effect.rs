@@ -4,16 +4,19 @@
 //! of its size before the edit.
 //!
 //! [`validate_by_build`] is the one entry point (`character edit`, `redo`,
-//! the TUI's pushes through [`super::push_checked`]); it builds with
-//! `sketch::build_document` today and is where a single document-to-model
-//! build will plug in. [`finite_result`] is what every build checks: a
+//! the TUI's pushes through [`super::push_checked`]); it builds once with
+//! [`super::build_document`], the one document-to-model build. [`finite_result`] is what every build checks: a
 //! build whose mesh or report holds a non-finite number is an error
 //! naming the part or the report field, never a report printed with
 //! `NaN` and exit 0.
 
-use crate::character::doc::{CharacterDoc, PartSpec, SectionShape};
+use super::Built;
+use crate::character::doc::CharacterDoc;
+use crate::character::spec::{PartSpec, SectionShape};
+use crate::character::Resolution;
 use crate::mesh::Mesh;
-use crate::sketch::{Built, Resolution, SketchError, SketchReport};
+use crate::sketch::report::SketchReport;
+use crate::sketch::SketchError;
 use std::path::Path;
 
 /// How far an edit may move the model: the edited model's bounding box
@@ -150,10 +153,9 @@ pub fn validate_by_build(
     base: &Path,
     what: &str,
 ) -> Result<Built, SketchError> {
-    let built =
-        crate::sketch::build_document(doc, base, Resolution::default(), false).map_err(|e| {
-            SketchError::Document(format!("{what}: the document it gives does not build: {e}"))
-        })?;
+    let built = super::build_document(doc, base, Resolution::default(), false).map_err(|e| {
+        SketchError::Document(format!("{what}: the document it gives does not build: {e}"))
+    })?;
     if !doc.parts.is_empty() {
         let b = Extent::of_parts(&doc.parts);
         let props: Vec<&str> = doc.props.iter().map(|p| p.name.as_str()).collect();

@@ -1,14 +1,18 @@
 //! The `edit` family's checks (paper 000 sec 5, paper 001): on the bundled
 //! female (final level, low resolution).
 
-use super::{apply_to_parts, Edit, SectionTransform, Session};
-use crate::character::doc::{CharacterDoc, End, Level, PartSpec};
+use super::apply_to_parts;
+pub use super::samples::{sample_force, sample_force_region};
+use crate::character::doc::{CharacterDoc, Level};
+use crate::character::log::{Edit, SectionTransform};
+use crate::character::part::{build_part, PartSurface};
+use crate::character::spec::{End, PartSpec};
+use crate::character::Resolution;
 use crate::check::{tol, Check, Kind};
 use crate::mesh::{dist, dot, norm, scale, sub, Mesh};
-use crate::pde4::{Force, ForceKind};
+use crate::pipeline::build_document;
+use crate::pipeline::Session;
 use crate::sketch::check::bundled;
-use crate::sketch::part::{build_part, PartSurface};
-use crate::sketch::{build_document, Resolution};
 use crate::surface::Surface;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -28,48 +32,6 @@ pub fn female() -> Option<CharacterDoc> {
     build_document(&doc, Path::new("."), CHECK_RES, true)
         .ok()
         .map(|b| b.doc)
-}
-
-/// A force edit in the middle of a part: an area force over the middle half
-/// of its u range, pushing along `p`.
-pub fn sample_force(p: &PartSpec, push: [f64; 3]) -> Edit {
-    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
-    Edit::Force {
-        part: p.name.clone(),
-        u: [u0 + 0.25 * (u1 - u0), u0 + 0.75 * (u1 - u0)],
-        force: Force {
-            kind: ForceKind::Area {
-                u0: 0.2,
-                u1: 0.8,
-                v0: 0.1,
-                v1: 0.4,
-            },
-            p: push,
-        },
-        a: 1.0,
-    }
-}
-
-/// A 4-sided force edit on a part: an area force in the middle of the
-/// patch inside the rectangle `u` in the middle half of the part's range by
-/// `theta` in `[theta_a, theta_a + 1.2]`, pushing along `p`.
-pub fn sample_force_region(p: &PartSpec, theta_a: f64, push: [f64; 3]) -> Edit {
-    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
-    Edit::ForceRegion {
-        part: p.name.clone(),
-        u: [u0 + 0.25 * (u1 - u0), u0 + 0.75 * (u1 - u0)],
-        theta: [theta_a, theta_a + 1.2],
-        force: Force {
-            kind: ForceKind::Area {
-                u0: 0.2,
-                u1: 0.8,
-                v0: 0.25,
-                v1: 0.75,
-            },
-            p: push,
-        },
-        a: 1.0,
-    }
 }
 
 /// Samples per edge of the 4-sided force checks.
@@ -99,10 +61,10 @@ fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
     }
     // outside: the field on the part's parameter grid (u over twice the
     // range, every angle) where the point is off the open rectangle
-    let d = crate::sketch::build::Displacement {
+    let d = crate::character::assembly::Displacement {
         part: e.part()?.to_string(),
         u,
-        field: field.clone(),
+        field: std::sync::Arc::new(field.clone()),
     };
     let (l, w) = (u[1] - u[0], theta[1] - theta[0]);
     let mut outside = 0.0f64;
@@ -263,7 +225,7 @@ pub fn checks() -> Vec<Check> {
 
     // force: the displacement and its u-derivative vanish at the range ends
     let force = sample_force(torso, [0.0, 0.0, 5.0]);
-    let field = super::mesh::force_field(&force);
+    let field = super::force4::force_field(&force);
     let m = field
         .as_ref()
         .map(|f| {

@@ -3,13 +3,15 @@
 //! zero outside, the map one-to-one, and a rectangle stroke reproducing the
 //! rectangle force ([`Edit::ForceRegion`]).
 
-use super::stroke::StrokeMap;
-use super::{field_of, Edit, ForceField};
-use crate::character::doc::{CharacterDoc, PartSpec};
+use super::{field_of, ForceField};
+use crate::character::assembly::Displacement;
+use crate::character::doc::CharacterDoc;
+use crate::character::log::stroke::StrokeMap;
+use crate::character::log::Edit;
+use crate::character::spec::PartSpec;
 use crate::check::{tol, Check, Kind};
 use crate::mesh::norm;
 use crate::pde4::{Force, ForceKind};
-use crate::sketch::build::Displacement;
 use std::f64::consts::PI;
 
 /// Points of the sample stroke.
@@ -119,7 +121,7 @@ pub fn stroke_measures(e: &Edit) -> Option<StrokeMeasures> {
     let d = Displacement {
         part: e.part()?.to_string(),
         u,
-        field: field.clone(),
+        field: std::sync::Arc::new(field.clone()),
     };
     // part parameters of box point x
     let at = |x: [f64; 2]| {
@@ -226,7 +228,7 @@ pub fn rectangle_difference(region: &Edit) -> f64 {
             .map(|(u, field)| Displacement {
                 part: part.clone(),
                 u,
-                field,
+                field: std::sync::Arc::new(field),
             })
     };
     let (Some(r), Some(s)) = (disp(region), disp(&stroke_edit)) else {
@@ -272,7 +274,7 @@ pub fn checks(doc: &CharacterDoc, mesh_local: impl Fn(&Edit) -> f64) -> Vec<Chec
         c("sec 5.1", "force_stroke_one_to_one", Kind::Threshold, get(&|m| (m.folded + m.negative_jacobians) as f64), 0.0).note(
             "stroke force: grid cells (128 x 128 over the stroke's box) inside the stroke whose image folds, plus inside grid points with a non-positive Jacobian (central differences)",
         ),
-        c("sec 5.1", "force_stroke_rectangle", Kind::Reference, rectangle_difference(&super::check::sample_force_region(torso, 0.2, [0.0, 0.0, 5.0])), tol::ROUNDING).note(
+        c("sec 5.1", "force_stroke_rectangle", Kind::Reference, rectangle_difference(&super::samples::sample_force_region(torso, 0.2, [0.0, 0.0, 5.0])), tol::ROUNDING).note(
             "the sample rectangle force given as a closed stroke (16 points a side, its corners): largest displacement difference from the rectangle force over the part's parameters / peak (linear precision of the mean value map)",
         ),
     ];
