@@ -231,7 +231,7 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
         ),
         (
             r#"{"op": "plate", "part": "torso", "centre": [0.0, 1.1, 0.1], "radius": 0.05, "d": [0.0, 0.0, 1e308]}"#,
-            "non-finite positions",
+            "d[2] = 1e308 is out of range",
         ),
         (
             r#"{"op": "shape_parameter", "part": "torso", "a": 0.3, "b": 1}"#,

@@ -20,6 +20,12 @@ fn svg(body: &str) -> String {
     )
 }
 
+/// Flattening tolerance of the drawings that read (model units).
+const FLATTEN: f64 = 1e-3;
+/// The blob's two cubics have 7 distinct control points: a flattened
+/// outline has more points than that.
+const BLOB_CONTROL_POINTS: usize = 8;
+
 const BLOB: &str = r#"<path id="o" d="M 0 0 C 0.3 -0.5 0.7 -0.5 1 0 C 0.7 0.5 0.3 0.5 0 0 Z"/>"#;
 
 fn cubic(size: &str) -> String {
@@ -46,7 +52,7 @@ fn tolerance_1e_300_is_refused_by_the_point_budget_not_a_capacity_overflow() {
         "{e}"
     );
     // the same drawing at an ordinary tolerance reads
-    assert!(parse(svg(BLOB), 1e-3).expect("reads") > 8);
+    assert!(parse(svg(BLOB), FLATTEN).expect("reads") > BLOB_CONTROL_POINTS);
 }
 
 #[test]
@@ -105,8 +111,8 @@ fn image_references_are_never_opened_fifo_device_or_file() {
             r#"<image xlink:href="{href}" width="1" height="1"/>{BLOB}"#
         ));
         // opening the FIFO would block forever, reading /dev/zero would not end
-        let n = parse(text, 1e-3).expect("the outline reads; the image is ignored");
-        assert!(n > 8, "{href}");
+        let n = parse(text, FLATTEN).expect("the outline reads; the image is ignored");
+        assert!(n > BLOB_CONTROL_POINTS, "{href}");
     }
     let _ = std::fs::remove_dir_all(&d);
 }
@@ -132,7 +138,7 @@ fn non_finite_and_overflowing_numbers_are_named_with_their_element() {
         ),
     ];
     for (body, needle) in cases {
-        let e = parse(svg(&body.replace("{BLOB}", BLOB)), 1e-3).expect_err(body);
+        let e = parse(svg(&body.replace("{BLOB}", BLOB)), FLATTEN).expect_err(body);
         assert!(e.contains(needle), "{body}: {e}");
     }
 }
@@ -142,7 +148,7 @@ fn a_closed_path_named_cut_is_refused_not_used_as_a_cut() {
     let text = svg(&format!(
         r#"{BLOB}<path id="cut_x" d="M 0.2 -1 L 0.8 -1 L 0.5 1 Z"/>"#
     ));
-    match parse_svg(&text, View::Front, 1e-3) {
+    match parse_svg(&text, View::Front, FLATTEN) {
         Err(ProfileError::ClosedCut { id }) => assert_eq!(id, "cut_x"),
         other => panic!("{other:?}"),
     }
