@@ -135,7 +135,8 @@ impl PropSpec {
             path: path.clone(),
             message: m,
         };
-        let text = std::fs::read_to_string(&path).map_err(|e| file(e.to_string()))?;
+        let text = crate::mesh::io::read_input_text(&path, "conv model")
+            .map_err(|e| file(e.to_string()))?;
         let model =
             Model::from_json(&text).map_err(|e| file(format!("not a conv model file: {e}")))?;
         Ok((text, model))

@@ -115,6 +115,7 @@ pub fn build_document_with(
         props,
         height,
     );
+    super::effect::finite_result(&model.mesh, &report)?;
     Ok(Built {
         doc: out,
         model,

@@ -16,9 +16,10 @@
 //! (`sketch`, `edit`, `sasm`), which never name each other.
 
 mod build;
+pub mod effect;
 mod push;
 mod session;
 
 pub use build::{apply_mesh_edits, build_document, build_document_with, Built};
 pub use push::project_force_stroke;
-pub use session::{push_checked, Session};
+pub use session::{push_checked, redo_checked, Session};

@@ -99,9 +99,26 @@ pub fn push_checked(
     base: &std::path::Path,
 ) -> Result<Built, SketchError> {
     let mut next = doc.clone();
+    let summary = e.summary();
     next.push_edit(e)
         .map_err(|err| SketchError::Document(err.to_string()))?;
-    let built = super::build_document(&next, base, Resolution::default(), false)?;
+    let what = format!("edit {} ({summary})", next.cursor - 1);
+    let built = super::effect::validate_by_build(&next, base, &what)?;
+    *doc = next;
+    Ok(built)
+}
+
+/// Redoes the next undone edit and keeps it only when the document then
+/// builds as [`push_checked`] requires (validated by its effect: a log
+/// written by hand or by an older version is not trusted). On error `doc`
+/// is unchanged.
+pub fn redo_checked(doc: &mut CharacterDoc, base: &std::path::Path) -> Result<Built, SketchError> {
+    let mut next = doc.clone();
+    next.redo()
+        .map_err(|err| SketchError::Document(err.to_string()))?;
+    let i = next.cursor - 1;
+    let what = format!("redo of edit {i} ({})", next.edits[i].summary());
+    let built = super::effect::validate_by_build(&next, base, &what)?;
     *doc = next;
     Ok(built)
 }

@@ -274,18 +274,26 @@ impl App {
     }
 
     /// After every change of the document: refresh, autosave, rebuild.
+    /// Nothing is created before the first save: the autosave is written
+    /// only where the document's directory exists.
     pub(super) fn changed(&mut self) -> Vec<Effect> {
         self.refresh_edited();
         self.stale = true;
+        let dir = self.path.parent().filter(|d| !d.as_os_str().is_empty());
+        if dir.is_some_and(|d| !d.is_dir()) {
+            return vec![Effect::Rebuild];
+        }
         if let Err(e) = autosave::write(&self.doc, &self.path) {
             self.say(format!("autosave failed: {e}"), true);
         }
         vec![Effect::Rebuild]
     }
 
-    /// Saves the document and removes the sidecar.
+    /// Saves the document and removes the sidecar; refused when another
+    /// program changed the file since this session read or saved it
+    /// ([`autosave::save_checked`]).
     pub fn save(&mut self) -> bool {
-        match self.doc.save(&self.path) {
+        match autosave::save_checked(&self.doc, &self.path, self.saved.as_ref()) {
             Ok(()) => {
                 self.saved = Some(self.doc.clone());
                 let _ = autosave::remove(&self.path);

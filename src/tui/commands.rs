@@ -222,7 +222,7 @@ fn ellipse(c: [f64; 2], a: f64, b: f64) -> Vec<[f64; 2]> {
 
 /// Points of a closed-curve file for `part` near `y`.
 fn curve_file(path: &Path, part: &str, y: f64) -> Result<Vec<[f64; 2]>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = crate::mesh::io::read_input_text(path, "drawing").map_err(|e| e.to_string())?;
     let v: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     let points = |v: &serde_json::Value| -> Result<Vec<[f64; 2]>, String> {

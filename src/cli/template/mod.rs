@@ -102,6 +102,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
 fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let t0 = std::time::Instant::now();
     io::Format::from_path(&a.output)?;
+    let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
+    if a.template != "makehuman" {
+        inputs.push(("--template", Path::new(&a.template)));
+    }
+    if let Some(p) = &a.side {
+        inputs.push(("--side", p));
+    }
+    if let Some(p) = &a.sections {
+        inputs.push(("--sections", p));
+    }
+    super::outputs::check(&inputs, &[("-o", &a.output)])?;
     let template: Template = if a.template == "makehuman" {
         makehuman_template(&[])?
     } else {
@@ -116,7 +127,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         sketch.side = Some(profile(s, View::Side).context("side profile")?);
     }
     if let Some(s) = &a.sections {
-        let text = std::fs::read_to_string(s).with_context(|| s.display().to_string())?;
+        let text = io::read_input_text(s, "sections file")?;
         #[derive(serde::Deserialize)]
         #[serde(deny_unknown_fields)]
         struct File {
