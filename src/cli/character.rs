@@ -5,7 +5,7 @@ use pdesculpt::character::log::Edit;
 use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
 use pdesculpt::pipeline::build_document;
-use pdesculpt::pipeline::push_checked;
+use pdesculpt::pipeline::{push_checked, BuildOptions};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
@@ -33,8 +33,9 @@ pub enum Sub {
         #[arg(long)]
         save_doc: Option<PathBuf>,
     },
-    /// Append one edit (validated first) to the document's log, dropping
-    /// the redo tail; saves the document atomically.
+    /// Append one edit to the document's log, dropping the redo tail: the
+    /// document with the edit is built once and kept only when that build
+    /// succeeds with finite geometry; saves that build's document atomically.
     Edit {
         /// The character document (must have stored parts).
         doc: PathBuf,
@@ -114,8 +115,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
-            push_checked(&mut d, e, &base)?;
-            d.save(&doc)?;
+            // the document with the edit built once; its document is saved
+            let built = push_checked(&mut d, e, &BuildOptions::new(&base), None)?;
+            built.doc.save(&doc)?;
             eprintln!("edit {}: {summary}", d.cursor - 1);
             if json {
                 print_log(&d, true)?;
