@@ -55,3 +55,6 @@ pub mod template;
 pub mod tui;
 pub mod vec3;
 pub mod verify;
+
+#[cfg(test)]
+mod mutants_oracle;

@@ -8,6 +8,7 @@ use crate::character::log::{Edit, SectionTransform};
 use crate::character::part::{build_part, PartSurface};
 use crate::character::spec::{End, PartSpec};
 use crate::character::Resolution;
+use crate::check::Worst;
 use crate::check::{tol, Check, Kind};
 use crate::mesh::{dist, dot, norm, scale, sub, Mesh};
 use crate::pipeline::build_document;
@@ -50,13 +51,13 @@ fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
     for i in 0..=EDGE {
         let t = i as f64 / EDGE as f64;
         for (s, v) in [(0.0, t), (1.0, t), (t, 0.0), (t, 1.0)] {
-            c0 = c0.max(norm(patch.point(s, v)));
+            c0 = c0.worst(norm(patch.point(s, v)));
             c1 = c1
-                .max(norm(patch.derivative(s, v, 1, 0)))
-                .max(norm(patch.derivative(s, v, 0, 1)));
+                .worst(norm(patch.derivative(s, v, 1, 0)))
+                .worst(norm(patch.derivative(s, v, 0, 1)));
         }
         for j in 1..EDGE {
-            peak = peak.max(norm(patch.point(t, j as f64 / EDGE as f64)));
+            peak = peak.worst(norm(patch.point(t, j as f64 / EDGE as f64)));
         }
     }
     // outside: the field on the part's parameter grid (u over twice the
@@ -75,7 +76,7 @@ fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
             let inside =
                 uu > u[0] && uu < u[1] && super::force4::angle_coordinate(*theta, th).is_some();
             if !inside {
-                outside = outside.max(norm(d.at(uu, th)));
+                outside = outside.worst(norm(d.at(uu, th)));
             }
         }
     }
@@ -108,7 +109,7 @@ fn grid_error(
         for j in 0..GRID {
             let t = 2.0 * PI * j as f64 / GRID as f64;
             let want = map(b.chain.point(u, t), c0);
-            worst = worst.max(dist(a.chain.point(u, t), want) / h);
+            worst = worst.worst(dist(a.chain.point(u, t), want) / h);
         }
     }
     worst
@@ -233,11 +234,11 @@ pub fn checks() -> Vec<Check> {
             for j in 0..GRID {
                 let v = j as f64 / GRID as f64;
                 for s in [0.0, 1.0] {
-                    end0 = end0.max(norm(f.point(s, v)));
-                    end1 = end1.max(norm(f.derivative(s, v, 1, 0)));
+                    end0 = end0.worst(norm(f.point(s, v)));
+                    end1 = end1.worst(norm(f.derivative(s, v, 1, 0)));
                 }
                 for i in 1..GRID {
-                    peak = peak.max(norm(f.point(i as f64 / GRID as f64, v)));
+                    peak = peak.worst(norm(f.point(i as f64 / GRID as f64, v)));
                 }
             }
             if peak > 0.0 {
@@ -341,7 +342,7 @@ pub fn checks() -> Vec<Check> {
             let mut ring = 0.0f64;
             for j in 0..GRID {
                 let th = 2.0 * PI * j as f64 / GRID as f64;
-                ring = ring.max(dist(a.chain.point(b.u1, th), b.chain.point(b.u1, th)) / h);
+                ring = ring.worst(dist(a.chain.point(b.u1, th), b.chain.point(b.u1, th)) / h);
             }
             (dist(dt, t) / norm(t), ring)
         })
@@ -367,7 +368,7 @@ pub fn checks() -> Vec<Check> {
     let fast = session.model().ok();
     let m = match (&incremental, &scratch, &fast) {
         (Some(a), Some(b), Some(f)) if ok => {
-            differing(&a.model.mesh, &b.model.mesh).max(differing(&f.mesh, &b.model.mesh))
+            differing(&a.model.mesh, &b.model.mesh).worst(differing(&f.mesh, &b.model.mesh))
         }
         _ => f64::NAN,
     };

@@ -3,6 +3,7 @@
 //! [`super::demo`]).
 
 pub use super::measure::{measure, SasmReport, C1_ANGLE, PROFILE};
+use crate::check::Worst;
 use crate::check::{Check, Kind};
 
 /// The family's checks: the bundled female's breast and nose.
@@ -31,7 +32,7 @@ pub fn checks() -> Vec<Check> {
         let inside = if r.max_rho_moved < 1.0 {
             r.max_move_outside
         } else {
-            r.max_move_outside.max(1.0)
+            r.max_move_outside.worst(1.0)
         };
         out.push(c(&format!("{name}.inside_region"), Kind::Threshold, inside, 0.0).note(
             "largest move of an original vertex outside the curve's region (rho >= 1; 1 if a moved vertex lies outside): the feature lies inside the curve in its view",
@@ -44,7 +45,7 @@ pub fn checks() -> Vec<Check> {
                 "largest distance between the feature's outline in the profile's view (greatest depth over the region's chord) and the profile stroke, outside the blend band, / peak height",
             ));
         }
-        out.push(c(&format!("{name}.watertight"), Kind::Threshold, if r.watertight { r.bad_topology as f64 } else { (r.bad_topology as f64).max(1.0) }, 0.0).note(
+        out.push(c(&format!("{name}.watertight"), Kind::Threshold, if r.watertight { r.bad_topology as f64 } else { (r.bad_topology as f64).worst(1.0) }, 0.0).note(
             "edited model: boundary + non-manifold + misoriented edges, non-manifold vertices, degenerate triangles (mesh::topology)",
         ));
     }

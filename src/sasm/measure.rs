@@ -23,6 +23,7 @@ use super::feature::{Feature, BLEND};
 use super::project::{Hit, Projector};
 use super::{depth_axis, SasmError};
 use crate::character::part::PartSurface;
+use crate::check::Worst;
 use crate::mesh::topology::report as topology;
 use crate::mesh::{dist, Mesh};
 use crate::surface::{cross, Surface};
@@ -119,7 +120,7 @@ pub fn measure(
     for i in 0..JOIN_SAMPLES {
         let phi = 2.0 * PI * i as f64 / JOIN_SAMPLES as f64;
         let h = cast(f.region.at(1.0, phi))?;
-        c0 = c0.max(dist(edited(part, f, h.u, h.theta), h.point) / f.peak);
+        c0 = c0.worst(dist(edited(part, f, h.u, h.theta), h.point) / f.peak);
         let a: Vec<f64> = [1.0, 0.5, 0.25]
             .iter()
             .map(|k| {
@@ -129,18 +130,18 @@ pub fn measure(
             .collect::<Result<_, SasmError>>()?;
         let r1 = 2.0 * a[1] - a[0];
         let r2 = 2.0 * a[2] - a[1];
-        near = near.max(a[0]);
-        ext = ext.max(((4.0 * r2 - r1) / 3.0).abs());
+        near = near.worst(a[0]);
+        ext = ext.worst(((4.0 * r2 - r1) / 3.0).abs());
     }
     let (mut max_rho, mut outside) = (0.0f64, 0.0f64);
     for (v, (p, q)) in before.positions.iter().zip(&after.positions).enumerate() {
         let _ = v;
         let rho = f.region.polar(f.view.project(*p)).0;
         if p != q {
-            max_rho = max_rho.max(rho);
+            max_rho = max_rho.worst(rho);
         }
         if rho.is_nan() || rho >= 1.0 {
-            outside = outside.max(dist(*p, *q));
+            outside = outside.worst(dist(*p, *q));
         }
     }
     let d = depth_axis(f.view);
@@ -164,11 +165,11 @@ pub fn measure(
                     continue;
                 }
                 if let Some(h) = pr.cast(q) {
-                    best = best.max(h.point[d] + f.height(q));
+                    best = best.worst(h.point[d] + f.height(q));
                 }
             }
             if best.is_finite() {
-                err = err.max((best - zp).abs() / f.peak);
+                err = err.worst((best - zp).abs() / f.peak);
             }
         }
         prof.push(err);

@@ -4,6 +4,7 @@ pub use super::report::{profile_errors, removed_errors, without_groups};
 use crate::character::doc::{CharacterDoc, Inputs, KeySection, Level, ProfileInput};
 use crate::character::Resolution;
 use crate::check::{tol, Check, Kind};
+use crate::check::{worst, Worst};
 use crate::mesh::Mesh;
 use crate::pipeline::build_document;
 use crate::profile::{parse_svg, View};
@@ -82,9 +83,9 @@ fn alignment_check() -> Check {
     let err = match al {
         Ok(al) => (al.angle - a)
             .abs()
-            .max((area - 2.0).abs())
-            .max((cen[0] - p0[0]).abs())
-            .max((cen[1] - p0[1]).abs()),
+            .worst((area - 2.0).abs())
+            .worst((cen[0] - p0[0]).abs())
+            .worst((cen[1] - p0[1]).abs()),
         Err(_) => f64::NAN,
     };
     Check::new(
@@ -110,7 +111,7 @@ fn quintic_check() -> Check {
             let h = quintic(s, d);
             for (i, v) in h.iter().enumerate() {
                 let want = if i == 3 * k + d { 1.0 } else { 0.0 };
-                err = err.max((v - want).abs());
+                err = err.worst((v - want).abs());
             }
         }
     }
@@ -125,7 +126,7 @@ fn quintic_check() -> Check {
             );
             for i in 0..6 {
                 let fd = (b[i] - a[i]) / (2.0 * step);
-                err = err.max((fd - c[i]).abs() * tol::ROUNDING / tol::CENTRAL_DIFFERENCE);
+                err = err.worst((fd - c[i]).abs() * tol::ROUNDING / tol::CENTRAL_DIFFERENCE);
             }
         }
     }
@@ -150,7 +151,7 @@ fn c2_option_check(b: &crate::pipeline::Built) -> Check {
         t.continuity = crate::character::doc::Continuity::C2;
     }
     let c2 = build_document(&d, std::path::Path::new("."), Resolution::default(), false)
-        .map(|b| b.model.joins.iter().map(|j| j.c2).fold(0.0, f64::max))
+        .map(|b| b.model.joins.iter().map(|j| j.c2).fold(0.0, worst))
         .unwrap_or(f64::NAN);
     Check::new(
         "sketch",
@@ -197,10 +198,10 @@ fn crease_check() -> Check {
         .map(|c| {
             (c.interior_deg - want)
                 .abs()
-                .max((c.border_deg - want).abs())
-                .max((c.creased_length - 4.0 * 2f64.sqrt()).abs())
+                .worst((c.border_deg - want).abs())
+                .worst((c.creased_length - 4.0 * 2f64.sqrt()).abs())
         })
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     Check::new(
         "sketch",
         "000",
@@ -250,7 +251,7 @@ pub fn checks() -> Vec<Check> {
         let closed = if t.watertight && t.manifold && t.oriented {
             bad
         } else {
-            bad.max(1.0)
+            bad.worst(1.0)
         };
         out.push(c("watertight_manifold_oriented", Kind::Threshold, closed, 0.0).note(
             "final model of the bundled example: boundary + non-manifold + misoriented edges, non-manifold vertices and degenerate triangles (mesh::topology)",
@@ -266,11 +267,11 @@ pub fn checks() -> Vec<Check> {
             .seams
             .iter()
             .map(|s| s.max_angle_deg)
-            .fold(0.0, f64::max);
+            .fold(0.0, worst);
         out.push(c("seam_normal_jump_deg", Kind::Continuity, seam, SEAM_ANGLE_DEG).note(
             "largest angle (degrees) between the normals of the two sibling transitions along a seam (39 points per seam): G1 across the seams",
         ));
-        let c0 = b.model.joins.iter().map(|j| j.c0).fold(0.0, f64::max);
+        let c0 = b.model.joins.iter().map(|j| j.c0).fold(0.0, worst);
         out.push(c("transition_c0", Kind::Continuity, c0, tol::SOLVE).note(
             "largest gap between a transition and its parts along the joins, relative to the height",
         ));
