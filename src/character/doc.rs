@@ -393,6 +393,15 @@ impl CharacterDoc {
         &self.edits[..self.cursor.min(self.edits.len())]
     }
 
+    /// Drops the redo tail, appends `e` and moves the cursor to the end,
+    /// judging nothing: `push_edit` and `pipeline::push_checked` (which
+    /// builds the document with the edit) judge it first.
+    pub fn append_edit(&mut self, e: crate::character::log::Edit) {
+        self.edits.truncate(self.cursor);
+        self.edits.push(e);
+        self.cursor = self.edits.len();
+    }
+
     /// Moves the cursor back by one edit.
     pub fn undo(&mut self) -> Result<(), crate::character::log::EditError> {
         if self.cursor == 0 {

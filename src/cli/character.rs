@@ -6,7 +6,7 @@ use pdesculpt::character::log::Edit;
 use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
 use pdesculpt::pipeline::build_document;
-use pdesculpt::pipeline::{push_checked, redo_checked};
+use pdesculpt::pipeline::{push_checked, redo_checked, BuildOptions};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
@@ -37,8 +37,9 @@ pub enum Sub {
         #[arg(long)]
         save_doc: Option<PathBuf>,
     },
-    /// Append one edit (validated first) to the document's log, dropping
-    /// the redo tail; saves the document atomically.
+    /// Append one edit to the document's log, dropping the redo tail: the
+    /// document with the edit is built once and kept only when that build
+    /// succeeds with finite geometry; saves that build's document atomically.
     Edit {
         /// The character document (must have stored parts).
         doc: PathBuf,
@@ -173,7 +174,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
-            push_checked(&mut d, e, &base)?;
+            // the document with the edit built once; that document is saved
+            push_checked(&mut d, e, &BuildOptions::new(&base), None)?;
             outputs::save_locked(&d, &doc, &lock)?;
             eprintln!("edit {}: {summary}", d.cursor - 1);
             if json {
@@ -198,7 +200,7 @@ fn step(doc: &Path, json: bool, undo: bool) -> anyhow::Result<i32> {
     } else {
         // the edit re-applied is validated by its effect, as when pushed
         let base = doc.parent().map(PathBuf::from).unwrap_or_default();
-        redo_checked(&mut d, &base)?;
+        redo_checked(&mut d, &BuildOptions::new(&base), None)?;
     }
     outputs::save_locked(&d, doc, &lock)?;
     eprintln!(

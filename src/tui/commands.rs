@@ -374,14 +374,14 @@ impl App {
                 return Vec::new();
             }
         };
-        if let Err(e) = self.doc.push_edit(edit) {
-            self.say(format!("not applied: {e}"), true);
-            return Vec::new();
-        }
+        // the worker built the document with the edit: it enters the log
+        // as judged there (no second replay here)
+        self.doc.append_edit(edit);
         self.history.record_edit();
         self.log_sel = self.doc.cursor;
+        self.edited = r.edited.clone();
         // autosave; the build with the edit is at hand (no second rebuild)
-        let _ = self.changed();
+        let _ = self.changed_without_replay();
         self.say(format!("applied: {summary}"), false);
         self.built(*r, elapsed)
     }

@@ -6,7 +6,7 @@ use crate::edit::low;
 use pdesculpt::character::doc::{CharacterDoc, Level};
 use pdesculpt::character::log::Edit;
 use pdesculpt::pipeline::build_document;
-use pdesculpt::pipeline::{push_checked, redo_checked};
+use pdesculpt::pipeline::{push_checked, redo_checked, BuildOptions};
 use pdesculpt::sketch::check::bundled;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -202,7 +202,10 @@ fn edits_out_of_range_are_refused_by_their_parameter() {
     for (e, needle) in cases {
         let mut d = stored();
         let before = d.clone();
-        let err = error_of(push_checked(&mut d, edit(e), Path::new(".")), needle);
+        let err = error_of(
+            push_checked(&mut d, edit(e), &BuildOptions::new(Path::new(".")), None),
+            needle,
+        );
         assert!(err.to_string().contains(needle), "{err}");
         assert_eq!(d, before, "a refused edit leaves the document as it was");
     }
@@ -217,7 +220,12 @@ fn edits_are_validated_by_their_effect() {
     for e in cases {
         let mut d = stored();
         let err = error_of(
-            push_checked(&mut d, edit(e.clone()), Path::new(".")),
+            push_checked(
+                &mut d,
+                edit(e.clone()),
+                &BuildOptions::new(Path::new(".")),
+                None,
+            ),
             "refused",
         );
         let s = err.to_string();
@@ -232,7 +240,8 @@ fn edits_are_validated_by_their_effect() {
     // an ordinary edit passes and its build is returned
     let mut d = stored();
     let ok = json!({"op": "shape_parameter", "part": "torso", "a": 0.3});
-    push_checked(&mut d, edit(ok), Path::new(".")).expect("an ordinary edit");
+    push_checked(&mut d, edit(ok), &BuildOptions::new(Path::new(".")), None)
+        .expect("an ordinary edit");
     assert_eq!(d.cursor, 1);
 }
 
@@ -246,7 +255,10 @@ fn redo_validates_the_edit_it_re_applies() {
     )];
     d.cursor = 0;
     let before = d.clone();
-    let err = error_of(redo_checked(&mut d, Path::new(".")), "refused");
+    let err = error_of(
+        redo_checked(&mut d, &BuildOptions::new(Path::new(".")), None),
+        "refused",
+    );
     assert!(err.to_string().contains("redo of edit 0"), "{err}");
     assert_eq!(d, before);
 }
