@@ -12,6 +12,7 @@
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
+//! | [`equations`] | all | the equation index: equation, implementing function, checks, ERRATA |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
 //! | [`render`] | - | CPU rasteriser for PNG previews |
@@ -24,12 +25,16 @@
 //! | [`conv`] | 003 | convolution surfaces from silhouettes |
 //! | [`character`] | 000 | character documents and assembly |
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
+//! | `harness` | - | (feature `harness`) proptest strategies and surface properties for any solver |
 
 pub mod body;
 pub mod character;
 pub mod check;
 pub mod conv;
 pub mod curve;
+pub mod equations;
+#[cfg(feature = "harness")]
+pub mod harness;
 pub mod jet;
 pub mod limits;
 pub mod makehuman;

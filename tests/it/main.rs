@@ -1,8 +1,10 @@
 //! Integration tests: one binary (fast links), one module per area.
 
 mod cli;
+mod equations;
 mod fuzz;
 mod fuzz_harness;
+mod harness;
 mod infra;
 mod layers;
 mod registry;
