@@ -10,6 +10,7 @@ mod layers;
 mod registry;
 mod strategies;
 mod tolerances;
+mod tutorial;
 mod units;
 
 mod body;
