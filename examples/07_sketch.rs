@@ -13,7 +13,8 @@
 
 use pdesculpt::character::doc::{BodyPlan, CharacterDoc, Inputs, KeySection, Level, ProfileInput};
 use pdesculpt::render::{self, RenderOptions, View};
-use pdesculpt::sketch::{build_document, Resolution};
+use pdesculpt::character::Resolution;
+use pdesculpt::pipeline::build_document;
 use std::path::Path;
 
 #[derive(serde::Deserialize)]

@@ -12,10 +12,12 @@
 //! Run: `cargo run --release --example 08_local`
 
 use pdesculpt::character::doc::Level;
-use pdesculpt::character::edit::{force_field, Edit};
+use pdesculpt::character::log::Edit;
+use pdesculpt::edit::force_field;
 use pdesculpt::render::{self, Image, RenderOptions, View};
 use pdesculpt::sketch::check::bundled;
-use pdesculpt::sketch::{build_document, Resolution};
+use pdesculpt::character::Resolution;
+use pdesculpt::pipeline::build_document;
 use pdesculpt::surface::Surface;
 use std::path::Path;
 

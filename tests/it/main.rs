@@ -7,6 +7,7 @@ mod fuzz_harness;
 mod harness;
 mod infra;
 mod layers;
+mod nan;
 mod registry;
 mod strategies;
 mod tolerances;

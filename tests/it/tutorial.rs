@@ -372,7 +372,7 @@ fn ch07_ex1_a_figure_of_your_own_builds_watertight() {
         body_plan: BodyPlan::Humanoid,
     };
     let doc = CharacterDoc::from_inputs(inputs, Level::Initial);
-    let built = pdesculpt::sketch::build_document(&doc, Path::new("."), Default::default(), true)
+    let built = pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), true)
         .expect("build");
     let r = &built.report;
     assert_eq!(
@@ -392,7 +392,7 @@ fn ch07_ex1_a_figure_of_your_own_builds_watertight() {
 fn ch07_ex2_the_side_view_lowers_the_side_error() {
     let doc = |level| pdesculpt::sketch::check::bundled("female", level).expect("bundled");
     let side = |level| {
-        let b = pdesculpt::sketch::build_document(
+        let b = pdesculpt::pipeline::build_document(
             &doc(level),
             Path::new("."),
             Default::default(),
@@ -417,7 +417,7 @@ fn ch07_ex2_the_side_view_lowers_the_side_error() {
 
 fn female_doc() -> CharacterDoc {
     let doc = pdesculpt::sketch::check::bundled("female", Level::Final).expect("bundled");
-    pdesculpt::sketch::build_document(&doc, Path::new("."), Default::default(), true)
+    pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), true)
         .expect("build")
         .doc
 }
@@ -425,13 +425,13 @@ fn female_doc() -> CharacterDoc {
 #[test]
 fn ch08_ex1_undo_restores_the_model_bit_for_bit() {
     let mut doc = female_doc();
-    let before = pdesculpt::sketch::build_document(&doc, Path::new("."), Default::default(), false)
+    let before = pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), false)
         .expect("build");
     let bend = r#"{"op": "gec_transform", "part": "arm_l", "transform": {"kind": "bend", "kappa": 2.0, "axis": [0, 0, 1]}}"#;
     doc.push_edit(serde_json::from_str(bend).expect("edit"))
         .expect("push");
     doc.undo().expect("undo");
-    let after = pdesculpt::sketch::build_document(&doc, Path::new("."), Default::default(), false)
+    let after = pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), false)
         .expect("build");
     assert!(after.model.mesh == before.model.mesh);
 }
