@@ -354,7 +354,7 @@ fn grid(rows: &[pdesculpt::render::Image]) -> pdesculpt::render::Image {
 
 /// A tile: the model's front and side renders (pink when it fails).
 fn contact(
-    built: &Result<pdesculpt::pipeline::Built, pdesculpt::sketch::SketchError>,
+    built: &Result<pdesculpt::pipeline::Built, pdesculpt::pipeline::BuildError>,
 ) -> pdesculpt::render::Image {
     use pdesculpt::render::View;
     let o = pdesculpt::render::RenderOptions {

@@ -96,8 +96,8 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 "reference" => Sampler::Reference,
                 other => bail!("--sampler: expected fast or reference, got {other:?}"),
             };
-            let text = std::fs::read_to_string(&model)
-                .with_context(|| format!("reading {}", model.display()))?;
+            super::outputs::check(&[("MODEL", &model)], &[("-o", &output)])?;
+            let text = pdesculpt::mesh::io::read_input_text(&model, "conv model")?;
             let m = Model::from_json(&text).with_context(|| format!("{}", model.display()))?;
             let t0 = std::time::Instant::now();
             let progress = pdesculpt::progress::Progress::spinner("conv build", json);

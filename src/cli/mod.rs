@@ -4,6 +4,7 @@
 
 mod convert;
 mod demo;
+mod outputs;
 mod render;
 mod units;
 

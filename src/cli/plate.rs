@@ -118,7 +118,7 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     io::Format::from_path(&a.output)?;
     io::refuse_overwriting_input(&[&a.mesh, &a.region], &a.output)?;
     let mesh = io::read(&a.mesh)?;
-    let text = std::fs::read_to_string(&a.region)
+    let text = io::read_input_text(&a.region, "region file")
         .with_context(|| format!("reading region file {}", a.region.display()))?;
     let region = parse_region(&text, &mesh)?;
     let opts = RegionOptions {

@@ -117,6 +117,7 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
     if !ext.eq_ignore_ascii_case("svg") {
         bail!("{}: the output must be an .svg file", a.output.display());
     }
+    super::outputs::check(&[("MESH", &a.mesh)], &[("-o", &a.output)])?;
     let mesh = io::read(&a.mesh)?;
     let opts = OutlineOptions {
         resolution: a.resolution,

@@ -116,6 +116,19 @@ fn abs(p: &Path) -> anyhow::Result<String> {
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let Sub::Build(a) = args.command;
     io::Format::from_path(&a.output)?;
+    let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
+    if let Some(p) = &a.side {
+        inputs.push(("--side", p));
+    }
+    if let Some(p) = &a.sections {
+        inputs.push(("--sections", p));
+    }
+    let mut outs: Vec<(&str, &Path)> = vec![("-o", &a.output)];
+    if let Some(p) = &a.save_doc {
+        super::outputs::doc_output("--save-doc", p)?;
+        outs.push(("--save-doc", p));
+    }
+    super::outputs::check(&inputs, &outs)?;
     let sections: Vec<KeySection> = match &a.sections {
         Some(p) => {
             #[derive(serde::Deserialize)]
@@ -123,8 +136,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             struct File {
                 sections: Vec<KeySection>,
             }
-            let text =
-                std::fs::read_to_string(p).map_err(|e| anyhow::anyhow!("{}: {e}", p.display()))?;
+            let text = io::read_input_text(p, "sections file")?;
             serde_json::from_str::<File>(&text)
                 .map_err(|e| anyhow::anyhow!("{}: not a sections file: {e}", p.display()))?
                 .sections
@@ -163,21 +175,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let progress = pdesculpt::progress::Progress::spinner("sketch build", json);
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
     progress.finish();
-    if let Some(p) = &a.save_doc {
-        built.doc.save(p)?;
-        eprintln!("wrote {}", p.display());
-    }
-    finish(&built, &a.output, a.layout, json)
+    let with_doc = a.save_doc.as_deref().map(|p| (&built.doc, p));
+    super::outputs::write_mesh_and_doc(&built.model.mesh, &a.output, a.layout.layout(), with_doc)?;
+    report(&built, &a.output, json)
 }
 
-/// Writes the mesh and prints the report (shared with `character build`).
-pub fn finish(
-    built: &Built,
-    output: &Path,
-    layout: super::units::LayoutArgs,
-    json: bool,
-) -> anyhow::Result<i32> {
-    layout.write(&built.model.mesh, output)?;
+/// Prints the report of a build written to `output` (shared with
+/// `character build`).
+pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
     let r = &built.report;
     for w in &r.warnings {
         eprintln!("warning: {w}");

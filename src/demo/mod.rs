@@ -34,7 +34,7 @@ pub enum DemoError {
     #[error("SketchCo prop")]
     Conv(#[from] crate::conv::ConvError),
     #[error("sketched female")]
-    Sketch(#[from] crate::sketch::SketchError),
+    Sketch(#[from] crate::pipeline::BuildError),
     #[error("{0}")]
     Step(String),
 }

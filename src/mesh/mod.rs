@@ -62,6 +62,21 @@ pub enum MeshError {
     },
     #[error("the mesh has no triangles")]
     Empty,
+    #[error("{path}: the {what} is {kind}, not a regular file")]
+    NotAFile {
+        path: String,
+        what: String,
+        kind: &'static str,
+    },
+    #[error(
+        "{path}: the {what} has {bytes} bytes, over the limit of {limit} bytes for one input file"
+    )]
+    InputTooLarge {
+        path: String,
+        what: String,
+        bytes: u64,
+        limit: u64,
+    },
     #[error("{0}")]
     Invalid(String),
 }

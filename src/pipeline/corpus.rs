@@ -60,7 +60,7 @@ pub struct Row {
 pub fn build_entry(
     dir: &Path,
     e: &Entry,
-) -> Result<crate::pipeline::Built, crate::sketch::SketchError> {
+) -> Result<crate::pipeline::Built, crate::pipeline::BuildError> {
     let doc = CharacterDoc::from_inputs(
         Inputs {
             front: ProfileInput::Path(dir.join(&e.front).display().to_string()),
@@ -78,7 +78,7 @@ pub fn build_entry(
 /// Measures one entry's build ([`build_entry`]).
 pub fn measure_entry(
     e: &Entry,
-    built: &Result<crate::pipeline::Built, crate::sketch::SketchError>,
+    built: &Result<crate::pipeline::Built, crate::pipeline::BuildError>,
 ) -> Row {
     let mut row = Row {
         name: e.name.clone(),

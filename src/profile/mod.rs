@@ -67,6 +67,7 @@ mod outline;
 mod polygon;
 pub mod shapes;
 mod svg;
+mod svg_guard;
 pub mod units;
 
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
@@ -77,6 +78,7 @@ pub use svg::{
     parse_svg, parse_svg_with, read_svg, read_svg_with, to_svg, to_svg_physical, write_svg, Cut,
     Flatness, SvgSketch,
 };
+pub use svg_guard::estimate_points;
 pub use units::{document_units, DocumentUnits};
 
 use serde::{Deserialize, Serialize};
@@ -203,6 +205,36 @@ pub enum ProfileError {
         path: String,
         #[source]
         source: std::io::Error,
+    },
+    #[error("{0}")]
+    Input(crate::mesh::MeshError),
+    #[error("{0}")]
+    Limit(#[from] crate::limits::LimitError),
+    #[error("{element}: attribute {attribute} holds {token:?}, {why}")]
+    BadNumber {
+        element: String,
+        attribute: String,
+        token: String,
+        why: &'static str,
+    },
+    #[error("shape {id}: {message}")]
+    Shape { id: String, message: String },
+    #[error("path {id:?} is closed, but an id starting with `cut` marks a cut, an open polyline across a part; rename it if it is the outline")]
+    ClosedCut { id: String },
+    #[error("flattening the drawing at tolerance {} would give about {} points ({largest} alone {}), over the limit of {limit}; raise the tolerance or simplify the drawing", crate::limits::Num(*.tolerance), crate::limits::Num(*.estimate), crate::limits::Num(*.largest_estimate))]
+    TooManyPoints {
+        tolerance: f64,
+        estimate: f64,
+        largest: String,
+        largest_estimate: f64,
+        limit: u64,
+    },
+    #[error("the drawing is {} model units across ({what}), outside the range {} to {} (SVG user units are model units, metres): scale the drawing", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
+    DrawingSize {
+        size: f64,
+        what: String,
+        min: f64,
+        max: f64,
     },
     #[error("{path}: invalid JSON profile: {source}")]
     Json {

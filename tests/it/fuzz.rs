@@ -26,6 +26,9 @@ fn parsers_never_panic_hang_or_return_non_finite_numbers() {
         "GLB documents",
         "pde4 spec JSON",
         "GEC JSON",
+        "SVG drawings",
+        "character documents",
+        "edits",
     ] {
         let x = t.iter().find(|x| x.name == name).expect("target");
         assert!(x.accepted > 0, "{name} never accepted: {}", table(&t));

@@ -17,6 +17,10 @@
 
 #![allow(dead_code)]
 
+/// The targets of the new surfaces: SVG, documents, edits (issue 35).
+#[path = "fuzz_targets.rs"]
+pub mod targets;
+
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -149,6 +153,9 @@ pub fn parser_targets() -> Vec<(&'static str, GenFn, ParseFn)> {
         ("GEC JSON", gen_gec_json, parse_gec),
         ("CSV bytes", gen_bytes, parse_csv_fit),
         ("CSV documents", gen_csv, parse_csv_fit),
+        ("SVG drawings", targets::gen_svg, targets::parse_svg),
+        ("character documents", targets::gen_doc, targets::parse_doc),
+        ("edits", targets::gen_edit, targets::apply_edit),
     ]
 }
 
@@ -869,7 +876,17 @@ pub fn command_targets() -> Vec<(&'static str, CommandGen)> {
         ("render (mesh + numbers)", cmd_render),
         ("convert (OBJ/PLY/STL)", cmd_convert),
         ("plate compare (numbers)", cmd_plate_compare),
+        (
+            "profile check (SVG + tolerance)",
+            targets::cmd_profile_check,
+        ),
     ]
+}
+
+/// Command targets too slow for `cargo test`'s debug binary (each case
+/// builds a character); the fuzz example runs them on the release binary.
+pub fn heavy_command_targets() -> Vec<(&'static str, CommandGen)> {
+    vec![("character edit (edit JSON)", targets::cmd_character_edit)]
 }
 
 fn runner(seed: u64) -> TestRunner {
@@ -941,7 +958,19 @@ pub fn run_commands(
     seed: u64,
     limit: Duration,
 ) -> Vec<Tally> {
-    command_targets()
+    run_command_targets(command_targets(), exe, scratch, cases, seed, limit)
+}
+
+/// Runs the given command targets (see [`run_commands`]).
+pub fn run_command_targets(
+    targets: Vec<(&'static str, CommandGen)>,
+    exe: &Path,
+    scratch: &Path,
+    cases: usize,
+    seed: u64,
+    limit: Duration,
+) -> Vec<Tally> {
+    targets
         .into_iter()
         .enumerate()
         .map(|(k, (name, gen))| {

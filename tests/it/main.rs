@@ -1,17 +1,21 @@
 //! Integration tests: one binary (fast links), one module per area.
 
 mod cli;
+mod equations;
 mod fuzz;
 mod fuzz_harness;
 mod gltf;
 mod gltf_bad;
+mod harness;
 mod infra;
 mod layers;
 mod nan;
 mod progress;
 mod registry;
+mod sizes;
 mod strategies;
 mod tolerances;
+mod tutorial;
 mod units;
 
 mod body;
@@ -22,9 +26,13 @@ mod edit;
 mod edit_stroke;
 mod gec;
 mod gec_correct;
+mod harden_doc;
+mod harden_files;
+mod harden_svg;
 mod ode6;
 mod pde4;
 mod pde6;
+mod pipeline;
 mod plate;
 mod profile;
 mod sasm;

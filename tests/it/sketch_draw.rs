@@ -7,7 +7,7 @@ use pdesculpt::character::doc::{CharacterDoc, Inputs, Level, ProfileInput};
 use pdesculpt::character::Resolution;
 use pdesculpt::check::tol;
 use pdesculpt::pipeline::corpus::{build_entry, measure_entry, read_manifest, table, Entry, Row};
-use pdesculpt::pipeline::{build_document, Built};
+use pdesculpt::pipeline::{build_document, BuildError, Built};
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
 use pdesculpt::sketch::quality::{warnings, Bounds};
@@ -45,7 +45,7 @@ fn write_pair(
     (f, s)
 }
 
-fn build(front: &Path, side: &Path, height: Option<f64>) -> Result<Built, SketchError> {
+fn build(front: &Path, side: &Path, height: Option<f64>) -> Result<Built, BuildError> {
     let doc = CharacterDoc::from_inputs(
         Inputs {
             front: ProfileInput::Path(front.display().to_string()),
@@ -318,7 +318,7 @@ proptest! {
                 prop_assert!(t.watertight && t.manifold && t.oriented, "{h:?}");
                 prop_assert!((b.report.height_m - 1.7).abs() <= HEIGHT_REL * 1.7, "{h:?}");
             }
-            Err(SketchError::Segmentation(m)) => {
+            Err(BuildError::Sketch(SketchError::Segmentation(m))) => {
                 prop_assert!(m.contains("draw") || m.contains("cut"), "{h:?}: {m}");
             }
             Err(e) => prop_assert!(false, "{h:?}: {e}"),

@@ -129,6 +129,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
 fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let t0 = std::time::Instant::now();
     io::Format::from_path(&a.output)?;
+    let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
+    if a.template != "makehuman" {
+        inputs.push(("--template", Path::new(&a.template)));
+    }
+    if let Some(p) = &a.side {
+        inputs.push(("--side", p));
+    }
+    if let Some(p) = &a.sections {
+        inputs.push(("--sections", p));
+    }
+    super::outputs::check(&inputs, &[("-o", &a.output)])?;
     let template: Template = if a.template == "makehuman" {
         makehuman_template(&[])?
     } else {
@@ -161,7 +172,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     };
     sketch.side = placed.side.as_ref().map(to_template);
     if let Some(s) = &a.sections {
-        let text = std::fs::read_to_string(s).with_context(|| s.display().to_string())?;
+        let text = io::read_input_text(s, "sections file")?;
         #[derive(serde::Deserialize)]
         #[serde(deny_unknown_fields)]
         struct File {
@@ -184,19 +195,16 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let mut out = template.mesh.clone();
     out.positions = r.last().to_vec();
     // the fitted mesh is in the template's unit; written in metres
-    let source = if a.template == "makehuman" {
-        pdesculpt::mesh::unit::MAKEHUMAN
+    let k = if a.template == "makehuman" {
+        pdesculpt::mesh::unit::MAKEHUMAN.metres()
     } else {
-        pdesculpt::mesh::unit::Unit::M
+        1.0
     };
-    let scene = io::Scene::single(&io::model_name(&a.output), out.clone());
-    io::write_scene_in_unit(
-        &scene,
-        &a.output,
-        source,
-        pdesculpt::mesh::unit::Unit::M,
-        a.layout.layout(),
-    )?;
+    let mut metres = out.clone();
+    for p in &mut metres.positions {
+        *p = [k * p[0], k * p[1], k * p[2]];
+    }
+    a.layout.write(&metres, &a.output)?;
     let report = Report {
         output: a.output.display().to_string(),
         unit: "m",

@@ -13,21 +13,25 @@
 //! them) or the named groups of an OBJ/STL/PLY, when no file is named so.
 
 mod atomic;
+mod files;
 mod glb;
 mod in_unit;
+mod lock;
 mod obj;
 mod ply;
 pub mod read_gltf;
 pub mod scene;
 mod stl;
 
-pub use atomic::{refuse_overwriting_input, same_file, write_atomic};
+pub use atomic::{refuse_overwriting_input, same_file, write_all_atomic, write_atomic};
+pub use files::{check_outputs, read_input, read_input_text, strip_bom, write_target};
 pub use glb::{encode_glb, group_colour as group_colour_rgb};
 pub use in_unit::{output_unit, write_in_unit, write_scene_in_unit};
+pub use lock::FileLock;
 pub use obj::{encode_obj, parse_obj};
 pub use ply::{encode_ply, parse_ply};
 pub use read_gltf::{parse_gltf, GltfError, GltfOptions};
-pub use scene::{encode_scene, model_name, write_scene, Layout, Model, Scene};
+pub use scene::{model_name, Layout, Model, Scene};
 pub use stl::{encode_stl, parse_stl};
 
 use super::{Mesh, MeshError};
@@ -99,10 +103,7 @@ pub fn read_scene(path: &Path) -> Result<Scene, MeshError> {
     let (file, select) = split_selection(path);
     let fmt = Format::from_path(&file)?;
     let name = file.display().to_string();
-    let bytes = std::fs::read(&file).map_err(|source| MeshError::Io {
-        path: name.clone(),
-        source,
-    })?;
+    let bytes = read_input(&file, "mesh")?;
     let scene = match fmt {
         Format::Glb | Format::Gltf => {
             let dir = file.parent().map(|d| {
@@ -187,4 +188,24 @@ pub fn check_f32_range(m: &Mesh) -> Result<(), MeshError> {
         }
     }
     Ok(())
+}
+
+/// Encodes `scene` (a [`scene::Scene`]) in `fmt` in `layout` after validating it.
+pub fn encode_scene(scene: &Scene, fmt: Format, layout: Layout) -> Result<Vec<u8>, MeshError> {
+    scene.validate()?;
+    Ok(match fmt {
+        Format::Glb => glb::encode_glb_scene(scene, layout),
+        Format::Gltf => glb::encode_gltf_scene(scene, layout),
+        Format::Obj => obj::encode_obj_scene(scene, layout).into_bytes(),
+        Format::Stl => encode_stl(&scene.flatten()),
+        Format::Ply => encode_ply(&scene.flatten()),
+    })
+}
+
+/// Writes `scene` to `path` (format by extension) in `layout`, validated
+/// and atomically.
+pub fn write_scene(scene: &Scene, path: &Path, layout: Layout) -> Result<(), MeshError> {
+    let fmt = Format::from_path(path)?;
+    let bytes = encode_scene(scene, fmt, layout)?;
+    write_atomic(path, &bytes)
 }
