@@ -229,7 +229,7 @@ pub enum ProfileError {
         largest_estimate: f64,
         limit: u64,
     },
-    #[error("the drawing is {} model units across ({what}), outside the range {} to {} (SVG user units are model units, metres): scale the drawing", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
+    #[error("the drawing is {} user units across ({what}), outside the range {} to {} user units: scale the drawing on the page (the model's size is the drawing's physical size, or give --height)", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
     DrawingSize {
         size: f64,
         what: String,
