@@ -388,6 +388,10 @@ pub fn fit(
     outline: &OutlineFn,
 ) -> Result<FitResult, TemplateError> {
     let t0 = Instant::now();
+    // the passes ask for outlines of unchanged skins again (super::memo)
+    let memo = super::memo::OutlineMemo::new(outline);
+    let remembered = |m: &Mesh, v: View| memo.outline(m, v);
+    let outline: &OutlineFn = &remembered;
     if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
         return Err(TemplateError::BadProfile {
             what: "the fit options".into(),
