@@ -12,6 +12,7 @@
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
+//! | [`study`] | all | experiments over many inputs, `pdesculpt study NAME` (the top) |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
 //! | [`render`] | - | CPU rasteriser for PNG previews |
@@ -42,6 +43,7 @@ pub mod profile;
 pub mod render;
 pub mod sasm;
 pub mod sketch;
+pub mod study;
 pub mod surface;
 pub mod template;
 pub mod tui;

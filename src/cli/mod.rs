@@ -9,6 +9,7 @@ mod units;
 
 mod character;
 mod sketch;
+mod study;
 mod verify;
 
 mod conv;
@@ -39,6 +40,8 @@ pub struct Cli {
 pub enum Command {
     /// Run the verification checks of every equation family.
     Verify(verify::Args),
+    /// Run a study: an experiment over many inputs (every checked body, the template study's cases, the data-size table).
+    Study(study::Args),
     /// Render a mesh to a PNG preview.
     Render(render::Args),
     /// Convert a mesh between OBJ, STL, PLY (read) and OBJ, GLB, STL, PLY (write).
@@ -75,6 +78,7 @@ pub fn main() -> i32 {
     let json = cli.json;
     let result = match cli.command {
         Command::Verify(a) => verify::run(a, json),
+        Command::Study(a) => study::run(a, json),
         Command::Render(a) => render::run(a, json),
         Command::Convert(a) => convert::run(a, json),
         Command::Demo(a) => demo::run(a, json),

@@ -73,19 +73,15 @@ pub fn belly_checks(out: &mut Vec<crate::check::Check>) {
     out.push(c);
 }
 
-/// [`belly_miss`] of the study's pregnant case at the high level; `None`
-/// when the case does not run.
+/// [`belly_miss`] of the study's pregnant case at the high level (the fit
+/// the study checks of the case measure, [`super::check::study_case`]);
+/// `None` when the case does not run.
 fn pregnant_high_miss() -> Option<f64> {
     let case = super::study::CASES
         .iter()
         .find(|c| c.name == "female->pregnant")?;
-    let opts = super::fit::FitOptions {
-        condition: false,
-        on_miss: super::OnMiss::Report,
-        ..Default::default()
-    };
     let template = super::study::makehuman_template(case.template).ok()?;
     let target = super::study::target_mesh(case).ok()?;
-    let (_, meshes) = super::study::run_case(case, &opts).ok()?;
+    let (_, meshes) = super::check::study_case(case)?;
     Some(belly_miss(&template, meshes.get(3)?, &target))
 }

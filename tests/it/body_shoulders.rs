@@ -8,8 +8,8 @@ use pdesculpt::body::intersect::self_intersections;
 /// shoulders' cut angles (empty: the fixed cuts).
 fn shoulders(morph: Option<&str>) -> (usize, Vec<f64>) {
     let morphs: Vec<String> = morph.map(|m| vec![format!("{m}=1")]).unwrap_or_default();
-    let skin = load_body(None, &morphs).unwrap();
-    let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
+    let morphs: Vec<&str> = morphs.iter().map(String::as_str).collect();
+    let b = crate::shared::closed_body(&morphs);
     let n = self_intersections(&b.model.mesh)
         .by_groups
         .iter()

@@ -26,6 +26,7 @@ const UPPER: &[&str] = &[
     "render",
     "makehuman",
     "verify",
+    "study",
     "cli",
 ];
 
@@ -161,6 +162,7 @@ fn families_name_no_modeling_module_nor_each_other() {
         "render",
         "tui",
         "verify",
+        "study",
         "cli",
     ];
     let mut bad = Vec::new();

@@ -171,7 +171,7 @@ fn bands(case: &pdesculpt::template::study::Case, meshes: &[Vec<[f64; 3]>]) {
 /// bounding-box baseline on each, TBSM round trip).
 #[test]
 fn template_checks_pass() {
-    for c in pdesculpt::template::check::checks() {
+    for c in crate::shared::family_checks("template") {
         eprintln!("{} {} (tol {})", c.name, c.measured, c.tolerance);
         assert!(
             c.passed,
