@@ -63,7 +63,7 @@ pub fn print_table(checks: &[Check], failures: bool) {
     );
     for c in checks.iter().filter(|c| !failures || !c.passed) {
         let verdict = match (c.passed, c.paper_differs) {
-            (true, true) => "ok (printed form differs, see ERRATA.md)",
+            (true, true) => "ok (differs, as ERRATA.md records)",
             (true, false) => "ok",
             (false, _) => "FAILED",
         };
