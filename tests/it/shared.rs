@@ -75,3 +75,32 @@ pub fn closed_body(morphs: &[&str]) -> &'static ClosedBody {
             .unwrap_or_else(|e| panic!("{morphs:?}: {e}"))
     })
 }
+
+/// `f` of every input, in input order, on at most as many threads as the
+/// machine has cores (a test over several expensive inputs, e.g. several
+/// bodies, runs them side by side instead of in a row; the inputs and
+/// what is checked of each are unchanged).
+pub fn parallel_map<T: Sync, R: Send>(inputs: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let next = AtomicUsize::new(0);
+    let done = Mutex::new(Vec::new());
+    std::thread::scope(|s| {
+        for _ in 0..threads.min(inputs.len()) {
+            s.spawn(|| loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(x) = inputs.get(i) else { break };
+                let r = f(x);
+                done.lock().unwrap_or_else(|e| e.into_inner()).push((i, r));
+            });
+        }
+    });
+    let mut done = done.into_inner().unwrap_or_else(|e| e.into_inner());
+    done.sort_by_key(|(i, _)| *i);
+    assert_eq!(
+        done.len(),
+        inputs.len(),
+        "a thread of parallel_map panicked"
+    );
+    done.into_iter().map(|(_, r)| r).collect()
+}
