@@ -15,6 +15,8 @@
 pub mod assembly;
 pub mod crease;
 pub mod doc;
+pub mod doc_ranges;
+pub mod inputs;
 pub mod log;
 pub mod measure;
 pub mod part;

@@ -75,7 +75,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if let Some(n) = nv {
                 limits::check("--nv", n, limits::TESS_NV)?;
             }
-            let text = std::fs::read_to_string(&spec)
+            let text = pdesculpt::mesh::io::read_input_text(&spec, "spec")
                 .with_context(|| format!("reading {}", spec.display()))?;
             let sp: Spec = serde_json::from_str(&text)
                 .with_context(|| format!("parsing spec {}", spec.display()))?;

@@ -34,7 +34,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         }
     }
     let names: Vec<&str> = args.family.iter().map(String::as_str).collect();
+    let progress = pdesculpt::progress::Progress::spinner("verify: running the checks", json);
     let (checks, times) = check::run_timed(&names);
+    progress.finish();
     if args.timings {
         for (name, s) in &times {
             eprintln!("verify: {name:<12} {s:7.3} s");

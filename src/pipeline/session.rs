@@ -1,12 +1,13 @@
 //! An editing session (a document, where its profiles live, the mesh
-//! resolution and a cache of built parts) and the checked push of an edit.
+//! resolution and a cache of built parts) and the checked push of an edit:
+//! both build through the one [`build`].
 
-use super::build::{apply_mesh_edits, build_document_with, Built};
-use crate::character::assembly::{build_model_with, PartCache};
+use super::build::{build, BuildError, BuildOptions, Built};
+use super::effect::{Extent, GROWTH};
+use crate::character::assembly::PartCache;
 use crate::character::doc::CharacterDoc;
-use crate::character::log::{Edit, EditError};
+use crate::character::log::{check_order, validate_params, Edit, EditError};
 use crate::character::{Model, Resolution};
-use crate::edit::displacements;
 use crate::sketch::SketchError;
 use std::path::PathBuf;
 
@@ -19,8 +20,6 @@ pub struct Session {
     pub base: PathBuf,
     pub res: Resolution,
     pub cache: PartCache,
-    /// Model height, read from the front profile at the first build.
-    pub height: Option<f64>,
 }
 
 impl Session {
@@ -31,7 +30,6 @@ impl Session {
             base,
             res,
             cache: PartCache::default(),
-            height: None,
         }
     }
 
@@ -40,68 +38,101 @@ impl Session {
         self.doc.push_edit(e)
     }
 
-    /// Builds the document's current state, re-solving only changed parts
-    /// (with the report: profiles read, silhouettes measured).
-    pub fn build(&mut self) -> Result<Built, SketchError> {
-        let b = build_document_with(
-            &self.doc,
-            &self.base,
-            self.res,
-            false,
-            Some(&mut self.cache),
-        )?;
-        self.height = Some(b.report.height);
-        Ok(b)
+    /// Builds the document's current state ([`build`]), re-solving only
+    /// the parts whose specification changed since the last build.
+    pub fn build(&mut self) -> Result<Built, BuildError> {
+        let opts = BuildOptions::new(&self.base).res(self.res);
+        build(&self.doc, &opts, Some(&mut self.cache))
     }
 
-    /// The interactive path: only the model (mesh and joins) of the current
-    /// state, re-solving only changed parts, without reading the profiles or
-    /// measuring silhouettes (the mesh equals [`Session::build`]'s bit for
-    /// bit). Needs stored parts; the first call runs [`Session::build`] once
-    /// to learn the height.
-    pub fn model(&mut self) -> Result<Model, SketchError> {
-        let height = match self.height {
-            Some(h) => h,
-            None => self.build()?.report.height,
-        };
-        if self.doc.parts.is_empty() {
-            return Err(SketchError::Document(
-                "the session's document has no stored parts".into(),
-            ));
-        }
-        let active = self.doc.active_edits();
-        let err = |e: EditError| SketchError::Document(e.to_string());
-        crate::character::log::check_order(&self.doc.transitions, active).map_err(err)?;
-        let edited = crate::edit::apply_to_parts(&self.doc.parts, active).map_err(err)?;
-        let disp = displacements(active).map_err(err)?;
-        let mut model = build_model_with(
-            &edited,
-            &self.doc.transitions,
-            height,
-            self.res,
-            &disp,
-            Some(&mut self.cache),
-        )?;
-        apply_mesh_edits(&mut model.mesh, &model.parts, active).map_err(err)?;
-        Ok(model)
+    /// The model of the current state: [`Session::build`]'s (the same
+    /// function, so the props are in it too).
+    pub fn model(&mut self) -> Result<Model, BuildError> {
+        Ok(self.build()?.model)
     }
 }
 
-/// Pushes `e` and keeps it only when the document still builds as
-/// `character build` builds it (default resolution, profiles read from
-/// `base`): [`CharacterDoc::push_edit`] validates an edit against the parts,
-/// but a mesh-level edit (a plate region whose projection overlaps, a
-/// motion that overflows) can only be judged on the built mesh. On error
-/// `doc` is unchanged.
+/// Pushes `e` and keeps it only when the document with it builds, with
+/// finite geometry: the edit's own parameters and the log's order are
+/// checked, the document with the edit is built once ([`build`], with
+/// `cache` when given) and that build is returned; `doc` takes the edit.
+/// On error `doc` is unchanged. An error of the new edit met in the replay
+/// is reported as the edit's own (not as "edit i of the log").
 pub fn push_checked(
     doc: &mut CharacterDoc,
     e: Edit,
-    base: &std::path::Path,
-) -> Result<Built, SketchError> {
+    opts: &BuildOptions,
+    cache: Option<&mut PartCache>,
+) -> Result<Built, BuildError> {
+    if doc.parts.is_empty() {
+        return Err(EditError::NoParts.into());
+    }
+    validate_params(&e)?;
     let mut next = doc.clone();
-    next.push_edit(e)
-        .map_err(|err| SketchError::Document(err.to_string()))?;
-    let built = super::build_document(&next, base, Resolution::default(), false)?;
+    next.append_edit(e);
+    check_order(&next.transitions, next.active_edits())?;
+    let index = next.cursor - 1;
+    let what = format!("edit {index} ({})", next.edits[index].summary());
+    let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
+        BuildError::Edit(EditError::Replay {
+            index: i, source, ..
+        }) if i == index => BuildError::Edit(*source),
+        other => other,
+    })?;
     *doc = next;
+    Ok(built)
+}
+
+/// Redoes the next undone edit and keeps it only when the document then
+/// builds as [`push_checked`] requires (validated by its effect: a log
+/// written by hand or by an older version is not trusted). On error `doc`
+/// is unchanged.
+pub fn redo_checked(
+    doc: &mut CharacterDoc,
+    opts: &BuildOptions,
+    cache: Option<&mut PartCache>,
+) -> Result<Built, BuildError> {
+    let mut next = doc.clone();
+    next.redo()
+        .map_err(|err| BuildError::Sketch(SketchError::Document(err.to_string())))?;
+    let i = next.cursor - 1;
+    let what = format!("redo of edit {i} ({})", next.edits[i].summary());
+    let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
+        BuildError::Cancelled => BuildError::Cancelled,
+        other => BuildError::Sketch(SketchError::Document(format!(
+            "{what} refused: the document it gives does not build: {other}"
+        ))),
+    })?;
+    *doc = next;
+    Ok(built)
+}
+
+/// Builds `doc` once ([`super::build`] with `opts` and `cache`) and
+/// accepts it only if the result is finite ([`super::effect::finite_result`], checked by
+/// every build) and the model (props aside) stays within [`GROWTH`] model
+/// sizes of its stored, unedited parts ([`Extent::of_parts`](Extent::of_parts)). `what`
+/// names the change in messages (`edit 3 (force on arm_l)`). A failed
+/// build's error is returned as it is, so that callers can name it.
+pub fn validate_by_build(
+    doc: &CharacterDoc,
+    opts: &BuildOptions,
+    cache: Option<&mut PartCache>,
+    what: &str,
+) -> Result<Built, BuildError> {
+    let built = build(doc, opts, cache)?;
+    if !doc.parts.is_empty() {
+        let b = Extent::of_parts(&doc.parts);
+        let props: Vec<&str> = doc.props.iter().map(|p| p.name.as_str()).collect();
+        let after = Extent::of_groups(&built.model.mesh, &props);
+        let reach = b.overreach(&after);
+        if reach.is_nan() || reach > GROWTH {
+            return Err(SketchError::Document(format!(
+                "{what}: the model would reach {} model sizes outside its extent before the change (limit {GROWTH}; its size, the bounding box diagonal, is {}): the values are too large",
+                crate::limits::Num(reach),
+                crate::limits::Num(b.diagonal())
+            ))
+            .into());
+        }
+    }
     Ok(built)
 }
