@@ -14,6 +14,7 @@
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
 //! | [`study`] | all | experiments over many inputs, `pdesculpt study NAME` (the top) |
+//! | [`equations`] | all | the equation index: equation, implementing function, checks, ERRATA |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
 //! | [`render`] | - | CPU rasteriser for PNG previews |
@@ -29,6 +30,7 @@
 //! | [`pipeline`] | all | document -> model: the one build that replays the log |
 //! | [`demo`] | all | the demo character |
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
+//! | `harness` | - | (feature `harness`) proptest strategies and surface properties for any solver |
 
 pub mod body;
 pub mod character;
@@ -37,6 +39,9 @@ pub mod conv;
 pub mod curve;
 pub mod demo;
 pub mod edit;
+pub mod equations;
+#[cfg(feature = "harness")]
+pub mod harness;
 pub mod jet;
 pub mod limits;
 pub mod makehuman;

@@ -1,10 +1,12 @@
 //! Integration tests: one binary (fast links), one module per area.
 
 mod cli;
+mod equations;
 mod fuzz;
 mod fuzz_harness;
 mod gltf;
 mod gltf_bad;
+mod harness;
 mod infra;
 mod layers;
 mod nan;
@@ -14,6 +16,7 @@ mod shared;
 mod sizes;
 mod strategies;
 mod tolerances;
+mod tutorial;
 mod units;
 
 mod body;

@@ -393,7 +393,7 @@ const LAYERS: &[&[&str]] = &[
     &["pipeline"],
     &[],
     &["demo"],
-    &["verify", "study", "tui"],
+    &["verify", "study", "equations", "harness", "tui"],
     &["cli", "main"],
 ];
 
