@@ -42,10 +42,10 @@ fn props_doc(name: &str) -> (CharacterDoc, PathBuf) {
     (doc, dir)
 }
 
-/// The mesh written to `path` (format from the extension), as bytes.
-fn obj_bytes(mesh: &pdesculpt::mesh::Mesh, path: &Path) -> Vec<u8> {
-    io::write(mesh, path).expect("writes");
-    std::fs::read(path).expect("reads")
+/// The mesh as OBJ bytes (one model of a fixed name: a file's name would
+/// name the model, `_path` is where it would be written).
+fn obj_bytes(mesh: &pdesculpt::mesh::Mesh, _path: &Path) -> Vec<u8> {
+    io::encode(mesh, io::Format::Obj).expect("encodes")
 }
 
 #[test]

@@ -393,7 +393,7 @@ const LAYERS: &[&[&str]] = &[
     &["pipeline"],
     &[],
     &["demo"],
-    &["verify", "study", "equations", "harness", "tui"],
+    &["verify", "study", "tui", "equations", "harness"],
     &["cli", "main"],
 ];
 
