@@ -678,10 +678,9 @@ pub fn shoulder_cut_angles(cuts: [(usize, usize); 2]) -> Vec<f64> {
     vec![a(cuts[0].0), a(cuts[1].0), a(cuts[0].1), a(cuts[1].1)]
 }
 
-/// Crossing triangle pairs with a triangle in the shoulders transition, the
-/// largest distance (relative to the height) from the transition's
-/// vertices and triangle centroids to the skin, and every crossing pair of
-/// `m` (the report's self-intersections of the model kept).
+/// Crossing pairs with a triangle in the shoulders transition, the largest
+/// distance (relative to the height) from its vertices and triangle
+/// centroids to the skin, and every crossing pair of `m` (for the report).
 fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64, Vec<CrossingPair>) {
     let pairs = crossing_pairs(m);
     let Some(g) = m.groups.iter().position(|g| g == "shoulders") else {
@@ -739,10 +738,8 @@ fn shoulder_cuts(
     let model = build_model_with(specs, &transitions, h, res, &[], Some(&mut cache))?;
     let bvh = TriangleBvh::new(skin);
     let (x0, far0, pairs0) = shoulder_state(&bvh, &model.mesh, h);
-    if x0 == 0 {
-        return Ok((transitions, model, pairs0));
-    }
-    let Some(k) = transitions.iter().position(|t| t.name == "shoulders") else {
+    let shoulders = transitions.iter().position(|t| t.name == "shoulders");
+    let Some(k) = shoulders.filter(|_| x0 > 0) else {
         return Ok((transitions, model, pairs0));
     };
     let bound = MAX_MAX_REL.max(far0);
@@ -751,7 +748,6 @@ fn shoulder_cuts(
         .filter(|&s| s != (0, 0))
         .collect();
     shifts.sort_by_key(|&(a, b)| (a + b, a));
-    // (crossings, cut angles, the model and its crossing pairs)
     type Best = (usize, Vec<f64>, Option<(Model, Vec<CrossingPair>)>);
     let mut best: Best = (x0, Vec::new(), None);
     for (a, b) in shifts {
