@@ -20,9 +20,9 @@ const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch");
 
 #[test]
 fn sketch_checks_pass() {
-    let checks = pdesculpt::sketch::check::checks();
+    let checks = crate::shared::family_checks("sketch");
     assert!(checks.len() >= 10);
-    for c in &checks {
+    for c in checks {
         assert!(
             c.passed,
             "{} measured {} > {}",
