@@ -5,7 +5,7 @@
 use super::align::{alignment, Alignment};
 use super::cuts::{join_heights, CutPath};
 use super::poly::slice;
-use super::segment::{interval, landmarks, regions, shoulder_top, Landmarks, Region, SidePick};
+use super::segment::{landmarks, regions, shoulder_top, Landmarks, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{
     BodyPlan, End, KeySection, Level, PartSpec, SectionShape, SectionSpec, SurfaceSpec,
@@ -13,13 +13,11 @@ use crate::character::doc::{
 };
 
 pub use super::section_place::SECTIONS_PER_PART;
-use super::section_place::{place, Sample};
+use super::section_place::{place, samples, Sample};
 /// Tilt of an arm's top section (degrees from horizontal, see `tilt_top`).
 pub const SHOULDER_TILT_DEG: f64 = 60.0;
 /// Sections of an arm's top that are tilted (by linearly less).
 pub const SHOULDER_TILT_SECTIONS: usize = 2;
-/// Dense samples of a region's profile used to place sections.
-const PROFILE_SAMPLES: usize = 240;
 /// GEC terms for key cross-section sketches.
 pub const GEC_TERMS: usize = 6;
 /// Largest allowed side/front height mismatch (relative).
@@ -40,55 +38,6 @@ pub struct Derived {
     pub quadruped: Option<super::quadruped::QuadLandmarks>,
     pub parts: Vec<PartSpec>,
     pub transitions: Vec<TransitionSpec>,
-}
-
-fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
-    let n = PROFILE_SAMPLES;
-    // stay a hair inside the tip so the slice exists
-    let eps = 1e-4 * (r.y1 - r.y0);
-    let s = (0..=n)
-        .filter_map(|k| {
-            let t = k as f64 / n as f64;
-            let y = if r.downward {
-                r.y1 - t * (r.y1 - r.y0 - if r.tip { eps } else { 0.0 })
-            } else {
-                r.y0 + t * (r.y1 - r.y0 - if r.tip { eps } else { 0.0 })
-            };
-            interval(front, r.pick, y).map(|iv| Sample {
-                y,
-                c: 0.5 * (iv[0] + iv[1]),
-                w: 0.5 * (iv[1] - iv[0]),
-            })
-        })
-        .collect::<Vec<_>>();
-    connected_run(s)
-}
-
-/// The run of samples around the region's middle whose slice intervals
-/// overlap their neighbours' ones: one connected tube. Near a join a slice
-/// can miss the part's own interval and catch a sliver of a neighbour
-/// beside it (a T-pose arm's top beside the neck); such a sample jumps
-/// sideways by more than the two half widths, and a section there (nearly
-/// on top of the next one, in another frame) made the PDE chain overshoot
-/// by metres. No tolerance: two slices of one tube, `PROFILE_SAMPLES`
-/// apart, always overlap.
-fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
-    if s.len() < 3 {
-        return s;
-    }
-    let overlaps = |a: &Sample, b: &Sample| (a.c - b.c).abs() <= a.w + b.w;
-    let m = s.len() / 2;
-    let mut lo = m;
-    while lo > 0 && overlaps(&s[lo - 1], &s[lo]) {
-        lo -= 1;
-    }
-    let mut hi = m;
-    while hi + 1 < s.len() && overlaps(&s[hi], &s[hi + 1]) {
-        hi += 1;
-    }
-    s.truncate(hi + 1);
-    s.drain(..lo);
-    s
 }
 
 /// Side-profile depth at height y: `(centre z, half depth)` of the slice
