@@ -30,6 +30,7 @@ pub mod character;
 pub mod check;
 pub mod conv;
 pub mod curve;
+pub mod face;
 pub mod jet;
 pub mod limits;
 pub mod makehuman;

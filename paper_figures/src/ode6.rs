@@ -472,6 +472,28 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
             }
             Curve::Hermite { ends }
         }
+        Curve::Piece {
+            knots, periodic, ..
+        } => {
+            let n = knots.len();
+            let (mut p, mut m) = (vec![[0.0; 3]; n], vec![[0.0; 3]; n]);
+            for (w, c) in terms {
+                if let Curve::Piece { points, m2, .. } = c {
+                    for i in 0..n.min(points.len()) {
+                        for k in 0..3 {
+                            p[i][k] += w * points[i][k];
+                            m[i][k] += w * m2[i][k];
+                        }
+                    }
+                }
+            }
+            Curve::Piece {
+                knots: knots.clone(),
+                points: p,
+                m2: m,
+                periodic: *periodic,
+            }
+        }
     }
 }
 
