@@ -291,14 +291,18 @@ pub fn rebuild(
             *p = optimise_column(&t, &net0, pos, i);
         }
     }
-    let net = Network::build(face_network(&t, pos, &params))?;
+    let net = if opts.optimise {
+        Network::build(face_network(&t, pos, &params))?
+    } else {
+        net0
+    };
     let (max, rms, worst, regenerated) = errors(&t, &net, pos);
     let mut out = pos.clone();
     for (p, s) in t.vertices.iter().zip(regenerated) {
         out[p.vertex as usize] = s;
     }
     let head = pos[t.top as usize][1] - pos[t.chin as usize][1];
-    let r = net.report(2);
+    let (u_edges, v_edges) = net.max_jumps(crate::ode6::network::report::EDGE_SAMPLES);
     let curve_points = net.doc.nodes.len()
         + net.doc.curves[..(columns + 1) * ROWS]
             .iter()
@@ -324,8 +328,8 @@ pub fn rebuild(
         data_ratio: (3 * curve_points) as f64 / face_vertices as f64,
         numbers_ratio: net.stored_numbers() as f64 / (3 * face_vertices) as f64,
         params,
-        u_edges: r.max_relative_u_edges,
-        v_edges: r.max_relative_v_edges,
+        u_edges,
+        v_edges,
     };
     Ok((out, report, net))
 }

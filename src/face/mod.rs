@@ -26,6 +26,7 @@
 //! Errors are measured against the **input's** vertices, absolute and over
 //! the head height (highest body vertex to lowest face vertex).
 
+pub mod check;
 pub mod expression;
 pub mod extract;
 pub mod fit;

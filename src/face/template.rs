@@ -383,13 +383,14 @@ impl FaceTemplate {
                 v: cv - row as f64,
             });
         }
-        let body_vertex = |i: usize| {
-            body.iter()
-                .zip(&base.triangles)
-                .any(|(b, t)| *b && t.contains(&(i as u32)))
-        };
+        let mut on_body = vec![false; base.positions.len()];
+        for (t, _) in base.triangles.iter().zip(body).filter(|(_, b)| **b) {
+            for &i in t {
+                on_body[i as usize] = true;
+            }
+        }
         let top = (0..base.positions.len())
-            .filter(|&i| body_vertex(i))
+            .filter(|&i| on_body[i])
             .max_by(|&a, &b| base.positions[a][1].total_cmp(&base.positions[b][1]))
             .unwrap_or(0) as u32;
         let chin = vertices

@@ -111,7 +111,7 @@ impl Network {
             .edges
             .iter()
             .enumerate()
-            .filter_map(|(k, e)| self.edge_report(k, *e, size))
+            .filter_map(|(k, e)| self.edge_report(k, *e, size, EDGE_SAMPLES))
             .collect();
         let max_of = |want_u: bool| {
             let mut m = [0.0f64; 3];
@@ -163,7 +163,34 @@ impl Network {
         }
     }
 
-    fn edge_report(&self, curve: usize, kind: EdgeKind, size: f64) -> Option<EdgeReport> {
+    /// `(u-edges, v-edges)` largest `[C0, C1, C2]` relative jumps, without
+    /// the rest of [`Network::report`].
+    /// `samples + 1` points along each edge.
+    pub fn max_jumps(&self, samples: usize) -> ([f64; 3], [f64; 3]) {
+        let size = self.doc.size();
+        let (mut u, mut v) = ([0.0f64; 3], [0.0f64; 3]);
+        for (k, e) in self.topology.edges.iter().enumerate() {
+            if let Some(r) = self.edge_report(k, *e, size, samples.max(1)) {
+                let m = if matches!(e, EdgeKind::U { .. }) {
+                    &mut u
+                } else {
+                    &mut v
+                };
+                for i in 0..3 {
+                    m[i] = nan_max(m[i], r.relative[i]);
+                }
+            }
+        }
+        (u, v)
+    }
+
+    fn edge_report(
+        &self,
+        curve: usize,
+        kind: EdgeKind,
+        size: f64,
+        samples: usize,
+    ) -> Option<EdgeReport> {
         let (a, b, at) = match kind {
             EdgeKind::U { below, above } => (below, above, true),
             EdgeKind::V { below, above } => (below, above, false),
@@ -178,8 +205,8 @@ impl Network {
             magnitude: [0.0; 3],
             relative: [0.0; 3],
         };
-        for i in 0..=EDGE_SAMPLES {
-            let t = i as f64 / EDGE_SAMPLES as f64;
+        for i in 0..=samples {
+            let t = i as f64 / samples as f64;
             let ((ua, va), (ub, vb)) = if at {
                 ((1.0, t), (0.0, t))
             } else {
