@@ -8,8 +8,8 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::body::closed::{reconstruct_closed, ClosedOptions};
+use pdesculpt::character::part::build_part;
 use pdesculpt::pde6::{Chain, Section};
-use pdesculpt::sketch::part::build_part;
 use std::hint::black_box;
 
 fn bench(c: &mut Criterion) {

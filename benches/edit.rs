@@ -11,9 +11,11 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::character::doc::{CharacterDoc, Level};
-use pdesculpt::character::edit::{Edit, SectionTransform, Session};
+use pdesculpt::character::log::{Edit, SectionTransform};
+use pdesculpt::character::Resolution;
+use pdesculpt::pipeline::build_document;
+use pdesculpt::pipeline::Session;
 use pdesculpt::sketch::check::bundled;
-use pdesculpt::sketch::{build_document, Resolution};
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
 

@@ -11,18 +11,18 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pdesculpt::character::doc::{Level, PartSpec, ProfileInput, SectionShape, SectionSpec};
+use pdesculpt::character::{build_model, Model, Resolution};
 use pdesculpt::mesh::Mesh;
 use pdesculpt::profile::{parse_svg, View};
 use pdesculpt::sketch::derive::{derive, Derived};
 use pdesculpt::sketch::input::{read_profile, ViewKind};
-use pdesculpt::sketch::{build_model, Model, Resolution};
 use std::f64::consts::PI;
 use std::hint::black_box;
 use std::path::Path;
 
 const FRONT: &str = include_str!("../data/sketch/female_front.svg");
 const TOL: f64 = 2e-3;
-/// Vertices per ring, as the sketch builder's parts (transition::RING_VERTICES).
+/// Vertices per ring, as the sketch builder's parts (character::ring::RING_VERTICES).
 const RING: usize = 48;
 
 /// SVG text to derived parts (shared by both pipelines).

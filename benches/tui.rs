@@ -26,9 +26,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use pdesculpt::character::edit::{Edit, SectionTransform};
-use pdesculpt::sketch::build::PartCache;
-use pdesculpt::sketch::Resolution;
+use pdesculpt::character::assembly::PartCache;
+use pdesculpt::character::log::{Edit, SectionTransform};
+use pdesculpt::character::Resolution;
 use pdesculpt::tui::app::{App, Effect, Focus};
 use pdesculpt::tui::preview::{self, ViewSet};
 use pdesculpt::tui::term::{open, Options, PREVIEW_RINGS};

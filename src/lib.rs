@@ -9,6 +9,7 @@
 //! | module | paper | holds |
 //! |---|---|---|
 //! | [`vec3`] | - | `[f64; 3]` helpers and bounding boxes (the bottom) |
+//! | [`polygon`] | - | planar polygons: area, crossings, bounds, distances (the bottom) |
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
@@ -22,7 +23,10 @@
 //! | [`pde6`] | 002 | C2 sixth-order PDE patches |
 //! | [`ode6`] | 004 | C2 sixth-order ODE surfaces |
 //! | [`conv`] | 003 | convolution surfaces from silhouettes |
-//! | [`character`] | 000 | character documents and assembly |
+//! | [`character`] | 000 | the character document (inputs, parts, edit log) and its assembly into one model |
+//! | [`edit`] | 000, 001 | local modeling: what an edit of the log does to the parts |
+//! | [`pipeline`] | all | document -> model: the one build that replays the log |
+//! | [`demo`] | all | the demo character |
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
 
 pub mod body;
@@ -30,6 +34,8 @@ pub mod character;
 pub mod check;
 pub mod conv;
 pub mod curve;
+pub mod demo;
+pub mod edit;
 pub mod face;
 pub mod jet;
 pub mod limits;
@@ -38,7 +44,9 @@ pub mod mesh;
 pub mod ode6;
 pub mod pde4;
 pub mod pde6;
+pub mod pipeline;
 pub mod plate;
+pub mod polygon;
 pub mod profile;
 pub mod render;
 pub mod sasm;

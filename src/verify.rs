@@ -30,7 +30,7 @@ pub fn families() -> &'static [Family] {
         Family { name: "profile", papers: "000", checks: crate::profile::check::checks },
         Family { name: "sketch", papers: "000", checks: crate::sketch::check::checks },
         Family { name: "template", papers: "000", checks: crate::template::check::checks },
-        Family { name: "edit", papers: "000, 001", checks: crate::character::edit::check::checks },
+        Family { name: "edit", papers: "000, 001", checks: crate::edit::check::checks },
         Family { name: "sasm", papers: "000", checks: crate::sasm::check::checks },
         Family { name: "body", papers: "002, 000", checks: crate::body::check::checks },
         Family { name: "face", papers: "004", checks: crate::face::check::checks },
@@ -135,3 +135,6 @@ pub fn derivative_checks() -> Vec<Check> {
     }
     out
 }
+
+#[cfg(test)]
+mod mutants_oracle;

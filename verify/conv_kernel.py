@@ -4,8 +4,8 @@
 F1 = int_0^l dt / (1 + s^2 (d^2 + t^2 - 2 h t))^2,  Ft = int_0^l t dt / (...)^2,
 with q = d^2 - h^2 (squared distance to the line), p^2 = 1 + s^2 q.
 Checks that the printed closed forms are antiderivative-exact (derivative of
-the primitive equals the integrand), that the printed weight equations need
-the 1/l of F_t, and emits high-precision (mpmath quad, 30 digits) values of
+the primitive equals the integrand), and emits high-precision (mpmath quad,
+30 digits) values of
 F1, Ft and the gradient components dF/dh, dF/dq at fixed points.
 """
 import json, os, random

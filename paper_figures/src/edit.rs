@@ -13,11 +13,14 @@
 
 use crate::common::{Ctx, Figure};
 use pdesculpt::character::doc::{CharacterDoc, End, Level, SectionShape};
-use pdesculpt::character::edit::{check::sample_force, force_field, Edit, SectionTransform};
+use pdesculpt::character::log::{Edit, SectionTransform};
+use pdesculpt::character::Resolution;
+use pdesculpt::edit::check::sample_force;
+use pdesculpt::edit::force_field;
 use pdesculpt::mesh::{norm, Mesh};
+use pdesculpt::pipeline::{build_document, Built};
 use pdesculpt::render::{render_with_camera, Camera, Image, RenderOptions, View};
 use pdesculpt::sketch::check::bundled;
-use pdesculpt::sketch::{build_document, Built, Resolution};
 use pdesculpt::surface::Surface;
 use serde_json::json;
 use std::path::Path;

@@ -39,7 +39,7 @@ pub fn figures() -> Vec<Figure> {
 }
 
 fn demo_models(ctx: &Ctx) -> anyhow::Result<()> {
-    let d = pdesculpt::character::demo::build()?;
+    let d = pdesculpt::demo::build()?;
     let mut scene = d.sculpted.clone();
     scene.append(&d.skirt);
     scene.append(&d.prop);

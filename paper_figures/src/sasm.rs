@@ -19,8 +19,8 @@ struct StrokeRow {
     before: Mesh,
     after: Mesh,
     stroke: Vec<[f64; 3]>,
-    edit: pdesculpt::character::edit::Edit,
-    measures: pdesculpt::character::edit::check_stroke::StrokeMeasures,
+    edit: pdesculpt::character::log::Edit,
+    measures: pdesculpt::edit::check_stroke::StrokeMeasures,
     peak: f64,
     watertight: bool,
 }
@@ -30,9 +30,12 @@ struct StrokeRow {
 /// forward (+z) with a peak displacement of 3 % of the height.
 fn stroke_row() -> anyhow::Result<StrokeRow> {
     use pdesculpt::character::doc::Level;
-    use pdesculpt::character::edit::check_stroke::{sample_force_stroke, stroke_measures};
-    use pdesculpt::character::edit::{field_of, Edit};
-    use pdesculpt::sketch::{build_document, check::bundled, Resolution};
+    use pdesculpt::character::log::Edit;
+    use pdesculpt::character::Resolution;
+    use pdesculpt::edit::check_stroke::{sample_force_stroke, stroke_measures};
+    use pdesculpt::edit::field_of;
+    use pdesculpt::pipeline::build_document;
+    use pdesculpt::sketch::check::bundled;
     use pdesculpt::surface::Surface;
     use std::f64::consts::PI;
     let doc = bundled("female", Level::Final).ok_or_else(|| anyhow::anyhow!("bundled female"))?;

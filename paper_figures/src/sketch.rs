@@ -9,11 +9,12 @@
 
 use crate::common::{Ctx, Figure};
 use pdesculpt::character::doc::Level;
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::topology::report as topology;
 use pdesculpt::mesh::Mesh;
+use pdesculpt::pipeline::{build_document, Built};
 use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
 use pdesculpt::sketch::check::{bundled, profile_errors};
-use pdesculpt::sketch::{build_document, Built, Resolution};
 use serde_json::json;
 use std::path::Path;
 

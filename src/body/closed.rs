@@ -1,11 +1,11 @@
 //! One closed body from PDE surfaces: the parts of [`super::layout`]
 //! (torso, two legs, two arms, neck and head) as C2 sixth-order PDE chains
-//! (`Chain::c2_global`, the sketch's [`crate::sketch::part`]), joined at the
+//! (`Chain::c2_global`, the sketch's [`crate::character::part`]), joined at the
 //! hips (crotch) and the shoulders (armpits, neck) by the sketch's
-//! transition surfaces ([`crate::sketch::transition`]: cubic Hermite blends
+//! transition surfaces ([`crate::character::transition`]: cubic Hermite blends
 //! of the boundary curves and cross tangents of the parts, C1 on the part
 //! boundaries) and assembled with shared vertices by
-//! [`crate::sketch::build_model`] — one implementation for sketched and
+//! [`crate::character::build_model`] — one implementation for sketched and
 //! reconstructed characters.
 //!
 //! Ends. The crown, the soles and the tips of the hands and thumbs are
@@ -32,7 +32,7 @@
 //! phase that puts theta = 0 towards the thumb (`phase_towards`). The
 //! arm is a child of the shoulders and the parent of its wrist: its tube
 //! switches from the shoulder loop's angles to the uniform ring halfway
-//! (`sketch::build`). Separate fingers are not built: they would need a
+//! (`character::assembly`). Separate fingers are not built: they would need a
 //! branching part per finger (a transition from the palm to four tubes),
 //! and the finger loops of the MakeHuman hand (a few millimetres, curled)
 //! separate at planes where the palm's trace already swings.
@@ -50,16 +50,16 @@ use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
 use super::report::measure;
 pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
 use super::BodyError;
+use crate::character::assembly::{build_model_with, Model, PartCache, Resolution};
 use crate::character::doc::{
     End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
+use crate::character::ring::{cut_indices, RING_VERTICES};
 use crate::curve::gec::Gec;
 use crate::mesh::metrics::TriangleBvh;
 use crate::mesh::topology::report as topology;
 use crate::mesh::{add, dot, norm, scale, sub, Mesh};
 use crate::pde6::sampling::fit_anchored;
-use crate::sketch::build::{build_model_with, Model, PartCache, Resolution};
-use crate::sketch::transition::{cut_indices, RING_VERTICES};
 
 /// Options of the closed reconstruction.
 #[derive(Clone, Copy, Debug, serde::Serialize)]
@@ -663,7 +663,7 @@ pub const SHOULDER_CUT_SHIFT_MAX: usize = 5;
 /// The shoulders' cut indices with seam 1's back cut moved `a` and its
 /// front cut `b` ring vertices toward the left arm, seam 2's mirrored toward
 /// the right arm, as `[(front, back); 2]` in
-/// [`crate::sketch::transition::cut_table`]'s order. Ring index 0 is +x, and
+/// [`crate::character::ring::cut_table`]'s order. Ring index 0 is +x, and
 /// the indices (0, n / 2) lie behind the torso (z < 0), (n / 2, n) in front.
 pub fn shifted_shoulder_cuts(a: usize, b: usize) -> [(usize, usize); 2] {
     let (f1, b1) = cut_indices(1, 3, &[]);

@@ -2,7 +2,7 @@
 //! 000 Fig 13, 004 Table 1): a human body mesh cut into cross sections,
 //! each part a C2 sixth-order PDE chain of the [`pde6`](crate::pde6) family,
 //! the parts joined by the sketch's transition surfaces
-//! ([`crate::sketch::build_model`]) into one closed mesh.
+//! ([`crate::character::build_model`]) into one closed mesh.
 //!
 //! This is modeling-level code: it sits above the sketch, the character
 //! document and the equation families (it compares [`crate::pde6`] with
@@ -54,7 +54,7 @@ pub enum BodyError {
     #[error("--sampling {0}: expected anchored, chord, centripetal, uniform or polar")]
     SamplingName(String),
     #[error("assembling the closed body: {0}")]
-    Assembly(#[from] crate::sketch::SketchError),
+    Assembly(#[from] crate::character::ModelError),
     #[error(transparent)]
     Pde6(#[from] crate::pde6::Pde6Error),
     #[error(transparent)]
@@ -63,4 +63,19 @@ pub enum BodyError {
     Ode6(#[from] crate::ode6::Ode6Error),
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
+}
+
+/// Loads the body ([`load_body`](report::load_body)), refuses an `output` that is the input
+/// mesh, and reconstructs it closed.
+pub fn reconstruct_closed_from(
+    path: Option<&std::path::Path>,
+    morphs: &[String],
+    output: &std::path::Path,
+    opts: &closed::ClosedOptions,
+) -> Result<closed::ClosedBody, BodyError> {
+    let skin = report::load_body(path, morphs)?;
+    if let Some(m) = path {
+        crate::mesh::io::refuse_overwriting_input(&[m], output)?;
+    }
+    closed::reconstruct_closed(&skin, opts)
 }

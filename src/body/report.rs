@@ -7,11 +7,11 @@ use super::intersect::{self_intersections, Intersections};
 use super::layout::Layout;
 use super::sites::{closest_hits, error_sites, hit_distances, ErrorSite};
 use super::BodyError;
+use crate::character::assembly::{JoinReport, Model, SeamReport};
 use crate::character::doc::{PartSpec, SectionShape};
 use crate::mesh::metrics::{sample_points, stats, DistanceStats};
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::Mesh;
-use crate::sketch::build::{JoinReport, Model, SeamReport};
 
 /// Errors against the input body, relative to its height.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -217,21 +217,6 @@ pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Me
         targets.push((crate::makehuman::target(name.trim())?, w));
     }
     Ok(crate::makehuman::body(&targets)?.mesh)
-}
-
-/// Loads the body ([`load_body`]), refuses an `output` that is the input
-/// mesh, and reconstructs it closed.
-pub fn reconstruct_closed_from(
-    path: Option<&std::path::Path>,
-    morphs: &[String],
-    output: &std::path::Path,
-    opts: &super::closed::ClosedOptions,
-) -> Result<super::closed::ClosedBody, BodyError> {
-    let skin = load_body(path, morphs)?;
-    if let Some(m) = path {
-        crate::mesh::io::refuse_overwriting_input(&[m], output)?;
-    }
-    super::closed::reconstruct_closed(&skin, opts)
 }
 
 /// Largest |weight| of a morph target.

@@ -36,11 +36,11 @@ use super::closed::{reconstruct_closed, ClosedOptions};
 use super::report::section_numbers;
 use super::BodyError;
 use crate::character::doc::PartSpec;
+use crate::character::part::build_part;
 use crate::curve::Fourier3;
 use crate::mesh::metrics::{point_distances, sample_points, stats};
 use crate::mesh::Mesh;
 use crate::ode6::{Basis, Curve, Params};
-use crate::sketch::part::build_part;
 use crate::surface::{tessellate, tessellate_grid, Domain, Tessellation};
 use std::f64::consts::PI;
 

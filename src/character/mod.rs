@@ -1,17 +1,38 @@
-//! Characters: assembling the families into one model (paper 000 secs 4-5).
+//! The character: its document and the assembly of its parts,
+//! transitions and props into one model (paper 000 secs 4-5). The bottom
+//! of the modeling layer: it names no modeling operation (`sketch`,
+//! `template`, `edit`, `sasm`, `body` sit above it and meet here).
 //!
-//! [`demo`] is the pipeline behind `pdesculpt demo`: the MakeHuman template
-//! (template-based global modeling), two local edits made the way the papers
-//! make them (a closed curve plus one drag: paper 000's fourth-order PDE
-//! deformation, Fig 14; a region plus a cursor force: paper 001's C1 plate
-//! bending), and the C2 sixth-order PDE reconstruction of the edited body
-//! from its cross sections (paper 002), a skirt fitted to the body as a C2
-//! sixth-order ODE surface through boundary and control curves (paper 004,
-//! [`skirt`]) and a prop sketched in silhouettes as a convolution surface
-//! (paper 003). Every step reports what it measured.
+//! Bottom up: [`spec`] (what a document specifies of parts and
+//! transitions), [`log`] (the edit log's data and its own checks), [`doc`]
+//! (the versioned document: inputs, derived parts, log, props); [`part`]
+//! (a part's pde6 C2 chain), [`ring`] (the end ring the seams cut),
+//! [`seam`], [`transition`] (Hermite branch transitions, G1 seams),
+//! [`measure`] (join jumps), [`assembly`] (one shared-vertex mesh, the part
+//! cache, displacement fields), [`crease`], [`props`] (conv models composed
+//! into the mesh). From a document to a model is `crate::pipeline`.
 
-pub mod demo;
+pub mod assembly;
+pub mod crease;
 pub mod doc;
-pub mod edit;
+pub mod log;
+pub mod measure;
+pub mod part;
 pub mod props;
-pub mod skirt;
+pub mod ring;
+pub mod seam;
+pub mod spec;
+pub mod transition;
+
+pub use assembly::{build_model, Model, Resolution};
+
+/// Errors of assembling a document's parts and transitions into one model.
+#[derive(Debug, thiserror::Error)]
+pub enum ModelError {
+    #[error("key section: {0}")]
+    Section(String),
+    #[error("part '{part}': {message}")]
+    Part { part: String, message: String },
+    #[error("document: {0}")]
+    Document(String),
+}

@@ -144,7 +144,7 @@ impl PropSpec {
 
 /// Grid cells of a prop for a character built at `rings_per_height`.
 pub fn resolution(rings_per_height: f64) -> usize {
-    let default = crate::sketch::Resolution::default().rings_per_height;
+    let default = crate::character::Resolution::default().rings_per_height;
     let r = (PROP_RESOLUTION as f64 * rings_per_height / default).round();
     if !r.is_finite() {
         return PROP_RESOLUTION;

@@ -16,7 +16,10 @@
 //! measured difference really exceeds the tolerance, so an erratum that stops
 //! reproducing (or was never real) fails loudly.
 
+pub mod reduce;
 pub mod tol;
+
+pub use reduce::{least, max_abs_diff, worst, Measure, Worst};
 
 use serde::Serialize;
 use std::fmt;
@@ -170,15 +173,7 @@ pub fn parse_golden<T: serde::de::DeserializeOwned>(
     })
 }
 
-/// Maximum of `|a_i - b_i|` over two equally long slices.
-pub fn max_abs_diff(a: &[f64], b: &[f64]) -> f64 {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| (x - y).abs())
-        .fold(0.0, f64::max)
-}
-
 /// `|a - b| / max(1, |b|)`: relative error, absolute near zero.
 pub fn rel_err(a: f64, b: f64) -> f64 {
-    (a - b).abs() / b.abs().max(1.0)
+    (a - b).abs() / b.abs().worst(1.0)
 }

@@ -24,7 +24,8 @@ pub const TABLE_4_DIGITS: f64 = 5e-4;
 /// (0.5 %).
 pub const PLATE_THEORY: f64 = 5e-3;
 
-/// `tol * max(1, scale)`: tolerances grow with the magnitude of the data.
+/// `tol * max(1, scale)`: tolerances grow with the magnitude of the data
+/// (NaN for a NaN scale, so a failed computation cannot set its own bound).
 pub fn scaled(tol: f64, scale: f64) -> f64 {
-    tol * scale.abs().max(1.0)
+    tol * super::Worst::worst(scale.abs(), 1.0)
 }

@@ -1,9 +1,11 @@
 //! `pdesculpt character build|edit|undo|redo|log`.
 
 use pdesculpt::character::doc::CharacterDoc;
-use pdesculpt::character::edit::{push_checked, Edit};
+use pdesculpt::character::log::Edit;
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
-use pdesculpt::sketch::{build_document, Resolution};
+use pdesculpt::pipeline::build_document;
+use pdesculpt::pipeline::push_checked;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
@@ -108,7 +110,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                     .map_err(|err| anyhow::anyhow!("{}: {err}", p.display()))?;
                 let s: pdesculpt::sasm::Stroke = serde_json::from_str(&text)
                     .map_err(|err| anyhow::anyhow!("{}: not a drawn stroke: {err}", p.display()))?;
-                pdesculpt::character::edit::force4::project_force_stroke(&d, &mut e, &s)?;
+                pdesculpt::pipeline::project_force_stroke(&d, &mut e, &s)?;
             }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();

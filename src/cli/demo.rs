@@ -14,7 +14,7 @@
 //! 1.67 m body), `demo.obj` is in `--unit` (default metres), `demo.json`'s
 //! lengths are decimetres, the MakeHuman template's unit (`"unit": "dm"`).
 
-use pdesculpt::character::demo;
+use pdesculpt::demo;
 use pdesculpt::mesh::io;
 use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;

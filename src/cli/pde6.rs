@@ -12,7 +12,7 @@
 use anyhow::bail;
 use pdesculpt::body::closed::ClosedOptions;
 use pdesculpt::body::parts::{reconstruct_base_parts, sampling_from_name, BodyOptions};
-use pdesculpt::body::report::reconstruct_closed_from;
+use pdesculpt::body::reconstruct_closed_from;
 use pdesculpt::limits;
 use pdesculpt::pde6::Method;
 use pdesculpt::surface::{tessellate, Tessellation};

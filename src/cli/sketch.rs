@@ -2,8 +2,9 @@
 //! [--level L] -o OUT [--save-doc CHAR.json] [--json]`.
 
 use pdesculpt::character::doc::{BodyPlan, CharacterDoc, Inputs, KeySection, Level, ProfileInput};
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
-use pdesculpt::sketch::{build_document, Built, Resolution};
+use pdesculpt::pipeline::{build_document, Built};
 use std::path::{Path, PathBuf};
 
 const CONVENTIONS: &str = "Input conventions: SVG user units are model units; SVG y points down and \

@@ -1,6 +1,6 @@
 //! `pdesculpt tui [CHAR.json] [--bundled female|male] [--preview-rings N]`.
 
-use pdesculpt::sketch::Resolution;
+use pdesculpt::character::Resolution;
 use pdesculpt::tui::{self, term::PREVIEW_RINGS, Options};
 use std::path::PathBuf;
 

@@ -40,7 +40,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         );
         for c in checks.iter().filter(|c| !args.failures || !c.passed) {
             let verdict = match (c.passed, c.paper_differs) {
-                (true, true) => "ok (printed form differs, see ERRATA.md)",
+                (true, true) => "ok (differs, as ERRATA.md records)",
                 (true, false) => "ok",
                 (false, _) => "FAILED",
             };

@@ -10,6 +10,7 @@ use super::model::{Component, Model, Polygonizer};
 pub use super::samples::{random_case, Lcg};
 use super::{shapes, silhouette, sketch};
 use crate::check::{rel_err, tol, Check, Kind};
+use crate::check::{worst, Worst};
 use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid};
 use crate::mesh::topology::report;
 
@@ -63,9 +64,10 @@ fn golden_checks(out: &mut Vec<Check>) {
     };
     let (mut e1, mut et, mut eg) = (0.0f64, 0.0f64, 0.0f64);
     for c in &g.cases {
-        e1 = e1.max((kernel::f1(c.h, c.q, c.l, c.s) - c.f1).abs() / c.f1.abs());
-        et = et
-            .max((kernel::ft(c.h, c.q, c.l, c.s) - c.ft).abs() / c.ft.abs().max(c.f1.abs() * c.l));
+        e1 = e1.worst((kernel::f1(c.h, c.q, c.l, c.s) - c.f1).abs() / c.f1.abs());
+        et = et.worst(
+            (kernel::ft(c.h, c.q, c.l, c.s) - c.ft).abs() / c.ft.abs().worst(c.f1.abs() * c.l),
+        );
         let f = kernel::linear_field(
             crate::jet::Jet::<2, 2>::var_u(c.h),
             crate::jet::Jet::<2, 2>::var_v(c.q),
@@ -74,11 +76,11 @@ fn golden_checks(out: &mut Vec<Check>) {
             c.w0,
             c.w1,
         );
-        let scale = c.dfdh.abs().max(c.dfdq.abs()).max(1e-300);
-        eg = eg.max(
+        let scale = c.dfdh.abs().worst(c.dfdq.abs()).worst(1e-300);
+        eg = eg.worst(
             (f.deriv(1, 0) - c.dfdh)
                 .abs()
-                .max((f.deriv(0, 1) - c.dfdq).abs())
+                .worst((f.deriv(0, 1) - c.dfdq).abs())
                 / scale,
         );
     }
@@ -111,12 +113,12 @@ fn quadrature_checks(out: &mut Vec<Check>) {
     for _ in 0..n {
         let (seg, r, s) = random_case(&mut rng);
         let exact = seg.field(r, s);
-        let quad = kernel::field_by_quadrature(&seg, r, s, 1e-14 * exact.abs().max(1e-300));
-        ef = ef.max((exact - quad).abs() / quad.abs());
+        let quad = kernel::field_by_quadrature(&seg, r, s, 1e-14 * exact.abs().worst(1e-300));
+        ef = ef.worst((exact - quad).abs() / quad.abs());
         let g = seg.gradient(r, s);
         let gq = kernel::gradient_by_quadrature(&seg, r, s, 1e-15);
-        let scale = crate::mesh::norm(gq).max(1e-300);
-        eg = eg.max((0..3).map(|k| (g[k] - gq[k]).abs()).fold(0.0, f64::max) / scale);
+        let scale = crate::mesh::norm(gq).worst(1e-300);
+        eg = eg.worst((0..3).map(|k| (g[k] - gq[k]).abs()).fold(0.0, worst) / scale);
     }
     out.push(
         Check::new(FAMILY, PAPER, "sec 3.1", "conv.kernel.quadrature_random", Kind::Reference, ef, tol::QUADRATURE)
@@ -149,7 +151,7 @@ fn quadrature_checks(out: &mut Vec<Check>) {
             w1: seg.w0,
             ..seg
         };
-        es = es.max(rel_err(seg.field(r, s), swapped.field(mirror, s)));
+        es = es.worst(rel_err(seg.field(r, s), swapped.field(mirror, s)));
     }
     out.push(
         Check::new(
@@ -186,7 +188,7 @@ fn weight_checks(out: &mut Vec<Check>) {
         fit::segment_weights(&raw, n, t, s, WeightMode::Paper),
     ) {
         (Ok(exact), Ok(paper)) => {
-            let e = rel_err(exact.field(rp, s), t).max(rel_err(exact.field(rq, s), t));
+            let e = rel_err(exact.field(rp, s), t).worst(rel_err(exact.field(rq, s), t));
             out.push(
                 Check::new(
                     FAMILY,
@@ -200,7 +202,7 @@ fn weight_checks(out: &mut Vec<Check>) {
                 .note("exact 2x2 weights: |F - T|/T at r_p and r_q of an isolated segment"),
             );
             let em = rel_err(paper.field(mid, s), t);
-            let ep = rel_err(paper.field(rp, s), t).max(rel_err(paper.field(rq, s), t));
+            let ep = rel_err(paper.field(rp, s), t).worst(rel_err(paper.field(rq, s), t));
             out.push(
                 Check::new(FAMILY, PAPER, "sec 3.3 kappa", "conv.weights.kappa_midpoint", Kind::Threshold, em, tol::scaled(tol::ROUNDING, 10.0))
                     .note(format!("paper weights with kappa: |F - T|/T at r_mid; at the endpoints the decoupled approximation leaves {ep:.3e}")),
@@ -264,13 +266,13 @@ pub fn printed_weights_i_as_l(
     let field_err = [rp, rq, mid]
         .iter()
         .map(|&r| (printed_l_f(paper.w0, paper.w1, r) / l - paper.field(r, s)).abs() / t)
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     let (f1p, ftp) = basis(rp);
     let (_, ftq) = basis(rq);
     let w0 = l * t / (l * f1p - ftp);
     let w1 = l * t / ftq;
     let kappa = l * t / printed_l_f(w0, w1, mid);
-    let weight_err = rel_err(kappa * w0, paper.w0).max(rel_err(kappa * w1, paper.w1));
+    let weight_err = rel_err(kappa * w0, paper.w0).worst(rel_err(kappa * w1, paper.w1));
     (field_err, weight_err)
 }
 
@@ -302,10 +304,10 @@ fn fit_checks(out: &mut Vec<Check>) {
                 Err(_) => rms[k] = f64::NAN,
             }
         }
-        worst_rms = worst_rms.max(rms[0]);
+        worst_rms = worst_rms.worst(rms[0]);
         worst_slack = worst_slack
-            .max((rms[1] - rms[0]) / rms[0])
-            .max((rms[2] - rms[0]) / rms[0]);
+            .worst((rms[1] - rms[0]) / rms[0])
+            .worst((rms[2] - rms[0]) / rms[0]);
         notes.push(format!("{name} {:.3e}", rms[0]));
     }
     out.push(
@@ -339,7 +341,7 @@ fn polygon_checks(out: &mut Vec<Check>) {
         let mut ev = 0.0f64;
         let mut bad = 0usize;
         for m in [marching_tetrahedra(&g, 0.0), surface_nets(&g, 0.0)] {
-            ev = ev.max((m.signed_volume() - exact).abs() / exact);
+            ev = ev.worst((m.signed_volume() - exact).abs() / exact);
             let r = report(&m);
             bad += r.boundary_edges
                 + r.nonmanifold_edges

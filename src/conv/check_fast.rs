@@ -14,6 +14,7 @@ use super::model::{Component, Model, Polygonizer};
 use super::sample::Sampler;
 use super::{shapes, sketch};
 use crate::check::{tol, Check, Kind};
+use crate::check::{worst, Worst};
 use crate::mesh::topology::report;
 use crate::mesh::{norm, sub, Mesh};
 
@@ -38,8 +39,8 @@ pub fn mesh_size(m: &Mesh) -> f64 {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for p in &m.positions {
         for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
+            lo[k] = lo[k].least(p[k]);
+            hi[k] = hi[k].worst(p[k]);
         }
     }
     norm(sub(hi, lo))
@@ -57,7 +58,7 @@ pub fn corresponding_distance(a: &Mesh, b: &Mesh) -> f64 {
         .iter()
         .zip(&b.positions)
         .map(|(p, q)| norm(sub(*p, *q)))
-        .fold(0.0, f64::max)
+        .fold(0.0, worst)
 }
 
 /// Fast against reference: (relative distance, same topology report, note).
@@ -171,18 +172,18 @@ fn bound_checks(out: &mut Vec<Check>) {
         for _ in 0..5 {
             // a point of the ball
             let dir = [0, 1, 2].map(|_| rng.range(-1.0, 1.0));
-            let r = rho * rng.next_f64() / norm(dir).max(1.0);
+            let r = rho * rng.next_f64() / norm(dir).worst(1.0);
             let x = [0, 1, 2].map(|k| c[k] + r * dir[k]);
             let f = exact(x);
-            violation = violation.max((lo - f).max(f - hi).max(0.0) / t);
-            violation = violation.max((clo - f).max(f - chi).max(0.0) / t);
+            violation = violation.worst((lo - f).worst(f - hi).worst(0.0) / t);
+            violation = violation.worst((clo - f).worst(f - chi).worst(0.0) / t);
             let approx = 0.5 * (nlo + nhi) + bvh.near_field(&near, x);
-            point_ratio = point_ratio.max((approx - f).abs() / (0.5 * budget));
+            point_ratio = point_ratio.worst((approx - f).abs() / (0.5 * budget));
             let approx = 0.5 * (flo + fhi) + bvh.near_field(&near_f, x);
-            point_ratio = point_ratio.max((approx - f).abs() / (0.5 * budget));
+            point_ratio = point_ratio.worst((approx - f).abs() / (0.5 * budget));
         }
         let f = exact(c);
-        point_ratio = point_ratio.max((bvh.field(c, budget) - f).abs() / (0.5 * budget));
+        point_ratio = point_ratio.worst((bvh.field(c, budget) - f).abs() / (0.5 * budget));
     }
     out.push(
         Check::new(
@@ -238,12 +239,12 @@ fn farfield_checks(out: &mut Vec<Check>) {
         let mut radius = 0.0f64;
         for g in &cluster {
             m.add(&Moments::of_segment(g, c));
-            radius = radius.max(norm(sub(g.p, c))).max(norm(sub(g.q, c)));
+            radius = radius.worst(norm(sub(g.p, c))).worst(norm(sub(g.q, c)));
         }
         for _ in 0..5 {
             let dir = [0, 1, 2].map(|_| rng.range(-1.0, 1.0));
             let dist = rng.range(0.0, 6.0);
-            let x = [0, 1, 2].map(|k| c[k] + dist * dir[k] / norm(dir).max(1e-9));
+            let x = [0, 1, 2].map(|k| c[k] + dist * dir[k] / norm(dir).worst(1e-9));
             let mut exact = 0.0;
             let mut mass = 0.0;
             for g in &cluster {
@@ -252,12 +253,12 @@ fn farfield_checks(out: &mut Vec<Check>) {
                 let own = g.lambda.abs() * (g.w0.abs() + g.w1.abs()) * g.length();
                 mass += own;
                 let diff = (SegmentField::new(g, s).value(x) - f).abs();
-                kernel_err = kernel_err.max(diff / own.max(f64::MIN_POSITIVE));
+                kernel_err = kernel_err.worst(diff / own.worst(f64::MIN_POSITIVE));
             }
-            let dmin = (norm(sub(x, c)) - radius).max(0.0);
+            let dmin = (norm(sub(x, c)) - radius).worst(0.0);
             let err = (m.expansion(c, s, x) - exact).abs();
             let bound = m.error_bound(s, dmin);
-            bound_ratio = bound_ratio.max(err / (bound + tol::ROUNDING * mass));
+            bound_ratio = bound_ratio.worst(err / (bound + tol::ROUNDING * mass));
         }
     }
     out.push(
@@ -306,7 +307,7 @@ fn atan2_checks(out: &mut Vec<Check>) {
     }
     for (y, x) in cases {
         let e = y.atan2(x);
-        worst = worst.max((atan2_upper(y, x) - e).abs() / (e.abs() * f64::EPSILON));
+        worst = worst.worst((atan2_upper(y, x) - e).abs() / (e.abs() * f64::EPSILON));
     }
     out.push(
         Check::new(
@@ -367,7 +368,7 @@ fn incremental_checks(out: &mut Vec<Check>) {
     let second = run(&m, &mut sketches, &mut meshes);
     let (measured, note) = match (first, second) {
         (Some((a, b)), Some((c, d))) => (
-            corresponding_distance(&a, &b).max(corresponding_distance(&c, &d)),
+            corresponding_distance(&a, &b).worst(corresponding_distance(&c, &d)),
             format!(
                 "body and arm at {res} cells, the arm's stroke edited: {} sketch(es) and {} group mesh(es) rebuilt, {} and {} reused",
                 sketches.built - before.0,
@@ -426,11 +427,11 @@ pub fn fit_kkt_residual(sk: &sketch::Sketch) -> f64 {
             if x[i] > 0.0 {
                 g[i].abs()
             } else {
-                (-g[i]).max(0.0)
+                (-g[i]).worst(0.0)
             }
         })
-        .fold(0.0, f64::max);
-    worst / c.amax().max(f64::MIN_POSITIVE)
+        .fold(0.0, worst);
+    worst / c.amax().worst(f64::MIN_POSITIVE)
 }
 
 fn hildreth_checks(out: &mut Vec<Check>) {
@@ -442,7 +443,7 @@ fn hildreth_checks(out: &mut Vec<Check>) {
             for c in &b.components {
                 let f = &c.sketch.fit;
                 let r = fit_kkt_residual(&c.sketch);
-                worst = worst.max(if f.converged { r } else { f64::INFINITY });
+                worst = worst.worst(if f.converged { r } else { f64::INFINITY });
                 notes.push(format!("{} {} sweeps {r:.1e}", c.name, f.iterations));
             }
             (worst, notes.join(", "))

@@ -19,6 +19,7 @@
 
 use super::kernel::{cauchy, f1, integrate, Segment};
 use super::samples::{random_case, Lcg};
+use crate::check::Worst;
 use crate::check::{Check, Kind};
 use crate::mesh::{dot, sub};
 use std::f64::consts::PI;
@@ -149,7 +150,7 @@ fn tube_error(seg: &Segment, r: [f64; 3], s: f64, eps: f64) -> (f64, usize) {
         let l = dot(e, e).sqrt();
         let d = sub(r, seg.p);
         let h = dot(d, e) / l;
-        (h, (dot(d, d) - h * h).max(0.0), l)
+        (h, (dot(d, d) - h * h).worst(0.0), l)
     };
     let closed = f1(h, q, l, s);
     let (v, outside) = tube_convolution(seg, r, s, eps);
@@ -179,11 +180,11 @@ pub fn checks() -> Vec<Check> {
         let (b, o2) = tube_error(&seg, r, s, eps2);
         outside_total += o1 + o2;
         let order = (a / b).log2();
-        err2 = if b.is_nan() { f64::NAN } else { err2.max(b) };
+        err2 = if b.is_nan() { f64::NAN } else { err2.worst(b) };
         worst_order = if order.is_nan() {
             f64::NAN
         } else {
-            worst_order.max((order - 2.0).abs())
+            worst_order.worst((order - 2.0).abs())
         };
     }
     // the kernel as the field of one point: ball averages
@@ -197,8 +198,8 @@ pub fn checks() -> Vec<Check> {
         let printed = 1.0 / (1.0 + s * s * dot(d, d)).powi(2);
         let e1 = (ball_average(c, r, s, 0.04) - printed).abs() / printed;
         let e2 = (ball_average(c, r, s, 0.02) - printed).abs() / printed;
-        kb = kb.max(e2).max((h - printed).abs() / printed);
-        kord = kord.max(((e1 / e2).log2() - 2.0).abs());
+        kb = kb.worst(e2).worst((h - printed).abs() / printed);
+        kord = kord.worst(((e1 / e2).log2() - 2.0).abs());
     }
     vec![
         Check::new(FAMILY, PAPER, "sec 3.1 (indicator, volume convolution)", "conv.definition.tube_limit", Kind::Reference, err2, 5e-3)

@@ -1,6 +1,7 @@
 //! Checks of the jet arithmetic against SymPy goldens and identities.
 
 use super::{Jet6x6, Real};
+use crate::check::Worst;
 use crate::check::{tol, Check, Kind};
 use serde::Deserialize;
 
@@ -43,7 +44,7 @@ pub fn golden_deviation(name: &str) -> Option<f64> {
         for j in 0..=g.order {
             let want = f.derivatives[i][j];
             let got = jet.deriv(i, j);
-            worst = worst.max((got - want).abs() / want.abs().max(1.0));
+            worst = worst.worst((got - want).abs() / want.abs().worst(1.0));
         }
     }
     Some(worst)
@@ -100,10 +101,10 @@ fn identity_check() -> Check {
     for i in 0..7 {
         for j in 0..7 {
             if i + j > 0 {
-                worst = worst.max(one.deriv(i, j).abs());
+                worst = worst.worst(one.deriv(i, j).abs());
             }
-            let rel = (back.deriv(i, j) - x.deriv(i, j)).abs() / x.deriv(i, j).abs().max(1.0);
-            worst = worst.max(rel);
+            let rel = (back.deriv(i, j) - x.deriv(i, j)).abs() / x.deriv(i, j).abs().worst(1.0);
+            worst = worst.worst(rel);
         }
     }
     Check::new(

@@ -6,6 +6,8 @@ use super::io::{encode_obj, encode_ply, encode_stl, parse_obj, parse_ply, parse_
 use super::metrics::{closest_point_on_triangle, TriangleBvh};
 use super::samples::{lcg, torus_mesh};
 use super::{dist, slice, topology, Mesh};
+use crate::check::Measure;
+use crate::check::{least, Worst};
 use crate::check::{tol, Check, Kind};
 use std::f64::consts::PI;
 
@@ -34,9 +36,9 @@ fn bvh_check() -> Check {
                 let [a, b, c] = m.corners(t);
                 dist(p, closest_point_on_triangle(p, a, b, c))
             })
-            .fold(f64::INFINITY, f64::min);
+            .fold(f64::INFINITY, least);
         let fast = bvh.closest(p).map_or(f64::INFINITY, |c| c.1);
-        worst = worst.max((fast - brute).abs());
+        worst = worst.worst((fast - brute).abs());
     }
     Check::new(
         "mesh",
@@ -70,11 +72,11 @@ fn triangle_distance_check() -> Check {
                     a[1] + s * (b[1] - a[1]) + t * (c[1] - a[1]),
                     a[2] + s * (b[2] - a[2]) + t * (c[2] - a[2]),
                 ];
-                best = best.min(dist(p, q));
+                best = best.least(dist(p, q));
             }
         }
         // the closed form may only be better than the sampling
-        worst = worst.max(d - best);
+        worst = worst.worst(d - best);
     }
     Check::new(
         "mesh",
@@ -82,7 +84,7 @@ fn triangle_distance_check() -> Check {
         "closest point",
         "mesh.point-triangle-minimiser",
         Kind::Reference,
-        worst.max(0.0),
+        worst.worst(0.0),
         tol::ROUNDING,
     )
     .note("Ericson's closed form never exceeds the minimum over a 1891-point barycentric sampling")
@@ -117,8 +119,9 @@ fn torus_checks() -> Vec<Check> {
     let loops = slice::slice(&m, [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let lengths: Vec<f64> = loops.iter().map(|l| l.length()).collect();
     let slice_err = if loops.len() == 2 && loops.iter().all(|l| l.closed) {
-        let (lo, hi) = (lengths[0].min(lengths[1]), lengths[0].max(lengths[1]));
-        ((lo - 2.0 * PI * (big - small)).abs() / lo).max((hi - 2.0 * PI * (big + small)).abs() / hi)
+        let (lo, hi) = (lengths[0].least(lengths[1]), lengths[0].worst(lengths[1]));
+        ((lo - 2.0 * PI * (big - small)).abs() / lo)
+            .worst((hi - 2.0 * PI * (big + small)).abs() / hi)
     } else {
         f64::INFINITY
     };
@@ -131,7 +134,7 @@ fn torus_checks() -> Vec<Check> {
             "area, volume",
             "mesh.torus-area-volume-order",
             Kind::Reference,
-            (order_area - 2.0).abs().max((order_volume - 2.0).abs()),
+            (order_area - 2.0).abs().worst((order_volume - 2.0).abs()),
             0.05,
         )
         .note(format!(
@@ -163,20 +166,20 @@ fn round_trip_check() -> Check {
         (0..a.triangles.len())
             .map(|t| {
                 let (x, y) = (a.corners(t), b.corners(t));
-                (0..3).map(|k| dist(x[k], y[k])).fold(0.0, f64::max)
+                (0..3).map(|k| dist(x[k], y[k])).max_nan()
             })
-            .fold(0.0, f64::max)
+            .max_nan()
     };
     match parse_obj(&encode_obj(&m), "roundtrip.obj") {
-        Ok(b) => worst = worst.max(compare(&m, &b)),
+        Ok(b) => worst = worst.worst(compare(&m, &b)),
         Err(_) => worst = f64::INFINITY,
     }
     match parse_stl(&encode_stl(&m), "roundtrip.stl") {
-        Ok(b) => worst = worst.max(compare(&m, &b)),
+        Ok(b) => worst = worst.worst(compare(&m, &b)),
         Err(_) => worst = f64::INFINITY,
     }
     match parse_ply(&encode_ply(&m), "roundtrip.ply") {
-        Ok(b) => worst = worst.max(compare(&m, &b)),
+        Ok(b) => worst = worst.worst(compare(&m, &b)),
         Err(_) => worst = f64::INFINITY,
     }
     Check::new(

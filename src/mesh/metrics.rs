@@ -7,6 +7,7 @@
 //! against the other; [`hausdorff`] takes the larger of both directions.
 
 use super::{add, dot, scale, sub, Mesh};
+use crate::check::Measure;
 use serde::Serialize;
 
 /// Closest point to `p` on the triangle `(a, b, c)`.
@@ -234,7 +235,7 @@ pub fn stats(d: &[f64]) -> DistanceStats {
         samples: d.len(),
         rms: (d.iter().map(|x| x * x).sum::<f64>() / n).sqrt(),
         mean: d.iter().sum::<f64>() / n,
-        max: d.iter().copied().fold(0.0, f64::max),
+        max: d.iter().copied().max_nan(),
     }
 }
 

@@ -6,7 +6,7 @@
 //!
 //! | source | unit |
 //! |---|---|
-//! | the bundled MakeHuman data (`makehuman`, `character::demo`, `pde6 body`) | decimetres ([`MAKEHUMAN`]) |
+//! | the bundled MakeHuman data (`makehuman`, `demo`, `pde6 body`) | decimetres ([`MAKEHUMAN`]) |
 //! | a mesh file read (OBJ, STL, PLY: none of them records a unit) | `--input-unit`, default metres ([`READ_DEFAULT`]) |
 //! | a JSON spec or model file (pde4, pde6, ode6, conv) | `--input-unit`, default metres |
 //! | an SVG sketch | its own document unit, see below |

@@ -7,6 +7,8 @@
 //! $\xi_{1,2} = \sqrt{\eta(1 \pm \sqrt{1 - 4\rho\lambda/\eta^2})/(2\rho)}$,
 //! so that $r = \pm i\xi$ and $q = -\xi^2$ (eq 16).
 
+use crate::jet::Real;
+
 /// `q_{1,2}` of eq 14 exactly as extracted, `η(1 ± 1 4ρλ/η²)/(2ρ)`, with
 /// the lost minus read as `1 - 4ρλ/η²` under no root and no leading minus
 /// (the same reading as [`xi_printed`]; the texts of eqs 14 and 15 are
@@ -46,20 +48,13 @@ pub fn xi_intended(rho: f64, eta: f64, lambda: f64) -> [f64; 2] {
     ]
 }
 
-/// Sign choices for the places where the extraction of eqs 20-22 lost a
-/// sign that cannot be inferred: the leading sign of `e_4`'s bracket, of
-/// `e_6`, of the `1/ξ2²` term of `d_10`, and of every `g_k`'s first term.
-#[derive(Clone, Copy, Debug)]
-pub struct PrintedSigns {
-    pub e4: f64,
-    pub e6: f64,
-    pub d10: f64,
-    pub lead: f64,
-}
-
-/// The constants `e_1..e_13` and `d_1..d_10` of eqs 21-22 as printed, the
-/// lost minus signs restored between adjacent terms (index 0 unused).
-pub fn printed_constants(x1: f64, x2: f64, s: PrintedSigns) -> ([f64; 14], [f64; 11]) {
+/// The constants `e_1..e_13` and `d_1..d_10` of eqs 21-22 as printed,
+/// restored as `verify/ode6_eq20_40digits.py` finds (40 digits, the fewest
+/// signs, unique): a minus in every gap the extraction left between two
+/// terms, "cos 2 ξ2" of `e_6` read as `cos²ξ2`, and a leading minus in `d_2`,
+/// `d_4`, `d_10` and inside `e_4`'s bracket. Nothing else is changed
+/// (index 0 unused). `d_9` is as printed.
+pub fn printed_constants(x1: f64, x2: f64) -> ([f64; 14], [f64; 11]) {
     let (c1, s1, c2, s2) = (x1.cos(), x1.sin(), x2.cos(), x2.sin());
     let mut e = [0.0; 14];
     e[1] = x1 * (c1 - 1.0) + x1 * x1 * s1 * (1.0 - c2) / (x2 * s2);
@@ -67,9 +62,9 @@ pub fn printed_constants(x1: f64, x2: f64, s: PrintedSigns) -> ([f64; 14], [f64;
     e[3] = c1 - 1.0
         + x1 * x1 * (1.0 - c2) / (x2 * x2)
         + x1 * x1 * (c2 - c1) * (1.0 / x2 - 1.0 / s2) / x2;
-    e[4] = x1 * (s.e4 * s1 + x1 * s2 / x2) + x1 * x1 * (c2 - c1) * (c2 - 1.0) / (x2 * s2);
+    e[4] = x1 * (-s1 + x1 * s2 / x2) + x1 * x1 * (c2 - c1) * (c2 - 1.0) / (x2 * s2);
     e[5] = (1.0 / x2 - c2 / s2) / x2;
-    e[6] = (s.e6 * s2 + c2 * c2 / s2 - c2 / s2) / x2;
+    e[6] = (s2 + c2 * c2 / s2 - c2 / s2) / x2;
     e[7] = (1.0 / s2 - 1.0 / x2) / x2;
     e[8] = (1.0 - c2) / (x2 * s2);
     e[11] = x1 * x1 / (x2 * x2) - 1.0;
@@ -78,86 +73,89 @@ pub fn printed_constants(x1: f64, x2: f64, s: PrintedSigns) -> ([f64; 14], [f64;
     let den = e[1] * e[3] - e[2] * e[4];
     let mut d = [0.0; 11];
     d[1] = e[1] / den;
-    d[2] = e[2] / den;
+    d[2] = -e[2] / den;
     d[3] = e[3] / den;
-    d[4] = e[4] / den;
+    d[4] = -e[4] / den;
     d[5] = d[1] * e[5] + d[2] * e[6];
     d[6] = d[1] * e[7] + d[2] * e[8];
     d[7] = d[4] * e[5] + d[3] * e[6];
     d[8] = d[4] * e[7] + d[3] * e[8];
-    d[10] = s.d10 / (x2 * x2) + (e[11] + 1.0) * d[5];
+    d[9] = (e[11] + 1.0) * (d[1] + d[2]);
+    d[10] = -1.0 / (x2 * x2) + (e[11] + 1.0) * d[5];
     e[9] = x1 * x1 * (d[4] * s1 - d[1] * (c2 - c1)) / (x2 * x2 * s2);
     e[10] = x1 * x1 * (d[3] * s1 - d[2] * (c2 - c1)) / (x2 * x2 * s2);
     (e, d)
 }
 
-/// The basis functions `g_1..g_6` of eq 20 with the constants of eqs 21-22
-/// exactly as printed, the lost minus signs restored between adjacent terms.
-pub fn g_printed(x1: f64, x2: f64, s: PrintedSigns, t: f64) -> [f64; 6] {
-    let (e, d) = printed_constants(x1, x2, s);
-    let (ca, sa, cb, sb) = (
-        (x1 * t).cos(),
-        (x1 * t).sin(),
-        (x2 * t).cos(),
-        (x2 * t).sin(),
-    );
-    let l = s.lead;
+/// The coefficients `(A, B, C, D, E, F)` of `g_1..g_6` of eq 20,
+/// `g = A cos ξ1u + B sin ξ1u + C cos ξ2u + D sin ξ2u + E u + F`, built from
+/// [`printed_constants`] term by term as printed, with the restoration of
+/// [`printed_constants`] and a leading minus on `g_1`, `g_2`, `g_3`, `g_6`.
+/// `g_2` is as printed: it has no `cos ξ2u` term (`C = 0`); with
+/// `with_d9` its missing term `d_9 cos ξ2u` is added.
+pub fn g_printed_coefficients(x1: f64, x2: f64, with_d9: bool) -> [[f64; 6]; 6] {
+    let (e, d) = printed_constants(x1, x2);
+    let e11p = e[11] + 1.0;
+    let (d12, d34, e910) = (d[1] + d[2], d[3] + d[4], e[9] + e[10]);
+    let (e3d, e6d) = (e[5] * e[9] + e[6] * e[10], e[7] * e[9] + e[8] * e[10]);
     [
-        l * d[1] * ca - d[4] * sa + d[1] * (e[11] + 1.0) * cb + e[9] * sb
-            - (x2 * e[9] - x1 * d[4]) * t
-            - (e[11] * d[1] - 1.0),
-        l * (d[1] + d[2]) * ca - (d[3] + d[4]) * sa + (e[9] + e[10]) * sb
-            - (x2 * (e[9] + e[10]) - x1 * (d[3] + d[4]) - 1.0) * t
-            - e[11] * (d[1] + d[2]),
-        l * d[5] * ca - d[7] * sa + d[10] * cb + (e[5] * e[9] + e[6] * e[10] + e[12] / x2) * sb
-            - (x2 * (e[5] * e[9] + e[6] * e[10]) - x1 * d[7] + e[12]) * t
-            - (e[11] * d[5] - 1.0 / (x2 * x2)),
-        l * d[1] * ca + d[4] * sa - d[1] * (e[11] + 1.0) * cb - e[9] * sb
-            + (x2 * e[9] - x1 * d[4]) * t
-            + e[11] * d[1],
-        l * d[2] * ca + d[3] * sa - d[2] * (e[11] + 1.0) * cb - e[10] * sb
-            + (x2 * e[10] - x1 * d[3]) * t
-            + e[11] * d[2],
-        l * d[6] * ca - d[8] * sa
-            + d[6] * (e[11] + 1.0) * cb
-            + (e[7] * e[9] + e[8] * e[10] - e[13] / x2) * sb
-            - (x2 * (e[7] * e[9] + e[8] * e[10]) - x1 * d[8] - e[13]) * t
-            - e[11] * d[6],
+        [
+            -d[1],
+            -d[4],
+            d[1] * e11p,
+            e[9],
+            -(x2 * e[9] - x1 * d[4]),
+            -(e[11] * d[1] - 1.0),
+        ],
+        [
+            -d12,
+            -d34,
+            if with_d9 { d[9] } else { 0.0 },
+            e910,
+            -(x2 * e910 - x1 * d34 - 1.0),
+            -e[11] * d12,
+        ],
+        [
+            -d[5],
+            -d[7],
+            d[10],
+            e3d + e[12] / x2,
+            -(x2 * e3d - x1 * d[7] + e[12]),
+            -(e[11] * d[5] - 1.0 / (x2 * x2)),
+        ],
+        [
+            d[1],
+            d[4],
+            -d[1] * e11p,
+            -e[9],
+            x2 * e[9] - x1 * d[4],
+            e[11] * d[1],
+        ],
+        [
+            d[2],
+            d[3],
+            -d[2] * e11p,
+            -e[10],
+            x2 * e[10] - x1 * d[3],
+            e[11] * d[2],
+        ],
+        [
+            -d[6],
+            -d[8],
+            d[6] * e11p,
+            e6d - e[13] / x2,
+            -(x2 * e6d - x1 * d[8] - e[13]),
+            -e[11] * d[6],
+        ],
     ]
 }
 
-/// Smallest, over every sign choice and both orderings of `ξ1, ξ2`, of the
-/// largest error of the printed `g_k` (k = 0..6) in the six constraints of
-/// eq 1 (derivatives by central differences of step `h`).
-pub fn g_printed_best_boundary_error(x1: f64, x2: f64, k: usize) -> f64 {
-    let h = 1e-4;
-    let mut best = f64::INFINITY;
-    for bits in 0..16u32 {
-        let sg = |b: u32| if bits & (1 << b) != 0 { -1.0 } else { 1.0 };
-        let s = PrintedSigns {
-            e4: sg(0),
-            e6: sg(1),
-            d10: sg(2),
-            lead: sg(3),
-        };
-        for (a, b) in [(x1, x2), (x2, x1)] {
-            let g = |t: f64| g_printed(a, b, s, t)[k];
-            let mut err = 0.0f64;
-            for (end, t) in [(0usize, 0.0), (1, 1.0)] {
-                let vals = [
-                    g(t),
-                    (g(t + h) - g(t - h)) / (2.0 * h),
-                    (g(t + h) - 2.0 * g(t) + g(t - h)) / (h * h),
-                ];
-                for (i, v) in vals.iter().enumerate() {
-                    let target = if 3 * end + i == k { 1.0 } else { 0.0 };
-                    err = err.max((v - target).abs());
-                }
-            }
-            if err.is_finite() {
-                best = best.min(err);
-            }
-        }
-    }
-    best
+/// `g_k(t)` from its coefficients `(A, B, C, D, E, F)` (any [`Real`]).
+pub fn g_from_coefficients<T: Real>(c: &[f64; 6], x1: f64, x2: f64, t: T) -> T {
+    (t * x1).cos() * c[0]
+        + (t * x1).sin() * c[1]
+        + (t * x2).cos() * c[2]
+        + (t * x2).sin() * c[3]
+        + t * c[4]
+        + c[5]
 }

@@ -16,6 +16,7 @@
 
 use super::force::Particular;
 use super::{Basis, BoundaryCurves, Curve, Force, Ode6Error};
+use crate::check::Worst;
 use crate::jet::{Jet, Real};
 use crate::surface::{Domain, Joined, Surface};
 
@@ -209,7 +210,7 @@ impl Joined for Chain {
                 for i in 0..3 {
                     let a = w[0].derivative(1.0, v, i, 0);
                     let b = w[1].derivative(0.0, v, i, 0);
-                    out[i] = out[i].max(crate::mesh::dist(a, b));
+                    out[i] = out[i].worst(crate::mesh::dist(a, b));
                 }
             }
         }
@@ -266,7 +267,7 @@ impl Joined for VSplit<'_> {
             for j in 0..3 {
                 let pa = a.derivative(u, v, 0, j);
                 let pb = b.derivative(u, b.v_range.0, 0, j);
-                out[j] = out[j].max(crate::mesh::dist(pa, pb));
+                out[j] = out[j].worst(crate::mesh::dist(pa, pb));
             }
         }
         out
@@ -382,13 +383,13 @@ impl Joined for Grid {
                     for d in 0..3 {
                         if let Some(q) = self.patches.get(i + 1).and_then(|c| c.get(r)) {
                             let (a, b) = (p.derivative(1.0, t, d, 0), q.derivative(0.0, t, d, 0));
-                            j.u[d] = j.u[d].max(crate::mesh::dist(a, b));
-                            j.u_magnitude[d] = j.u_magnitude[d].max(crate::mesh::norm(a));
+                            j.u[d] = j.u[d].worst(crate::mesh::dist(a, b));
+                            j.u_magnitude[d] = j.u_magnitude[d].worst(crate::mesh::norm(a));
                         }
                         if let Some(q) = col.get(r + 1) {
                             let (a, b) = (p.derivative(t, 1.0, 0, d), q.derivative(t, 0.0, 0, d));
-                            j.v[d] = j.v[d].max(crate::mesh::dist(a, b));
-                            j.v_magnitude[d] = j.v_magnitude[d].max(crate::mesh::norm(a));
+                            j.v[d] = j.v[d].worst(crate::mesh::dist(a, b));
+                            j.v_magnitude[d] = j.v_magnitude[d].worst(crate::mesh::norm(a));
                         }
                     }
                 }

@@ -18,6 +18,7 @@
 
 use super::patch::{validate_curves, Patch};
 use super::Pde6Error;
+use crate::check::{Measure, Worst};
 use crate::curve::Fourier3;
 use crate::jet::{Jet, Real};
 use crate::surface::{Domain, Joined, Surface};
@@ -273,10 +274,7 @@ impl Chain {
 
     /// Worst 1-norm condition number of any 6x6 solve in the chain.
     pub fn max_condition(&self) -> f64 {
-        self.pieces
-            .iter()
-            .map(|p| p.patch.max_condition)
-            .fold(0.0, f64::max)
+        self.pieces.iter().map(|p| p.patch.max_condition).max_nan()
     }
 }
 
@@ -334,7 +332,7 @@ impl Joined for Chain {
                 for (d, wd) in worst.iter_mut().enumerate() {
                     for k in 0..3 {
                         let (x, y) = (l[k].deriv(d, 0), r[k].deriv(d, 0));
-                        *wd = wd.max((x - y).abs() / x.abs().max(y.abs()).max(1.0));
+                        *wd = wd.worst((x - y).abs() / x.abs().worst(y.abs()).worst(1.0));
                     }
                 }
             }

@@ -12,8 +12,8 @@
 use super::feature::Feature;
 use super::project::Projector;
 use super::{depth_axis, SasmError};
+use crate::character::part::PartSurface;
 use crate::mesh::{dist, Mesh};
-use crate::sketch::part::PartSurface;
 use serde::Serialize;
 use std::collections::HashMap;
 

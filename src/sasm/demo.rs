@@ -6,15 +6,16 @@
 //! their view (found by ray casting) plus a bump, as a user traces over the
 //! model (the nose's, on the symmetry plane, is the host's section there).
 
-use super::check::{measure, SasmReport};
+use super::measure::{measure, SasmReport};
 use super::project::Projector;
 use super::{apply_feature, ApplyReport, AuxSpec, Feature, SasmError, SasmSpec, Stroke};
 use crate::character::doc::Level;
+use crate::character::part::PartSurface;
+use crate::character::Resolution;
 use crate::mesh::Mesh;
+use crate::pipeline::build_document;
 use crate::profile::View;
 use crate::sketch::check::bundled;
-use crate::sketch::part::PartSurface;
-use crate::sketch::{build_document, Resolution};
 use std::f64::consts::PI;
 
 /// Stroke points per curve.

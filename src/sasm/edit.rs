@@ -1,13 +1,13 @@
 //! SASM as edits of the character document (`Edit::Sasm`,
 //! `Edit::SasmAux`): applied to the built mesh in log order with the plate
-//! edits (`character::edit::apply_mesh_edits`). A feature adds its height
+//! edits (`pipeline::apply_mesh_edits`). A feature adds its height
 //! to the mesh as it is (`apply`), so an earlier force or plate edit of
 //! the same part is kept under it.
 
 use super::{apply_feature, Feature, SasmError};
-use crate::character::edit::Edit;
+use crate::character::log::Edit;
+use crate::character::part::PartSurface;
 use crate::mesh::Mesh;
-use crate::sketch::part::PartSurface;
 
 /// The feature of a SASM edit on the part it names (`None` for other
 /// edits).
@@ -28,7 +28,7 @@ pub fn feature_of(e: &Edit, parts: &[PartSurface]) -> Option<Result<Feature, Sas
 }
 
 /// Applies the SASM edits among `edits` to the mesh, in order (the plate
-/// edits left out: `character::edit::apply_mesh_edits` applies both).
+/// edits left out: `pipeline::apply_mesh_edits` applies both).
 pub fn apply_edits(
     mesh: &mut Mesh,
     parts: &[PartSurface],

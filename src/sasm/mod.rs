@@ -59,6 +59,7 @@ pub mod check;
 pub mod demo;
 pub mod edit;
 pub mod feature;
+pub mod measure;
 pub mod project;
 pub mod region;
 pub mod silhouette;
@@ -68,41 +69,8 @@ pub use feature::Feature;
 
 use crate::limits::Num;
 use crate::profile::View;
-use serde::{Deserialize, Serialize};
 
-/// A stroke in one view, points in that view's profile coordinates.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Stroke {
-    pub view: View,
-    pub points: Vec<[f64; 2]>,
-}
-
-/// Sketch on the model (Fig 10a): a closed stroke on `part` and one or two
-/// profile strokes.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SasmSpec {
-    pub part: String,
-    /// The closed outline of the feature on the part (last point equal to
-    /// the first, within [`CLOSE_TOLERANCE`] of its length).
-    pub curve: Stroke,
-    /// The feature's silhouette in one or two other views.
-    pub profiles: Vec<Stroke>,
-}
-
-/// Auxiliary line (Fig 10b): one half of the interface, mirrored about the
-/// vertical line `horizontal = mirror` of its view, plus the main profile.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct AuxSpec {
-    pub part: String,
-    /// Open stroke from the axis (top) around to the axis (bottom).
-    pub line: Stroke,
-    /// Horizontal coordinate of the symmetry axis in the line's view.
-    pub mirror: f64,
-    pub profile: Stroke,
-}
+pub use crate::character::log::{AuxSpec, SasmSpec, Stroke};
 
 /// A closed stroke's ends must meet within this fraction of its length.
 pub const CLOSE_TOLERANCE: f64 = 0.02;

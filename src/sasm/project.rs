@@ -9,9 +9,9 @@
 //! first hit from the viewer) is returned.
 
 use super::{depth_axis, SasmError};
+use crate::character::part::PartSurface;
 use crate::jet::Jet;
 use crate::profile::View;
-use crate::sketch::part::PartSurface;
 use crate::surface::Surface;
 use std::f64::consts::PI;
 

@@ -26,8 +26,84 @@
 //! feature whose height at the peak is negative (a dent) is left
 //! uncorrected.
 
-use super::feature::ProfileCurve;
 use super::region::Region;
+use super::{axis_name, clean, depth_axis, SasmError, Stroke};
+use crate::profile::View;
+
+/// A profile stroke read as the upper envelope of depth over the shared
+/// axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileCurve {
+    pub view: View,
+    pub points: Vec<[f64; 2]>,
+    /// Index (0, 1) of the depth coordinate in the profile's points.
+    pub kd: usize,
+    /// Index (0, 1) of the shared axis in the region view's points.
+    pub ri: usize,
+}
+
+impl ProfileCurve {
+    pub(super) fn new(s: &Stroke, region: View, n: usize) -> Result<ProfileCurve, SasmError> {
+        let what = format!("profile {n} ({} view)", s.view);
+        let d = depth_axis(region);
+        let (ph, pv) = s.view.axes();
+        let kd = if ph == d {
+            0
+        } else if pv == d {
+            1
+        } else {
+            return Err(SasmError::View {
+                what,
+                found: s.view,
+                expected: format!(
+                    "a profile must show the {} axis, the depth of the curve's {} view",
+                    axis_name(d),
+                    region
+                ),
+            });
+        };
+        let shared = if kd == 0 { pv } else { ph };
+        let (rh, _) = region.axes();
+        let points = clean(&what, &s.points, 2)?;
+        Ok(ProfileCurve {
+            view: s.view,
+            points,
+            kd,
+            ri: if shared == rh { 0 } else { 1 },
+        })
+    }
+
+    /// Shared-axis range covered.
+    pub fn range(&self) -> [f64; 2] {
+        let ks = 1 - self.kd;
+        self.points
+            .iter()
+            .fold([f64::INFINITY, f64::NEG_INFINITY], |r, p| {
+                [r[0].min(p[ks]), r[1].max(p[ks])]
+            })
+    }
+
+    /// The greatest depth of the stroke at shared coordinate `s`.
+    pub fn depth_at(&self, s: f64) -> Option<f64> {
+        let (ks, kd) = (1 - self.kd, self.kd);
+        let mut best: Option<f64> = None;
+        for w in self.points.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            let (lo, hi) = (a[ks].min(b[ks]), a[ks].max(b[ks]));
+            if s < lo || s > hi {
+                continue;
+            }
+            let z = if hi > lo {
+                let t = (s - a[ks]) / (b[ks] - a[ks]);
+                a[kd] + t * (b[kd] - a[kd])
+            } else {
+                a[kd].max(b[kd])
+            };
+            best = Some(best.map_or(z, |x: f64| x.max(z)));
+        }
+        best
+    }
+}
 
 /// Grid samples per direction over the region's bounding box.
 pub const GRID: usize = 65;
@@ -64,7 +140,7 @@ impl Factor {
                 0.5 * (y[j + 1] - y[j - 1])
             }
         };
-        super::feature::cubic_hermite(t, y[i], m(i), y[i + 1], m(i + 1))
+        cubic_hermite(t, y[i], m(i), y[i + 1], m(i + 1))
     }
 }
 
@@ -168,4 +244,14 @@ impl Factor {
     pub fn product(factors: &[Factor], q: [f64; 2]) -> f64 {
         factors.iter().map(|f| f.samples_at(q)).product()
     }
+}
+
+/// The cubic Hermite interpolant on `t` in [0, 1] from values `y0`, `y1`
+/// and slopes `m0`, `m1` (per unit of `t`).
+pub(crate) fn cubic_hermite(t: f64, y0: f64, m0: f64, y1: f64, m1: f64) -> f64 {
+    let (t2, t3) = (t * t, t * t * t);
+    (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+        + (t3 - 2.0 * t2 + t) * m0
+        + (-2.0 * t3 + 3.0 * t2) * y1
+        + (t3 - t2) * m1
 }

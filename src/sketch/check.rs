@@ -1,12 +1,13 @@
 //! The `sketch` family's checks and the profile error measure.
 
-use super::input::Outline;
-use super::report::ProfileErrorReport;
-use super::{build_document, Resolution};
+pub use super::report::{profile_errors, removed_errors, without_groups};
 use crate::character::doc::{CharacterDoc, Inputs, KeySection, Level, ProfileInput};
+use crate::character::Resolution;
 use crate::check::{tol, Check, Kind};
+use crate::check::{worst, Worst};
 use crate::mesh::Mesh;
-use crate::profile::{outline_of_mesh, parse_svg, profile_distance, OutlineOptions, Profile, View};
+use crate::pipeline::build_document;
+use crate::profile::{parse_svg, View};
 
 /// Largest front-view profile error at the final level (relative to the
 /// height): the 1 % (bundled female 0.71 %, male 0.76 %, at the
@@ -24,73 +25,6 @@ pub const C2_JUMP: f64 = 1e-6;
 /// (degrees): the seam is G1 by construction, so only the measurement's
 /// finite difference (step 1e-5 in the loop parameter) is left.
 pub const SEAM_ANGLE_DEG: f64 = 1e-3;
-
-/// Profile error per given view: the model's silhouette
-/// (`profile::outline_of_mesh`, default resolution) against the sketched
-/// outline (`profile::profile_distance`: symmetric boundary distance), max
-/// and RMS divided by the model height. A view whose silhouette cannot be
-/// extracted reports NaN (and fails every threshold).
-pub fn profile_errors(
-    mesh: &Mesh,
-    front: &Outline,
-    side: Option<&Outline>,
-    height: f64,
-) -> Vec<ProfileErrorReport> {
-    let mut out = Vec::new();
-    let views = [(View::Front, Some(front)), (View::Side, side)];
-    for (view, o) in views {
-        let Some(o) = o else { continue };
-        let d = Profile::new(view, o.points.clone())
-            .and_then(|sketch| {
-                let model = outline_of_mesh(mesh, view, &OutlineOptions::default())?;
-                Ok(profile_distance(&model, &sketch))
-            })
-            .map(|d| (d.max / height, d.rms / height))
-            .unwrap_or((f64::NAN, f64::NAN));
-        out.push(ProfileErrorReport {
-            view: view.name(),
-            max_rel: d.0,
-            rms_rel: d.1,
-        });
-    }
-    out
-}
-
-/// The mesh without the triangles of the named groups.
-pub fn without_groups(mesh: &Mesh, names: &[&str]) -> Mesh {
-    if names.is_empty() {
-        return mesh.clone();
-    }
-    let keep: Vec<bool> = mesh
-        .tri_group
-        .iter()
-        .map(|&g| !names.contains(&mesh.groups[g as usize].as_str()))
-        .collect();
-    mesh.filter_triangles(&keep).0
-}
-
-/// Each removed part's silhouette (its own group) against its profiles,
-/// relative to the model height.
-pub fn removed_errors(
-    mesh: &Mesh,
-    removed: &[super::removed::BuiltRemoved],
-    height: f64,
-) -> Vec<super::report::RemovedReport> {
-    removed
-        .iter()
-        .map(|r| {
-            let profile_error = match mesh.group_submesh(&r.spec.name) {
-                Some((m, _)) => profile_errors(&m, &r.front, r.side.as_ref(), height),
-                None => Vec::new(),
-            };
-            super::report::RemovedReport {
-                name: r.spec.name.clone(),
-                stitched: false,
-                profile_error,
-            }
-        })
-        .collect()
-}
 
 /// A bundled example as a document with inline profiles.
 pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
@@ -149,9 +83,9 @@ fn alignment_check() -> Check {
     let err = match al {
         Ok(al) => (al.angle - a)
             .abs()
-            .max((area - 2.0).abs())
-            .max((cen[0] - p0[0]).abs())
-            .max((cen[1] - p0[1]).abs()),
+            .worst((area - 2.0).abs())
+            .worst((cen[0] - p0[0]).abs())
+            .worst((cen[1] - p0[1]).abs()),
         Err(_) => f64::NAN,
     };
     Check::new(
@@ -170,14 +104,14 @@ fn alignment_check() -> Check {
 /// functions is 1 in its own value/derivative condition at s = 0 or 1 and 0
 /// in the other five) and its derivatives match central differences.
 fn quintic_check() -> Check {
-    use super::transition::quintic;
+    use crate::character::transition::quintic;
     let mut err = 0.0f64;
     for (k, s) in [0.0, 1.0].into_iter().enumerate() {
         for d in 0..3 {
             let h = quintic(s, d);
             for (i, v) in h.iter().enumerate() {
                 let want = if i == 3 * k + d { 1.0 } else { 0.0 };
-                err = err.max((v - want).abs());
+                err = err.worst((v - want).abs());
             }
         }
     }
@@ -192,7 +126,7 @@ fn quintic_check() -> Check {
             );
             for i in 0..6 {
                 let fd = (b[i] - a[i]) / (2.0 * step);
-                err = err.max((fd - c[i]).abs() * tol::ROUNDING / tol::CENTRAL_DIFFERENCE);
+                err = err.worst((fd - c[i]).abs() * tol::ROUNDING / tol::CENTRAL_DIFFERENCE);
             }
         }
     }
@@ -211,13 +145,13 @@ fn quintic_check() -> Check {
 /// The C2 option: the built female's transitions switched to `c2`
 /// (quintic Hermite) meet their parts C2 (the cubic default does not: its
 /// C2 jump is reported, not claimed).
-fn c2_option_check(b: &super::Built) -> Check {
+fn c2_option_check(b: &crate::pipeline::Built) -> Check {
     let mut d = b.doc.clone();
     for t in &mut d.transitions {
         t.continuity = crate::character::doc::Continuity::C2;
     }
     let c2 = build_document(&d, std::path::Path::new("."), Resolution::default(), false)
-        .map(|b| b.model.joins.iter().map(|j| j.c2).fold(0.0, f64::max))
+        .map(|b| b.model.joins.iter().map(|j| j.c2).fold(0.0, worst))
         .unwrap_or(f64::NAN);
     Check::new(
         "sketch",
@@ -259,15 +193,15 @@ fn crease_check() -> Check {
         m.tri_group.push(bottom);
     }
     let want = (1.0f64 / 3.0).acos().to_degrees();
-    let err = super::crease::creases(&m)
+    let err = crate::character::crease::creases(&m)
         .iter()
         .map(|c| {
             (c.interior_deg - want)
                 .abs()
-                .max((c.border_deg - want).abs())
-                .max((c.creased_length - 4.0 * 2f64.sqrt()).abs())
+                .worst((c.border_deg - want).abs())
+                .worst((c.creased_length - 4.0 * 2f64.sqrt()).abs())
         })
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     Check::new(
         "sketch",
         "000",
@@ -317,7 +251,7 @@ pub fn checks() -> Vec<Check> {
         let closed = if t.watertight && t.manifold && t.oriented {
             bad
         } else {
-            bad.max(1.0)
+            bad.worst(1.0)
         };
         out.push(c("watertight_manifold_oriented", Kind::Threshold, closed, 0.0).note(
             "final model of the bundled example: boundary + non-manifold + misoriented edges, non-manifold vertices and degenerate triangles (mesh::topology)",
@@ -333,11 +267,11 @@ pub fn checks() -> Vec<Check> {
             .seams
             .iter()
             .map(|s| s.max_angle_deg)
-            .fold(0.0, f64::max);
+            .fold(0.0, worst);
         out.push(c("seam_normal_jump_deg", Kind::Continuity, seam, SEAM_ANGLE_DEG).note(
             "largest angle (degrees) between the normals of the two sibling transitions along a seam (39 points per seam): G1 across the seams",
         ));
-        let c0 = b.model.joins.iter().map(|j| j.c0).fold(0.0, f64::max);
+        let c0 = b.model.joins.iter().map(|j| j.c0).fold(0.0, worst);
         out.push(c("transition_c0", Kind::Continuity, c0, tol::SOLVE).note(
             "largest gap between a transition and its parts along the joins, relative to the height",
         ));

@@ -6,8 +6,9 @@
 //!    a central curve and key sections placed where the profile's curvature
 //!    changes, circles whose diameter is the outline's width there
 //!    ([`derive`]); each part is a C2 sixth-order PDE chain through its
-//!    sections ([`part`], paper 002); parts are joined by transition surfaces
-//!    built from the parts' boundary curves and tangents ([`transition`]).
+//!    sections (`character::part`, paper 002); parts are joined by transition
+//!    surfaces built from the parts' boundary curves and tangents
+//!    (`character::transition`).
 //! 2. **Intermediate** (sec 4.1.2): with a side outline the sections become
 //!    ellipses, the depth and the centre's z from the side view (not for the
 //!    arms, hidden by the torso in the side view: they keep circles), and
@@ -30,38 +31,33 @@
 //! Simpler than the paper: the transitions are Hermite blends, cubic (C1,
 //! the default) or quintic with the parts' second derivatives (C2, per
 //! transition `continuity: c2`), not PDE surfaces; sibling transitions meet
-//! G1 along their seams; the mesh's creases are measured ([`crease`]);
+//! G1 along their seams; the mesh's creases are measured
+//! (`character::crease`);
 //! only standing humanoids (arms away from the body, legs apart)
 //! and quadrupeds with tail and neck rising above the back are segmented; a
 //! cut only moves a join that the automatic segmentation finds (it cannot
 //! add a part), and quadrupeds take no cuts.
 //!
-//! The whole model is one mesh ([`build`]): every part and transition shares
-//! the vertices of the rings and seams it meets, and orientation is made
-//! consistent and outward; watertightness, manifoldness and orientation are
-//! measured by `mesh::topology`, the join jumps by [`build::JoinReport`] and
-//! the profile error per view by [`report`].
+//! The whole model is one mesh (`character::assembly`, built by
+//! `crate::pipeline`): every part and transition shares the vertices of the
+//! rings and seams it meets, and orientation is made consistent and
+//! outward; watertightness, manifoldness and orientation are measured by
+//! `mesh::topology`, the join jumps by `character::measure` and the
+//! profile error per view by [`report`].
 
 pub mod align;
-pub mod build;
 pub mod check;
-pub mod crease;
 pub mod cuts;
 pub mod derive;
 pub mod input;
 pub mod keysection;
-pub mod measure;
-pub mod part;
 pub mod poly;
 pub mod quadruped;
 pub mod removed;
 pub mod report;
-pub mod seam;
 pub mod segment;
-pub mod transition;
 
-pub use build::{build_model, Model, Resolution};
-pub use report::{build_document, Built, SketchReport};
+pub use report::SketchReport;
 
 /// Errors of sketch-based modeling.
 #[derive(Debug, thiserror::Error)]
@@ -84,6 +80,9 @@ pub enum SketchError {
     Document(String),
     #[error(transparent)]
     Limit(#[from] crate::limits::LimitError),
+    /// Assembling the parts into one model failed.
+    #[error(transparent)]
+    Model(#[from] crate::character::ModelError),
     /// A document that fails its own validation (its message already says
     /// "document: ...").
     #[error(transparent)]

@@ -36,7 +36,7 @@
 //! `leg_b`, their depth from the whole head-on slice. The tail is hidden in
 //! the head-on view (circles, like a humanoid's arms).
 //!
-//! **Transitions** (`sketch::transition`): `underside` joins the body's
+//! **Transitions** (`character::transition`): `underside` joins the body's
 //! lower end to the legs (seams through the leg gaps), `topside` its upper
 //! end to tail, back and head (seams through the top gaps). Both cut the
 //! body's end ring where the seam apexes lie along it (`cut_angles`), not

@@ -4,7 +4,7 @@
 //!
 //! A removed part is one closed front outline (and optionally its side
 //! outline) in model coordinates, drawn where the part sits. It is built
-//! like a limb, as one C2 sixth-order PDE chain (`pde6`, [`super::part`]):
+//! like a limb, as one C2 sixth-order PDE chain (`pde6`, [`crate::character::part`]):
 //! the outline is turned so that its principal axis ([`super::align::axes`])
 //! is vertical, sliced into sections placed where its profile's curvature
 //! changes ([`super::derive::part_from_region`]), both ends closed to the

@@ -1,13 +1,16 @@
-//! From a character document to a model and its JSON report.
+//! The JSON report of a character built from its drawings: parts,
+//! transitions, joins, creases, topology and the model's silhouettes against
+//! the drawings (`crate::pipeline::build_document` builds, this measures).
 
-use super::build::{build_model_with, JoinReport, Model, PartCache, Resolution, SeamReport};
-use super::derive::derive;
-use super::input::{read_profile, Outline, ViewKind};
-use super::SketchError;
-use crate::character::doc::{CharacterDoc, Level, SectionShape};
+use super::input::Outline;
+use super::removed::BuiltRemoved;
+use crate::character::assembly::{JoinReport, Model, SeamReport};
+use crate::character::doc::{CharacterDoc, Level, PartSpec, SectionShape};
+use crate::character::props::PropReport;
 use crate::mesh::topology::{report as topology, TopologyReport};
+use crate::mesh::Mesh;
+use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, Profile, View};
 use serde::Serialize;
-use std::path::Path;
 
 /// One section in the report.
 #[derive(Clone, Debug, Serialize)]
@@ -37,12 +40,12 @@ pub struct TransitionReport {
     pub joins: Vec<JoinReport>,
     pub seams: Vec<SeamReport>,
     /// Largest dihedral angle between adjacent triangles inside the
-    /// transition (degrees; [`super::crease`]).
+    /// transition (degrees; [`crate::character::crease`]).
     pub crease_deg: f64,
     /// Largest dihedral angle across its joins with the parts (degrees).
     pub join_crease_deg: f64,
     /// Length of its interior edges turning by more than
-    /// [`super::crease::CREASE_DEG`], relative to the model height.
+    /// [`crate::character::crease::CREASE_DEG`], relative to the model height.
     pub creased_length_rel: f64,
 }
 
@@ -85,17 +88,6 @@ pub struct RemovedReport {
     pub profile_error: Vec<ProfileErrorReport>,
 }
 
-/// Everything a build produces.
-#[derive(Clone, Debug)]
-pub struct Built {
-    /// The document with its derived parts and transitions filled in.
-    pub doc: CharacterDoc,
-    pub model: Model,
-    pub report: SketchReport,
-    pub front: Outline,
-    pub side: Option<Outline>,
-}
-
 fn shape_name(s: &SectionShape) -> &'static str {
     match s {
         SectionShape::Circle { r } if *r == 0.0 => "point",
@@ -105,86 +97,23 @@ fn shape_name(s: &SectionShape) -> &'static str {
     }
 }
 
-/// Builds a document: reads its profiles (relative to `base`), derives the
-/// parts and transitions when the document has none, replays the active
-/// edits of its log (`character::edit`), builds the mesh and measures it.
-/// `rederive` forces derivation from the inputs. `Built::doc` holds the
-/// derived, unedited parts and the log; the report describes the edited
-/// parts.
-pub fn build_document(
+/// The report of a built document: `doc` with its derived (unedited)
+/// parts, `edited` the parts with the log's spec-level edits applied,
+/// `model` their model with every edit and prop, measured against the
+/// drawings `front` and `side` (of model height `height`), the removed
+/// parts built from their own profiles and the props' reports.
+#[allow(clippy::too_many_arguments)]
+pub fn report(
     doc: &CharacterDoc,
-    base: &Path,
-    res: Resolution,
-    rederive: bool,
-) -> Result<Built, SketchError> {
-    build_document_with(doc, base, res, rederive, None)
-}
-
-/// [`build_document`] with an optional cache of built parts (an editing
-/// session re-solves only the parts an edit changed; the result is the same
-/// bit for bit).
-pub fn build_document_with(
-    doc: &CharacterDoc,
-    base: &Path,
-    res: Resolution,
-    rederive: bool,
-    cache: Option<&mut PartCache>,
-) -> Result<Built, SketchError> {
-    doc.validate()?;
-    let tol = doc.inputs.tolerance;
-    let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
-    let side = match &doc.inputs.side {
-        Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
-        None => None,
-    };
-    if doc.level != Level::Initial && side.is_none() {
-        return Err(SketchError::Document(format!(
-            "level {} needs a side profile",
-            doc.level.name()
-        )));
-    }
-    if doc.level == Level::Final && doc.inputs.sections.is_empty() {
-        return Err(SketchError::Document(
-            "level final needs key cross-section sketches".into(),
-        ));
-    }
-    let removed = doc
-        .removed_parts
-        .iter()
-        .map(|r| super::removed::removed_part(r, base, tol))
-        .collect::<Result<Vec<_>, _>>()?;
-    let mut out = doc.clone();
-    let (yr, _) = super::poly::bounds(&front.points);
-    let height = yr[1] - yr[0];
-    if rederive || doc.parts.is_empty() {
-        let d = derive(
-            &front.points,
-            side.as_ref().map(|s| s.points.as_slice()),
-            &doc.inputs.sections,
-            &front.cuts,
-            doc.level,
-            doc.inputs.body_plan,
-        )?;
-        out.parts = d.parts;
-        out.parts.extend(removed.iter().map(|r| r.spec.clone()));
-        out.transitions = d.transitions;
-    }
-    // replay the edit log on a copy: `out` keeps the unedited parts and the
-    // log, so saving it and building again never applies an edit twice
-    // PDE-level edits change the parts (spec edits) or add displacements
-    // (forces); mesh-level edits (plate, SASM) then act on the built mesh,
-    // in log order
-    let active = out.active_edits();
-    let edit_err = |e: crate::character::edit::EditError| SketchError::Document(e.to_string());
-    crate::character::edit::check_order(&out.transitions, active).map_err(edit_err)?;
-    let edited = crate::character::edit::apply_to_parts(&out.parts, active).map_err(edit_err)?;
-    let disp = crate::character::edit::displacements(active).map_err(edit_err)?;
-    let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
-    crate::character::edit::apply_mesh_edits(&mut model.mesh, &model.parts, active)
-        .map_err(edit_err)?;
-    let props =
-        crate::character::props::compose(&mut model.mesh, &doc.props, base, res.rings_per_height)
-            .map_err(|e| SketchError::Document(e.to_string()))?;
+    edited: &[PartSpec],
+    model: &Model,
+    front: &Outline,
+    side: Option<&Outline>,
+    removed: &[BuiltRemoved],
+    props: Vec<PropReport>,
+    height: f64,
+) -> SketchReport {
+    let out = doc;
     let topo = topology(&model.mesh);
     let parts = edited
         .iter()
@@ -213,7 +142,7 @@ pub fn build_document_with(
                 .collect(),
         })
         .collect();
-    let creases = super::crease::creases(&model.mesh);
+    let creases = crate::character::crease::creases(&model.mesh);
     let crease_of = |name: &str| creases.iter().find(|c| c.group == name);
     let part_crease_deg = edited
         .iter()
@@ -251,10 +180,10 @@ pub fn build_document_with(
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
     let mut names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
     names.extend(props.iter().map(|p| p.name.as_str()));
-    let body = super::check::without_groups(&model.mesh, &names);
-    let profile_error = super::check::profile_errors(&body, &front, side.as_ref(), height);
-    let removed_reports = super::check::removed_errors(&model.mesh, &removed, height);
-    let report = SketchReport {
+    let body = without_groups(&model.mesh, &names);
+    let profile_error = profile_errors(&body, front, side, height);
+    let removed_reports = removed_errors(&model.mesh, removed, height);
+    SketchReport {
         level: out.level,
         height,
         parts,
@@ -271,12 +200,72 @@ pub fn build_document_with(
             .collect(),
         removed: removed_reports,
         props,
-    };
-    Ok(Built {
-        doc: out,
-        model,
-        report,
-        front,
-        side,
-    })
+    }
+}
+
+/// Profile error per given view: the model's silhouette
+/// (`profile::outline_of_mesh`, default resolution) against the sketched
+/// outline (`profile::profile_distance`: symmetric boundary distance), max
+/// and RMS divided by the model height. A view whose silhouette cannot be
+/// extracted reports NaN (and fails every threshold).
+pub fn profile_errors(
+    mesh: &Mesh,
+    front: &Outline,
+    side: Option<&Outline>,
+    height: f64,
+) -> Vec<ProfileErrorReport> {
+    let mut out = Vec::new();
+    let views = [(View::Front, Some(front)), (View::Side, side)];
+    for (view, o) in views {
+        let Some(o) = o else { continue };
+        let d = Profile::new(view, o.points.clone())
+            .and_then(|sketch| {
+                let model = outline_of_mesh(mesh, view, &OutlineOptions::default())?;
+                Ok(profile_distance(&model, &sketch))
+            })
+            .map(|d| (d.max / height, d.rms / height))
+            .unwrap_or((f64::NAN, f64::NAN));
+        out.push(ProfileErrorReport {
+            view: view.name(),
+            max_rel: d.0,
+            rms_rel: d.1,
+        });
+    }
+    out
+}
+
+/// The mesh without the triangles of the named groups.
+pub fn without_groups(mesh: &Mesh, names: &[&str]) -> Mesh {
+    if names.is_empty() {
+        return mesh.clone();
+    }
+    let keep: Vec<bool> = mesh
+        .tri_group
+        .iter()
+        .map(|&g| !names.contains(&mesh.groups[g as usize].as_str()))
+        .collect();
+    mesh.filter_triangles(&keep).0
+}
+
+/// Each removed part's silhouette (its own group) against its profiles,
+/// relative to the model height.
+pub fn removed_errors(
+    mesh: &Mesh,
+    removed: &[super::removed::BuiltRemoved],
+    height: f64,
+) -> Vec<super::report::RemovedReport> {
+    removed
+        .iter()
+        .map(|r| {
+            let profile_error = match mesh.group_submesh(&r.spec.name) {
+                Some((m, _)) => profile_errors(&m, &r.front, r.side.as_ref(), height),
+                None => Vec::new(),
+            };
+            super::report::RemovedReport {
+                name: r.spec.name.clone(),
+                stitched: false,
+                profile_error,
+            }
+        })
+        .collect()
 }

@@ -2,6 +2,7 @@
 //! against finite differences, and seam sharing in tessellation.
 
 use super::{tessellate, Revolution, Surface, Tessellation};
+use crate::check::Worst;
 use crate::check::{Check, Kind};
 use crate::mesh::topology;
 
@@ -23,7 +24,7 @@ pub fn checks() -> Vec<Check> {
             let d = s.derivative(u, v, i, j);
             let fd = central(&s, u, v, i, j);
             for k in 0..3 {
-                worst = worst.max((d[k] - fd[k]).abs() / d[k].abs().max(1.0));
+                worst = worst.worst((d[k] - fd[k]).abs() / d[k].abs().worst(1.0));
             }
         }
     }
@@ -84,8 +85,8 @@ pub fn jet_vs_fd<S: Surface>(s: &S) -> f64 {
             let fd: [f64; 3] = std::array::from_fn(|k| (4.0 * fine[k] - coarse[k]) / 3.0);
             for k in 0..3 {
                 let (a, b) = (jet[k] * scale, fd[k] * scale);
-                let e = (a - b).abs() / a.abs().max(1.0);
-                worst = if e.is_nan() { f64::NAN } else { worst.max(e) };
+                let e = (a - b).abs() / a.abs().worst(1.0);
+                worst = if e.is_nan() { f64::NAN } else { worst.worst(e) };
             }
         }
     }

@@ -4,15 +4,15 @@
 
 use super::fit::{fit, FitOptions, Sketch, Template};
 use super::landmarks::Similarity;
+pub use super::options::PROFILE_REL;
 use super::polygon::hausdorff;
 use super::rbf::Rbf;
 use super::shapes::{figure, prism, refined, Figure};
 use super::study::{run_case, CASES};
 use super::{TemplateError, View};
 use crate::check::{tol, Check, Kind};
+use crate::check::{worst, Worst};
 
-/// Profile error allowed by issue 12: 0.5 % of the height.
-pub const PROFILE_REL: f64 = 5e-3;
 /// TBSM round trip on the MakeHuman foot: Hausdorff distance of the new
 /// sections (10-term GECs) from the foot's own, over the largest section's
 /// diameter.
@@ -45,7 +45,7 @@ fn rbf_checks(out: &mut Vec<Check>) {
                 let q = [s, 0.5 * s, -s];
                 (r.eval(&q)[0] - f(&q)).abs()
             })
-            .fold(0.0, f64::max),
+            .fold(0.0, worst),
         Err(_) => f64::INFINITY,
     };
     out.push(check("sec 4.2.1", "rbf-reproduces-affine", Kind::Reference, m, tol::SOLVE * 1e3, "3D biharmonic spline with linear part on 60 centres of affine data: max error at 3 off-centre points"));
@@ -58,7 +58,7 @@ fn rbf_checks(out: &mut Vec<Check>) {
             .iter()
             .zip(&w)
             .map(|(p, x)| (r.eval(p)[0] - x[0]).abs())
-            .fold(0.0, f64::max),
+            .fold(0.0, worst),
         Err(_) => f64::INFINITY,
     };
     out.push(check(
@@ -117,10 +117,10 @@ fn figure_checks(out: &mut Vec<Check>) {
                     let z = s.scale * (p[2] - zc) + zc;
                     (r[0] - q[0])
                         .abs()
-                        .max((r[1] - q[1]).abs())
-                        .max((z - q[2]).abs())
+                        .worst((r[1] - q[1]).abs())
+                        .worst((z - q[2]).abs())
                 })
-                .fold(0.0, f64::max)
+                .fold(0.0, worst)
                 / (s.scale * target.height)
         }
         _ => f64::INFINITY,
@@ -239,9 +239,11 @@ pub const CREASE_MARGIN: f64 = 0.5;
 
 /// The study cases and crease regions (index into
 /// [`super::study::CREASE_REGIONS`]: 0 belly, 1 face) checked by
-/// [`crease_checks`]. Not met, so not checked (README, "Creases"):
-/// female->girl belly (2.10 rad at medium against the target's 0.24) and
-/// face (2.16 against 1.40). female->old's belly (1.60 rad before the
+/// [`crease_checks`]. female->girl misses the margin (belly 2.10 rad at
+/// medium against the target's 0.24, face 2.16 against 1.40; README,
+/// "Creases"): it is the `#[ignore]`d test
+/// `crease_female_girl_within_margin` below, which fails, not a case
+/// left out silently. female->old's belly (1.60 rad before the
 /// envelope passes' uncovered rows, [`super::envelope::uncovered_split`];
 /// 0.60 now, target 0.92) and face (1.79 before the shelf warp,
 /// [`super::envelope::shelf_warp`]; 0.84 now, target 1.14) are checked.
@@ -278,11 +280,11 @@ fn crease_checks(out: &mut Vec<Check>) {
         let target = crease("target");
         let fits = ["low", "medium", "high"].map(crease);
         let m = match (target, fits) {
-            (Some(t), [Some(a), Some(b), Some(c)]) => a.max(b).max(c) - t,
+            (Some(t), [Some(a), Some(b), Some(c)]) => a.worst(b).worst(c) - t,
             _ => f64::INFINITY,
         };
         let region_name = super::study::CREASE_REGIONS[region].0;
-        out.push(check("sec 4.2.2", &format!("study-{name}-crease-{region_name}"), Kind::Threshold, m, CREASE_MARGIN, "largest increase of a skin edge's dihedral angle over the template at rest in the region (study::CREASE_REGIONS), over the low, medium and high levels, less the MakeHuman target's own (radians)"));
+        out.push(check("sec 4.2.2", &format!("study-{name}-crease-{region_name}"), Kind::Threshold, m, CREASE_MARGIN, "largest increase of a skin edge's dihedral angle over the template at rest in the region (study::CREASE_REGIONS), over the low, medium and high levels, less the MakeHuman target's own (radians; signed: below 0 the fit is smoother than the target). The 0.5 rad margin is the acceptance criterion (a fit may crease about as much as the artist's target), not a rounding tolerance; the cases that miss it are an ignored test (template::check::tests)"));
     }
 }
 
@@ -306,4 +308,37 @@ pub fn checks() -> Vec<Check> {
     crease_checks(&mut out);
     super::belly::belly_checks(&mut out);
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// female->girl, the study case whose creases miss [`CREASE_MARGIN`]
+    /// (README, "Creases"): this test fails until the fit stops folding
+    /// the girl's belly and face.
+    #[test]
+    #[ignore = "fails: female->girl creases 2.10 rad (belly) and 2.16 rad (face) at medium against the target's 0.24 and 1.40; known limit of the template fit (README, Creases)"]
+    fn crease_female_girl_within_margin() {
+        let case = CASES
+            .iter()
+            .find(|c| c.name == "female->girl")
+            .expect("the female->girl study case");
+        let rows = study_rows(case);
+        let crease = |m: &str, region: usize| {
+            rows.iter()
+                .find(|r| r.method == m)
+                .map(|r| r.creases[region])
+        };
+        for region in 0..2 {
+            let target = crease("target", region).expect("target row");
+            for level in ["low", "medium", "high"] {
+                let fit = crease(level, region).expect("fit row");
+                assert!(
+                    fit - target <= CREASE_MARGIN,
+                    "{level}, region {region}: crease {fit} against the target's {target}"
+                );
+            }
+        }
+    }
 }

@@ -51,9 +51,10 @@
 //! skin. The fit repeats the pass while the view misses the tolerance
 //! (bounded, reported, undone when it does not help).
 
-use super::fit::{FitOptions, Template};
+use super::options::{FitOptions, Template};
+use super::outlines::side_outlines;
+use super::polygon::depth_span;
 use super::polygon::{bbox, boundary_distance};
-use super::refine::{depth_span, side_outlines};
 use super::weights::{relative_depth, SpanProfile, SPAN_SMOOTH};
 use super::{OutlineFn, TemplateError};
 

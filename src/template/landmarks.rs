@@ -339,8 +339,9 @@ pub fn face_marks(p: &[[f64; 2]], what: &str) -> Result<FaceMarks, TemplateError
     }
     let n = FACE_ROWS;
     let y = |r: usize| lo[1] + h * r as f64 / (n - 1) as f64;
-    let rows: Vec<Option<(f64, f64)>> =
-        (0..n).map(|r| super::refine::depth_span(p, y(r))).collect();
+    let rows: Vec<Option<(f64, f64)>> = (0..n)
+        .map(|r| super::polygon::depth_span(p, y(r)))
+        .collect();
     let row = |f: f64| ((f * (n - 1) as f64).round() as usize).min(n - 1);
     let width = |r: usize| rows[r].map_or(f64::INFINITY, |(b, f)| f - b);
     let neck = (row(NECK_BAND.0)..=row(NECK_BAND.1))

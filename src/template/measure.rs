@@ -3,7 +3,7 @@
 //! the sketch) and per-vertex errors against a ground-truth mesh; the
 //! bounding-box baseline (the template scaled to the sketch's box).
 
-use super::fit::{Sketch, Template};
+use super::options::{Sketch, Template};
 use super::{TemplateError, View};
 use crate::mesh::{dot, norm, Mesh};
 use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, Profile, ProfileDistance};

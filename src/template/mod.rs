@@ -39,6 +39,8 @@ pub mod envelope;
 pub mod fit;
 pub mod landmarks;
 pub mod measure;
+pub mod options;
+pub mod outlines;
 pub mod polygon;
 pub mod rbf;
 pub mod refine;
@@ -48,10 +50,11 @@ pub mod study;
 pub mod tbsm;
 pub mod weights;
 
-pub use fit::{fit, FitOptions, FitResult, Level, LevelReport, Sketch, Template};
+pub use fit::fit;
 pub use landmarks::{Scheme, Similarity};
+pub use options::{FitOptions, FitResult, Level, LevelReport, Sketch, Template};
+pub use options::{OnMiss, ViewFit};
 pub use rbf::{Rbf, RbfError};
-pub use refine::{OnMiss, ViewFit};
 
 use thiserror::Error;
 

@@ -15,31 +15,14 @@
 //! [`ViewFit`] ([`OnMiss::Report`]). A fitted outline that is not a simple
 //! closed polygon (the warp folded the silhouette) is always an error.
 
-use super::fit::{level_partner, matched_landmarks, FitOptions, Level, Template, STEEP};
 use super::landmarks::correspond;
+use super::options::{level_partner, matched_landmarks, FitOptions, Level, Template, STEEP};
+pub use super::options::{DepthMap, OnMiss, SidePartner, ViewFit, DEPTH_FALLOFF};
+pub use super::outlines::{arm_mask, side_outlines, SideOutlines, ARM_MARGIN};
 use super::rbf::Rbf;
 use super::{OutlineFn, TemplateError, View};
+pub use crate::polygon::depth_span;
 use crate::profile::{profile_distance, Profile};
-
-/// What the fit does when a view misses the tolerance after its passes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum OnMiss {
-    /// Return [`TemplateError::ProfileMiss`] (no result).
-    Fail,
-    /// Return the result; the miss is in the level's [`ViewFit`].
-    Report,
-}
-
-/// One view's measured fit after a level.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct ViewFit {
-    pub view: View,
-    /// Max distance of the fitted outline from the sketch / sketch height.
-    pub max_rel: f64,
-    /// `max_rel <= tolerance`.
-    pub within: bool,
-}
 
 /// The fitted skin's outline in `view` against the sketched profile:
 /// max distance / sketch height. Errors when the fitted outline is not a
@@ -157,29 +140,6 @@ pub fn front_pass(
     front_warp(positions, &ca, &cb, opts, stats)
 }
 
-/// Default exponent of the relative-depth weights of the side residual: a vertex
-/// at relative depth `s` (0 at the back silhouette, 1 at the front, at its
-/// height) takes `s^p` of the front's residual and `(1 - s)^p` of the
-/// back's, so a belly or a bust moves the skin near the front, not the
-/// arms or the torso's sides at mid depth.
-pub const DEPTH_FALLOFF: i32 = 2;
-
-/// The smallest and largest crossing of the horizontal line at height `y`
-/// with the closed polygon `p` (first coordinate), if it crosses.
-pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
-    let n = p.len();
-    let mut span: Option<(f64, f64)> = None;
-    for i in 0..n {
-        let (a, b) = (p[i], p[(i + 1) % n]);
-        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
-            continue;
-        }
-        let x = a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-        span = Some(span.map_or((x, x), |(l, h)| (l.min(x), h.max(x))));
-    }
-    span
-}
-
 /// One side (depth-only) pass from `positions`: the side outline of the
 /// fitted skin onto the sketched side profile. Only points where the
 /// outline is steep (|dy/ds| >= [`STEEP`]) are centres, each moving in
@@ -286,25 +246,6 @@ pub fn side_pass(
     Ok(())
 }
 
-/// How the side pass matches a steep outline point with the sketch.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum SidePartner {
-    /// The sketch's crossing of the point's height nearest to its
-    /// arc-length partner.
-    ArcLength,
-    /// The sketch's crossing of the point's height, heading the same way
-    /// (up the front, down the back), nearest to the point itself: a bulge
-    /// that lengthens the outline does not shift the partners above it.
-    Heading,
-    /// Only points on the envelope (the front-most or back-most crossing
-    /// of their height) are centres, partnered with the sketch's front-most
-    /// or back-most crossing of that height: overhangs and limbs inside the
-    /// outline's span (a forearm's underside, a belly's underside) are not
-    /// partnered with the far side of the body.
-    Envelope,
-}
-
 /// Outline points within this fraction of the height of their height's
 /// front-most (back-most) crossing are on the envelope.
 pub const ENVELOPE_EPS: f64 = 1e-3;
@@ -338,100 +279,6 @@ pub fn envelope_partner(
     } else {
         None
     }
-}
-
-/// Fraction of the height below the hands' (crotch's) landmark still
-/// counted as arm.
-pub const ARM_MARGIN: f64 = 0.05;
-
-/// The arms of a human template at `positions`: vertices below the higher
-/// armpit, above the hands and the crotch (less [`ARM_MARGIN`]) and
-/// outside the armpits' x range, the armpits found on the fitted
-/// front outline; `None` unless the front scheme is [`super::Scheme::Human`]
-/// and its landmarks are found.
-pub fn arm_mask(
-    template: &Template,
-    positions: &[[f64; 3]],
-    opts: &FitOptions,
-    outline: &OutlineFn,
-) -> Option<Vec<bool>> {
-    if opts.front_scheme != super::Scheme::Human {
-        return None;
-    }
-    let f = outline(&template.skin_at(positions), View::Front).ok()?;
-    let f = super::polygon::validated("the fitted front outline", &f).ok()?;
-    let marks = super::landmarks::find(&f, super::Scheme::Human, "fitted front outline").ok()?;
-    let (l, r) = (f[marks[2]], f[marks[6]]);
-    let (x0, x1, top) = (l[0].min(r[0]), l[0].max(r[0]), l[1].max(r[1]));
-    // not the feet: arms end above the lower of the hands' and the
-    // crotch's heights, less a margin for the hand below its extreme point
-    let (lo, hi) = super::polygon::bbox(&f);
-    let bottom =
-        f[marks[1]][1].min(f[marks[7]][1]).min(f[marks[4]][1]) - ARM_MARGIN * (hi[1] - lo[1]);
-    Some(
-        positions
-            .iter()
-            .map(|p| p[1] < top && p[1] > bottom && (p[0] < x0 || p[0] > x1))
-            .collect(),
-    )
-}
-
-/// The fitted skin's side outline and, when `trunk` asks for it and the
-/// arms are found ([`arm_mask`]), the arm mask (by template vertex) with
-/// the trunk's outline (the skin without the triangles touching an arm
-/// vertex) if that is a simple closed polygon.
-pub type SideOutlines = (Vec<[f64; 2]>, Option<(Vec<bool>, Vec<[f64; 2]>)>);
-
-/// See [`SideOutlines`]; errors when the whole outline is not simple. The
-/// arms are found on the template at rest (its front outline shows them
-/// apart from the trunk; on a fitted fat body the belly's sides reach past
-/// the armpits and were taken for arm), the outlines on `positions`.
-pub fn side_outlines(
-    template: &Template,
-    positions: &[[f64; 3]],
-    trunk: bool,
-    opts: &FitOptions,
-    outline: &OutlineFn,
-) -> Result<SideOutlines, TemplateError> {
-    let skin = template.skin_at(positions);
-    let o = outline(&skin, View::Side)?;
-    let o = super::polygon::validated("the fitted side outline", &o).map_err(|e| {
-        TemplateError::NoOutline {
-            view: "side".into(),
-            problem: e.to_string(),
-        }
-    })?;
-    let arms = trunk
-        .then(|| arm_mask(template, &template.mesh.positions, opts, outline))
-        .flatten();
-    let split = arms.and_then(|mask| {
-        let keep: Vec<bool> = skin
-            .triangles
-            .iter()
-            .map(|t| {
-                t.iter()
-                    .all(|&i| !mask[template.skin_index[i as usize] as usize])
-            })
-            .collect();
-        let (tm, _) = skin.filter_triangles(&keep);
-        let t = outline(&tm, View::Side).ok()?;
-        let t = super::polygon::validated("the trunk's side outline", &t).ok()?;
-        Some((mask, t))
-    });
-    Ok((o, split))
-}
-
-/// The overall depth map of the side pass.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum DepthMap {
-    /// No affine part: the residual field carries everything.
-    None,
-    /// Least squares over every partner.
-    LeastSquares,
-    /// Tukey-biweight reweighted least squares: a local bulge (belly,
-    /// bust) is an outlier and does not thicken the whole body.
-    Robust,
 }
 
 /// The crossing of the horizontal line at height `y` with the closed

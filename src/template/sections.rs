@@ -19,7 +19,8 @@
 //! the key sections only reshape the part they cut (the biharmonic spline
 //! is global: without these anchors a torso section moves head and feet).
 
-use super::fit::{FitOptions, Level, LevelReport, Template};
+use super::options::{FitOptions, Level, LevelReport, Template};
+pub use super::options::{SectionMatch, SectionSketch};
 use super::polygon::{boundary_distance, cumulative, point_at, validated};
 use super::rbf::Rbf;
 use super::TemplateError;
@@ -35,16 +36,6 @@ pub const SECTION_CLEARANCE: f64 = 0.01;
 /// Vertices farther than this fraction of the height below the lowest or
 /// above the highest section do not move at the high level.
 pub const BAND_MARGIN: f64 = 0.04;
-
-/// How the points of a model section correspond to the sketched loop.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum SectionMatch {
-    /// Along rays from the model loop's centroid.
-    Radial,
-    /// By arc-length fraction from each loop's front-most point.
-    ArcLength,
-}
 
 /// Where the ray from `c` through `p` crosses the closed polygon `poly`
 /// (the crossing nearest to `p` along the ray); the nearest point of the
@@ -86,14 +77,6 @@ pub fn ray_partner(poly: &[[f64; 2]], c: [f64; 2], p: [f64; 2]) -> [f64; 2] {
         }
     }
     near.1
-}
-
-/// One key cross-section: its height and its loops as `(x, z)` points.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SectionSketch {
-    pub y: f64,
-    pub loops: Vec<Vec<[f64; 2]>>,
 }
 
 /// A loop GEC-fitted with `terms` terms and sampled at `m` points.

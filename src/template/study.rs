@@ -209,7 +209,7 @@ pub fn trunk_depth(template: &Template) -> Vec<f64> {
     let rest = &template.skin;
     let (lo, hi) = rest.bbox();
     let h = (hi[1] - lo[1]).max(f64::MIN_POSITIVE);
-    let arms = super::refine::arm_mask(
+    let arms = super::outlines::arm_mask(
         template,
         &template.mesh.positions,
         &FitOptions::default(),

@@ -24,9 +24,10 @@
 //!   [`SPAN_ROWS`] rows, a triangle filter of half-width [`SPAN_SMOOTH`] of
 //!   the height), so an overhang's jump becomes a ramp.
 
-use super::fit::{FitOptions, Template};
 use super::landmarks::{face_marks, FaceMarks};
-use super::refine::{depth_span, side_outlines};
+use super::options::{FitOptions, Template};
+use super::outlines::side_outlines;
+use super::polygon::depth_span;
 use super::{OutlineFn, TemplateError};
 
 /// Rows (heights) of a [`SpanProfile`].

@@ -12,9 +12,10 @@ use super::autosave;
 use super::history::History;
 use super::params::{self, Row};
 use super::preview::ViewSet;
+pub use super::prompt::PromptKind;
 use super::worker::{Outcome, Rebuilt};
 use crate::character::doc::{CharacterDoc, PartSpec};
-use crate::character::edit::apply_to_parts;
+use crate::edit::apply_to_parts;
 use crate::mesh::Mesh;
 use crate::sketch::SketchReport;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
@@ -45,7 +46,7 @@ pub enum Mode {
     /// Typing a command's input ([`super::commands`]); `error`: why the
     /// last Enter was refused.
     Prompt {
-        kind: super::commands::PromptKind,
+        kind: PromptKind,
         buffer: String,
         error: Option<String>,
     },
@@ -64,8 +65,8 @@ pub enum Effect {
     /// Build at export resolution and write to the path.
     Export(PathBuf),
     /// Push an edit that is kept only when the document still builds
-    /// (`character::edit::push_checked`, on the worker).
-    Check(crate::character::edit::Edit),
+    /// (`pipeline::push_checked`, on the worker).
+    Check(crate::character::log::Edit),
     /// Abandon the running job.
     Cancel,
     Quit,
@@ -298,7 +299,7 @@ impl App {
         }
     }
 
-    pub(super) fn push(&mut self, e: crate::character::edit::Edit) -> Vec<Effect> {
+    pub(super) fn push(&mut self, e: crate::character::log::Edit) -> Vec<Effect> {
         let summary = e.summary();
         match self.doc.push_edit(e) {
             Ok(()) => {

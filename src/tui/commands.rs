@@ -35,33 +35,7 @@ use crate::character::props::{PropSpec, MAX_PROPS};
 use crossterm::event::{KeyCode, KeyEvent};
 use std::path::{Path, PathBuf};
 
-/// Which command a prompt is for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PromptKind {
-    AddPart,
-    KeySection,
-    AddProp,
-}
-
-impl PromptKind {
-    /// Shown before the typed text.
-    pub fn label(self) -> &'static str {
-        match self {
-            PromptKind::AddPart => "add part from profile: ",
-            PromptKind::KeySection => "key section: ",
-            PromptKind::AddProp => "attach prop: ",
-        }
-    }
-
-    /// What to type.
-    pub fn hint(self) -> &'static str {
-        match self {
-            PromptKind::AddPart => "PATH.svg [NAME] (outline in model units; Tab completes)",
-            PromptKind::KeySection => "Y A B (ellipse) | Y FILE.json (closed curve)",
-            PromptKind::AddProp => "MODEL.json [NAME [SCALE [TX TY TZ]]] (conv model)",
-        }
-    }
-}
+pub use super::prompt::PromptKind;
 
 /// Completes the last word of `typed` as a file path: to the longest
 /// common prefix of the matching entries (a directory gets its `/`).
@@ -327,7 +301,7 @@ pub fn add_key_section(
     };
     let mut parts = doc.parts.clone();
     crate::sketch::keysection::apply_key_section(&mut parts, &k).map_err(|e| e.to_string())?;
-    crate::character::edit::apply_to_parts(&parts, doc.active_edits())
+    crate::edit::apply_to_parts(&parts, doc.active_edits())
         .map_err(|e| format!("the edit log no longer applies: {e}"))?;
     let mut out = doc.clone();
     out.parts = parts;
@@ -388,7 +362,7 @@ impl App {
     /// unchanged).
     pub(super) fn checked(
         &mut self,
-        edit: crate::character::edit::Edit,
+        edit: crate::character::log::Edit,
         result: Result<Box<super::worker::Rebuilt>, String>,
         elapsed: std::time::Duration,
     ) -> Vec<Effect> {

@@ -4,7 +4,7 @@
 use super::app::{App, Effect, Focus, Mode};
 use super::commands::PromptKind;
 use super::params::{self, Parsed};
-use crate::character::edit::Edit;
+use crate::character::log::Edit;
 use crossterm::event::{KeyCode, KeyEvent};
 
 /// Every key binding: keys, what they do.

@@ -11,7 +11,7 @@
 //! * [`app`]: the state and its reaction to keys, pure (tests drive it and
 //!   render it on ratatui's `TestBackend`);
 //! * [`worker`]: rebuilds and exports on a worker thread, re-solving only
-//!   the parts an edit changed (`sketch::build::PartCache`; transitions and
+//!   the parts an edit changed (`character::assembly::PartCache`; transitions and
 //!   the mesh are rebuilt whole, at a lower preview resolution); stale jobs
 //!   are dropped, a panic is caught and the document goes back to its last
 //!   good state;
@@ -23,7 +23,7 @@
 //!   from a conv model (`character::props`), typed into a prompt.
 //!
 //! Force, boundary and plate edits are pushed on the worker through
-//! `character::edit::push_checked`; Esc cancels a running rebuild or export
+//! `pipeline::push_checked`; Esc cancels a running rebuild or export
 //! between part solves (see [`worker`]).
 //!
 //! * [`history`]: one undo history over the edit log and the commands.
@@ -33,7 +33,7 @@
 //!
 //! Not done: other terminal image protocols (sixel, iTerm2); cancelling inside
 //! one part's solve or the transition/mesh assembly (they live in
-//! `sketch::build`, which has no cancel hook; how long a cancel waits is
+//! `character::assembly`, which has no cancel hook; how long a cancel waits is
 //! the longer of the two: `benches/tui.rs` `cancel_wait_*`); a force,
 //! boundary or plate edit checked on the worker (`edit::push_checked`)
 //! solves every part without the part cache and is not interruptible.
@@ -48,6 +48,7 @@ pub mod kitty;
 pub mod params;
 mod popup;
 pub mod preview;
+pub mod prompt;
 pub mod term;
 pub mod view;
 pub mod worker;

@@ -9,11 +9,11 @@
 //! invalid value is shown with its error and cannot be applied. Transitions
 //! and removed parts are shown read-only. Force, boundary and plate edits
 //! (rows `force`, `boundary`, `plate`) are checked as typed the same way and
-//! then pushed on the worker through `character::edit::push_checked`, so
+//! then pushed on the worker through `pipeline::push_checked`, so
 //! one that would break the build is refused and the document unchanged.
 
 use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape, SurfaceSpec};
-use crate::character::edit::{validate_params, Edit, SectionTransform};
+use crate::character::log::{validate_params, Edit, SectionTransform};
 use crate::pde4::{Force, ForceKind};
 
 /// What a row edits.

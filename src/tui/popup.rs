@@ -4,11 +4,10 @@
 use super::app::{App, Mode};
 use super::fit::fit;
 use super::keys::BINDINGS;
-use super::view::block;
 use ratatui::layout::Rect;
-use ratatui::style::{Color, Style};
+use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Clear, Paragraph};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 use ratatui::Frame;
 
 fn centred(area: Rect, w: u16, h: u16) -> Rect {
@@ -64,4 +63,17 @@ pub(super) fn draw_popup(f: &mut Frame, app: &App) {
     let area = centred(f.area(), w.max(title.len() as u16 + 4), h);
     f.render_widget(Clear, area);
     f.render_widget(Paragraph::new(lines).block(block(title, true)), area);
+}
+
+/// A bordered block titled `title`, highlighted when `focused`.
+pub(super) fn block(title: &str, focused: bool) -> Block<'_> {
+    let style = if focused {
+        Style::default().fg(Color::Yellow)
+    } else {
+        Style::default().fg(Color::Gray)
+    };
+    Block::default()
+        .borders(Borders::ALL)
+        .border_style(style)
+        .title(Span::styled(title, style.add_modifier(Modifier::BOLD)))
 }

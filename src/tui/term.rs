@@ -8,7 +8,7 @@ use super::view::{self, PreviewCache};
 use super::worker::{Job, Task, Worker, THREAD_NAME};
 use super::TuiError;
 use crate::character::doc::{CharacterDoc, Level};
-use crate::sketch::Resolution;
+use crate::character::Resolution;
 use crossterm::event::{self, Event, KeyEventKind};
 use std::path::PathBuf;
 use std::time::Duration;

@@ -5,13 +5,14 @@
 
 use super::app::{App, Focus, ItemKind, Mode};
 use super::fit::{elide_left, fit};
+use super::popup::block;
 use super::preview::{self, HalfBlocks};
 use crate::character::doc::ProfileInput;
 use crate::render::Image;
 use ratatui::layout::{Constraint, Direction, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Borders, List, ListItem, ListState, Paragraph, Wrap};
+use ratatui::widgets::{List, ListItem, ListState, Paragraph, Wrap};
 use ratatui::Frame;
 
 /// The preview image of the last draw and what it was drawn for.
@@ -68,18 +69,6 @@ impl PreviewCache {
         ));
         self.kitty_shown = Some((key.clone(), inner));
     }
-}
-
-pub(super) fn block(title: &str, focused: bool) -> Block<'_> {
-    let style = if focused {
-        Style::default().fg(Color::Yellow)
-    } else {
-        Style::default().fg(Color::Gray)
-    };
-    Block::default()
-        .borders(Borders::ALL)
-        .border_style(style)
-        .title(Span::styled(title, style.add_modifier(Modifier::BOLD)))
 }
 
 const SELECTED: Style = Style::new().fg(Color::Black).bg(Color::Yellow);

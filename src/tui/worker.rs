@@ -10,7 +10,7 @@
 //! (before an export writes anything), and stops there with the error
 //! [`CANCELLED`]; the app drops the result and the document stays as it
 //! was. What is not interruptible: one part's solve, the transitions and
-//! the mesh assembly (`sketch::build::build_model_with`), one prop's conv
+//! the mesh assembly (`character::assembly::build_model_with`), one prop's conv
 //! build, the file write (atomic). A panic inside a build is caught (`catch_unwind`) and reported as
 //! [`Outcome::Panicked`]; the thread lives on.
 //!
@@ -18,12 +18,13 @@
 //! (serialised and parsed again), so an export is bit for bit what
 //! `character build` makes of the saved file.
 
+use crate::character::assembly::PartCache;
 use crate::character::doc::CharacterDoc;
-use crate::character::edit::Edit;
+use crate::character::log::Edit;
+use crate::character::Resolution;
 use crate::mesh::Mesh;
-use crate::sketch::build::PartCache;
-use crate::sketch::report::build_document_with;
-use crate::sketch::{Resolution, SketchReport};
+use crate::pipeline::build_document_with;
+use crate::sketch::SketchReport;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{channel, Receiver, Sender, TryRecvError};
@@ -38,7 +39,7 @@ pub enum Task {
     /// Build at `res` and write the mesh (format from the extension: OBJ,
     /// GLB, STL, PLY) or a PNG of the front, side and top views.
     Export { path: PathBuf },
-    /// Push `edit` through `character::edit::push_checked` (kept only when
+    /// Push `edit` through `pipeline::push_checked` (kept only when
     /// the document still builds as `character build` builds it); the
     /// result is the build with the edit.
     Check { edit: Edit },
@@ -117,7 +118,7 @@ pub fn build(job: &Job) -> Result<Rebuilt, String> {
 }
 
 /// [`build`] re-solving only the parts not in `cache` (the same mesh, bit
-/// for bit: `sketch::build::PartCache`).
+/// for bit: `character::assembly::PartCache`).
 pub fn build_with(job: &Job, cache: Option<&mut PartCache>) -> Result<Rebuilt, String> {
     build_cancellable(job, cache, &|| false)
 }
@@ -134,7 +135,7 @@ fn prewarm(
     cancelled: &dyn Fn() -> bool,
 ) -> Result<(), String> {
     if !doc.parts.is_empty() {
-        let edited = crate::character::edit::apply_to_parts(&doc.parts, doc.active_edits())
+        let edited = crate::edit::apply_to_parts(&doc.parts, doc.active_edits())
             .map_err(|e| e.to_string())?;
         for p in &edited {
             if cancelled() {
@@ -181,7 +182,7 @@ fn build_inner(
     let text = serde_json::to_string_pretty(&job.doc).map_err(|e| e.to_string())?;
     let mut doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
     if let Task::Check { edit } = &job.task {
-        let built = crate::character::edit::push_checked(&mut doc, edit.clone(), &job.base)
+        let built = crate::pipeline::push_checked(&mut doc, edit.clone(), &job.base)
             .map_err(|e| e.to_string())?;
         return Ok(Rebuilt {
             doc: built.doc,

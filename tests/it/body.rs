@@ -49,7 +49,7 @@ fn assert_closed(name: &str, skin: &Mesh, o: &ClosedOptions, errors: bool) {
     }
 }
 
-/// The shoulder's per-column scales (`sketch::transition::column_scales`)
+/// The shoulder's per-column scales (`character::transition::column_scales`)
 /// took the base body's crossing triangle pairs from 106 to 3: a guard on
 /// that fix, tighter than the checked morphs' bound.
 const BASE_CROSSINGS_MAX: usize = 5;
@@ -292,7 +292,7 @@ fn a_retessellated_moved_copy_reconstructs_the_same() {
 /// loop column; inside a part, the ring band and the column. `cuts`: the
 /// shoulders' cut table of the body (`cut_table` of its `cut_angles`).
 fn crossing_cell(m: &Mesh, t: usize, cuts: &[(usize, usize)]) -> String {
-    use pdesculpt::sketch::transition::{loop_len, loop_runs};
+    use pdesculpt::character::transition::{loop_len, loop_runs};
     let g = m.tri_group[t];
     let name = &m.groups[g as usize];
     let local = m.tri_group[..t].iter().filter(|&&x| x == g).count();
@@ -351,7 +351,7 @@ fn diagnose_self_crossings() {
         .iter()
         .find(|t| t.name == "shoulders")
         .unwrap();
-    let cuts = pdesculpt::sketch::transition::cut_table(3, &shoulders.cut_angles);
+    let cuts = pdesculpt::character::ring::cut_table(3, &shoulders.cut_angles);
     println!("shoulder cuts {cuts:?} (empty: the fixed cuts)");
     // the left arm's transition alone, crossing triangles red, four views
     let arm = m.groups.iter().position(|g| g == "shoulders").unwrap() as u32;
@@ -418,7 +418,9 @@ fn diagnose_self_crossings() {
 #[test]
 #[ignore]
 fn diagnose_arm_columns() {
-    use pdesculpt::sketch::transition::{child_transition, cut_table, eval, loop_eval, seams};
+    use pdesculpt::character::ring::cut_table;
+    use pdesculpt::character::seam::seams;
+    use pdesculpt::character::transition::{child_transition, eval, loop_eval};
     let skin = load_body(None, &[]).unwrap();
     let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
     let parts = &b.model.parts;

@@ -29,7 +29,7 @@ fn shoulder_crossings(morph: Option<&str>) -> usize {
 }
 
 /// The bodies whose shoulders have no crossing pair. Measured before the
-/// capped per-column scales of `sketch::transition::column_scales` and the
+/// capped per-column scales of `character::transition::column_scales` and the
 /// seam's `seam_across_weight`: base 3, stomach-pregnant-incr 3,
 /// universal-male maxweight 2, caucasian-male-old 2, african-, asian- and
 /// caucasian-male-young 1 each. The female armpits are not fixed (README,
@@ -84,7 +84,8 @@ fn the_female_armpits_have_no_shoulder_crossings_with_measured_cuts() {
 #[test]
 fn cut_table_takes_front_and_back_angles() {
     use pdesculpt::body::closed::{shifted_shoulder_cuts, shoulder_cut_angles};
-    use pdesculpt::sketch::transition::{cut_indices, cut_table, loop_len, loop_runs};
+    use pdesculpt::character::ring::{cut_indices, cut_table};
+    use pdesculpt::character::transition::{loop_len, loop_runs};
     use std::f64::consts::PI;
     let a = |i: usize| i as f64 * PI / 24.0;
     assert_eq!(cut_table(3, &[a(16), a(8)]), vec![(16, 32), (8, 40)]);
@@ -114,7 +115,9 @@ fn cut_table_takes_front_and_back_angles() {
 #[test]
 #[ignore]
 fn dump_shoulder_columns() {
-    use pdesculpt::sketch::transition::{child_transition, cut_table, loop_eval, seams};
+    use pdesculpt::character::ring::cut_table;
+    use pdesculpt::character::seam::seams;
+    use pdesculpt::character::transition::{child_transition, loop_eval};
     use std::f64::consts::PI;
     let morphs: Vec<String> = std::env::var("XING_MORPH")
         .ok()
@@ -340,7 +343,7 @@ fn study_and_demo_shoulder_cuts() {
             );
         }
     }
-    let demo = pdesculpt::character::demo::build().unwrap();
+    let demo = pdesculpt::demo::build().unwrap();
     println!(
         "demo: crossings {:?}",
         demo.report.reconstruction.self_intersections.by_groups
@@ -393,15 +396,15 @@ fn with_shoulder_cuts(
     cuts: Vec<f64>,
     height: f64,
     o: &ClosedOptions,
-) -> pdesculpt::sketch::build::Model {
+) -> pdesculpt::character::assembly::Model {
     let mut tr = b.transitions.clone();
     let k = tr.iter().position(|t| t.name == "shoulders").unwrap();
     tr[k].cut_angles = cuts;
-    pdesculpt::sketch::build::build_model(
+    pdesculpt::character::assembly::build_model(
         &b.specs,
         &tr,
         height,
-        pdesculpt::sketch::build::Resolution {
+        pdesculpt::character::assembly::Resolution {
             rings_per_height: o.rings_per_height,
             transition_rows: o.transition_rows,
         },

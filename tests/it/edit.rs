@@ -3,9 +3,10 @@
 
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::character::doc::{CharacterDoc, Level};
-use pdesculpt::character::edit::{Edit, EditError, SectionTransform};
+use pdesculpt::character::log::{Edit, EditError, SectionTransform};
+use pdesculpt::character::Resolution;
+use pdesculpt::pipeline::build_document;
 use pdesculpt::sketch::check::bundled;
-use pdesculpt::sketch::{build_document, Resolution};
 use proptest::prelude::*;
 use std::path::Path;
 
@@ -259,7 +260,7 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
 
 #[test]
 fn edit_checks_pass() {
-    let checks = pdesculpt::character::edit::check::checks();
+    let checks = pdesculpt::edit::check::checks();
     assert!(checks.len() >= 10);
     for c in &checks {
         assert!(
@@ -275,7 +276,7 @@ fn force_boundary_and_plate_edits_refuse_bad_parameters() {
     let mut d = female();
     let torso = d.parts[0].clone();
     let before = d.clone();
-    let good = pdesculpt::character::edit::check::sample_force(&torso, [0.0, 0.0, 1.0]);
+    let good = pdesculpt::edit::check::sample_force(&torso, [0.0, 0.0, 1.0]);
     let Edit::Force { force, .. } = good.clone() else {
         unreachable!()
     };
@@ -347,7 +348,7 @@ fn force_boundary_and_plate_edits_refuse_bad_parameters() {
 
 #[test]
 fn force_region_edits_are_validated_and_applied_inside_their_curve() {
-    use pdesculpt::character::edit::check::sample_force_region;
+    use pdesculpt::edit::check::sample_force_region;
     let mut d = female();
     let torso = d.parts[0].clone();
     let before = d.clone();
@@ -413,10 +414,7 @@ fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
                     },
                 ),
                 2 => gec(&part, Some(2), SectionTransform::Rotate { angle: 3.0 * x }),
-                3 => pdesculpt::character::edit::check::sample_force(
-                    &torso,
-                    [0.0, 3.0 * y, 10.0 * x],
-                ),
+                3 => pdesculpt::edit::check::sample_force(&torso, [0.0, 3.0 * y, 10.0 * x]),
                 4 => Edit::Boundary {
                     part,
                     end: pdesculpt::character::doc::End::End,
@@ -424,12 +422,12 @@ fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
                     tangent: Some([0.1 * x, 0.0, 0.1 * y]),
                     reach: 0.4,
                 },
-                5 => pdesculpt::character::edit::check::sample_force_region(
+                5 => pdesculpt::edit::check::sample_force_region(
                     &torso,
                     3.0 * y,
                     [10.0 * y, 0.0, 10.0 * x],
                 ),
-                6 => pdesculpt::character::edit::check_stroke::sample_force_stroke(
+                6 => pdesculpt::edit::check_stroke::sample_force_stroke(
                     &torso,
                     3.0 * x,
                     [0.0, 10.0 * y, 10.0 * x],
@@ -450,7 +448,7 @@ proptest! {
     fn random_edits_with_undo_redo_replay_like_incremental(
         steps in proptest::collection::vec((0usize..4, edit_strategy(&female())), 1..5)
     ) {
-        use pdesculpt::character::edit::Session;
+        use pdesculpt::pipeline::Session;
         let mut s = Session::new(female(), ".".into(), low());
         for (what, e) in steps {
             let before = s.doc.clone();
@@ -475,7 +473,7 @@ proptest! {
 
 #[test]
 fn the_log_order_is_the_application_order_or_the_edit_is_refused() {
-    use pdesculpt::character::edit::Session;
+    use pdesculpt::pipeline::Session;
     use pdesculpt::sasm::demo::breast;
     let d0 = female();
     let b = build_document(&d0, Path::new("."), low(), false).expect("builds");

@@ -3,17 +3,17 @@
 
 use super::edit::{female, low};
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
-use pdesculpt::character::edit::check::sample_force_region;
-use pdesculpt::character::edit::check_stroke::{
+use pdesculpt::character::log::Edit;
+use pdesculpt::check::tol;
+use pdesculpt::edit::check::sample_force_region;
+use pdesculpt::edit::check_stroke::{
     rectangle_difference, rectangle_stroke, sample_force_stroke, sample_stroke, stroke_measures,
     C1_ORDER_TOL,
 };
-use pdesculpt::character::edit::force4::{THETA_SPAN_MIN, U_SPAN_MIN_FRACTION};
-use pdesculpt::character::edit::stroke::{StrokeError, StrokeMap, FOLD_GRID};
-use pdesculpt::character::edit::Edit;
-use pdesculpt::check::tol;
+use pdesculpt::edit::force4::{THETA_SPAN_MIN, U_SPAN_MIN_FRACTION};
+use pdesculpt::edit::stroke::{StrokeError, StrokeMap, FOLD_GRID};
 use pdesculpt::pde4::{Force, ForceKind};
-use pdesculpt::sketch::build_document;
+use pdesculpt::pipeline::build_document;
 use std::f64::consts::PI;
 use std::path::Path;
 
@@ -306,7 +306,7 @@ fn drawn_front(
     use pdesculpt::profile::View;
     use pdesculpt::surface::Surface;
     let spec = &d.parts[0];
-    let surf = pdesculpt::sketch::part::build_part(spec).expect("builds");
+    let surf = pdesculpt::character::part::build_part(spec).expect("builds");
     let um = 0.5 * (surf.u0 + surf.u1);
     let front = (0..360)
         .map(|k| 2.0 * PI * k as f64 / 360.0)
@@ -328,7 +328,7 @@ fn drawn_front(
 
 #[test]
 fn a_stroke_drawn_in_a_view_is_projected_onto_the_part() {
-    use pdesculpt::character::edit::force4::project_force_stroke;
+    use pdesculpt::pipeline::project_force_stroke;
     let d = female();
     let (drawn, want) = drawn_front(&d);
     let mut e = stroke_edit("torso", Vec::new(), None);
@@ -403,8 +403,8 @@ fn a_stroke_whose_u_width_overflows_is_refused_by_name() {
 
 #[test]
 fn a_drawn_stroke_over_the_point_limit_is_refused_before_it_is_projected() {
-    use pdesculpt::character::edit::force4::project_force_stroke;
-    use pdesculpt::character::edit::stroke::STROKE_POINTS_MAX;
+    use pdesculpt::edit::stroke::STROKE_POINTS_MAX;
+    use pdesculpt::pipeline::project_force_stroke;
     let d = female();
     // every point misses the part: projected first, the error would name
     // a miss (after casting a ray for each of them)

@@ -257,7 +257,7 @@ fn render_draws_the_mesh_inside_the_frame() {
 
 #[test]
 fn skirt_rejects_bad_options() {
-    use pdesculpt::character::skirt::{skirt, SkirtOptions};
+    use pdesculpt::demo::skirt::{skirt, SkirtOptions};
     let body = pdesculpt::makehuman::base_body().unwrap().mesh;
     for o in [
         SkirtOptions {
@@ -305,7 +305,7 @@ const PREGNANT_BELLY_MIN_DZ: f64 = 0.3;
 
 #[test]
 fn demo_pipeline_measures_each_step() {
-    let d = pdesculpt::character::demo::build().expect("demo builds");
+    let d = pdesculpt::demo::build().expect("demo builds");
     assert_eq!(d.report.edits.len(), 2);
     for e in &d.report.edits {
         assert!(

@@ -5,6 +5,7 @@ mod fuzz;
 mod fuzz_harness;
 mod infra;
 mod layers;
+mod nan;
 mod registry;
 mod strategies;
 mod tolerances;

@@ -1,7 +1,10 @@
 //! SASM (paper 000 sec 5.3): strokes projected onto a part, features that
 //! join their host C0/C1, and clear errors for bad strokes.
 
+use pdesculpt::character::assembly::build_model;
 use pdesculpt::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use pdesculpt::character::part::build_part;
+use pdesculpt::character::Resolution;
 use pdesculpt::check::tol;
 use pdesculpt::mesh::topology::report as topology;
 use pdesculpt::profile::View;
@@ -10,9 +13,6 @@ use pdesculpt::sasm::project::Projector;
 use pdesculpt::sasm::{
     apply_feature, closed_polygon, mirrored_polygon, AuxSpec, Feature, SasmError, SasmSpec, Stroke,
 };
-use pdesculpt::sketch::build::build_model;
-use pdesculpt::sketch::part::build_part;
-use pdesculpt::sketch::Resolution;
 use proptest::prelude::*;
 use std::f64::consts::PI;
 
@@ -265,9 +265,9 @@ fn sasm_family_passes_on_the_bundled_female() {
 #[test]
 fn sasm_edit_round_trips_replays_and_undoes() {
     use pdesculpt::character::doc::Level;
-    use pdesculpt::character::edit::Edit;
+    use pdesculpt::character::log::Edit;
+    use pdesculpt::pipeline::build_document;
     use pdesculpt::sasm::demo::breast;
-    use pdesculpt::sketch::build_document;
     use pdesculpt::sketch::check::bundled;
     use std::path::Path;
     let doc = bundled("female", Level::Final).unwrap();

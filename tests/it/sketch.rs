@@ -3,11 +3,12 @@
 
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::character::doc::{CharacterDoc, Level, ProfileInput};
+use pdesculpt::character::Resolution;
 use pdesculpt::check::tol;
 use pdesculpt::mesh::{io, Mesh};
+use pdesculpt::pipeline::build_document;
 use pdesculpt::sketch::align::MAX_ROTATION_DEG;
 use pdesculpt::sketch::check::{bundled, PROFILE_FRONT};
-use pdesculpt::sketch::{build_document, Resolution};
 use proptest::prelude::*;
 use std::path::Path;
 
@@ -275,7 +276,7 @@ fn with_cut(d: &str) -> String {
     svg.replace("</svg>", &format!("<path id=\"cut_x\" d=\"{d}\"/></svg>"))
 }
 
-fn first_centre_y(b: &pdesculpt::sketch::Built, part: &str) -> f64 {
+fn first_centre_y(b: &pdesculpt::pipeline::Built, part: &str) -> f64 {
     let p = b.doc.parts.iter().find(|p| p.name == part).expect("part");
     p.sections[0].centre[1]
 }
@@ -457,7 +458,8 @@ fn transitions_are_c1_by_default_and_c2_on_request() {
     use pdesculpt::sketch::check::{C1_JUMP, C2_JUMP};
     let doc = bundled("female", Level::Final).expect("bundled female");
     let b = build_document(&doc, Path::new("."), Resolution::default(), true).expect("builds");
-    let c2 = |b: &pdesculpt::sketch::Built| b.model.joins.iter().map(|j| j.c2).fold(0.0, f64::max);
+    let c2 =
+        |b: &pdesculpt::pipeline::Built| b.model.joins.iter().map(|j| j.c2).fold(0.0, f64::max);
     assert!(b
         .doc
         .transitions
@@ -512,10 +514,10 @@ fn crease_report_is_the_same_on_every_call() {
     let mut m = pdesculpt::profile::shapes::torus(1.0, 0.4, 10);
     m.tri_group = vec![0; m.triangles.len()];
     m.groups = vec!["torus".into()];
-    let a = pdesculpt::sketch::crease::creases(&m);
+    let a = pdesculpt::character::crease::creases(&m);
     assert!(a[0].creased_length > 0.0);
     for _ in 0..8 {
-        let b = pdesculpt::sketch::crease::creases(&m);
+        let b = pdesculpt::character::crease::creases(&m);
         assert_eq!(a[0].creased_length.to_bits(), b[0].creased_length.to_bits());
         assert_eq!(a[0].interior_at, b[0].interior_at);
     }

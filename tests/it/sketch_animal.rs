@@ -2,8 +2,9 @@
 
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::character::doc::{Level, SectionShape};
+use pdesculpt::character::Resolution;
+use pdesculpt::pipeline::build_document;
 use pdesculpt::sketch::check::{bundled, C1_JUMP};
-use pdesculpt::sketch::{build_document, Resolution};
 use std::path::Path;
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch");

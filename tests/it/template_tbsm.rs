@@ -140,8 +140,9 @@ fn tbsm_bad_input_is_a_clear_error() {
 mod cli_tests {
     use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
     use pdesculpt::character::doc::{CharacterDoc, Level, SectionShape};
+    use pdesculpt::character::Resolution;
+    use pdesculpt::pipeline::build_document;
     use pdesculpt::sketch::check::bundled;
-    use pdesculpt::sketch::{build_document, Resolution};
     use std::path::Path;
 
     /// The bundled female at the intermediate level (elliptic sections),

@@ -6,7 +6,7 @@
 use crate::cli::tmpdir;
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use pdesculpt::character::doc::{CharacterDoc, ProfileInput};
-use pdesculpt::sketch::Resolution;
+use pdesculpt::character::Resolution;
 use pdesculpt::tui::app::{App, Effect, Focus, Mode};
 use pdesculpt::tui::autosave;
 use pdesculpt::tui::term::{open, Options};

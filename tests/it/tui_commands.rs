@@ -9,8 +9,8 @@ use crate::cli::pdesculpt;
 use crossterm::event::KeyCode;
 use pdesculpt::character::doc::{CharacterDoc, SectionShape};
 use pdesculpt::character::props::{place, PropSpec, PROP_RESOLUTION};
+use pdesculpt::character::Resolution;
 use pdesculpt::conv::model::{Model, Polygonizer};
-use pdesculpt::sketch::Resolution;
 use pdesculpt::tui::app::{App, ItemKind, Mode};
 use pdesculpt::tui::commands::{complete, PromptKind};
 use pdesculpt::tui::worker::{self, Job, Task};
@@ -253,7 +253,7 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
     // the prop is the conv model built afresh (no cache), placed: the same
     // vertices, bit for bit
     let saved = CharacterDoc::load(&app.path).expect("saved");
-    let b = pdesculpt::sketch::build_document(&saved, &dir, Resolution::default(), false)
+    let b = pdesculpt::pipeline::build_document(&saved, &dir, Resolution::default(), false)
         .expect("builds");
     let text = std::fs::read_to_string(&blob).expect("reads");
     let m = Model::from_json(&text).expect("model");
@@ -299,7 +299,7 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
     let without = {
         let mut d = saved.clone();
         d.props.clear();
-        pdesculpt::sketch::build_document(&d, &dir, Resolution::default(), false).expect("builds")
+        pdesculpt::pipeline::build_document(&d, &dir, Resolution::default(), false).expect("builds")
     };
     assert_eq!(
         b.report.profile_error[0].max_rel,
@@ -406,7 +406,7 @@ fn tui_force_boundary_plate_forms_check_numbers_and_refuse_bad_edits() {
 
 #[test]
 fn tui_cancelled_build_stops_between_parts_and_leaves_the_document() {
-    use pdesculpt::sketch::build::PartCache;
+    use pdesculpt::character::assembly::PartCache;
     use std::cell::Cell;
     let mut app = built("cmd-cancel");
     let j = Job {
@@ -476,7 +476,7 @@ fn tui_cancelled_build_stops_between_parts_and_leaves_the_document() {
 /// mesh assembly, which are not interruptible.
 #[test]
 fn tui_cancel_stops_at_the_next_question_at_most_one_part_solve_later() {
-    use pdesculpt::sketch::build::PartCache;
+    use pdesculpt::character::assembly::PartCache;
     use std::cell::Cell;
     let app = built("cmd-cancel-steps");
     let n = app.doc.parts.len();

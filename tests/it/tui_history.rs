@@ -7,8 +7,8 @@ use super::tui_commands::{command, tail_svg};
 use crate::cli::{pdesculpt, tmpdir};
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use pdesculpt::character::doc::{CharacterDoc, ProfileInput};
+use pdesculpt::character::Resolution;
 use pdesculpt::mesh::Mesh;
-use pdesculpt::sketch::Resolution;
 use pdesculpt::tui::app::{App, Focus, Mode};
 use pdesculpt::tui::autosave;
 use pdesculpt::tui::commands::stored_path;
@@ -233,7 +233,7 @@ fn tui_paths_below_the_document_are_stored_relative_and_a_copy_builds_elsewhere(
     copy_dir(&dir, &there);
     std::fs::remove_dir_all(models).expect("removes");
     let doc = there.join("char.json");
-    let a = pdesculpt::sketch::build_document(
+    let a = pdesculpt::pipeline::build_document(
         &CharacterDoc::load(&doc).expect("loads"),
         &there,
         Resolution::default(),

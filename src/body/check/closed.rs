@@ -7,6 +7,7 @@ use crate::body::closed::{
     MAX_MAX_REL, RMS_MAX_REL, THUMB_SKIN_MAX_REL,
 };
 use crate::body::intersect::known_crossings;
+use crate::check::worst;
 use crate::check::{Check, Kind};
 
 const FAMILY: &str = "body";
@@ -28,10 +29,15 @@ pub fn body_closed_checks(out: &mut Vec<Check>) {
             Ok(b) => {
                 let r = b.report;
                 let thumb = (
-                    r.hands
-                        .iter()
-                        .map(|h| h.thumb_skin_to_recon_max_rel)
-                        .fold(f64::NAN, f64::max),
+                    // NaN for no hands (a missing hand fails, not 0)
+                    if r.hands.is_empty() {
+                        f64::NAN
+                    } else {
+                        r.hands
+                            .iter()
+                            .map(|h| h.thumb_skin_to_recon_max_rel)
+                            .fold(0.0, worst)
+                    },
                     r.hands
                         .iter()
                         .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })

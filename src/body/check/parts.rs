@@ -5,6 +5,7 @@
 use crate::body::parts::{
     legacy_options, makehuman_parts, part_smoothness, reconstruct_part, BodyOptions,
 };
+use crate::check::Worst;
 use crate::check::{Check, Kind};
 
 const FAMILY: &str = "body";
@@ -30,9 +31,9 @@ pub fn body_smoothness_checks(out: &mut Vec<Check>) {
             };
             let (r_old, s_old, _) = run(&legacy_options())?;
             let (r_new, s_new, _) = run(&BodyOptions::default())?;
-            ratio = ratio.max(r_new.u / r_old.u);
-            slip = slip.max(s_new);
-            slip_old = slip_old.max(s_old);
+            ratio = ratio.worst(r_new.u / r_old.u);
+            slip = slip.worst(s_new);
+            slip_old = slip_old.worst(s_old);
             notes.push(format!(
                 "{}: roughness u {:.4} -> {:.4}, v {:.4} -> {:.4}, slip {:.2} -> {:.2} deg",
                 spec.name, r_old.u, r_new.u, r_old.v, r_new.v, s_old, s_new

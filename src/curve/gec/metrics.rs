@@ -20,6 +20,7 @@
 //!   fitted loops that no original point is near.
 
 use super::Gec;
+use crate::check::{Measure, Worst};
 use crate::jet::Jet;
 use std::f64::consts::PI;
 
@@ -136,7 +137,7 @@ pub fn errors(gec: &Gec, original: &[[f64; 2]]) -> FitErrors {
     let s = Sampled::new(gec);
     let d: Vec<f64> = original.iter().map(|p| s.closest(*p).0).collect();
     let k = d.len().max(1) as f64;
-    let erm = d.iter().copied().fold(0.0, f64::max);
+    let erm = d.iter().copied().max_nan();
     let era = d.iter().sum::<f64>() / k;
     let n = original.len();
     let back = s
@@ -145,10 +146,10 @@ pub fn errors(gec: &Gec, original: &[[f64; 2]]) -> FitErrors {
         .map(|q| {
             (0..n)
                 .map(|i| point_segment(*q, original[i], original[(i + 1) % n]))
-                .fold(f64::INFINITY, f64::min)
+                .min_nan()
         })
-        .fold(0.0, f64::max);
-    let hausdorff = if n == 0 { erm } else { erm.max(back) };
+        .max_nan();
+    let hausdorff = if n == 0 { erm } else { erm.worst(back) };
     let scale = diagonal(original);
     let rel = |v: f64| if scale > 0.0 { v / scale } else { v };
     FitErrors {

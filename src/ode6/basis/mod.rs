@@ -40,6 +40,7 @@
 //! jumps below `1e-7`).
 
 use super::Ode6Error;
+use crate::check::{Measure, Worst};
 use crate::jet::{Jet, Real};
 use nalgebra::{DMatrix, SMatrix};
 
@@ -280,7 +281,7 @@ impl Basis {
                 }
                 for i in 0..per_end {
                     let target = if 3 * end + i == j { 1.0 } else { 0.0 };
-                    err = err.max((g[j].deriv(i, 0) - target).abs());
+                    err = err.worst((g[j].deriv(i, 0) - target).abs());
                 }
             }
         }
@@ -296,12 +297,12 @@ impl Basis {
             let terms: Vec<[f64; 3]> = (0..=n)
                 .map(|i| self.residual_terms(j, i as f64 / n as f64))
                 .collect();
-            let scale = terms.iter().flatten().fold(0.0f64, |a, b| a.max(b.abs()));
+            let scale = terms.iter().flatten().copied().max_abs();
             if scale == 0.0 {
                 continue;
             }
             for t in &terms {
-                err = err.max((t[0] + t[1] + t[2]).abs() / scale);
+                err = err.worst((t[0] + t[1] + t[2]).abs() / scale);
             }
         }
         err

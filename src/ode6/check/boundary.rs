@@ -1,6 +1,7 @@
 //! Boundary checks: GEC boundary curves (approach 1) and degenerate parameter limits.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Largest error of a patch from GEC boundary curves (approach 1) against
 /// the GECs evaluated by [`Gec::eval_v`] itself: positions, u-derivatives
@@ -20,7 +21,7 @@ pub fn gec_boundary_error(p: Params, w: [f64; 4]) -> Result<f64, Ode6Error> {
             for k in 0..3 {
                 for (du, sc) in scale.iter().enumerate() {
                     for dv in 0..3 {
-                        err = err.max((pt[k].deriv(du, dv) - sc * gv[k].deriv(0, dv)).abs());
+                        err = err.worst((pt[k].deriv(du, dv) - sc * gv[k].deriv(0, dv)).abs());
                     }
                 }
             }
@@ -38,7 +39,10 @@ pub(super) fn gec_check() -> Check {
     let err = cases
         .iter()
         .map(|(p, w)| gec_boundary_error(*p, *w).unwrap_or(f64::NAN))
-        .fold(0.0f64, |a, b| if b.is_nan() { f64::NAN } else { a.max(b) });
+        .fold(
+            0.0f64,
+            |a, b| if b.is_nan() { f64::NAN } else { a.worst(b) },
+        );
     ck(
         "eq 1",
         "ode6.boundary.gec_curves",
@@ -98,8 +102,8 @@ pub(super) fn degenerate_checks(golden: &serde_json::Value) -> Vec<Check> {
     ] {
         match Basis::reduced(p) {
             Ok(b) => {
-                worst_b = worst_b.max(b.boundary_error());
-                worst_r = worst_r.max(b.residual_error(8));
+                worst_b = worst_b.worst(b.boundary_error());
+                worst_r = worst_r.worst(b.residual_error(8));
             }
             Err(_) => worst_b = f64::NAN,
         }
@@ -131,15 +135,16 @@ pub(super) fn degenerate_checks(golden: &serde_json::Value) -> Vec<Check> {
                 let u = i as f64 / 40.0;
                 (a.line(u, &c) - b.line(u, &c)).abs()
             })
-            .fold(0.0, f64::max),
+            .fold(0.0, worst),
         _ => f64::NAN,
     };
     let ratios: Vec<f64> = (6..=12)
         .map(|k| dist_to_reduced(10f64.powi(-k)) / 10f64.powi(-k).sqrt())
         .collect();
-    let worst = ratios
-        .iter()
-        .fold(0.0f64, |a, b| if b.is_nan() { f64::NAN } else { a.max(*b) });
+    let worst = ratios.iter().fold(
+        0.0f64,
+        |a, b| if b.is_nan() { f64::NAN } else { a.worst(*b) },
+    );
     out.push(ck(
         "eq 2",
         "ode6.rho_to_zero_limit",

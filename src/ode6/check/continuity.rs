@@ -1,6 +1,7 @@
 //! Continuity checks: C2 joins of chains and grids, Fig 6b.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// C2 joins in u (chains) and v (splits).
 pub(super) fn continuity_checks() -> Vec<Check> {
@@ -85,7 +86,7 @@ pub(super) fn continuity_checks() -> Vec<Check> {
         };
         let size = (0..=20)
             .map(|i| crate::mesh::norm(a.point(i as f64 / 20.0, 0.4)))
-            .fold(0.0, f64::max);
+            .fold(0.0, worst);
         (
             VSplit {
                 below: &a,
@@ -119,7 +120,7 @@ pub(super) fn continuity_checks() -> Vec<Check> {
                     let mut e = 0.0f64;
                     for (iu, &u) in us.iter().enumerate() {
                         for (iv, &v) in vs.iter().enumerate() {
-                            e = e.max(crate::mesh::dist(g[iu * vs.len() + iv], s.point(u, v)));
+                            e = e.worst(crate::mesh::dist(g[iu * vs.len() + iv], s.point(u, v)));
                         }
                     }
                     e

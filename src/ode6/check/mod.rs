@@ -10,6 +10,7 @@ use super::paper;
 use super::samples::{chain, grid_3x2, grid_knots, test_curve, test_gecs};
 use super::surface::{Grid, GridJumps, Ode6Surface, VSplit};
 use super::Ode6Error;
+use crate::check::Worst;
 use crate::check::{tol, Check, Kind};
 use crate::jet::Jet;
 use crate::surface::{Joined, Surface};
@@ -76,10 +77,10 @@ fn golden_error(b: &Basis, case: &serde_json::Value) -> f64 {
             let gold: Vec<f64> = (0..us.len())
                 .map(|i| g[i][j][d].as_f64().unwrap_or(f64::NAN))
                 .collect();
-            let scale = gold.iter().fold(1.0f64, |a, b| a.max(b.abs()));
+            let scale = gold.iter().fold(1.0f64, |a, b| a.worst(b.abs()));
             for (i, &u) in us.iter().enumerate() {
                 let ours = b.g(Jet::<3, 1>::var_u(u))[j].deriv(d, 0);
-                err = err.max((ours - gold[i]).abs() / scale);
+                err = err.worst((ours - gold[i]).abs() / scale);
             }
         }
     }

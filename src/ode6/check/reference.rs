@@ -1,6 +1,7 @@
 //! Reference checks: series solutions and difference formulas against the exact basis.
 
 use super::*;
+use crate::check::Worst;
 
 /// The series and the closed forms agree where both apply.
 pub(super) fn series_checks() -> Vec<Check> {
@@ -20,7 +21,7 @@ pub(super) fn series_checks() -> Vec<Check> {
             let u = i as f64 / 10.0;
             let (ga, gb) = (a.g(u), b.g(u));
             for j in 0..6 {
-                worst = worst.max((ga[j] - gb[j]).abs());
+                worst = worst.worst((ga[j] - gb[j]).abs());
             }
         }
     }
@@ -86,9 +87,9 @@ pub(super) fn difference_checks() -> Vec<Check> {
         .map(|d| {
             (d[0] + 1.0)
                 .abs()
-                .max((d[1] - 3.0).abs())
-                .max((d[2] - 2.0).abs())
-                .max((d[3] - 3.0).abs())
+                .worst((d[1] - 3.0).abs())
+                .worst((d[2] - 2.0).abs())
+                .worst((d[3] - 3.0).abs())
         })
         .unwrap_or(f64::NAN);
     vec![
@@ -97,15 +98,15 @@ pub(super) fn difference_checks() -> Vec<Check> {
             "eqs 3-7",
             "ode6.three_point_first_derivative_order2",
             Kind::Reference,
-            (2.0 - order(c[0], c2[0]).min(order(c[2], c2[2]))).max(0.0),
+            (2.0 - order(c[0], c2[0]).least(order(c[2], c2[2]))).worst(0.0),
             0.1,
             "observed order of the three-point first derivatives (h = 1e-2, 5e-3) is 2: measured 2 - order",
         ),
-        Check::paper_literal(FAMILY, PAPER, "eq 5", "ode6.paper_literal.c3_eq5", p[1].max(p[3]), 0.5, true).note(format!(
+        Check::paper_literal(FAMILY, PAPER, "eq 5", "ode6.paper_literal.c3_eq5", p[1].worst(p[3]), 0.5, true).note(format!(
             "printed c3, c6 with u3 = 3 u2 (h = 1e-3) converge to u3/(2 u2) f'' = 1.5 f'', not f'': errors {:.3}, {:.3}",
             p[1], p[3]
         )),
-        Check::paper_literal(FAMILY, PAPER, "eq 5", "ode6.paper_literal.c3_eq5_equal_spacing", p_eq[1].max(p_eq[3]), 0.05, false)
+        Check::paper_literal(FAMILY, PAPER, "eq 5", "ode6.paper_literal.c3_eq5_equal_spacing", p_eq[1].worst(p_eq[3]), 0.05, false)
             .note("printed c3, c6 with u3 = 2 u2 (equal spacing) are first-order second derivatives (h = 1e-3)"),
         Check::paper_literal(FAMILY, PAPER, "eq 7", "ode6.paper_literal.c6_eq7", p[3], 0.5, true).note(format!(
             "printed c6 alone (the mirror of eq 5) with 1 - u5 = 3 (1 - u6) (h = 1e-3): error {:.3} in f''(1), converges to 1.5 f''",
@@ -113,7 +114,7 @@ pub(super) fn difference_checks() -> Vec<Check> {
         )),
         Check::paper_literal(FAMILY, PAPER, "eq 7", "ode6.paper_literal.c6_eq7_equal_spacing", p_eq[3], 0.05, false)
             .note("printed c6 with 1 - u5 = 2 (1 - u6) (equal spacing) is a first-order second derivative (h = 1e-3)"),
-        Check::paper_literal(FAMILY, PAPER, "eqs 4, 6", "ode6.paper_literal.c2_eq4", p[0].max(p[2]), 0.05, false)
+        Check::paper_literal(FAMILY, PAPER, "eqs 4, 6", "ode6.paper_literal.c2_eq4", p[0].worst(p[2]), 0.05, false)
             .note("printed c2, c5 are first-order one-sided first derivatives (h = 1e-3)"),
     ]
 }

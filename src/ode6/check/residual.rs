@@ -1,6 +1,7 @@
 //! Residual checks: the forced ODE (eqs 24-29) from jets.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Forced surfaces: residual of eq 2 and the constraints.
 pub(super) fn force_checks() -> Vec<Check> {
@@ -57,7 +58,7 @@ pub(super) fn force_checks() -> Vec<Check> {
                             p.lambda * pt[k].deriv(2, 0),
                         );
                         let scale = a.abs() + b.abs() + c.abs() + fu[k].abs();
-                        res = res.max((a + b + c - fu[k]).abs() / scale.max(1.0));
+                        res = res.worst((a + b + c - fu[k]).abs() / scale.worst(1.0));
                     }
                 }
             }
@@ -68,7 +69,7 @@ pub(super) fn force_checks() -> Vec<Check> {
                     for i in 0..3 {
                         let c = s.curves.c(end + i, v);
                         for k in 0..3 {
-                            bnd = bnd.max((pt[k].deriv(i, 0) - c[k]).abs());
+                            bnd = bnd.worst((pt[k].deriv(i, 0) - c[k]).abs());
                         }
                     }
                 }
@@ -99,11 +100,11 @@ pub(super) fn force_checks() -> Vec<Check> {
                                     pt[k].deriv(2, 0),
                                 );
                                 (a + b + c - fu[k]).abs()
-                                    / (a.abs() + b.abs() + c.abs() + fu[k].abs()).max(1.0)
+                                    / (a.abs() + b.abs() + c.abs() + fu[k].abs()).worst(1.0)
                             })
-                            .fold(0.0, f64::max)
+                            .fold(0.0, worst)
                     })
-                    .fold(0.0, f64::max),
+                    .fold(0.0, worst),
                 Err(_) => f64::NAN,
             }
         }

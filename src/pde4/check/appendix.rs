@@ -4,6 +4,7 @@
 //! A2's $f_3$ as printed and as it must read.
 
 use super::*;
+use crate::check::Worst;
 
 /// The $f_3$ that A3 needs: $(\sin k\pi r_{p1} + \sin k\pi r_{p0})/(k^2L^2 - 1)$,
 /// $L = r_{p1} - r_{p0}$ (so that $c_1 f_3 = 2\int \sin\frac{\pi(u-u_{p0})}{L}\sin k\pi u\,du$).
@@ -48,7 +49,7 @@ fn eq12_error() -> f64 {
         let sign = if m % 2 == 0 { 1.0 } else { -1.0 };
         let printed = [0.0, -w, w * (2.0 + sign), -w * (1.0 + sign)];
         for k in 0..4 {
-            e = e.max((g[k] - printed[k]).abs() / w);
+            e = e.worst((g[k] - printed[k]).abs() / w);
         }
         // BCs (10): t = t_v = 0 at v = 0, 1 for the eq 13 mode, n = 1..4
         for n in 1..=4 {
@@ -57,7 +58,7 @@ fn eq12_error() -> f64 {
                     let vj = Jet::<2, 1>::var_u(v);
                     let pu = g[1] * u + g[2] * u * u + g[3] * u * u * u + (w * u).sin();
                     let t = vj * (-vj + 1.0) * ((vj * (n as f64 * PI)).sin() * pu);
-                    e = e.max(t.value().abs()).max(t.deriv(1, 0).abs());
+                    e = e.worst(t.value().abs()).worst(t.deriv(1, 0).abs());
                 }
             }
         }
@@ -92,10 +93,14 @@ fn f3_vs_sympy() -> (f64, f64) {
             let g = f3_right(u0, u1, k);
             let e = (g - x("f3_right"))
                 .abs()
-                .max((c1 * g - x("integral")).abs());
-            right = if e.is_nan() { f64::NAN } else { right.max(e) };
+                .worst((c1 * g - x("integral")).abs());
+            right = if e.is_nan() { f64::NAN } else { right.worst(e) };
             let e = (f3_printed(u0, u1, k) - x("f3_printed")).abs();
-            printed = if e.is_nan() { f64::NAN } else { printed.max(e) };
+            printed = if e.is_nan() {
+                f64::NAN
+            } else {
+                printed.worst(e)
+            };
         }
     }
     (right, printed)
@@ -125,13 +130,13 @@ pub(super) fn appendix_checks(out: &mut Vec<Check>) {
             }
             let g = f3_right(u0, u1, mf);
             let (pm, _, _) = f.two_sided(m, 0);
-            e4 = e4.max((c1 * g - pm).abs());
+            e4 = e4.worst((c1 * g - pm).abs());
             for n in 1..=4 {
                 let (_, pc, ps) = f.two_sided(m, n);
                 let w = 2.0 * n as f64 * PI * v0;
                 e3 = e3
-                    .max((2.0 * c1 * g * w.cos() - pc).abs())
-                    .max((2.0 * c1 * g * w.sin() - ps).abs());
+                    .worst((2.0 * c1 * g * w.cos() - pc).abs())
+                    .worst((2.0 * c1 * g * w.sin() - ps).abs());
             }
         }
     }
@@ -143,7 +148,7 @@ pub(super) fn appendix_checks(out: &mut Vec<Check>) {
                 continue;
             }
             let g = f3_right(u0, u1, mf);
-            e2max = e2max.max((f3_printed(u0, u1, mf) - g).abs());
+            e2max = e2max.worst((f3_printed(u0, u1, mf) - g).abs());
         }
     }
     out.push(

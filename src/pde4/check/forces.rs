@@ -1,6 +1,7 @@
 //! Force checks (eqs 2-4, 11): series against quadrature, the printed force statement against the corrected one.
 
 use super::*;
+use crate::check::Worst;
 
 pub(super) fn force_checks(out: &mut Vec<Check>) {
     let g = golden();
@@ -29,14 +30,14 @@ pub(super) fn force_checks(out: &mut Vec<Check>) {
         for (f, key2, key4) in [(&line, "line2", "line4"), (&area, "area2", "area4")] {
             let p0 = arr(&c[key2]["p0"]);
             for (mi, &gv) in p0.iter().enumerate() {
-                worst = worst.max((f.two_sided(mi + 1, 0).0 - gv).abs());
+                worst = worst.worst((f.two_sided(mi + 1, 0).0 - gv).abs());
                 let pc = arr(&c[key2]["pc"][mi]);
                 let ps = arr(&c[key2]["ps"][mi]);
                 let p4 = arr(&c[key4][mi]);
                 for ni in 0..pc.len() {
                     let (_, a, b) = f.two_sided(mi + 1, ni + 1);
-                    worst = worst.max((a - pc[ni]).abs()).max((b - ps[ni]).abs());
-                    worst = worst.max((f.four_sided(mi + 1, ni + 1) - p4[ni]).abs());
+                    worst = worst.worst((a - pc[ni]).abs()).worst((b - ps[ni]).abs());
+                    worst = worst.worst((f.four_sided(mi + 1, ni + 1) - p4[ni]).abs());
                 }
             }
         }
@@ -52,12 +53,12 @@ pub(super) fn force_checks(out: &mut Vec<Check>) {
                     if let Some((a, b, cc)) = printed_two_sided(&f.kind, mi, ni) {
                         let (x, y, z) = f.two_sided(mi, ni);
                         lit[slot] = lit[slot]
-                            .max((a - x).abs())
-                            .max((b - y).abs())
-                            .max((cc - z).abs());
+                            .worst((a - x).abs())
+                            .worst((b - y).abs())
+                            .worst((cc - z).abs());
                     }
                     if let Some(a) = printed_four_sided(&f.kind, mi, ni) {
-                        lit[2 + slot] = lit[2 + slot].max((a - f.four_sided(mi, ni)).abs());
+                        lit[2 + slot] = lit[2 + slot].worst((a - f.four_sided(mi, ni)).abs());
                     }
                 }
             }
@@ -81,10 +82,10 @@ pub(super) fn force_checks(out: &mut Vec<Check>) {
             ) {
                 let (x, y, z) = cf.two_sided(mi, ni);
                 lit[4] = lit[4]
-                    .max((a - x).abs())
-                    .max((b - y).abs())
-                    .max((c - z).abs())
-                    .max((d - cf.four_sided(mi, ni)).abs());
+                    .worst((a - x).abs())
+                    .worst((b - y).abs())
+                    .worst((c - z).abs())
+                    .worst((d - cf.four_sided(mi, ni)).abs());
             }
         }
     }
@@ -146,8 +147,8 @@ pub(super) fn force_checks(out: &mut Vec<Check>) {
                 }
             }
             let exact = area.profile(u, v).unwrap_or(f64::NAN);
-            e2 = e2.max((s2 - exact).abs());
-            e4 = e4.max((s4 - exact).abs());
+            e2 = e2.worst((s2 - exact).abs());
+            e4 = e4.worst((s4 - exact).abs());
         }
     }
     out.push(

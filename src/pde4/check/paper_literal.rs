@@ -4,6 +4,7 @@
 //! solution when `a_t2` alone varies.
 
 use super::*;
+use crate::check::{worst, Worst};
 use crate::pde4::force::bump;
 
 /// Samples of the force range in the profile checks.
@@ -42,7 +43,7 @@ pub(super) fn printed_statement_checks(out: &mut Vec<Check>) {
     };
     let line = grid(u0, u1)
         .map(|u| (printed_line_profile(u0, u1, u) - bump(u0, u1, u)).abs())
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     out.push(
         Check::paper_literal(F, P, "eq 2", "pde4.force.eq2_printed_profile", line, tol::ROUNDING, true)
             .note(format!("eq 2 built as printed, sin(pi(u - u0))/(u1 - u0), against the corrected bump sin(pi(u - u0)/(u1 - u0)) on [{u0}, {u1}]: max difference (the printed force is {:.3} at u1 where the force must vanish)", printed_line_profile(u0, u1, u1))),
@@ -52,7 +53,7 @@ pub(super) fn printed_statement_checks(out: &mut Vec<Check>) {
     for u in grid(r[0], r[1]).step_by(10) {
         for v in grid(r[2], r[3]).step_by(10) {
             let right = bump(r[0], r[1], u) * bump(r[2], r[3], v);
-            area = area.max((printed_area_profile(r, u, v) - right).abs());
+            area = area.worst((printed_area_profile(r, u, v) - right).abs());
         }
     }
     out.push(

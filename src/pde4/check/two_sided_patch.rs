@@ -1,6 +1,7 @@
 //! Two-sided patch checks (eqs 5-10): residual, boundary, root cases, paper-literal forms.
 
 use super::*;
+use crate::check::Worst;
 
 /// Max PDE (1) residual of a 2-sided patch against its eq 4 force series,
 /// relative to the largest force-series value seen.
@@ -15,12 +16,12 @@ pub fn two_sided_residual(t: &TwoSided, samples: usize) -> f64 {
                 let p = &t.comps[k].params;
                 let l = p.a1 * x[k].deriv(4, 0) + p.a2 * x[k].deriv(2, 2) + p.a3 * x[k].deriv(0, 4);
                 let f = t.force_series(k, u, v);
-                worst = worst.max((l - f).abs());
-                scale = scale.max(f.abs());
+                worst = worst.worst((l - f).abs());
+                scale = scale.worst(f.abs());
             }
         }
     }
-    worst / scale.max(1.0)
+    worst / scale.worst(1.0)
 }
 
 /// Max of `|t|`, `|t_u|` at `u = 0, 1` minus the prescribed boundary data.
@@ -37,8 +38,8 @@ pub fn two_sided_boundary(t: &TwoSided, b: Option<&Boundary>, samples: usize) ->
             let d = tangent.map_or([0.0; 3], |c| c.eval(2.0 * PI * v));
             for k in 0..3 {
                 worst = worst
-                    .max((x[k].c[0][0] - c[k]).abs())
-                    .max((x[k].c[1][0] - d[k]).abs());
+                    .worst((x[k].c[0][0] - c[k]).abs())
+                    .worst((x[k].c[1][0] - d[k]).abs());
             }
         }
     }
@@ -62,9 +63,9 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         match Mode::exact(&p, 2.0 * PI * n as f64, &f, [0.0; 4]) {
             Ok(mode) => {
                 let ws = arr(&md["w"]);
-                let sc = ws.iter().fold(0.0f64, |a, b| a.max(b.abs()));
+                let sc = ws.iter().fold(0.0f64, |a, b| a.worst(b.abs()));
                 for (u, w) in arr(&md["u"]).iter().zip(&ws) {
-                    worst = worst.max((mode.eval(*u) - w).abs() / sc);
+                    worst = worst.worst((mode.eval(*u) - w).abs() / sc);
                 }
             }
             Err(_) => worst = f64::NAN,
@@ -81,8 +82,8 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
     for (_, p) in root_cases() {
         match TwoSided::new([p; 3], &forces, m, n, two_sided::Method::Exact, None) {
             Ok(t) => {
-                res = res.max(two_sided_residual(&t, 6));
-                bnd = bnd.max(two_sided_boundary(&t, None, 24));
+                res = res.worst(two_sided_residual(&t, 6));
+                bnd = bnd.worst(two_sided_boundary(&t, None, 24));
             }
             Err(_) => res = f64::NAN,
         }
@@ -150,8 +151,8 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         for u in [0.0, 1.0] {
             let j = basis_b(mi, Jet::<2, 1>::var_u(u));
             cl = cl
-                .max(j.c[0][0].abs())
-                .max(j.c[1][0].abs() / (PI * mi as f64));
+                .worst(j.c[0][0].abs())
+                .worst(j.c[1][0].abs() / (PI * mi as f64));
         }
     }
     out.push(
@@ -185,7 +186,7 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
     ) {
         (Ok(a), Ok(b)) => {
             crate::check::max_abs_diff(&mode0(&a), &mode0(&b))
-                / mode0(&b).iter().fold(0.0f64, |x, y| x.max(y.abs()))
+                / mode0(&b).iter().fold(0.0f64, |x, y| x.worst(y.abs()))
         }
         _ => f64::NAN,
     };
@@ -216,9 +217,9 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         let vs: Vec<f64> = (0..32).map(|i| i as f64 / 32.0).collect();
         let (gp, gl, ge) = (pa.grid(&us, &vs), ls.grid(&us, &vs), ex.grid(&us, &vs));
         let flat = |g: &[[f64; 3]]| g.iter().flatten().copied().collect::<Vec<_>>();
-        let sc = flat(&ge).iter().fold(0.0f64, |a, b| a.max(b.abs()));
-        d9 = d9.max(crate::check::max_abs_diff(&flat(&gp), &flat(&gl)) / sc);
-        dpe = dpe.max(crate::check::max_abs_diff(&flat(&gp), &flat(&ge)) / sc);
+        let sc = flat(&ge).iter().fold(0.0f64, |a, b| a.worst(b.abs()));
+        d9 = d9.worst(crate::check::max_abs_diff(&flat(&gp), &flat(&gl)) / sc);
+        dpe = dpe.worst(crate::check::max_abs_diff(&flat(&gp), &flat(&ge)) / sc);
     }
     out.push(Check::paper_literal(F, P, "eq 9", "pde4.two_sided.eq9_vs_least_squares", d9, tol::PLATE_THEORY, true).note("max |printed-coefficient surface - residual-minimising surface (same eq 7 basis)| / max |exact|, 3 parameter sets"));
     out.push(
@@ -249,8 +250,8 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
             let b: Vec<f64> = t.grid_naive(&us, &vs).into_iter().flatten().collect();
             crate::check::max_abs_diff(&a, &b)
                 / b.iter()
-                    .fold(0.0f64, |x, y| x.max(y.abs()))
-                    .max(f64::MIN_POSITIVE)
+                    .fold(0.0f64, |x, y| x.worst(y.abs()))
+                    .worst(f64::MIN_POSITIVE)
         }
         Err(_) => f64::NAN,
     };

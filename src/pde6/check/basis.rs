@@ -1,6 +1,7 @@
 //! Mode-basis checks (eqs 6-8, A4-A16): ODE residual, RK4 reference, the printed bases.
 
 use super::*;
+use crate::check::Worst;
 
 /// Mode basis checks: ODE residual (eqs 7-8), RK4 reference, printed bases.
 pub(super) fn basis_checks(out: &mut Vec<Check>) {
@@ -10,7 +11,7 @@ pub(super) fn basis_checks(out: &mut Vec<Check>) {
         for &a in &[1e-6, 1e-2, 0.5, 1.0, 10.0] {
             for n in [1usize, 3, 10, 20] {
                 let b = ModeBasis::new(sigma * a, n);
-                worst = worst.max(basis_ode_residual(&b, sigma, false));
+                worst = worst.worst(basis_ode_residual(&b, sigma, false));
             }
         }
         out.push(
@@ -33,7 +34,7 @@ pub(super) fn basis_checks(out: &mut Vec<Check>) {
         worst_rk = if e.is_nan() {
             f64::NAN
         } else {
-            worst_rk.max(e)
+            worst_rk.worst(e)
         };
     }
     out.push(

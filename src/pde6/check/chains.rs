@@ -1,6 +1,7 @@
 //! Patch and chain checks (eqs 2, 15-27): residual, interpolation, C2 joins, method 1, conditioning.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Patches and chains for every sign of a: residual, interpolation, C2 joins,
 /// method 1's claim, conditioning, the fast grid.
@@ -39,7 +40,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
             Ok(c) => {
                 let j = c.join_jumps(JOIN_SAMPLES);
                 out.push(
-                    Check::new(FAMILY, PAPER, "eqs 24-27, A17-A36", &format!("pde6.method2_c2_{name}"), Kind::Continuity, j[0].max(j[1]).max(j[2]), SOLVE_TOL)
+                    Check::new(FAMILY, PAPER, "eqs 24-27, A17-A36", &format!("pde6.method2_c2_{name}"), Kind::Continuity, j[0].worst(j[1]).worst(j[2]), SOLVE_TOL)
                         .note(format!("12-section, 3-patch method-2 chain (Fig 4 layout, first patch on sections 4-9), a = {a}: max relative jump of S, S_u, S_uu across both joins, jets")),
                 );
                 let worst_interp = c
@@ -51,7 +52,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                             .map(move |s| (p, s))
                     })
                     .map(|(p, s)| section_distance(s, |v| p.eval(s.u, v)))
-                    .fold(0.0, f64::max);
+                    .fold(0.0, worst);
                 out.push(
                     Check::new(FAMILY, PAPER, "eqs 25, A30", &format!("pde6.method2_interpolates_{name}"), Kind::Boundary, worst_interp, SOLVE_TOL)
                         .note("every piece of the method-2 chain passes through the sections in its range"),
@@ -95,16 +96,16 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
             Ok(c) => {
                 let j = c.join_jumps(JOIN_SAMPLES);
                 out.push(
-                    Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, j[0].max(j[1]).max(j[2]), SOLVE_TOL)
+                    Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_c2_{name}"), Kind::Continuity, j[0].worst(j[1]).worst(j[2]), SOLVE_TOL)
                         .note(format!("13-section, 4-piece globally solved C2 chain, a = {a}: max relative jump of S, S_u, S_uu across the joins, jets")),
                 );
                 let e = sec13
                     .iter()
                     .map(|s| {
-                        let p = &c.pieces[c.piece_at(s.u).min(c.pieces.len() - 1)];
+                        let p = &c.pieces[usize::min(c.piece_at(s.u), c.pieces.len() - 1)];
                         section_distance(s, |v| p.eval(s.u, v))
                     })
-                    .fold(0.0, f64::max);
+                    .fold(0.0, worst);
                 out.push(
                     Check::new(
                         FAMILY,
@@ -174,8 +175,8 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
             ] {
                 let b = ModeBasis::new(a, n);
                 let c = ModeSolver::new(b, conds).map_or(f64::INFINITY, |s| s.condition_number);
-                worst = worst.max(c);
-                worst_paper = worst_paper.max(paper_basis_condition(&b, &conds));
+                worst = worst.worst(c);
+                worst_paper = worst_paper.worst(paper_basis_condition(&b, &conds));
             }
         }
     }
@@ -195,7 +196,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
         let mut e = 0.0f64;
         for (i, &u) in us.iter().enumerate() {
             for (j, &v) in vs.iter().enumerate() {
-                e = e.max(crate::mesh::dist(g[i * vs.len() + j], c.point(u, v)));
+                e = e.worst(crate::mesh::dist(g[i * vs.len() + j], c.point(u, v)));
             }
         }
         out.push(

@@ -1,6 +1,7 @@
 //! Measurements used by the checks and the tests: PDE residual, interpolation error, closed-v mismatch, basis residual, amplification, RK4, Lebesgue constants.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Relative PDE residual max |w_u6 + a w_v6| / max(|w_u6|, |a w_v6|, 1) of
 /// a surface over an 7 x 8 sample grid of its first patch range [0, 1].
@@ -14,7 +15,7 @@ pub fn pde_residual<S: Surface>(s: &S, a: f64, u_range: (f64, f64)) -> f64 {
             let pv = s.eval(Jet::<1, 7>::constant(u), Jet::<1, 7>::var_v(v));
             for k in 0..3 {
                 let (du, dv) = (p[k].deriv(6, 0), a * pv[k].deriv(0, 6));
-                worst = worst.max((du + dv).abs() / du.abs().max(dv.abs()).max(1.0));
+                worst = worst.worst((du + dv).abs() / du.abs().worst(dv.abs()).worst(1.0));
             }
         }
     }
@@ -26,7 +27,7 @@ pub fn chain_residual(c: &Chain, a: f64) -> f64 {
     c.pieces
         .iter()
         .map(|p| pde_residual(&p.patch, a, (0.0, 1.0)))
-        .fold(0.0, f64::max)
+        .fold(0.0, worst)
 }
 
 /// Largest distance, over 16 equally spaced `v`, from `at(v)` to the
@@ -37,7 +38,7 @@ pub fn section_distance(s: &Section, at: impl Fn(f64) -> [f64; 3]) -> f64 {
             let v = 2.0 * PI * j as f64 / 16.0;
             crate::mesh::dist(at(v), s.curve.eval(v))
         })
-        .fold(0.0, f64::max)
+        .fold(0.0, worst)
 }
 
 /// Max distance between the patch at local `nodes` and the curves there.
@@ -47,7 +48,7 @@ pub fn interpolation_error(p: &Patch, nodes: &[f64], curves: &[&Fourier3]) -> f6
         for j in 0..16 {
             let v = 2.0 * PI * j as f64 / 16.0;
             let (a, b) = (p.point(u, v), c.eval(v));
-            worst = worst.max(crate::mesh::dist(a, b));
+            worst = worst.worst(crate::mesh::dist(a, b));
         }
     }
     worst
@@ -66,7 +67,7 @@ pub fn closed_v_mismatch<S: Surface>(s: &S) -> f64 {
             for p in 0..3 {
                 for q in 0..3 - p {
                     let (x, y) = (a[k].deriv(p, q), b[k].deriv(p, q));
-                    worst = worst.max((x - y).abs() / x.abs().max(1.0));
+                    worst = worst.worst((x - y).abs() / x.abs().worst(1.0));
                 }
             }
         }
@@ -85,7 +86,7 @@ pub fn basis_ode_residual(b: &ModeBasis, sigma: f64, paper: bool) -> f64 {
         let f = if paper { b.eval_paper(u) } else { b.eval(u) };
         for x in f {
             let (d6, d0) = (x.deriv(6, 0), x.value());
-            worst = worst.max((d6 - q6 * d0).abs() / d6.abs().max(q6.abs()).max(1.0));
+            worst = worst.worst((d6 - q6 * d0).abs() / d6.abs().worst(q6.abs()).worst(1.0));
         }
     }
     worst
@@ -139,7 +140,7 @@ pub fn mode_vs_rk4(m: &Mode, a: f64, n: usize, steps: usize) -> f64 {
         let k4 = f(&y4);
         y = std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
         let exact = m.eval(k as f64 * h);
-        worst = worst.max((y[0] - exact).abs() / exact.abs().max(1.0));
+        worst = worst.worst((y[0] - exact).abs() / exact.abs().worst(1.0));
     }
     worst
 }
@@ -161,7 +162,7 @@ pub fn lebesgue(b: ModeBasis) -> Option<f64> {
             .iter()
             .map(|c| (0..6).map(|j| c[j] * phi[j]).sum::<f64>().abs())
             .sum();
-        best = best.max(sum);
+        best = best.worst(sum);
     }
     Some(best)
 }

@@ -1,6 +1,7 @@
 //! Paper-literal checks of paper 002 that build a printed form itself.
 
 use super::*;
+use crate::check::worst;
 
 /// Eq 26 as printed for the bottom patch P2 of a method-2 chain: x and y
 /// from the patch, `z^{P2}(u, v) = A_{z0}^{P2}(0)` (a constant: the v-mean of
@@ -32,7 +33,7 @@ fn constant_z_error(p: &Piece, sections: &[Section]) -> f64 {
                 [x, y, z0]
             })
         })
-        .fold(0.0, f64::max)
+        .fold(0.0, worst)
 }
 
 pub(super) fn printed_form_checks(out: &mut Vec<Check>) {

@@ -20,9 +20,38 @@
 use super::*;
 use nalgebra::{Matrix6, Vector6};
 
-/// $(q_{1n}, q_{2n})$ of eq A15 for a basis with $q = n|a|^{1/6}$.
-pub fn q12(b: &ModeBasis) -> (f64, f64) {
-    (0.5 * 3f64.sqrt() * b.q, 0.5 * b.q)
+/// The basis of harmonic `n` as the paper prints it, independent of the
+/// project's [`ModeBasis::new`]: $q_{0n} = n|a|^{1/6}$ (eq A11) and the
+/// regime by the sign of a (eq 7 for a > 0, eq 8 for a < 0, the quintic of
+/// eq 6 for a = 0 or n = 0). Its [`ModeBasis::eval_paper`] is the printed
+/// basis the `pde6.printed.*` checks hold the project's functions against.
+pub fn printed_basis(a: f64, n: usize) -> ModeBasis {
+    let q = n as f64 * a.abs().powf(1.0 / 6.0);
+    let regime = if a == 0.0 || n == 0 {
+        Regime::Quintic
+    } else if a < 0.0 {
+        Regime::Oscillatory
+    } else {
+        Regime::Exponential
+    };
+    let q = if regime == Regime::Quintic { 0.0 } else { q };
+    ModeBasis { regime, q }
+}
+
+/// One harmonic's basis twice: the project's ([`ModeBasis::new`], scaled,
+/// what the patch was solved in) and the paper's ([`printed_basis`]), so
+/// that a printed formula is never measured against the project's own
+/// exponents.
+#[derive(Clone, Copy, Debug)]
+pub struct FnBasis {
+    pub project: ModeBasis,
+    pub printed: ModeBasis,
+}
+
+/// $(q_{1n}, q_{2n})$ of eq A15 from the printed $q_{0n}$ ([`printed_basis`]).
+pub fn q12(b: &FnBasis) -> (f64, f64) {
+    let q = b.printed.q;
+    (0.5 * 3f64.sqrt() * q, 0.5 * q)
 }
 
 /// Eq 10 as printed: $A'_{w0}(u) = a_1 + 2a_2u + 3a_3u^2 + 4a_4u^3 + 5a_5u^4$.
@@ -191,24 +220,24 @@ pub fn solve_rows(rows: [[f64; 6]; 6], rhs: [f64; 6]) -> Option<[f64; 6]> {
 /// minus signs restored), of the project's function $\sum_j c_j\phi_j$ of
 /// basis `b` (a <= 0 only: the printed a > 0 basis is wrong, ERRATA):
 /// interpolation at u = 0, 0.2, ..., 1.
-pub fn to_paper_basis(b: &ModeBasis, coef: &[f64; 6]) -> Option<[f64; 6]> {
-    let rows: [[f64; 6]; 6] = std::array::from_fn(|i| b.eval_paper(0.2 * i as f64));
+pub fn to_paper_basis(b: &FnBasis, coef: &[f64; 6]) -> Option<[f64; 6]> {
+    let rows: [[f64; 6]; 6] = std::array::from_fn(|i| b.printed.eval_paper(0.2 * i as f64));
     let rhs: [f64; 6] = std::array::from_fn(|i| {
-        let p = b.eval(0.2 * i as f64);
+        let p = b.project.eval(0.2 * i as f64);
         (0..6).map(|j| p[j] * coef[j]).sum()
     });
     solve_rows(rows, rhs)
 }
 
 /// A function of the paper's basis at u (derivative order d <= 2, jets).
-pub fn paper_function(b: &ModeBasis, c: &[f64; 6], u: f64, d: usize) -> f64 {
-    let p = b.eval_paper(Jet::<3, 1>::var_u(u));
+pub fn paper_function(b: &FnBasis, c: &[f64; 6], u: f64, d: usize) -> f64 {
+    let p = b.printed.eval_paper(Jet::<3, 1>::var_u(u));
     (0..6).map(|j| p[j].deriv(d, 0) * c[j]).sum()
 }
 
 /// The project's function $\sum_j c_j\phi_j$ at u (order d <= 5, jets).
-pub fn project_function(b: &ModeBasis, c: &[f64; 6], u: f64, d: usize) -> f64 {
-    let p = b.eval(Jet::<7, 1>::var_u(u));
+pub fn project_function(b: &FnBasis, c: &[f64; 6], u: f64, d: usize) -> f64 {
+    let p = b.project.eval(Jet::<7, 1>::var_u(u));
     (0..6).map(|j| p[j].deriv(d, 0) * c[j]).sum()
 }
 
@@ -254,9 +283,13 @@ pub enum Role {
 /// Every coefficient function of a patch with its paper role, n and
 /// coordinate k: x: $A_{xn}$ multiplies cos, $B_{xn}$ sin (eq 3); y:
 /// $A_{yn}$ multiplies sin, $B_{yn}$ cos (eq 4); z: $A_{z0}$ only (eq 5).
-pub fn functions(p: &Patch) -> Vec<(Role, usize, usize, ModeBasis, [f64; 6])> {
+pub fn functions(p: &Patch) -> Vec<(Role, usize, usize, FnBasis, [f64; 6])> {
     let mut out = Vec::new();
     for (n, (b, c)) in p.basis.iter().zip(&p.coef).enumerate() {
+        let b = &FnBasis {
+            project: *b,
+            printed: printed_basis(p.a, n),
+        };
         for k in 0..3 {
             if n == 0 {
                 out.push((Role::W0, n, k, *b, c[k][0]));

@@ -6,9 +6,10 @@
 //! The numbering is fixed in [`super::printed_appendix`].
 
 use super::printed::*;
-use super::printed_appendix::{rel, worst};
+use super::printed_appendix::rel;
 use super::printed_checks::{node_error, solved_rows_error, PRINTED_TOL};
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Linear rows of a printed end-derivative formula: f(e_j) for unit vectors.
 fn rows_of(f: impl Fn(&[f64; 6]) -> f64) -> [f64; 6] {
@@ -23,7 +24,7 @@ fn rows_of(f: impl Fn(&[f64; 6]) -> f64) -> [f64; 6] {
 /// paper's basis at u = 0 (`at_one = false`) or u = 1.
 fn printed_ends(
     role: Role,
-    b: &ModeBasis,
+    b: &FnBasis,
     c: &[f64; 6],
     at_one: bool,
     b_as_printed: bool,
@@ -132,7 +133,7 @@ pub(super) fn appendix_b_checks(out: &mut Vec<Check>, p2: &Piece, p1: &Piece, se
         };
         let lhs = printed_ends(*role, b, &pc2, true, false);
         let rhs = printed_ends(*role, b, &pc1, false, false);
-        let e = rel(lhs[0], rhs[0]).max(rel(lhs[1], rhs[1]));
+        let e = rel(lhs[0], rhs[0]).worst(rel(lhs[1], rhs[1]));
         match role {
             Role::W0 => e27 = worst(e27, e),
             Role::A => e28 = worst(e28, e),

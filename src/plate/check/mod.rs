@@ -8,6 +8,7 @@ use super::reference::{ellipse_mesh, rectangle_mesh, solve_clamped, CLAMPED_RECT
 use super::shapes::{region_in_polygon, sheet, Shape};
 use super::{disk_profile, disk_solution, Material, PlateError};
 use crate::check::{max_abs_diff, rel_err, tol, Check, Kind};
+use crate::check::{worst, Worst};
 use crate::jet::Jet4x4;
 mod equations;
 mod projection;
@@ -74,7 +75,7 @@ pub fn checks() -> Vec<Check> {
         .eq12_samples
         .iter()
         .map(|s| (disk_solution(1.0, 1.0, s.u, s.v) - s.w).abs())
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     out.push(
         Check::new(
             F,
@@ -95,13 +96,13 @@ pub fn checks() -> Vec<Check> {
         let (u0, v0) = (0.6 * t.cos() * (k as f64 / 16.0), 0.6 * t.sin());
         let w = disk_solution(q, dd, Jet4x4::var_u(u0), Jet4x4::var_v(v0));
         let bl = w.deriv(4, 0) + 2.0 * w.deriv(2, 2) + w.deriv(0, 4);
-        res = res.max((dd * bl - q).abs() / q);
+        res = res.worst((dd * bl - q).abs() / q);
         let (uc, vc) = (t.cos(), t.sin());
         let wb = disk_solution(q, dd, Jet4x4::var_u(uc), Jet4x4::var_v(vc));
         bc = bc
-            .max(wb.value().abs())
-            .max(wb.deriv(1, 0).abs())
-            .max(wb.deriv(0, 1).abs());
+            .worst(wb.value().abs())
+            .worst(wb.deriv(1, 0).abs())
+            .worst(wb.deriv(0, 1).abs());
     }
     out.push(
         Check::new(

@@ -4,6 +4,7 @@
 //! and radial forms with the crease it leaves inside a square.
 
 use super::*;
+use crate::check::Worst;
 
 /// The eq 13-16 checks (`c`: the golden projection case).
 pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
@@ -21,7 +22,7 @@ pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
             "eq 13",
             "plate.eq13.projection",
             Kind::Reference,
-            max_abs_diff(&pc, &c.correct).max(max_abs_diff(&pl, &c.printed)),
+            max_abs_diff(&pc, &c.correct).worst(max_abs_diff(&pl, &c.printed)),
             tol::ROUNDING,
         )
         .note("corrected and printed projections against SymPy"),

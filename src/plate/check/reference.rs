@@ -4,6 +4,7 @@
 //! region, where eq 12 is the exact clamped plate.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 /// Mesh resolution of the reference-solver checks: cells across the shorter
 /// side of the square/rectangle. The errors are raw (no extrapolation); the
@@ -33,7 +34,7 @@ pub const PIPELINE_ORDER1_FACTOR: f64 = 1.5;
 /// $a \times b$ with `n` cells across the side `a`.
 pub fn rectangle_centre(a: f64, b: f64, n: usize) -> Result<f64, PlateError> {
     let ny = ((n as f64) * b / a).round() as usize;
-    let (pts, tris) = rectangle_mesh(a, b, n, ny.max(2) & !1);
+    let (pts, tris) = rectangle_mesh(a, b, n, usize::max(ny, 2) & !1);
     let s = solve_clamped(&pts, &tris, &vec![1.0; pts.len()], 1.0)?;
     let c = pts
         .iter()
@@ -120,23 +121,19 @@ pub fn pipeline_circle() -> Result<(f64, f64), PlateError> {
         .iter()
         .map(|&v| m.positions[v as usize][2])
         .collect();
-    let peak = z.iter().fold(0.0f64, |a, b| a.max(*b));
+    let peak = z.iter().fold(0.0f64, |a, b| a.worst(*b));
     // the region's boundary radius (outermost vertices)
-    let rmax = p
-        .local()
-        .iter()
-        .map(|q| q[0].hypot(q[1]))
-        .fold(0.0, f64::max);
+    let rmax = p.local().iter().map(|q| q[0].hypot(q[1])).fold(0.0, worst);
     let mut err: f64 = 0.0;
     for (k, q) in p.local().iter().enumerate() {
         let r = q[0].hypot(q[1]) / rmax;
-        err = err.max((z[k] / peak - 64.0 * disk_profile(r)).abs());
+        err = err.worst((z[k] / peak - 64.0 * disk_profile(r)).abs());
     }
     let bnd = p
         .boundary()
         .loop_indices
         .iter()
         .map(|&i| (m.positions[p.region()[i] as usize][2]).abs())
-        .fold(0.0, f64::max);
+        .fold(0.0, worst);
     Ok((err, bnd))
 }

@@ -6,6 +6,7 @@
 //! than every uncorrected rule.
 
 use super::c;
+use crate::check::{worst, Worst};
 use crate::check::{Check, Kind};
 use crate::curve::gec::study::{base_sections, correction_study, TABLE1_TERMS};
 use crate::curve::gec::{fit, Correction, FitOptions, Param};
@@ -48,7 +49,7 @@ fn measure() -> Result<(f64, f64, String), String> {
     let worse = rows
         .iter()
         .map(|r| (r.erm_after - r.erm_before) / r.scale)
-        .fold(f64::NEG_INFINITY, f64::max);
+        .fold(f64::NEG_INFINITY, worst);
     let (mut before, mut after) = (0.0, 0.0);
     for r in &rows {
         before += r.erm_before / rows.len() as f64;
@@ -72,7 +73,7 @@ fn measure() -> Result<(f64, f64, String), String> {
     };
     let mut best_rule = f64::INFINITY;
     for p in Param::ALL {
-        best_rule = best_rule.min(erm(p, Correction::None)?);
+        best_rule = best_rule.least(erm(p, Correction::None)?);
     }
     let corrected = erm(Param::default(), Correction::default())?;
     Ok((

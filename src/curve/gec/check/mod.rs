@@ -2,6 +2,7 @@
 //! refit round trips, FFT against least squares, transforms against
 //! transformed points, and the paper-literal forms of 000 eq 16 and 002 eq 1.
 
+use crate::check::{worst, Worst};
 mod correction;
 mod metric;
 mod refit;
@@ -40,17 +41,17 @@ fn golden() -> Option<(Golden, Gec)> {
 
 /// Largest difference of the space Fourier coefficients (frame-independent).
 pub fn coeff_diff(a: &Gec, b: &Gec) -> f64 {
-    let n = a.terms().max(b.terms());
+    let n = usize::max(a.terms(), b.terms());
     let (fa, fb) = (
         a.to_fourier3().with_harmonics(n),
         b.to_fourier3().with_harmonics(n),
     );
     let mut d: f64 = 0.0;
     for k in 0..3 {
-        d = d.max((fa.c0[k] - fb.c0[k]).abs());
+        d = d.worst((fa.c0[k] - fb.c0[k]).abs());
         for i in 0..n {
-            d = d.max((fa.cos[i][k] - fb.cos[i][k]).abs());
-            d = d.max((fa.sin[i][k] - fb.sin[i][k]).abs());
+            d = d.worst((fa.cos[i][k] - fb.cos[i][k]).abs());
+            d = d.worst((fa.sin[i][k] - fb.sin[i][k]).abs());
         }
     }
     d
@@ -60,7 +61,7 @@ fn max_diff3(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
     a.iter()
         .zip(b)
         .flat_map(|(p, q)| (0..3).map(move |k| (p[k] - q[k]).abs()))
-        .fold(0.0, f64::max)
+        .fold(0.0, worst)
 }
 
 fn c(eq: &str, name: &str, kind: Kind, measured: f64, tol: f64, note: &str) -> Check {
@@ -88,9 +89,9 @@ pub fn checks() -> Vec<Check> {
     for (k, want) in g.derivs_xy.iter().enumerate() {
         let got = gec.derivative(g.theta, k);
         d = d
-            .max((got[0] - want[0]).abs())
-            .max((got[1] - want[1]).abs());
-        d = d.max(if k == 0 {
+            .worst((got[0] - want[0]).abs())
+            .worst((got[1] - want[1]).abs());
+        d = d.worst(if k == 0 {
             (got[2] - g.z_c).abs()
         } else {
             got[2].abs()
@@ -107,7 +108,7 @@ pub fn checks() -> Vec<Check> {
     let t = gec.tangent_plane(g.theta);
     let dt = (t[0] - g.derivs_xy[1][0])
         .abs()
-        .max((t[1] - g.derivs_xy[1][1]).abs());
+        .worst((t[1] - g.derivs_xy[1][1]).abs());
     out.push(c(
         "000 eq 16",
         "gec.tangent_fast_path",
@@ -127,7 +128,7 @@ pub fn checks() -> Vec<Check> {
     let cen = gec.centroid();
     let dc = (cen[0] - g.centroid_xy[0])
         .abs()
-        .max((cen[1] - g.centroid_xy[1]).abs());
+        .worst((cen[1] - g.centroid_xy[1]).abs());
     out.push(c(
         "000 eq 16",
         "gec.centroid",
@@ -155,8 +156,8 @@ pub fn checks() -> Vec<Check> {
         let p = super::paper_000_literal(&xs, &ys, g.z_c, v);
         let q = super::paper_002_literal(&ax, &bx, &ay, &by, g.z_c, 2.0 * PI * v);
         for i in 0..3 {
-            d0 = d0.max((p[i] - e[i]).abs());
-            d2 = d2.max((q[i] - e[i]).abs());
+            d0 = d0.worst((p[i] - e[i]).abs());
+            d2 = d2.worst((q[i] - e[i]).abs());
         }
     }
     out.push(

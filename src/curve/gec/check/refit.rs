@@ -2,6 +2,7 @@
 //! squares on uniform samples.
 
 use super::*;
+use crate::check::Worst;
 
 pub(super) fn refit_checks(tg: &Gec, out: &mut Vec<Check>) {
     let pts = tg.sample(64);
@@ -46,12 +47,12 @@ pub(super) fn refit_checks(tg: &Gec, out: &mut Vec<Check>) {
         .collect();
     let d = match (solve(&p, &th, 10, Solver::Qr), dft_coefficients(&p, t0, 10)) {
         (Ok(a), Ok(b)) => {
-            let mut d = (a.0[0] - b.0[0]).abs().max((a.0[1] - b.0[1]).abs());
+            let mut d = (a.0[0] - b.0[0]).abs().worst((a.0[1] - b.0[1]).abs());
             for n in 0..10 {
                 for k in 0..2 {
                     d = d
-                        .max((a.1[n][k] - b.1[n][k]).abs())
-                        .max((a.2[n][k] - b.2[n][k]).abs());
+                        .worst((a.1[n][k] - b.1[n][k]).abs())
+                        .worst((a.2[n][k] - b.2[n][k]).abs());
                 }
             }
             d

@@ -2,6 +2,7 @@
 //! same transforms applied to sampled points.
 
 use super::*;
+use crate::check::{worst, Worst};
 
 pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
     let th: Vec<f64> = (0..37).map(|k| 0.17 * k as f64).collect();
@@ -81,7 +82,7 @@ pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
             let peak = b.eval_plane(tc);
             let base = tg.eval_plane(tc);
             let dpeak = ((peak[0] - base[0]).hypot(peak[1] - base[1]) - h).abs();
-            max_diff3(&space(&b), &lift(&want)).max(dpeak)
+            max_diff3(&space(&b), &lift(&want)).worst(dpeak)
         }
         Err(_) => f64::NAN,
     };
@@ -113,7 +114,7 @@ pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
                     Err(_) => f64::NAN,
                 }
             })
-            .fold(0.0, f64::max),
+            .fold(0.0, worst),
         Err(_) => f64::NAN,
     };
     out.push(c(

@@ -1,14 +1,15 @@
 //! Applying edits to a document's part specifications.
 
-use super::{unknown_part, Edit, EditError, SectionTransform, SECTION_SAMPLES};
-use crate::character::doc::{End, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use crate::character::log::{
+    param, unknown_part, validate_params, Edit, EditError, SectionTransform, SECTION_SAMPLES,
+};
+use crate::character::spec::{End, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 use crate::curve::gec::transform::Bend;
 use crate::curve::gec::{Frame, Gec};
 use crate::mesh::{add, dist, dot, scale, sub};
 use std::f64::consts::PI;
 
 use super::force4::U_SPAN_MIN_FRACTION;
-use super::validate::{param, validate_params};
 
 /// The parts with `edits` applied in order (spec-level edits; validated as
 /// they are applied; an error names the edit's index in `edits`).
@@ -52,7 +53,7 @@ fn collapsed(s: &SectionSpec) -> bool {
 }
 
 /// Applies one (parameter-checked) spec-level edit to `parts`.
-pub(crate) fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditError> {
+pub fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditError> {
     let name = e.part().unwrap_or("");
     let known = parts.to_vec();
     let p = find(parts, name).map_err(|_| unknown_part(&known, name))?;
@@ -157,9 +158,7 @@ fn boundary(
         let mut s = p.sections[ie].clone();
         s.shape = c.clone();
         let g = section_gec(&s).map_err(invalid)?;
-        if let Some((a, b)) =
-            crate::template::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
-        {
+        if let Some((a, b)) = crate::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES)) {
             return Err(EditError::SelfIntersecting {
                 op: e.op(),
                 part: p.name.clone(),
@@ -192,7 +191,7 @@ fn boundary(
         )));
     }
     let build = |q: &PartSpec| {
-        crate::sketch::part::build_part(q).map_err(|err| EditError::Build {
+        crate::character::part::build_part(q).map_err(|err| EditError::Build {
             op: e.op(),
             part: q.name.clone(),
             message: err.to_string(),
@@ -281,7 +280,7 @@ fn transform_section(
     }
     if !point {
         let pts = out.sample_plane(SECTION_SAMPLES);
-        if let Some((a, b)) = crate::template::polygon::self_intersection(&pts) {
+        if let Some((a, b)) = crate::polygon::self_intersection(&pts) {
             return Err(EditError::SelfIntersecting {
                 op: e.op(),
                 part: p.name.clone(),
@@ -301,52 +300,6 @@ fn transform_section(
             x: out.x,
             y: out.y,
         };
-    }
-    Ok(())
-}
-
-/// Builds the part an edit targets (the chain solver's own guards).
-pub(crate) fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError> {
-    let Some(name) = e.part() else {
-        return Ok(());
-    };
-    let Some(p) = parts.iter().find(|p| p.name == name) else {
-        return Err(unknown_part(parts, name));
-    };
-    let built = crate::sketch::part::build_part(p).map_err(|err| EditError::Build {
-        op: e.op(),
-        part: name.into(),
-        message: err.to_string(),
-    })?;
-    match e {
-        Edit::Force { .. } | Edit::ForceRegion { .. } | Edit::ForceStroke { .. } => {
-            if let Some(f) = super::force4::field_of(e) {
-                f?;
-            }
-        }
-        Edit::Plate { centre, radius, .. } => {
-            let d = super::mesh::distance_to_part(&built, *centre);
-            if d > *radius {
-                return Err(EditError::Invalid {
-                    op: e.op(),
-                    part: name.into(),
-                    message: format!(
-                        "the region centre lies {d:.4} from the part's surface, farther than the radius {radius}"
-                    ),
-                });
-            }
-        }
-        Edit::Sasm(_) | Edit::SasmAux(_) => {
-            let f = crate::sasm::edit::feature_of(e, std::slice::from_ref(&built));
-            if let Some(Err(err)) = f {
-                return Err(EditError::Invalid {
-                    op: e.op(),
-                    part: name.into(),
-                    message: err.to_string(),
-                });
-            }
-        }
-        _ => {}
     }
     Ok(())
 }

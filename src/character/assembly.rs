@@ -1,18 +1,16 @@
 //! Assembling parts and transitions into one mesh with shared vertices at
 //! every seam, and measuring the joins.
 
-pub use super::measure::orient;
 use super::measure::{measure, measure_seam};
+pub use super::measure::{orient, JoinReport, SeamReport};
 use super::part::{build_part, PartSurface};
-use super::transition::{
-    child_transition, cut_table, eval as teval, seams as make_seams, ChildTransition, Run, Seam,
-    RING_VERTICES, SEAM_VERTICES,
-};
-use super::SketchError;
-use crate::character::doc::{End, PartSpec, TransitionSpec};
+use super::ring::{cut_table, RING_VERTICES, SEAM_VERTICES};
+use super::seam::seams as make_seams;
+use super::transition::{child_transition, eval as teval, Built, Run};
+use super::ModelError;
+use crate::character::spec::{End, PartSpec, TransitionSpec};
 use crate::mesh::Mesh;
 
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Mesh resolution.
@@ -33,31 +31,17 @@ impl Default for Resolution {
     }
 }
 
-/// Jumps measured along one join (relative: C0 to the model height, C1 and
-/// C2 to the largest scaled part derivative along the join).
-#[derive(Clone, Debug, Serialize)]
-pub struct JoinReport {
-    pub transition: String,
-    pub part: String,
-    pub samples: usize,
-    pub c0: f64,
-    pub c1: f64,
-    pub c2: f64,
-}
-
-/// Normal jump across a seam between two sibling transitions.
-#[derive(Clone, Debug, Serialize)]
-pub struct SeamReport {
-    pub transition: String,
-    pub between: [String; 2],
-    /// Largest angle between the two sides' normals along the seam (degrees).
-    pub max_angle_deg: f64,
-    /// The angle at the seam's apex (degrees).
-    pub apex_angle_deg: f64,
+/// A displacement field over a part's parameters, in patch coordinates:
+/// `s` in `(0, 1)` across its u-range, `theta` the ring angle. The force
+/// edits' fields (`crate::edit::ForceField`: pde4 2-sided and 4-sided
+/// solutions) are the ones the pipeline adds.
+pub trait DisplacementField: std::fmt::Debug + Send + Sync {
+    /// The displacement at patch coordinate `s` and angle `theta`.
+    fn at(&self, s: f64, theta: f64) -> [f64; 3];
 }
 
 /// A displacement field added to a part's surface over a u-range of the
-/// part (a force edit of `character::edit`: the pde4 2-sided solution, which
+/// part (a force edit of `crate::edit`: the pde4 2-sided solution, which
 /// vanishes with its u-derivative at both ends of the range, so the part
 /// stays in place and C1 there and its ends, where transitions join, do not
 /// move; or the 4-sided one inside an angle range too).
@@ -65,7 +49,7 @@ pub struct SeamReport {
 pub struct Displacement {
     pub part: String,
     pub u: [f64; 2],
-    pub field: crate::character::edit::ForceField,
+    pub field: std::sync::Arc<dyn DisplacementField>,
 }
 
 impl Displacement {
@@ -97,7 +81,7 @@ pub const TANGENT_SCALE_MAX: f64 = 10.0;
 
 impl PartCache {
     /// The built part of `spec`, solved only when not cached.
-    pub fn get(&mut self, spec: &PartSpec) -> Result<PartSurface, SketchError> {
+    pub fn get(&mut self, spec: &PartSpec) -> Result<PartSurface, ModelError> {
         if let Some((_, s)) = self.entries.iter().find(|(p, _)| p == spec) {
             return Ok(s.clone());
         }
@@ -249,22 +233,13 @@ fn tube(
     }
 }
 
-/// A transition with its resolved parts, seams and child transitions.
-pub(super) struct Built {
-    pub(super) spec: TransitionSpec,
-    pub(super) parent: usize,
-    pub(super) children: Vec<usize>,
-    pub(super) seams: Vec<Seam>,
-    pub(super) cts: Vec<ChildTransition>,
-}
-
 /// Builds the mesh of parts and transitions and measures the joins.
 pub fn build_model(
     specs: &[PartSpec],
     transitions: &[TransitionSpec],
     height: f64,
     res: Resolution,
-) -> Result<Model, SketchError> {
+) -> Result<Model, ModelError> {
     build_model_with(specs, transitions, height, res, &[], None)
 }
 
@@ -277,7 +252,7 @@ pub fn build_model_with(
     res: Resolution,
     displacements: &[Displacement],
     cache: Option<&mut PartCache>,
-) -> Result<Model, SketchError> {
+) -> Result<Model, ModelError> {
     let parts = match cache {
         Some(c) => specs
             .iter()
@@ -290,17 +265,17 @@ pub fn build_model_with(
     };
     for d in displacements {
         if !parts.iter().any(|p| p.name == d.part) {
-            return Err(SketchError::Document(format!(
+            return Err(ModelError::Document(format!(
                 "a displacement names unknown part '{}'",
                 d.part
             )));
         }
     }
-    let find = |n: &str| -> Result<usize, SketchError> {
+    let find = |n: &str| -> Result<usize, ModelError> {
         parts
             .iter()
             .position(|p| p.name == n)
-            .ok_or_else(|| SketchError::Document(format!("unknown part '{n}'")))
+            .ok_or_else(|| ModelError::Document(format!("unknown part '{n}'")))
     };
     let mut built = Vec::new();
     let mut thetas: Vec<Option<Vec<f64>>> = vec![None; parts.len()];
@@ -324,7 +299,7 @@ pub fn build_model_with(
             && t.tangent_scale > 0.0
             && t.tangent_scale <= TANGENT_SCALE_MAX)
         {
-            return Err(SketchError::Document(format!(
+            return Err(ModelError::Document(format!(
                 "transition '{}': tangent_scale must be in (0, {TANGENT_SCALE_MAX}], got {}",
                 t.name,
                 crate::limits::Num(t.tangent_scale)
@@ -336,7 +311,7 @@ pub fn build_model_with(
             !(lo..=hi).contains(&a)
         });
         if let Some((i, &a)) = out_of_range {
-            return Err(SketchError::Document(format!(
+            return Err(ModelError::Document(format!(
                 "transition '{}': cut_angles[{i}] = {} is outside {} (front angles in [0, pi], back angles in [pi, 2 pi])",
                 t.name,
                 crate::limits::Num(a),
@@ -344,7 +319,7 @@ pub fn build_model_with(
             )));
         }
         if !t.cut_angles.is_empty() && cuts.is_empty() {
-            return Err(SketchError::Document(format!(
+            return Err(ModelError::Document(format!(
                 "transition '{}': cut_angles needs one finite angle per seam ({}), in (0, pi) and decreasing, optionally followed by one back angle per seam in (pi, 2 pi), increasing",
                 t.name,
                 k.saturating_sub(1)
@@ -354,7 +329,7 @@ pub fn build_model_with(
         let mut cts = Vec::new();
         for (c, &idx) in ci.iter().enumerate() {
             if parts[idx].closed_start {
-                return Err(SketchError::Document(format!(
+                return Err(ModelError::Document(format!(
                     "part '{}' joins transition '{}' at its start, which is closed",
                     parts[idx].name, t.name
                 )));
@@ -371,7 +346,7 @@ pub fn build_model_with(
                 t.continuity,
             );
             if thetas[idx].is_some() {
-                return Err(SketchError::Document(format!(
+                return Err(ModelError::Document(format!(
                     "part '{}' is the child of two transitions",
                     parts[idx].name
                 )));
@@ -399,7 +374,7 @@ pub fn build_model_with(
     for b in &built {
         if thetas[b.parent].is_some() {
             if b.spec.parent_end == End::Start {
-                return Err(SketchError::Document(format!(
+                return Err(ModelError::Document(format!(
                     "part '{}' is a child and the parent of transition '{}' at the same end (its start)",
                     parts[b.parent].name, b.spec.name
                 )));
@@ -426,7 +401,7 @@ pub fn build_model_with(
             End::End => &tubes[b.parent].end,
         };
         if ring.len() != RING_VERTICES {
-            return Err(SketchError::Document(format!(
+            return Err(ModelError::Document(format!(
                 "transition '{}': the parent's end is closed",
                 b.spec.name
             )));

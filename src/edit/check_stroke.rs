@@ -3,13 +3,16 @@
 //! zero outside, the map one-to-one, and a rectangle stroke reproducing the
 //! rectangle force ([`Edit::ForceRegion`]).
 
-use super::stroke::StrokeMap;
-use super::{field_of, Edit, ForceField};
-use crate::character::doc::{CharacterDoc, PartSpec};
+use super::{field_of, ForceField};
+use crate::character::assembly::Displacement;
+use crate::character::doc::CharacterDoc;
+use crate::character::log::stroke::StrokeMap;
+use crate::character::log::Edit;
+use crate::character::spec::PartSpec;
+use crate::check::Worst;
 use crate::check::{tol, Check, Kind};
 use crate::mesh::norm;
 use crate::pde4::{Force, ForceKind};
-use crate::sketch::build::Displacement;
 use std::f64::consts::PI;
 
 /// Points of the sample stroke.
@@ -119,7 +122,7 @@ pub fn stroke_measures(e: &Edit) -> Option<StrokeMeasures> {
     let d = Displacement {
         part: e.part()?.to_string(),
         u,
-        field: field.clone(),
+        field: std::sync::Arc::new(field.clone()),
     };
     // part parameters of box point x
     let at = |x: [f64; 2]| {
@@ -134,9 +137,9 @@ pub fn stroke_measures(e: &Edit) -> Option<StrokeMeasures> {
         for j in 1..GRID {
             let x = [i as f64 / GRID as f64, j as f64 / GRID as f64];
             if map.contains(x) {
-                peak = peak.max(norm(at(x)));
+                peak = peak.worst(norm(at(x)));
                 let jac = map.jacobian(x, tol::CENTRAL_DIFFERENCE);
-                min_jac = min_jac.min(jac);
+                min_jac = min_jac.least(jac);
                 if jac.is_nan() || jac <= 0.0 {
                     folded_pts += 1;
                 }
@@ -166,7 +169,7 @@ fn on_stroke(map: &StrokeMap, at: &dyn Fn([f64; 2]) -> [f64; 3]) -> (f64, [f64; 
     for i in 0..n {
         let (a, b) = (p[i], p[(i + 1) % n]);
         let m = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-        c0 = c0.max(norm(at(a))).max(norm(at(m)));
+        c0 = c0.worst(norm(at(a))).worst(norm(at(m)));
         let l = (b[0] - a[0]).hypot(b[1] - a[1]);
         let nrm = [-(b[1] - a[1]) / l, (b[0] - a[0]) / l];
         for (k, qk) in q.iter_mut().enumerate() {
@@ -174,7 +177,7 @@ fn on_stroke(map: &StrokeMap, at: &dyn Fn([f64; 2]) -> [f64; 3]) -> (f64, [f64; 
             if l < 4.0 * H0 {
                 continue;
             }
-            *qk = qk.max(norm(at([m[0] + h * nrm[0], m[1] + h * nrm[1]])) / h);
+            *qk = qk.worst(norm(at([m[0] + h * nrm[0], m[1] + h * nrm[1]])) / h);
         }
     }
     (c0, q)
@@ -191,7 +194,7 @@ fn outside(map: &StrokeMap, d: &Displacement, u: [f64; 2]) -> f64 {
             let th = map.theta[0] - PI + 2.0 * PI * j as f64 / (2 * GRID) as f64;
             let x = [(uu - u[0]) / l, map.y_of(th)];
             if !map.contains(x) {
-                worst = worst.max(norm(d.at(uu, th)));
+                worst = worst.worst(norm(d.at(uu, th)));
             }
         }
     }
@@ -226,7 +229,7 @@ pub fn rectangle_difference(region: &Edit) -> f64 {
             .map(|(u, field)| Displacement {
                 part: part.clone(),
                 u,
-                field,
+                field: std::sync::Arc::new(field),
             })
     };
     let (Some(r), Some(s)) = (disp(region), disp(&stroke_edit)) else {
@@ -239,8 +242,8 @@ pub fn rectangle_difference(region: &Edit) -> f64 {
         for j in 0..GRID {
             let th = theta[0] - 0.5 + (theta[1] - theta[0] + 1.0) * j as f64 / GRID as f64;
             let (x, y) = (r.at(uu, th), s.at(uu, th));
-            peak = peak.max(norm(x));
-            diff = diff.max(norm([x[0] - y[0], x[1] - y[1], x[2] - y[2]]));
+            peak = peak.worst(norm(x));
+            diff = diff.worst(norm([x[0] - y[0], x[1] - y[1], x[2] - y[2]]));
         }
     }
     if peak > 0.0 {
@@ -272,7 +275,7 @@ pub fn checks(doc: &CharacterDoc, mesh_local: impl Fn(&Edit) -> f64) -> Vec<Chec
         c("sec 5.1", "force_stroke_one_to_one", Kind::Threshold, get(&|m| (m.folded + m.negative_jacobians) as f64), 0.0).note(
             "stroke force: grid cells (128 x 128 over the stroke's box) inside the stroke whose image folds, plus inside grid points with a non-positive Jacobian (central differences)",
         ),
-        c("sec 5.1", "force_stroke_rectangle", Kind::Reference, rectangle_difference(&super::check::sample_force_region(torso, 0.2, [0.0, 0.0, 5.0])), tol::ROUNDING).note(
+        c("sec 5.1", "force_stroke_rectangle", Kind::Reference, rectangle_difference(&super::samples::sample_force_region(torso, 0.2, [0.0, 0.0, 5.0])), tol::ROUNDING).note(
             "the sample rectangle force given as a closed stroke (16 points a side, its corners): largest displacement difference from the rectangle force over the part's parameters / peak (linear precision of the mean value map)",
         ),
     ];

@@ -5,8 +5,8 @@
 //! they meet G1 along it.
 
 use super::part::PartSurface;
-use super::transition::{cut_indices, hermite, RING_VERTICES};
-use crate::character::doc::End;
+use super::ring::{cut_indices, hermite, RING_VERTICES};
+use crate::character::spec::End;
 use crate::mesh::{add, dot, norm, scale, sub};
 use crate::vec3::cross;
 use std::f64::consts::PI;
@@ -106,6 +106,14 @@ impl Seam {
 /// (+1 or -1): the parent's scaled u-tangent at the cuts, turning into
 /// `side ell` times [`Seam::across`] toward the apex: `(1 - w) c(t) S'(t)
 /// + a side ell D(t)`, `w` [`seam_weight`], `a` [`seam_across_weight`].
+///
+/// With `w = sin^2(pi t)`, `a = sin(pi t)`, `D` the
+/// seam's [`Seam::across`], `c` linear with `c(0) S'(0)` the parent's
+/// scaled tangent `sgn ell dP/du` at the front cut and `c(1) S'(1)` the one
+/// at the back cut (the seam leaves the ring along it), so the loop's cross
+/// tangent is continuous at the cuts. Modulo `S'` the two sides' tangents
+/// are `-+a ell D`: opposite, so the two transitions meet G1 along the
+/// whole seam, and at the cuts both are tangent to the parent.
 pub(super) fn seam_tangent(
     s: &Seam,
     t: f64,

@@ -1,14 +1,36 @@
 //! Measuring a built model's joins (C0/C1/C2 jumps of each transition
 //! against its parts, normal jumps across seams) and orienting its mesh.
 
-use super::build::{Built, JoinReport, SeamReport};
 use super::part::PartSurface;
-use super::transition::{
-    eval as teval, loop_eval, ChildTransition, Run, RING_VERTICES, SEAM_VERTICES,
-};
+use super::ring::{RING_VERTICES, SEAM_VERTICES};
+use super::transition::{eval as teval, loop_eval, Built, ChildTransition, Run};
 use crate::mesh::{dist, norm, scale, sub, Mesh};
 use crate::surface::{cross, Surface};
+use serde::Serialize;
 use std::f64::consts::PI;
+
+/// Jumps measured along one join (relative: C0 to the model height, C1 and
+/// C2 to the largest scaled part derivative along the join).
+#[derive(Clone, Debug, Serialize)]
+pub struct JoinReport {
+    pub transition: String,
+    pub part: String,
+    pub samples: usize,
+    pub c0: f64,
+    pub c1: f64,
+    pub c2: f64,
+}
+
+/// Normal jump across a seam between two sibling transitions.
+#[derive(Clone, Debug, Serialize)]
+pub struct SeamReport {
+    pub transition: String,
+    pub between: [String; 2],
+    /// Largest angle between the two sides' normals along the seam (degrees).
+    pub max_angle_deg: f64,
+    /// The angle at the seam's apex (degrees).
+    pub apex_angle_deg: f64,
+}
 
 /// Samples per loop vertex for the join measurements.
 const JOIN_SAMPLES: usize = 3;

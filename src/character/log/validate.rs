@@ -1,9 +1,38 @@
 //! Validation of an edit's own parameters, before it meets a document
 //! (ranges, finiteness, shape parameters, transform limits).
 
-use super::force4::THETA_SPAN_MIN;
 use super::{Edit, EditError, SectionTransform, SCALE_MAX, SIGMA_MAX};
-use crate::character::doc::SectionShape;
+use crate::character::spec::SectionShape;
+use std::f64::consts::PI;
+
+/// Smallest angle range of a 4-sided force (rectangle or stroke's bounding
+/// box), radians: a narrower patch bends within less than a mesh ring's
+/// angle step and its derivatives grow as the inverse width.
+pub const THETA_SPAN_MIN: f64 = 1e-2;
+/// Largest angle range of a 4-sided force (the whole ring).
+pub const THETA_SPAN_MAX: f64 = 2.0 * PI;
+
+/// The stroke map of a stroke force edit (its validation errors named).
+pub fn stroke_map(e: &Edit) -> Result<super::stroke::StrokeMap, EditError> {
+    let Edit::ForceStroke {
+        part,
+        stroke,
+        corners,
+        ..
+    } = e
+    else {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: e.part().unwrap_or("").into(),
+            message: "not a stroke force edit".into(),
+        });
+    };
+    super::stroke::StrokeMap::new(stroke, *corners).map_err(|err| EditError::Invalid {
+        op: e.op(),
+        part: part.clone(),
+        message: format!("stroke: {err}"),
+    })
+}
 
 /// The u-range, shape parameter and force of a 2- or 4-sided force edit.
 fn check_force(
@@ -33,7 +62,9 @@ fn check_patch(e: &Edit, a: f64, force: &crate::pde4::Force) -> Result<(), EditE
     })
 }
 
-pub(super) fn param(
+/// `Ok` when `ok` holds and `value` is finite, else the edit's named
+/// [`EditError::Parameter`] with the range `expected`.
+pub fn param(
     e: &Edit,
     name: &'static str,
     value: f64,
@@ -108,7 +139,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 e,
                 "theta[1]",
                 theta[1],
-                span > 0.0 && span <= super::force4::THETA_SPAN_MAX,
+                span > 0.0 && span <= THETA_SPAN_MAX,
                 "theta[0] < theta[1] <= theta[0] + 2 pi (the curve must enclose a region of the part)",
             )?;
             param(
@@ -122,7 +153,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
         }
         Edit::ForceStroke { force, a, .. } => {
             check_patch(e, *a, force)?;
-            let map = super::force4::stroke_map(e)?;
+            let map = stroke_map(e)?;
             let span = map.theta[1] - map.theta[0];
             param(
                 e,

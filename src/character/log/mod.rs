@@ -1,12 +1,16 @@
-//! Local modeling as undoable edits of the character document (paper 000
-//! sec 5; paper 001 for the mesh-level plate edit).
+//! The edit log of a character document: local modeling as undoable edits
+//! (paper 000 sec 5; paper 001 for the mesh-level plate edit). This module
+//! holds what an edit *is* (its data, its own parameter checks, the order
+//! rule of the log, undo and redo); applying edits is `crate::edit` (part
+//! surfaces, forces, plates) and `crate::sasm` (features), and replaying
+//! the log is `crate::pipeline`.
 //!
 //! A character is its inputs plus an ordered edit log: `doc.edits`, of which
-//! the first `doc.cursor` are active. [`CharacterDoc::push_edit`] validates
+//! the first `doc.cursor` are active. `CharacterDoc::push_edit` (`crate::pipeline`) validates
 //! an edit against the document's current state (the stored parts with the
 //! active edits applied) *before* changing anything, drops the redo tail and
 //! appends; [`CharacterDoc::undo`] / [`CharacterDoc::redo`] move the cursor.
-//! `sketch::build_document` replays the active edits in order after deriving
+//! `pipeline::build` replays the active edits in order after deriving
 //! or reading the parts, so the same document always gives the same mesh,
 //! bit for bit. The stored `parts` are never rewritten by an edit: the log is
 //! the only record of a change (saving a built document keeps the log and the
@@ -40,7 +44,7 @@
 //!   pde4 4-sided patch inside the closed curve bounding a rectangle
 //!   `[u_a, u_b] x [theta_a, theta_b]` of the part's parameter space,
 //!   clamped on all four edges, added to the part as a displacement that
-//!   vanishes with its first derivatives on the curve ([`force4`]).
+//!   vanishes with its first derivatives on the curve (`crate::edit::force4`).
 //! * [`Edit::ForceStroke`] (the same inside a closed stroke of any simple
 //!   shape on the part): the stroke's inside is mapped onto the unit square
 //!   by a mean value map, fold-checked ([`stroke`]), and the 4-sided patch
@@ -61,7 +65,7 @@
 //! # Order
 //! The log is applied in order: PDE-level edits to the part surfaces (the
 //! mesh is then built from them), mesh-level edits (plate, SASM) to the
-//! built mesh, interleaved as the log has them ([`apply_mesh_edits`]; a
+//! built mesh, interleaved as the log has them (`crate::pipeline::apply_mesh_edits`; a
 //! SASM feature adds its height to the mesh as it is, keeping an earlier
 //! plate or force). A PDE-level edit after a mesh-level edit of the same
 //! part (or of a child of a transition it belongs to) would rebuild the
@@ -74,23 +78,17 @@
 //! ([`EditError::SelfIntersecting`]), a part whose chain would not solve
 //! ([`EditError::Build`]).
 
-mod apply;
-pub mod check;
-pub mod check_stroke;
-pub mod force4;
-mod mesh;
 pub mod stroke;
+mod strokes;
 mod summary;
 mod validate;
 
-pub use apply::{apply_to_parts, section_gec};
-pub use force4::{field_of, force_region_field, ForceField, FORCE4_TERMS};
-pub use mesh::{
-    apply_mesh_edits, apply_plates, displacements, force_field, push_checked, Session, FORCE_TERMS,
+pub use strokes::{AuxSpec, SasmSpec, Stroke};
+pub use validate::{
+    param, stroke_map, validate_params, A_FORCE_MAX, A_FORCE_MIN, THETA_SPAN_MAX, THETA_SPAN_MIN,
 };
-pub use validate::validate_params;
 
-use crate::character::doc::{CharacterDoc, End, PartSpec, SectionShape};
+use crate::character::spec::{End, PartSpec, SectionShape};
 use serde::{Deserialize, Serialize};
 
 /// One edit of the log.
@@ -127,7 +125,7 @@ pub enum Edit {
     /// whole curve, with `force` in patch coordinates (`s` across the u
     /// range, `v` across the angle range, both in `[0, 1]`) and shape
     /// parameters `a` (default 1); its solution is added to the part as a
-    /// displacement, zero outside the curve ([`force4`]).
+    /// displacement, zero outside the curve (`crate::edit::force4`).
     ForceRegion {
         part: String,
         u: [f64; 2],
@@ -186,10 +184,10 @@ pub enum Edit {
     /// the part plus one or two profile strokes grow a feature inside the
     /// curve (`crate::sasm`; applied to the built mesh, in log order with
     /// the plate edits).
-    Sasm(crate::sasm::SasmSpec),
+    Sasm(SasmSpec),
     /// SASM auxiliary line (Fig 10b): half an interface, mirrored, plus the
     /// main profile (`crate::sasm::AuxSpec`).
-    SasmAux(crate::sasm::AuxSpec),
+    SasmAux(AuxSpec),
 }
 
 fn one() -> f64 {
@@ -337,53 +335,6 @@ fn known_parts(parts: &[PartSpec]) -> String {
         .join(", ")
 }
 
-impl CharacterDoc {
-    /// The active edits (`edits[..cursor]`).
-    pub fn active_edits(&self) -> &[Edit] {
-        &self.edits[..self.cursor.min(self.edits.len())]
-    }
-
-    /// Validates `e` against the current state (the stored parts with the
-    /// active edits applied) before changing anything, then drops the redo
-    /// tail, appends `e` and moves the cursor to the end.
-    pub fn push_edit(&mut self, e: Edit) -> Result<(), EditError> {
-        if self.parts.is_empty() {
-            return Err(EditError::NoParts);
-        }
-        let mut parts = apply_to_parts(&self.parts, self.active_edits())?;
-        validate_params(&e)?;
-        let mut log = self.active_edits().to_vec();
-        log.push(e.clone());
-        check_order(&self.transitions, &log)?;
-        apply::apply_one(&mut parts, &e)?;
-        apply::check_builds(&parts, &e)?;
-        self.edits.truncate(self.cursor);
-        self.edits.push(e);
-        self.cursor = self.edits.len();
-        Ok(())
-    }
-
-    /// Moves the cursor back by one edit.
-    pub fn undo(&mut self) -> Result<(), EditError> {
-        if self.cursor == 0 {
-            return Err(EditError::NothingToUndo);
-        }
-        self.cursor -= 1;
-        Ok(())
-    }
-
-    /// Moves the cursor forward by one edit.
-    pub fn redo(&mut self) -> Result<(), EditError> {
-        if self.cursor >= self.edits.len() {
-            return Err(EditError::NothingToRedo {
-                len: self.edits.len(),
-            });
-        }
-        self.cursor += 1;
-        Ok(())
-    }
-}
-
 /// Refuses a log whose order cannot be honoured: the log is applied in
 /// order, except that every PDE-level edit (shape parameter, GEC
 /// transform, force, boundary) is applied to the part surfaces before the
@@ -393,7 +344,7 @@ impl CharacterDoc {
 /// changes (the same part, or a child of a transition whose parent or
 /// another child it edits); such a log is refused.
 pub fn check_order(
-    transitions: &[crate::character::doc::TransitionSpec],
+    transitions: &[crate::character::spec::TransitionSpec],
     edits: &[Edit],
 ) -> Result<(), EditError> {
     // the mesh of part `q` depends on part `p`'s surface when they are the

@@ -9,8 +9,8 @@
 //! stored per part (default 0: the quintic per harmonic, which reproduces
 //! constants and converges at order six as sections are added).
 
-use super::SketchError;
-use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use super::ModelError;
+use crate::character::spec::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 use crate::curve::gec::{Frame, Gec};
 use crate::curve::Fourier3;
 use crate::pde6::{Chain, Section};
@@ -26,7 +26,7 @@ pub struct PartSurface {
     pub closed_end: bool,
 }
 
-fn curve_of(s: &SectionSpec) -> Result<Fourier3, SketchError> {
+fn curve_of(s: &SectionSpec) -> Result<Fourier3, ModelError> {
     let c = s.centre;
     let (e1, e2) = (s.e1, s.e2);
     let lin = |a: f64, b: f64| {
@@ -51,17 +51,17 @@ fn curve_of(s: &SectionSpec) -> Result<Fourier3, SketchError> {
             }
         }
         SectionShape::Gec { centre, x, y } => {
-            let frame = Frame::new(c, e1, e2).map_err(|e| SketchError::Section(e.to_string()))?;
+            let frame = Frame::new(c, e1, e2).map_err(|e| ModelError::Section(e.to_string()))?;
             Gec::new(frame, *centre, x.clone(), y.clone())
-                .map_err(|e| SketchError::Section(e.to_string()))?
+                .map_err(|e| ModelError::Section(e.to_string()))?
                 .to_fourier3()
         }
     })
 }
 
 /// Checks a part's sections and builds its chain.
-pub fn build_part(p: &PartSpec) -> Result<PartSurface, SketchError> {
-    let bad = |m: String| SketchError::Part {
+pub fn build_part(p: &PartSpec) -> Result<PartSurface, ModelError> {
+    let bad = |m: String| ModelError::Part {
         part: p.name.clone(),
         message: m,
     };
@@ -120,10 +120,10 @@ impl PartSurface {
     }
 
     /// End parameter.
-    pub fn end_u(&self, end: crate::character::doc::End) -> f64 {
+    pub fn end_u(&self, end: crate::character::spec::End) -> f64 {
         match end {
-            crate::character::doc::End::Start => self.u0,
-            crate::character::doc::End::End => self.u1,
+            crate::character::spec::End::Start => self.u0,
+            crate::character::spec::End::End => self.u1,
         }
     }
 }

@@ -1,14 +1,19 @@
 //! The `edit` family's checks (paper 000 sec 5, paper 001): on the bundled
 //! female (final level, low resolution).
 
-use super::{apply_to_parts, Edit, SectionTransform, Session};
-use crate::character::doc::{CharacterDoc, End, Level, PartSpec};
+use super::apply_to_parts;
+pub use super::samples::{sample_force, sample_force_region};
+use crate::character::doc::{CharacterDoc, Level};
+use crate::character::log::{Edit, SectionTransform};
+use crate::character::part::{build_part, PartSurface};
+use crate::character::spec::{End, PartSpec};
+use crate::character::Resolution;
+use crate::check::Worst;
 use crate::check::{tol, Check, Kind};
 use crate::mesh::{dist, dot, norm, scale, sub, Mesh};
-use crate::pde4::{Force, ForceKind};
+use crate::pipeline::build_document;
+use crate::pipeline::Session;
 use crate::sketch::check::bundled;
-use crate::sketch::part::{build_part, PartSurface};
-use crate::sketch::{build_document, Resolution};
 use crate::surface::Surface;
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -30,48 +35,6 @@ pub fn female() -> Option<CharacterDoc> {
         .map(|b| b.doc)
 }
 
-/// A force edit in the middle of a part: an area force over the middle half
-/// of its u range, pushing along `p`.
-pub fn sample_force(p: &PartSpec, push: [f64; 3]) -> Edit {
-    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
-    Edit::Force {
-        part: p.name.clone(),
-        u: [u0 + 0.25 * (u1 - u0), u0 + 0.75 * (u1 - u0)],
-        force: Force {
-            kind: ForceKind::Area {
-                u0: 0.2,
-                u1: 0.8,
-                v0: 0.1,
-                v1: 0.4,
-            },
-            p: push,
-        },
-        a: 1.0,
-    }
-}
-
-/// A 4-sided force edit on a part: an area force in the middle of the
-/// patch inside the rectangle `u` in the middle half of the part's range by
-/// `theta` in `[theta_a, theta_a + 1.2]`, pushing along `p`.
-pub fn sample_force_region(p: &PartSpec, theta_a: f64, push: [f64; 3]) -> Edit {
-    let (u0, u1) = (p.sections[0].u, p.sections[p.sections.len() - 1].u);
-    Edit::ForceRegion {
-        part: p.name.clone(),
-        u: [u0 + 0.25 * (u1 - u0), u0 + 0.75 * (u1 - u0)],
-        theta: [theta_a, theta_a + 1.2],
-        force: Force {
-            kind: ForceKind::Area {
-                u0: 0.2,
-                u1: 0.8,
-                v0: 0.25,
-                v1: 0.75,
-            },
-            p: push,
-        },
-        a: 1.0,
-    }
-}
-
 /// Samples per edge of the 4-sided force checks.
 const EDGE: usize = 64;
 
@@ -88,21 +51,21 @@ fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
     for i in 0..=EDGE {
         let t = i as f64 / EDGE as f64;
         for (s, v) in [(0.0, t), (1.0, t), (t, 0.0), (t, 1.0)] {
-            c0 = c0.max(norm(patch.point(s, v)));
+            c0 = c0.worst(norm(patch.point(s, v)));
             c1 = c1
-                .max(norm(patch.derivative(s, v, 1, 0)))
-                .max(norm(patch.derivative(s, v, 0, 1)));
+                .worst(norm(patch.derivative(s, v, 1, 0)))
+                .worst(norm(patch.derivative(s, v, 0, 1)));
         }
         for j in 1..EDGE {
-            peak = peak.max(norm(patch.point(t, j as f64 / EDGE as f64)));
+            peak = peak.worst(norm(patch.point(t, j as f64 / EDGE as f64)));
         }
     }
     // outside: the field on the part's parameter grid (u over twice the
     // range, every angle) where the point is off the open rectangle
-    let d = crate::sketch::build::Displacement {
+    let d = crate::character::assembly::Displacement {
         part: e.part()?.to_string(),
         u,
-        field: field.clone(),
+        field: std::sync::Arc::new(field.clone()),
     };
     let (l, w) = (u[1] - u[0], theta[1] - theta[0]);
     let mut outside = 0.0f64;
@@ -113,7 +76,7 @@ fn force4_measures(e: &Edit) -> Option<(f64, f64, f64)> {
             let inside =
                 uu > u[0] && uu < u[1] && super::force4::angle_coordinate(*theta, th).is_some();
             if !inside {
-                outside = outside.max(norm(d.at(uu, th)));
+                outside = outside.worst(norm(d.at(uu, th)));
             }
         }
     }
@@ -146,7 +109,7 @@ fn grid_error(
         for j in 0..GRID {
             let t = 2.0 * PI * j as f64 / GRID as f64;
             let want = map(b.chain.point(u, t), c0);
-            worst = worst.max(dist(a.chain.point(u, t), want) / h);
+            worst = worst.worst(dist(a.chain.point(u, t), want) / h);
         }
     }
     worst
@@ -263,7 +226,7 @@ pub fn checks() -> Vec<Check> {
 
     // force: the displacement and its u-derivative vanish at the range ends
     let force = sample_force(torso, [0.0, 0.0, 5.0]);
-    let field = super::mesh::force_field(&force);
+    let field = super::force4::force_field(&force);
     let m = field
         .as_ref()
         .map(|f| {
@@ -271,11 +234,11 @@ pub fn checks() -> Vec<Check> {
             for j in 0..GRID {
                 let v = j as f64 / GRID as f64;
                 for s in [0.0, 1.0] {
-                    end0 = end0.max(norm(f.point(s, v)));
-                    end1 = end1.max(norm(f.derivative(s, v, 1, 0)));
+                    end0 = end0.worst(norm(f.point(s, v)));
+                    end1 = end1.worst(norm(f.derivative(s, v, 1, 0)));
                 }
                 for i in 1..GRID {
-                    peak = peak.max(norm(f.point(i as f64 / GRID as f64, v)));
+                    peak = peak.worst(norm(f.point(i as f64 / GRID as f64, v)));
                 }
             }
             if peak > 0.0 {
@@ -379,7 +342,7 @@ pub fn checks() -> Vec<Check> {
             let mut ring = 0.0f64;
             for j in 0..GRID {
                 let th = 2.0 * PI * j as f64 / GRID as f64;
-                ring = ring.max(dist(a.chain.point(b.u1, th), b.chain.point(b.u1, th)) / h);
+                ring = ring.worst(dist(a.chain.point(b.u1, th), b.chain.point(b.u1, th)) / h);
             }
             (dist(dt, t) / norm(t), ring)
         })
@@ -405,7 +368,7 @@ pub fn checks() -> Vec<Check> {
     let fast = session.model().ok();
     let m = match (&incremental, &scratch, &fast) {
         (Some(a), Some(b), Some(f)) if ok => {
-            differing(&a.model.mesh, &b.model.mesh).max(differing(&f.mesh, &b.model.mesh))
+            differing(&a.model.mesh, &b.model.mesh).worst(differing(&f.mesh, &b.model.mesh))
         }
         _ => f64::NAN,
     };

@@ -67,20 +67,16 @@
 //! a child of one transition and the parent of another at its end (an
 //! arm: child of the shoulders, parent of its wrist): its tube switches
 //! from the first transition's loop angles to the uniform end ring the
-//! second's cuts index, halfway along (`sketch::build`).
+//! second's cuts index, halfway along (`character::assembly`).
 
 use super::part::PartSurface;
-use crate::character::doc::{Continuity, End};
+use crate::character::spec::{Continuity, End};
 use crate::mesh::{add, dist, dot, norm, scale, sub};
 use std::f64::consts::PI;
 
-pub(super) use super::seam::seam_tangent;
-pub use super::seam::{seam_across_weight, seam_weight, seams, Seam};
-
-/// Vertices on the parent's end ring (divisible by 4 and 6).
-pub const RING_VERTICES: usize = 48;
-/// Interior vertices per seam.
-pub const SEAM_VERTICES: usize = 8;
+use super::ring::{cut_indices, hermite, RING_VERTICES, SEAM_VERTICES};
+use super::seam::{seam_tangent, seam_weight, Seam};
+use crate::character::spec::TransitionSpec;
 
 /// A run of a child's loop.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,70 +85,6 @@ pub enum Run {
     Arc { from: usize, count: usize },
     /// Seam j traversed front to back (`reversed = false`) or back to front.
     Seam { j: usize, reversed: bool },
-}
-
-/// The ring indices of the front and back cuts of seam j (1-based) among
-/// k children: `cuts[j - 1]` when given ([`cut_table`]), else the fixed
-/// angles `pi - j pi / k`.
-pub fn cut_indices(j: usize, k: usize, cuts: &[(usize, usize)]) -> (usize, usize) {
-    if let Some(c) = cuts.get(j - 1) {
-        return *c;
-    }
-    let n = RING_VERTICES;
-    let f = n / 2 - j * n / (2 * k);
-    let b = n / 2 + j * n / (2 * k);
-    (f % n, b % n)
-}
-
-/// Ring indices of the cuts at the given angles: either one front angle
-/// per seam (radians in (0, pi), decreasing; the back cut mirrors it,
-/// `2 pi - angle`), or one front angle per seam followed by one back angle
-/// per seam (in (pi, 2 pi), increasing), for a ring whose front and back
-/// differ. Rounded to ring vertices, kept strictly monotonic and inside
-/// (0, pi) (fronts) or (pi, 2 pi) (backs). Empty when `angles` has neither
-/// length (the fixed angles are used).
-pub fn cut_table(k: usize, angles: &[f64]) -> Vec<(usize, usize)> {
-    let n = RING_VERTICES;
-    if k < 2
-        || (angles.len() != k - 1 && angles.len() != 2 * (k - 1))
-        || angles.iter().any(|a| !a.is_finite())
-    {
-        return Vec::new();
-    }
-    let (front, back) = angles.split_at(k - 1);
-    let Some(f) = front_indices(front) else {
-        return Vec::new();
-    };
-    let b = if back.is_empty() {
-        f.clone()
-    } else {
-        let mirrored: Vec<f64> = back.iter().map(|a| 2.0 * PI - a).collect();
-        match front_indices(&mirrored) {
-            Some(b) => b,
-            None => return Vec::new(),
-        }
-    };
-    f.into_iter().zip(b).map(|(x, y)| (x, n - y)).collect()
-}
-
-/// Ring indices of front angles in (0, pi), decreasing: rounded, kept
-/// strictly decreasing, each at least 1 and below n / 2 (angles outside
-/// (0, pi) are clamped there).
-fn front_indices(angles: &[f64]) -> Option<Vec<usize>> {
-    let n = RING_VERTICES;
-    let mut f: Vec<usize> = angles
-        .iter()
-        .map(|a| ((a / (2.0 * PI) * n as f64).round() as usize).clamp(1, n / 2 - 1))
-        .collect();
-    for j in 1..f.len() {
-        if f[j] >= f[j - 1] {
-            f[j] = f[j - 1].saturating_sub(1);
-        }
-    }
-    if f.last().is_some_and(|&x| x < 1) || f[0] >= n / 2 {
-        return None;
-    }
-    Some(f)
 }
 
 /// The runs of child `c` (0-based) of `k`.
@@ -301,40 +233,6 @@ fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
         start += len;
     }
     unreachable!("tau is reduced into the loop")
-}
-
-/// Cross tangent of a child's transition along seam `s` at `t` (`side`:
-/// -1 left of the seam, +1 right). Along the seam it is
-/// `(1 - w) c(t) S'(t) + a side ell D(t)`, `w = sin^2(pi t)`, `a = sin(pi t)`, `D` the
-/// seam's [`Seam::across`], `c` linear with `c(0) S'(0)` the parent's
-/// scaled tangent `sgn ell dP/du` at the front cut and `c(1) S'(1)` the one
-/// at the back cut (the seam leaves the ring along it), so the loop's cross
-/// tangent is continuous at the cuts. Modulo `S'` the two sides' tangents
-/// are `-+a ell D`: opposite, so the two transitions meet G1 along the
-/// whole seam, and at the cuts both are tangent to the parent.
-/// Cubic Hermite basis values and derivatives (d = 0, 1, 2) at s:
-/// `[h00, h10, h01, h11]`.
-pub(super) fn hermite(s: f64, d: usize) -> [f64; 4] {
-    match d {
-        0 => [
-            2.0 * s * s * s - 3.0 * s * s + 1.0,
-            s * s * s - 2.0 * s * s + s,
-            -2.0 * s * s * s + 3.0 * s * s,
-            s * s * s - s * s,
-        ],
-        1 => [
-            6.0 * s * s - 6.0 * s,
-            3.0 * s * s - 4.0 * s + 1.0,
-            -6.0 * s * s + 6.0 * s,
-            3.0 * s * s - 2.0 * s,
-        ],
-        _ => [
-            12.0 * s - 6.0,
-            6.0 * s - 4.0,
-            -12.0 * s + 6.0,
-            6.0 * s - 2.0,
-        ],
-    }
 }
 
 /// Quintic Hermite basis values and derivatives (d = 0, 1, 2) at s:
@@ -576,4 +474,13 @@ pub fn column_scales(
 fn centroid(p: &[[f64; 3]]) -> [f64; 3] {
     let s = p.iter().fold([0.0; 3], |a, b| add(a, *b));
     scale(s, 1.0 / p.len().max(1) as f64)
+}
+
+/// A transition with its resolved parts, seams and child transitions.
+pub(super) struct Built {
+    pub(super) spec: TransitionSpec,
+    pub(super) parent: usize,
+    pub(super) children: Vec<usize>,
+    pub(super) seams: Vec<Seam>,
+    pub(super) cts: Vec<ChildTransition>,
 }

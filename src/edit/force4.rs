@@ -17,14 +17,47 @@
 //! is exactly zero. A curve of any simple shape (a closed stroke in the
 //! part's parameters) uses the same patch through a mean value map of the
 //! stroke's inside onto the square, bounded in its derivatives up to the
-//! stroke, so the edit stays C1 across it ([`super::stroke`]).
+//! stroke, so the edit stays C1 across it (`crate::character::log::stroke`).
 
-use super::stroke::StrokeMap;
-use super::{Edit, EditError};
+use crate::character::log::stroke::StrokeMap;
+use crate::character::log::{Edit, EditError};
 use crate::pde4::four_sided::Method as Method4;
+use crate::pde4::two_sided::Method;
 use crate::pde4::{FourSided, ShapeParams, TwoSided};
 use crate::surface::Surface;
 use std::f64::consts::PI;
+
+/// Series terms `(M, N)` of a force edit's 2-sided patch (sine terms in u,
+/// harmonics in v).
+pub const FORCE_TERMS: (usize, usize) = (16, 8);
+
+/// The 2-sided pde4 solution of a force edit (clamped at both ends of its
+/// range: zero boundary curves and tangents), shape parameters
+/// `a1 = 1, a2 = 2 a^2, a3 = a^4` (`ShapeParams::plate_ratio`: scaling all
+/// three alike would only rescale the response).
+pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
+    let Edit::Force { force, a, .. } = e else {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: e.part().unwrap_or("").into(),
+            message: "not a force edit".into(),
+        });
+    };
+    let p = ShapeParams::plate_ratio(*a);
+    TwoSided::new(
+        [p; 3],
+        std::slice::from_ref(force),
+        FORCE_TERMS.0,
+        FORCE_TERMS.1,
+        Method::Exact,
+        None,
+    )
+    .map_err(|err| EditError::Invalid {
+        op: e.op(),
+        part: e.part().unwrap_or("").into(),
+        message: format!("force patch: {err}"),
+    })
+}
 
 /// Galerkin terms `(M, N)` of a 4-sided force edit's patch.
 pub const FORCE4_TERMS: (usize, usize) = (10, 10);
@@ -65,6 +98,12 @@ impl ForceField {
     }
 }
 
+impl crate::character::assembly::DisplacementField for ForceField {
+    fn at(&self, s: f64, theta: f64) -> [f64; 3] {
+        ForceField::at(self, s, theta)
+    }
+}
+
 /// `v = (theta - theta_a) / (theta_b - theta_a)` with `theta` taken modulo
 /// `2 pi` after `theta_a`; `None` outside the open range.
 pub fn angle_coordinate(range: [f64; 2], theta: f64) -> Option<f64> {
@@ -98,35 +137,11 @@ pub fn force_region_field(e: &Edit) -> Result<FourSided, EditError> {
     })
 }
 
-/// The stroke map of a stroke force edit (its validation errors named).
-pub fn stroke_map(e: &Edit) -> Result<StrokeMap, EditError> {
-    let Edit::ForceStroke {
-        part,
-        stroke,
-        corners,
-        ..
-    } = e
-    else {
-        return Err(EditError::Invalid {
-            op: e.op(),
-            part: e.part().unwrap_or("").into(),
-            message: "not a stroke force edit".into(),
-        });
-    };
-    StrokeMap::new(stroke, *corners).map_err(|err| EditError::Invalid {
-        op: e.op(),
-        part: part.clone(),
-        message: format!("stroke: {err}"),
-    })
-}
-
 /// The displacement field of a force edit (2- or 4-sided) and its u-range;
 /// `None` for other edits.
 pub fn field_of(e: &Edit) -> Option<Result<([f64; 2], ForceField), EditError>> {
     match e {
-        Edit::Force { u, .. } => {
-            Some(super::mesh::force_field(e).map(|f| (*u, ForceField::Two(f))))
-        }
+        Edit::Force { u, .. } => Some(force_field(e).map(|f| (*u, ForceField::Two(f)))),
         Edit::ForceRegion { u, theta, .. } => Some(force_region_field(e).map(|patch| {
             (
                 *u,
@@ -144,64 +159,7 @@ pub fn field_of(e: &Edit) -> Option<Result<([f64; 2], ForceField), EditError>> {
     }
 }
 
-/// Largest angle range of a 4-sided force (the whole ring).
-pub const THETA_SPAN_MAX: f64 = 2.0 * PI;
-/// Smallest angle range of a 4-sided force (rectangle or stroke's bounding
-/// box), radians: a narrower patch bends within less than a mesh ring's
-/// angle step and its derivatives grow as the inverse width.
-pub const THETA_SPAN_MIN: f64 = 1e-2;
+pub use crate::character::log::{stroke_map, THETA_SPAN_MAX, THETA_SPAN_MIN};
 /// Smallest u range of a 4-sided force (rectangle or stroke's bounding
 /// box) as a fraction of its part's u range.
 pub const U_SPAN_MIN_FRACTION: f64 = 1e-3;
-
-/// Sets the `stroke` of a stroke force edit from a stroke drawn in a view
-/// (`crate::sasm::Stroke`: 2D points in an orthographic view), projected
-/// onto the target part of `doc`'s current state (its stored parts with the
-/// active spec-level edits; an earlier force's displacement is not
-/// included) by ray casting (`sasm::project`); the angles are unwrapped
-/// along the stroke so that a stroke across `theta = 0` stays one curve.
-/// A point that misses the part is a named error.
-pub fn project_force_stroke(
-    doc: &crate::character::doc::CharacterDoc,
-    e: &mut Edit,
-    drawn: &crate::sasm::Stroke,
-) -> Result<(), EditError> {
-    let op = e.op();
-    let Edit::ForceStroke { part, stroke, .. } = e else {
-        return Err(EditError::Invalid {
-            op,
-            part: e.part().unwrap_or("").into(),
-            message: "a drawn stroke needs a force_stroke edit".into(),
-        });
-    };
-    let invalid = |m: String| EditError::Invalid {
-        op,
-        part: part.clone(),
-        message: m,
-    };
-    // the stroke's own limit, before a ray is cast for every point
-    let count = drawn.points.len();
-    if count > super::stroke::STROKE_POINTS_MAX {
-        let err = super::stroke::StrokeError::TooManyPoints { count };
-        return Err(invalid(format!("stroke: {err}")));
-    }
-    let parts = super::apply_to_parts(&doc.parts, doc.active_edits())?;
-    let spec = parts
-        .iter()
-        .find(|p| &p.name == part)
-        .ok_or_else(|| super::unknown_part(&parts, part))?;
-    let surf = crate::sketch::part::build_part(spec).map_err(|err| invalid(err.to_string()))?;
-    let pr = crate::sasm::project::Projector::new(&surf, drawn.view);
-    let hits = crate::sasm::project::project_stroke(&pr, "force stroke", &drawn.points)
-        .map_err(|err| invalid(err.to_string()))?;
-    let mut out: Vec<[f64; 2]> = Vec::with_capacity(hits.len());
-    for h in hits {
-        let t = match out.last() {
-            Some(l) => l[1] + (h.theta - l[1] + PI).rem_euclid(2.0 * PI) - PI,
-            None => h.theta,
-        };
-        out.push([h.u, t]);
-    }
-    *stroke = out;
-    Ok(())
-}

@@ -2,6 +2,8 @@
 //! reconstruction, and a prop sketched as a convolution surface, each step
 //! measured.
 
+pub mod skirt;
+
 use crate::body::closed::{reconstruct_closed, ClosedOptions, ClosedReport};
 use crate::makehuman;
 use crate::mesh::unit::{self, Unit};
@@ -28,7 +30,7 @@ pub enum DemoError {
     #[error("pde6 reconstruction")]
     Body(#[from] crate::body::BodyError),
     #[error(transparent)]
-    Skirt(#[from] super::skirt::SkirtError),
+    Skirt(#[from] skirt::SkirtError),
     #[error("SketchCo prop")]
     Conv(#[from] crate::conv::ConvError),
     #[error("sketched female")]
@@ -70,10 +72,10 @@ pub fn sketched_female() -> Result<(Mesh, SketchStep), DemoError> {
     use crate::character::doc::Level;
     let doc = crate::sketch::check::bundled("female", Level::Final)
         .ok_or_else(|| DemoError::Step("the bundled female sketch does not parse".into()))?;
-    let b = crate::sketch::build_document(
+    let b = crate::pipeline::build_document(
         &doc,
         std::path::Path::new("."),
-        crate::sketch::Resolution::default(),
+        crate::character::Resolution::default(),
         true,
     )?;
     let r = &b.report;
@@ -126,7 +128,7 @@ pub struct DemoReport {
     /// The plate edit against MakeHuman's pregnancy morph.
     pub belly_vs_morph: BellyComparison,
     pub reconstruction: ClosedReport,
-    pub skirt: super::skirt::SkirtReport,
+    pub skirt: skirt::SkirtReport,
     pub prop: PropReport,
 }
 
@@ -437,8 +439,7 @@ pub fn build() -> Result<Demo, DemoError> {
     // hips/shoulders/wrists transitions
     let closed = reconstruct_closed(&belly, &ClosedOptions::default())?;
     let (reconstruction, body_report) = (closed.model.mesh, closed.report);
-    let (skirt, skirt_report) =
-        super::skirt::skirt(&belly, &super::skirt::SkirtOptions::default())?;
+    let (skirt, skirt_report) = skirt::skirt(&belly, &skirt::SkirtOptions::default())?;
     let (prop, prop_report) = teddy_prop(&belly)?;
     Ok(Demo {
         unit: UNIT,

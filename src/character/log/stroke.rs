@@ -1,6 +1,6 @@
 //! The inside of a closed stroke on a part, mapped onto the unit square
 //! (for the 4-sided sculpting force inside a curve of any simple shape,
-//! paper 000 sec 5.1, [`super::Edit::ForceStroke`]).
+//! paper 000 sec 5.1, [`super::Edit::ForceStroke`]; validated with the edit).
 //!
 //! # The map
 //! The stroke is a closed polygon in the part's parameters `(u, theta)`.
@@ -37,7 +37,7 @@
 //! `D phi` stays bounded: the edited part is C1 across the stroke
 //! (checked in `verify` family `edit`, `force_stroke_*`).
 
-use crate::template::polygon;
+use crate::polygon;
 use std::f64::consts::PI;
 
 /// Fewest distinct points of a stroke (one per corner).

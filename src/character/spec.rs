@@ -1,0 +1,118 @@
+//! What a character document specifies of its model: parts (tubes through
+//! key sections, each with its surface family) and the transitions that
+//! join them (the schema is in [`super::doc`]). Plain data, read by the edit
+//! log, the document and the assembly alike.
+
+use serde::{Deserialize, Serialize};
+
+/// The curve of one key section in its frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+pub enum SectionShape {
+    /// Radius (0: a collapsed end ring).
+    Circle { r: f64 },
+    /// Semi-axes along `e1` and `e2`, centre offset along `e2`.
+    Ellipse { a: f64, b: f64, offset: f64 },
+    /// GEC coefficients in the section frame (paper 000 eq 16):
+    /// `(x, y)(theta) = centre + sum_j x[j] . (cos, sin)(j theta), ...`.
+    Gec {
+        centre: [f64; 2],
+        x: Vec<[f64; 2]>,
+        y: Vec<[f64; 2]>,
+    },
+}
+
+/// One key section of a part.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SectionSpec {
+    /// Arc length along the part's central curve.
+    pub u: f64,
+    pub centre: [f64; 3],
+    pub e1: [f64; 3],
+    pub e2: [f64; 3],
+    pub shape: SectionShape,
+}
+
+/// Surface family of a part.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "family", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SurfaceSpec {
+    /// The globally solved C2 sixth-order PDE chain (`pde6::Chain::c2_global`)
+    /// with PDE parameter `a`.
+    Pde6C2 { a: f64 },
+}
+
+/// One part: a C2 tube through its key sections.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PartSpec {
+    pub name: String,
+    pub surface: SurfaceSpec,
+    pub sections: Vec<SectionSpec>,
+    /// The start (`u` = first) is a free end closed by a collapsed ring.
+    pub closed_start: bool,
+    pub closed_end: bool,
+}
+
+/// Which end of a part.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum End {
+    Start,
+    End,
+}
+
+/// A transition joining one end of a parent part to the starts of its
+/// children (ordered by model x). Between consecutive children a seam runs
+/// from the front to the back of the parent's end ring through `apex`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TransitionSpec {
+    pub name: String,
+    pub parent: String,
+    pub parent_end: End,
+    pub children: Vec<String>,
+    /// One apex per seam (children - 1).
+    pub seam_apex: Vec<[f64; 3]>,
+    /// Where each seam cuts the parent's end ring: the front cut's ring
+    /// angle in (0, pi), one per seam, decreasing (the back cut mirrors it),
+    /// or those followed by the back cuts' angles in (pi, 2 pi), one per
+    /// seam, increasing (`character::transition::cut_table`).
+    /// Empty: the fixed angles `pi - j pi / k` (`character::transition`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cut_angles: Vec<f64>,
+    /// Factor on the Hermite tangent length (the loop-to-ring centroid
+    /// distance); 1 by default.
+    #[serde(default = "unit_scale", skip_serializing_if = "is_unit_scale")]
+    pub tangent_scale: f64,
+    /// Order of the blend across the transition (`character::transition`):
+    /// `c1` (cubic Hermite, the default) or `c2` (quintic Hermite).
+    #[serde(default, skip_serializing_if = "Continuity::is_default")]
+    pub continuity: Continuity,
+}
+
+/// Continuity of a transition with its parts at its two boundary rings.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Continuity {
+    /// Cubic Hermite: position and first cross derivative.
+    #[default]
+    C1,
+    /// Quintic Hermite: position, first and second cross derivatives.
+    C2,
+}
+
+impl Continuity {
+    fn is_default(&self) -> bool {
+        *self == Continuity::default()
+    }
+}
+
+fn unit_scale() -> f64 {
+    1.0
+}
+
+fn is_unit_scale(x: &f64) -> bool {
+    *x == 1.0
+}
