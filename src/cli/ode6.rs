@@ -110,47 +110,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             nu,
             nv,
             units,
-        } => {
-            pdesculpt::mesh::io::Format::from_path(&out)?;
-            pdesculpt::mesh::io::refuse_overwriting_input(&[&spec], &out)?;
-            if let Some(n) = nu {
-                limits::check("--nu", n, limits::TESS_NU)?;
-            }
-            if let Some(n) = nv {
-                limits::check("--nv", n, limits::TESS_NV)?;
-            }
-            let text = std::fs::read_to_string(&spec)
-                .with_context(|| format!("reading {}", spec.display()))?;
-            let sp: Spec = serde_json::from_str(&text)
-                .with_context(|| format!("parsing spec {}", spec.display()))?;
-            let s = sp.build()?;
-            let [nu, nv] = sp.resolution(nu, nv)?;
-            let mesh = tessellate(&s, Tessellation { nu, nv });
-            anyhow::ensure!(
-                mesh.positions.iter().flatten().all(|x| x.is_finite()),
-                "surface has non-finite points"
-            );
-            let unit = units.write_input(&mesh, &out)?;
-            let info = serde_json::json!({
-                "out": out.display().to_string(),
-                "unit": unit,
-                "case": s.basis.case.name(),
-                "vertices": mesh.positions.len(),
-                "triangles": mesh.triangles.len(),
-                "scalars": s.scalars(),
-            });
-            if json {
-                super::print_json(&info)?;
-            } else {
-                eprintln!(
-                    "wrote {} ({} vertices, case: {})",
-                    out.display(),
-                    mesh.positions.len(),
-                    s.basis.case.name()
-                );
-            }
-            Ok(0)
-        }
+        } => run_surface(&spec, &out, nu, nv, units, json),
         Cmd::Network {
             network,
             out,
@@ -206,6 +166,55 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             Ok(0)
         }
     }
+}
+
+fn run_surface(
+    spec: &std::path::Path,
+    out: &std::path::Path,
+    nu: Option<usize>,
+    nv: Option<usize>,
+    units: super::units::UnitArgs,
+    json: bool,
+) -> anyhow::Result<i32> {
+    pdesculpt::mesh::io::Format::from_path(out)?;
+    pdesculpt::mesh::io::refuse_overwriting_input(&[spec], out)?;
+    if let Some(n) = nu {
+        limits::check("--nu", n, limits::TESS_NU)?;
+    }
+    if let Some(n) = nv {
+        limits::check("--nv", n, limits::TESS_NV)?;
+    }
+    let text =
+        std::fs::read_to_string(spec).with_context(|| format!("reading {}", spec.display()))?;
+    let sp: Spec =
+        serde_json::from_str(&text).with_context(|| format!("parsing spec {}", spec.display()))?;
+    let s = sp.build()?;
+    let [nu, nv] = sp.resolution(nu, nv)?;
+    let mesh = tessellate(&s, Tessellation { nu, nv });
+    anyhow::ensure!(
+        mesh.positions.iter().flatten().all(|x| x.is_finite()),
+        "surface has non-finite points"
+    );
+    let unit = units.write_input(&mesh, out)?;
+    let info = serde_json::json!({
+        "out": out.display().to_string(),
+        "unit": unit,
+        "case": s.basis.case.name(),
+        "vertices": mesh.positions.len(),
+        "triangles": mesh.triangles.len(),
+        "scalars": s.scalars(),
+    });
+    if json {
+        super::print_json(&info)?;
+    } else {
+        eprintln!(
+            "wrote {} ({} vertices, case: {})",
+            out.display(),
+            mesh.positions.len(),
+            s.basis.case.name()
+        );
+    }
+    Ok(0)
 }
 
 fn run_network(

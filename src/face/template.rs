@@ -363,26 +363,7 @@ impl FaceTemplate {
             }
             columns.push(col);
         }
-        let mut vertices = Vec::new();
-        for (i, &r) in region.iter().enumerate() {
-            let p = base.positions[i];
-            let (s, w) = win.unit(p[0], p[1]);
-            if !r || !(0.0..=1.0).contains(&s) || !(0.0..=1.0).contains(&w) {
-                continue;
-            }
-            let (cu, cv) = (s * nu as f64, w * nv as f64);
-            let (column, row) = (
-                (cu.floor() as usize).min(nu - 1),
-                (cv.floor() as usize).min(nv - 1),
-            );
-            vertices.push(Placed {
-                vertex: i as u32,
-                column,
-                row,
-                u: cu - column as f64,
-                v: cv - row as f64,
-            });
-        }
+        let vertices = place(base, &region, &win, nu, nv);
         let mut on_body = vec![false; base.positions.len()];
         for (t, _) in base.triangles.iter().zip(body).filter(|(_, b)| **b) {
             for &i in t {
@@ -411,6 +392,32 @@ impl FaceTemplate {
             chin,
         })
     }
+}
+
+/// Every region vertex inside the window with its patch (column, row)
+/// and its `(u, v)` in that patch.
+fn place(base: &Mesh, region: &[bool], win: &Window, nu: usize, nv: usize) -> Vec<Placed> {
+    let mut vertices = Vec::new();
+    for (i, &r) in region.iter().enumerate() {
+        let p = base.positions[i];
+        let (s, w) = win.unit(p[0], p[1]);
+        if !r || !(0.0..=1.0).contains(&s) || !(0.0..=1.0).contains(&w) {
+            continue;
+        }
+        let (cu, cv) = (s * nu as f64, w * nv as f64);
+        let (column, row) = (
+            (cu.floor() as usize).min(nu - 1),
+            (cv.floor() as usize).min(nv - 1),
+        );
+        vertices.push(Placed {
+            vertex: i as u32,
+            column,
+            row,
+            u: cu - column as f64,
+            v: cv - row as f64,
+        });
+    }
+    vertices
 }
 
 /// Offsets in `s` of the three stencil points of column `i` and their

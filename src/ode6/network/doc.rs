@@ -121,6 +121,74 @@ pub struct Cross {
 }
 
 impl NetworkDoc {
+    /// Merges nodes and curves that coincide within `1e-12` of the
+    /// network size (blocks built side by side share their seams).
+    pub fn stitch(&mut self) {
+        let doc = self;
+        let size = doc.size();
+        let tol = 1e-12 * size;
+        let mut map: Vec<usize> = (0..doc.nodes.len()).collect();
+        for i in 0..doc.nodes.len() {
+            if let Some(j) = (0..i)
+                .find(|&j| map[j] == j && crate::vec3::dist(doc.nodes[i], doc.nodes[j]) <= tol)
+            {
+                map[i] = j;
+            }
+        }
+        for c in &mut doc.curves {
+            c.from = map[c.from];
+            c.to = map[c.to];
+        }
+        let same = |a: &CurveDoc, b: &CurveDoc| {
+            let close = |p: &[f64; 3], q: &[f64; 3]| crate::vec3::dist(*p, *q) <= tol;
+            let n = a.points.len() == b.points.len();
+            let fwd = a.from == b.from
+                && a.to == b.to
+                && a.points.iter().zip(&b.points).all(|(p, q)| close(p, q));
+            let rev = a.from == b.to
+                && a.to == b.from
+                && a.points
+                    .iter()
+                    .zip(b.points.iter().rev())
+                    .all(|(p, q)| close(p, q));
+            n && (fwd || rev)
+        };
+        let mut cmap: Vec<usize> = (0..doc.curves.len()).collect();
+        for i in 0..doc.curves.len() {
+            if let Some(j) = (0..i).find(|&j| cmap[j] == j && same(&doc.curves[i], &doc.curves[j]))
+            {
+                cmap[i] = j;
+            }
+        }
+        for p in &mut doc.patches {
+            for c in &mut p.curves {
+                *c = cmap[*c];
+            }
+        }
+        // drop the merged curves and nodes, renumbering
+        let keep_c: Vec<usize> = (0..doc.curves.len()).filter(|&i| cmap[i] == i).collect();
+        let mut new_c = vec![0; doc.curves.len()];
+        for (n, &i) in keep_c.iter().enumerate() {
+            new_c[i] = n;
+        }
+        doc.curves = keep_c.iter().map(|&i| doc.curves[i].clone()).collect();
+        for p in &mut doc.patches {
+            for c in &mut p.curves {
+                *c = new_c[*c];
+            }
+        }
+        let keep_n: Vec<usize> = (0..doc.nodes.len()).filter(|&i| map[i] == i).collect();
+        let mut new_n = vec![0; doc.nodes.len()];
+        for (n, &i) in keep_n.iter().enumerate() {
+            new_n[i] = n;
+        }
+        doc.nodes = keep_n.iter().map(|&i| doc.nodes[i]).collect();
+        for c in &mut doc.curves {
+            c.from = new_n[c.from];
+            c.to = new_n[c.to];
+        }
+    }
+
     /// Parses and validates a document.
     pub fn from_json(text: &str) -> Result<NetworkDoc, NetworkError> {
         let doc: NetworkDoc = serde_json::from_str(text).map_err(|e| NetworkError::Json {

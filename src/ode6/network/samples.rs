@@ -392,6 +392,15 @@ pub fn quadruped() -> NetworkDoc {
             (-0.035, 0.035),
         );
     }
+    tail_and_legs(&mut doc);
+    doc
+}
+
+/// The quadruped's tail (a tube closed at its tip) and four legs (front
+/// legs of three patches, rear legs of two, each closed at the paw).
+fn tail_and_legs(doc: &mut NetworkDoc) {
+    let x = [1.0, 0.0, 0.0];
+    let y = [0.0, 1.0, 0.0];
     let tail = Frame::new([-0.95, 1.1, 0.0], [-1.0, 0.7, 0.0], y, [1.0, 1.0]);
     let tp = |s: f64| {
         let f = s / 3.0;
@@ -399,7 +408,7 @@ pub fn quadruped() -> NetworkDoc {
     };
     let tf = |s: f64, t: f64| revolve(s, t, 4, &tp, &tail);
     add_block(
-        &mut doc,
+        doc,
         &Block {
             name: "tail",
             nu: 3,
@@ -434,7 +443,7 @@ pub fn quadruped() -> NetworkDoc {
         };
         let lf = move |s: f64, t: f64| revolve(s, t, 4, &lp, &fr);
         add_block(
-            &mut doc,
+            doc,
             &Block {
                 name,
                 nu,
@@ -447,7 +456,6 @@ pub fn quadruped() -> NetworkDoc {
             },
         );
     }
-    doc
 }
 
 /// The bundled networks by name.
@@ -489,71 +497,6 @@ pub fn wavy_grid(nu: usize, nv: usize, params: &[Params]) -> NetworkDoc {
             },
         );
     }
-    stitch(&mut doc);
+    doc.stitch();
     doc
-}
-
-/// Merges nodes and curves that coincide (blocks built side by side).
-pub fn stitch(doc: &mut NetworkDoc) {
-    let size = doc.size();
-    let tol = 1e-12 * size;
-    let mut map: Vec<usize> = (0..doc.nodes.len()).collect();
-    for i in 0..doc.nodes.len() {
-        if let Some(j) =
-            (0..i).find(|&j| map[j] == j && crate::vec3::dist(doc.nodes[i], doc.nodes[j]) <= tol)
-        {
-            map[i] = j;
-        }
-    }
-    for c in &mut doc.curves {
-        c.from = map[c.from];
-        c.to = map[c.to];
-    }
-    let same = |a: &CurveDoc, b: &CurveDoc| {
-        let close = |p: &[f64; 3], q: &[f64; 3]| crate::vec3::dist(*p, *q) <= tol;
-        let n = a.points.len() == b.points.len();
-        let fwd = a.from == b.from
-            && a.to == b.to
-            && a.points.iter().zip(&b.points).all(|(p, q)| close(p, q));
-        let rev = a.from == b.to
-            && a.to == b.from
-            && a.points
-                .iter()
-                .zip(b.points.iter().rev())
-                .all(|(p, q)| close(p, q));
-        n && (fwd || rev)
-    };
-    let mut cmap: Vec<usize> = (0..doc.curves.len()).collect();
-    for i in 0..doc.curves.len() {
-        if let Some(j) = (0..i).find(|&j| cmap[j] == j && same(&doc.curves[i], &doc.curves[j])) {
-            cmap[i] = j;
-        }
-    }
-    for p in &mut doc.patches {
-        for c in &mut p.curves {
-            *c = cmap[*c];
-        }
-    }
-    // drop the merged curves and nodes, renumbering
-    let keep_c: Vec<usize> = (0..doc.curves.len()).filter(|&i| cmap[i] == i).collect();
-    let mut new_c = vec![0; doc.curves.len()];
-    for (n, &i) in keep_c.iter().enumerate() {
-        new_c[i] = n;
-    }
-    doc.curves = keep_c.iter().map(|&i| doc.curves[i].clone()).collect();
-    for p in &mut doc.patches {
-        for c in &mut p.curves {
-            *c = new_c[*c];
-        }
-    }
-    let keep_n: Vec<usize> = (0..doc.nodes.len()).filter(|&i| map[i] == i).collect();
-    let mut new_n = vec![0; doc.nodes.len()];
-    for (n, &i) in keep_n.iter().enumerate() {
-        new_n[i] = n;
-    }
-    doc.nodes = keep_n.iter().map(|&i| doc.nodes[i]).collect();
-    for c in &mut doc.curves {
-        c.from = new_n[c.from];
-        c.to = new_n[c.to];
-    }
 }
