@@ -128,9 +128,19 @@ fn wire(m: &Mesh, inside: &[bool], colour: [u8; 4]) -> Vec<Overlay> {
     out
 }
 
-/// Figs 8, 9, 11-12: the face network, the rebuilt face over the original,
-/// wireframes of both.
-pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
+/// The base face rebuilt (default patches, optimised) and what the face
+/// figures draw it with.
+struct FaceScene {
+    head: Mesh,
+    rebuilt: Mesh,
+    inside: Vec<bool>,
+    lo: [f64; 3],
+    hi: [f64; 3],
+    report: extract::FaceReport,
+    net: Network,
+}
+
+fn face_scene() -> anyhow::Result<FaceScene> {
     let base = pdesculpt::makehuman::base_mesh()?;
     let (pos, report, net) = extract::rebuild(&base, &FaceOptions::new(DEFAULT_PATCHES, true))?;
     let t = extract::template(report.columns)?;
@@ -142,53 +152,78 @@ pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
     let (lo, hi) = head_box(&base, &ids);
     let head = head_mesh(&base, lo[1] - 0.3);
     let mut rebuilt = head.clone();
-    rebuilt.positions = pos.clone();
+    rebuilt.positions = pos;
     extract::mark_face(&mut rebuilt, DEFAULT_PATCHES)?;
-    let gold = [212, 160, 60];
-    let silver = [190, 190, 196];
-    let colours = |n: usize, face: Option<u32>| -> Vec<[u8; 3]> {
-        (0..n)
-            .map(|g| if Some(g as u32) == face { gold } else { silver })
-            .collect()
-    };
-    let face_group = rebuilt
-        .groups
-        .iter()
-        .position(|g| g == "face-ode6")
-        .map(|g| g as u32);
-    let opts = |view: View, overlays: Vec<Overlay>, colours: Vec<[u8; 3]>| RenderOptions {
+    Ok(FaceScene {
+        head,
+        rebuilt,
+        inside,
+        lo,
+        hi,
+        report,
+        net,
+    })
+}
+
+const GOLD: [u8; 3] = [212, 160, 60];
+const SILVER: [u8; 3] = [190, 190, 196];
+
+/// Gold for group `face`, silver for the others.
+fn colours(n: usize, face: Option<u32>) -> Vec<[u8; 3]> {
+    (0..n)
+        .map(|g| if Some(g as u32) == face { GOLD } else { SILVER })
+        .collect()
+}
+
+fn face_opts(view: View, overlays: Vec<Overlay>, colours: Vec<[u8; 3]>) -> RenderOptions {
+    RenderOptions {
         width: 420,
         height: 420,
         view,
         overlays,
         group_colours: Some(colours),
         ..Default::default()
-    };
-    let curves = curve_overlays(&net, [200, 30, 30, 255]);
-    // Figs 11-12: the network on the original (front, side)
+    }
+}
+
+/// Figs 11-12: the face network on the original (front, side).
+pub fn fig11_12(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let curves = curve_overlays(&f.net, [200, 30, 30, 255]);
     let mut panels = Vec::new();
     for view in [View::Front, View::Side] {
-        let o = opts(view, curves.clone(), colours(head.groups.len(), None));
-        panels.push(render_box(&head, lo, hi, &o));
+        let o = face_opts(view, curves.clone(), colours(f.head.groups.len(), None));
+        panels.push(render_box(&f.head, f.lo, f.hi, &o));
     }
     annotate(
         &Image::hstack(&panels, [255, 255, 255, 255]),
         &format!(
-            "Paper 004 Figs 11-12: the face network ({} columns x {} rows of patches, {} curve points) on the MakeHuman base",
-            report.columns, report.rows, report.curve_points
+            "Paper 004 Figs 11-12: face network, {} x {} patches, {} curve points",
+            f.report.columns, f.report.rows, f.report.curve_points
         ),
         &["front".into(), "side".into()],
         View::Front,
         false,
     )?
     .save_png(&ctx.path("004-fig11-12.png"))?;
-    // Fig 8: the surface of the network alone, one colour per patch
-    let nm = net.mesh(10);
+    ctx.write_json(
+        "004-fig11-12.json",
+        &json!({"columns": f.report.columns, "rows": f.report.rows, "curve_points": f.report.curve_points,
+            "curve_variables": f.report.curve_variables, "face_vertices": f.report.face_vertices,
+            "command": "pdesculpt --json ode6 face -o face.obj"}),
+    )?;
+    Ok(())
+}
+
+/// Fig 8: the surface of the face network alone, one colour per patch.
+pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let nm = f.net.mesh(10);
     let o = RenderOptions {
         width: 420,
         height: 420,
         view: FRONT_3Q,
-        overlays: curves.clone(),
+        overlays: curve_overlays(&f.net, [200, 30, 30, 255]),
         ..Default::default()
     };
     let (nlo, nhi) = nm.bbox();
@@ -197,29 +232,46 @@ pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
         "Paper 004 Fig 8: a face from its curve network alone",
         &[format!(
             "{} C2 ODE patches, one colour each",
-            net.patches.len()
+            f.net.patches.len()
         )],
         FRONT_3Q,
         false,
     )?
     .save_png(&ctx.path("004-fig8.png"))?;
-    // Fig 9: rebuilt (gold) over the original (silver); wireframes
+    Ok(())
+}
+
+/// Fig 9: the rebuilt face (gold) over the original (silver), and the
+/// wireframes of both.
+pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let face_group = f
+        .rebuilt
+        .groups
+        .iter()
+        .position(|g| g == "face-ode6")
+        .map(|g| g as u32);
     let mut panels = Vec::new();
     for view in [View::Front, View::Side] {
-        let o = opts(view, Vec::new(), colours(rebuilt.groups.len(), face_group));
-        panels.push(render_box(&rebuilt, lo, hi, &o));
+        let o = face_opts(
+            view,
+            Vec::new(),
+            colours(f.rebuilt.groups.len(), face_group),
+        );
+        panels.push(render_box(&f.rebuilt, f.lo, f.hi, &o));
     }
-    let mut both = wire(&rebuilt, &inside, [200, 30, 30, 255]);
-    both.extend(wire(&head, &inside, [30, 150, 40, 255]));
-    let o = opts(View::Front, both, colours(head.groups.len(), None));
-    panels.push(render_box(&head, lo, hi, &o));
+    let mut both = wire(&f.rebuilt, &f.inside, [200, 30, 30, 255]);
+    both.extend(wire(&f.head, &f.inside, [30, 150, 40, 255]));
+    let o = face_opts(View::Front, both, colours(f.head.groups.len(), None));
+    panels.push(render_box(&f.head, f.lo, f.hi, &o));
+    let r = &f.report;
     annotate(
         &Image::hstack(&panels, [255, 255, 255, 255]),
         &format!(
             "Paper 004 Fig 9: the face rebuilt with the original's vertices and faces; MVE {:.4} dm ({:.2} % of the head), RMS {:.4} dm",
-            report.max_error,
-            100.0 * report.max_relative,
-            report.rms_error
+            r.max_error,
+            100.0 * r.max_relative,
+            r.rms_error
         ),
         &[
             "front: rebuilt face (gold) in the original".into(),
@@ -232,7 +284,7 @@ pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
     .save_png(&ctx.path("004-fig9.png"))?;
     ctx.write_json(
         "004-fig9.json",
-        &json!({"report": report, "command": "pdesculpt --json ode6 face -o face.obj"}),
+        &json!({"report": r, "command": "pdesculpt --json ode6 face -o face.obj"}),
     )?;
     Ok(())
 }
@@ -370,4 +422,39 @@ fn vstack(images: &[Image]) -> Image {
         y0 += img.height;
     }
     out
+}
+
+/// Table 1's face rows from the face curve network (sec 6.3): for a few
+/// `--patches`, the face vertices, curve points, curve variables (Table 1
+/// counting: each point with its two cross derivatives), data size and
+/// the MVE against the base. Written beside Table 1 as
+/// `004-table1-face.{md,json}`.
+pub fn table1_face_rows(ctx: &Ctx) -> anyhow::Result<()> {
+    let base = pdesculpt::makehuman::base_mesh()?;
+    let mut md = String::from("| face network | polygon verts | curve points | curve variables | data size | numbers stored / face coordinates | MVE (dm) | RMS (dm) |\n|---|---|---|---|---|---|---|---|\n");
+    let mut rows = Vec::new();
+    for patches in [16, 24, 48, 80] {
+        let (_, r, _) = extract::rebuild(&base, &FaceOptions::new(patches, true))?;
+        md += &format!(
+            "| {} patches ({} x {}) | {} | {} | {} | {:.0}% | {:.0}% | {:.4} | {:.4} |\n",
+            r.patches,
+            r.columns,
+            r.rows,
+            r.face_vertices,
+            r.curve_points,
+            r.curve_variables,
+            100.0 * r.data_ratio,
+            100.0 * r.numbers_ratio,
+            r.max_error,
+            r.rms_error
+        );
+        rows.push(json!({"patches": patches, "report": r,
+            "command": format!("pdesculpt --json ode6 face --patches {patches} -o face.obj")}));
+    }
+    ctx.write_bytes("004-table1-face.md", md.as_bytes())?;
+    ctx.write_json(
+        "004-table1-face.json",
+        &json!({"rows": rows, "paper": "4,081 vertices from 489 curve points: 1,467 variables, 36 %"}),
+    )?;
+    Ok(())
 }
