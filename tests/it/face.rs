@@ -109,3 +109,84 @@ fn cli_face_refuses_bad_input_without_writing() {
     assert_clear_error(&o, "MakeHuman base topology");
     assert!(!out.exists());
 }
+
+/// The report's MVE against the distance measured here from the files
+/// (decimetres; both sides are f64 printed round-trip exact, unit dm).
+const REPORT_AGREES_DM: f64 = 1e-9;
+
+fn obj_vertices(text: &str) -> Vec<[f64; 3]> {
+    text.lines()
+        .filter(|l| l.starts_with("v "))
+        .map(|l| {
+            let x: Vec<f64> = l
+                .split_whitespace()
+                .skip(1)
+                .map(|t| t.parse().expect("number"))
+                .collect();
+            [x[0], x[1], x[2]]
+        })
+        .collect()
+}
+
+#[test]
+fn cli_face_on_a_held_out_morphed_mesh_is_measured_against_that_mesh() {
+    use crate::cli::{pdesculpt, tmpdir};
+    // mouth-part-later is in no FACS unit of the map and not in the table
+    let unit = "mouth-part-later";
+    assert!(!expression::facs_units()
+        .iter()
+        .any(|f| f.units.contains(&unit)));
+    let mut m = base();
+    expression::apply(
+        &mut m.positions,
+        &expression::expression(unit, 1.0).expect("unit"),
+    )
+    .expect("apply");
+    // the morphed body: the base OBJ with its v lines moved, nothing else
+    let mut k = 0;
+    let mut text = String::new();
+    for l in pdesculpt::makehuman::BASE_OBJ.lines() {
+        if l.starts_with("v ") {
+            let p = m.positions[k];
+            text += &format!("v {} {} {}\n", p[0], p[1], p[2]);
+            k += 1;
+        } else {
+            text += l;
+            text.push('\n');
+        }
+    }
+    let d = tmpdir("ode6-face-held-out");
+    let (input, out) = (d.join("morphed.obj"), d.join("rebuilt.obj"));
+    std::fs::write(&input, &text).expect("write");
+    let o = pdesculpt(&[
+        "--json",
+        "ode6",
+        "face",
+        "--mesh",
+        input.to_str().expect("p"),
+        "--unit",
+        "dm",
+        "-o",
+        out.to_str().expect("p"),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let reported = v["report"]["max_error"].as_f64().expect("max_error");
+    let face_vertices = v["report"]["face_vertices"].as_u64().expect("count") as usize;
+    let a = obj_vertices(&text);
+    let b = obj_vertices(&std::fs::read_to_string(&out).expect("out"));
+    assert_eq!(a.len(), b.len());
+    let dist: Vec<f64> = a
+        .iter()
+        .zip(&b)
+        .map(|(p, q)| pdesculpt::vec3::dist(*p, *q))
+        .collect();
+    let measured = dist.iter().copied().fold(0.0f64, f64::max);
+    let moved = dist.iter().filter(|x| **x > 0.0).count();
+    assert!(moved <= face_vertices, "{moved} > {face_vertices}");
+    assert!(
+        (measured - reported).abs() <= REPORT_AGREES_DM,
+        "{measured} vs {reported}"
+    );
+    assert!(measured <= HELD_OUT_FACTOR * BASE_MVE_DM, "{measured}");
+}

@@ -268,3 +268,43 @@ fn cli_network_writes_a_mesh_and_a_report_and_refuses_bad_input_without_a_file()
     assert_clear_error(&o, "5 sides");
     assert!(!out.exists());
 }
+
+#[test]
+fn cli_network_names_each_bad_document_and_writes_nothing() {
+    use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
+    let d = tmpdir("ode6-network-bad");
+    let good = samples::wavy_grid(2, 1, &[]);
+    let mut two = good.clone();
+    two.patches[0].curves.truncate(2);
+    let mut off = good.clone();
+    off.curves[0].points[0][2] += 0.5;
+    let text = good.to_json();
+    let first = text.find("\"points\"").expect("points");
+    let digit = first
+        + text[first..]
+            .find(|c: char| c.is_ascii_digit())
+            .expect("digit");
+    let mut huge = text.clone();
+    huge.insert_str(digit, "1e999");
+    huge.remove(digit + 5);
+    let unknown = text.replacen("\"version\": 1", "\"version\": 1, \"colour\": 3", 1);
+    for (name, body, needle) in [
+        ("two", two.to_json(), "2 sides"),
+        ("off", off.to_json(), "does not meet its node"),
+        ("huge", huge, "number out of range"),
+        ("unknown", unknown, "unknown field"),
+    ] {
+        let input = d.join(format!("{name}.json"));
+        std::fs::write(&input, body).expect("write");
+        let out = d.join(format!("{name}.glb"));
+        let o = pdesculpt(&[
+            "ode6",
+            "network",
+            input.to_str().expect("p"),
+            "-o",
+            out.to_str().expect("p"),
+        ]);
+        assert_clear_error(&o, needle);
+        assert!(!out.exists(), "{name}");
+    }
+}
