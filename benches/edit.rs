@@ -1,7 +1,7 @@
 //! One edit of the bundled female plus the rebuild of the affected part only
-//! (`Session::model`: a part cache re-solves only the edited part's chain;
-//! the mesh and transitions are rebuilt, no profile reading or silhouette
-//! report), beside two baselines in the same run: the same model path with
+//! (`Session::model`, the one `pipeline::build` with the session's part
+//! cache: only the edited part's chain is re-solved; the mesh, transitions,
+//! props and report are rebuilt), beside two baselines in the same run: the same model path with
 //! every part solved (no cache), and the whole document build with its
 //! report (`build_document`: profiles read, all parts solved, silhouettes
 //! measured). Default resolution (160 rings per height).

@@ -5,6 +5,11 @@
 //! cargo run --release --example fuzz -- --cases 2000 [--command-cases 200] [--seed 18] [--limit-secs 10]
 //! ```
 //!
+//! Targets: every parser and command of the harness, including the new
+//! surfaces of issue 35 (SVG drawings, character documents, edits, and
+//! `character edit` through the binary). `.ci/run` runs it for a fixed
+//! budget with a fixed seed.
+//!
 //! Prints a markdown table (inputs, accepted, panics, hangs, non-finite
 //! outputs per parser and per command) and the first failing input of each
 //! target; exits 1 if any case failed. Commands run the release binary
@@ -42,6 +47,15 @@ fn main() {
         Some(exe) => {
             let scratch = std::env::temp_dir().join(format!("pdesculpt-fuzz-{}", std::process::id()));
             tallies.extend(fuzz_harness::run_commands(&exe, &scratch, command_cases, seed, limit));
+            // the heavy targets (a character build per case) with a tenth of the cases
+            tallies.extend(fuzz_harness::run_command_targets(
+                fuzz_harness::heavy_command_targets(),
+                &exe,
+                &scratch,
+                (command_cases / 10).max(1),
+                seed,
+                limit,
+            ));
             let _ = std::fs::remove_dir_all(&scratch);
         }
         None => eprintln!("warning: no pdesculpt binary beside the example; run `cargo build --release` first (commands skipped)"),

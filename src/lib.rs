@@ -48,6 +48,7 @@ pub mod pipeline;
 pub mod plate;
 pub mod polygon;
 pub mod profile;
+pub mod progress;
 pub mod render;
 pub mod sasm;
 pub mod sketch;

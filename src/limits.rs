@@ -23,8 +23,18 @@
 //! | `render --size` x views | [`RENDER_SIZE`], [`RENDER_VIEWS`], [`RENDER_PIXELS`] | |
 //! | `plate --grid`, `--dm-iterations` | [`PLATE_GRID`], [`PLATE_ITERATIONS`] | |
 //! | `sketch build --tolerance`, document `inputs.tolerance` | [`SKETCH_TOLERANCE`] ([`check_real`]) | also at most 1 % of the drawing's height |
+//! | bytes of one input file (SVG, JSON) | [`INPUT_BYTES`] | `mesh::io::read_input` |
+//! | SVG drawing: XML nodes, shapes | [`SVG_NODES`], [`SVG_SHAPES`] | `profile::svg` |
+//! | SVG drawing: flattened points, estimated before flattening | [`SVG_POINTS`] | from each segment's control polygon and the tolerance |
+//! | drawing size (largest side), any profile or document length | [`DRAWING_SIZE`], [`MODEL_COORD`] | |
+//! | document: sections per part, harmonics per section | [`PART_SECTIONS`], [`SECTION_HARMONICS`] | `character::doc` |
+//! | document: points per key section, edits per log, props | [`KEY_SECTION_POINTS`], [`LOG_EDITS`], [`DOC_PROPS`] | |
+//! | conv work per component (skeleton circle tests, global fit) | [`CONV_WORK`] | props and `conv build` |
 
 use thiserror::Error;
+
+mod finite;
+pub use finite::{first_non_finite, NonFinite};
 
 /// Memory budget of one operation (estimated before allocating): 1 GiB.
 pub const MEMORY_BYTES: u64 = 1 << 30;
@@ -40,6 +50,13 @@ pub struct Range {
     pub max: u64,
     /// Why the bounds are what they are (printed in the error).
     pub why: &'static str,
+}
+
+impl Range {
+    /// The same range with another lower bound.
+    pub const fn with_min(self, min: u64) -> Range {
+        Range { min, ..self }
+    }
 }
 
 /// GEC terms J (the fit needs 2J + 1 points, the design matrix 4J + 2 columns).
@@ -134,6 +151,73 @@ pub const PLATE_ITERATIONS: Range = Range {
     why: "distance-map iterations",
 };
 
+/// Bytes of one input file read whole (an SVG drawing, a JSON document, an
+/// edit, a sections file): 64 MiB, 1000 times the largest bundled input.
+pub const INPUT_BYTES: Range = Range {
+    min: 0,
+    max: 64 << 20,
+    why: "bytes of one input file",
+};
+/// XML nodes of one SVG file (elements, text, attributes' owners).
+pub const SVG_NODES: Range = Range {
+    min: 1,
+    max: 1_000_000,
+    why: "XML nodes of one SVG drawing",
+};
+/// Shapes (paths, rects, circles, ...) of one SVG drawing.
+pub const SVG_SHAPES: Range = Range {
+    min: 1,
+    max: 10_000,
+    why: "shapes of one SVG drawing",
+};
+/// Points of one flattened SVG drawing, all shapes together, estimated
+/// from each curve's control polygon and the tolerance before flattening
+/// (`profile::svg::estimate_points`). 200k: 270 times the bundled
+/// drawings' 736-point outlines at the default tolerance; a 200k-point
+/// outline validates and segments in about a second.
+pub const SVG_POINTS: Range = Range {
+    min: 1,
+    max: 200_000,
+    why: "points of the flattened drawing; raise the tolerance",
+};
+/// Points of one key cross-section sketch (a document's
+/// `inputs.sections[i].points`; each is GEC-fitted).
+pub const KEY_SECTION_POINTS: Range = Range {
+    min: 3,
+    max: 20_000,
+    why: "points of one key cross-section sketch",
+};
+/// Key sections of one part (the C2 chain solves for all of them at once).
+pub const PART_SECTIONS: Range = Range {
+    min: 2,
+    max: 256,
+    why: "key sections of one part",
+};
+/// Harmonics (GEC terms) of one section of a document.
+pub const SECTION_HARMONICS: Range = Range {
+    min: 0,
+    max: 256,
+    why: "harmonics of one section (GEC terms)",
+};
+/// Edits of one document's log (every build replays the active ones).
+pub const LOG_EDITS: Range = Range {
+    min: 0,
+    max: 4096,
+    why: "edits of one document's log",
+};
+/// Props of one document.
+pub const DOC_PROPS: Range = Range {
+    min: 0,
+    max: 64,
+    why: "props of one document",
+};
+/// Work of each stage of one convolution-surface component, estimated
+/// from the filtered stroke before the stage runs (`conv::sketch`): the
+/// skeleton's circle tests (`8 area_samples^2 points^2`) and the global fit
+/// (`points segments^2 + segments^3`). The budget of [`WORK_FLOPS`]; the
+/// bundled models need under 1e9.
+pub const CONV_WORK: f64 = WORK_FLOPS;
+
 /// An inclusive range of a real parameter (a length, a tolerance).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RealRange {
@@ -150,6 +234,19 @@ pub const SKETCH_TOLERANCE: RealRange = RealRange {
     why: "SVG flattening tolerance in model units (metres)",
 };
 
+/// Size of a drawing (the largest side of its bounding box, model units =
+/// metres): from 10 micrometres to 100 km. Below, the tolerance and the
+/// solvers' rounding meet; above, conditioning fails (a 1e30-sized drawing
+/// gives interpolation matrices of condition 1e57).
+pub const DRAWING_SIZE: RealRange = RealRange {
+    min: 1e-5,
+    max: 1e5,
+    why: "size of a drawing in model units (metres)",
+};
+/// Largest magnitude of any coordinate or length of a character document
+/// (model units): the drawing size bound.
+pub const MODEL_COORD: f64 = 1e5;
+
 /// Checks a finite real `value` of `param` against `range`; returns it.
 pub fn check_real(param: &str, value: f64, range: RealRange) -> Result<f64, LimitError> {
     if value.is_nan() || value < range.min || value > range.max {
@@ -165,7 +262,9 @@ pub fn check_real(param: &str, value: f64, range: RealRange) -> Result<f64, Limi
 }
 
 /// Shows a real number for an error message: plainly in `[1e-4, 1e9)`,
-/// in exponent form outside it (so `1e300` is not printed as 301 digits).
+/// in exponent form with at most 4 significant digits outside it (so
+/// `1e300` is not printed as 301 digits, nor `2.5029505527626686e150` with
+/// all of its).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Num(pub f64);
 
@@ -175,7 +274,10 @@ impl std::fmt::Display for Num {
         if a == 0.0 || !a.is_finite() || (1e-4..1e9).contains(&a) {
             write!(f, "{}", self.0)
         } else {
-            write!(f, "{:e}", self.0)
+            let s = format!("{:.3e}", self.0);
+            let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
+            let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+            write!(f, "{mantissa}e{exp}")
         }
     }
 }
@@ -192,7 +294,7 @@ pub enum LimitError {
         why: &'static str,
     },
     #[error(
-        "{param} = {value:e} is out of range: must be at least {min:e} and at most {max:e} ({why})"
+        "{param} = {} is out of range: must be at least {} and at most {} ({why})", Num(*.value), Num(*.min), Num(*.max)
     )]
     OutOfRealRange {
         param: String,
@@ -335,6 +437,8 @@ mod tests {
         assert_eq!(Num(1.4).to_string(), "1.4");
         assert_eq!(Num(0.0).to_string(), "0");
         assert_eq!(Num(f64::NAN).to_string(), "NaN");
+        assert_eq!(Num(2.5029505527626686e150).to_string(), "2.503e150");
+        assert_eq!(Num(9.99999995904e11).to_string(), "1e12");
     }
 
     #[test]

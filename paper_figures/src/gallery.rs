@@ -39,13 +39,16 @@ pub fn figures() -> Vec<Figure> {
 }
 
 fn demo_models(ctx: &Ctx) -> anyhow::Result<()> {
+    use pdesculpt::mesh::io::{write_scene_in_unit, Layout, Scene};
     let d = pdesculpt::demo::build()?;
-    let mut scene = d.sculpted.clone();
-    scene.append(&d.skirt);
-    scene.append(&d.prop);
-    for (name, mesh) in [("demo.glb", &scene), ("demo-pde6.glb", &d.reconstruction)] {
+    // the same models and parts as `pdesculpt demo` writes
+    let scene = Scene::single("body", d.sculpted.clone())
+        .with("skirt", d.skirt.clone())
+        .with("teddy", d.prop.clone());
+    let recon = Scene::single("reconstruction", d.reconstruction.clone());
+    for (name, s) in [("demo.glb", &scene), ("demo-pde6.glb", &recon)] {
         let p = ctx.path(name);
-        pdesculpt::mesh::io::write_in_unit(mesh, &p, d.unit, unit::GLB)?;
+        write_scene_in_unit(s, &p, d.unit, unit::GLB, Layout::Parts)?;
         eprintln!("  wrote {}", p.display());
     }
     Ok(())

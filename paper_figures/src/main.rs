@@ -85,7 +85,10 @@ fn run() -> anyhow::Result<()> {
             Ok(())
         }
         Some("all") => {
-            for f in &figures {
+            // progress: the figures' own lines go to stderr, so the count
+            // is a line per figure rather than a redrawn bar
+            for (k, f) in figures.iter().enumerate() {
+                eprintln!("== figure {}/{}", k + 1, figures.len());
                 ctx.run(f)?;
             }
             write_gallery(&ctx, &figures)

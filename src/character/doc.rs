@@ -72,6 +72,12 @@ pub enum DocError {
     Version { path: PathBuf, found: u32 },
     #[error("document: {0}")]
     Invalid(String),
+    #[error("document field {field} = {value} is out of range: {expected}")]
+    Range {
+        field: String,
+        value: String,
+        expected: String,
+    },
     #[error("{0}")]
     Write(#[from] crate::mesh::MeshError),
 }
@@ -253,6 +259,7 @@ impl CharacterDoc {
 
     /// Parses and validates a document's text (`path` names it in errors).
     pub fn parse(text: &str, path: &Path) -> Result<CharacterDoc, DocError> {
+        let text = crate::mesh::io::strip_bom(text);
         let v: serde_json::Value = serde_json::from_str(text).map_err(|e| DocError::Parse {
             path: path.into(),
             message: e.to_string(),
@@ -273,25 +280,36 @@ impl CharacterDoc {
         Ok(doc)
     }
 
-    /// Reads a document.
+    /// Reads a document (a regular file only, at most
+    /// [`crate::limits::INPUT_BYTES`]).
     pub fn load(path: &Path) -> Result<CharacterDoc, DocError> {
-        let text = std::fs::read_to_string(path).map_err(|e| DocError::Io {
-            path: path.into(),
-            source: e,
-        })?;
+        let text =
+            crate::mesh::io::read_input_text(path, "character document").map_err(|e| match e {
+                crate::mesh::MeshError::Io { source, .. } => DocError::Io {
+                    path: path.into(),
+                    source,
+                },
+                e => DocError::Write(e),
+            })?;
         CharacterDoc::parse(&text, path)
     }
 
     /// Writes the document atomically (temporary file, then rename).
     pub fn save(&self, path: &Path) -> Result<(), DocError> {
-        self.validate()?;
-        let text = serde_json::to_string_pretty(self)
-            .map_err(|e| DocError::Invalid(format!("cannot serialise: {e}")))?;
-        write_atomic(path, text.as_bytes())?;
+        write_atomic(path, &self.to_bytes()?)?;
         Ok(())
     }
 
-    /// Structural checks that do not need the geometry.
+    /// The validated document as the JSON a save writes (for a command
+    /// that writes it together with other files).
+    pub fn to_bytes(&self) -> Result<Vec<u8>, DocError> {
+        self.validate()?;
+        serde_json::to_vec_pretty(self)
+            .map_err(|e| DocError::Invalid(format!("cannot serialise: {e}")))
+    }
+
+    /// Structural checks that do not need the geometry, and every value's
+    /// documented range ([`super::doc_ranges`]).
     pub fn validate(&self) -> Result<(), DocError> {
         if self.version != VERSION {
             return Err(DocError::Invalid(format!(
@@ -299,6 +317,7 @@ impl CharacterDoc {
                 self.version
             )));
         }
+        super::doc_ranges::check(self)?;
         if self.cursor > self.edits.len() {
             return Err(DocError::Invalid(format!(
                 "cursor {} is past the end of the edit log ({} edits)",
@@ -372,6 +391,15 @@ impl CharacterDoc {
     /// The active edits (`edits[..cursor]`).
     pub fn active_edits(&self) -> &[crate::character::log::Edit] {
         &self.edits[..self.cursor.min(self.edits.len())]
+    }
+
+    /// Drops the redo tail, appends `e` and moves the cursor to the end,
+    /// judging nothing: `push_edit` and `pipeline::push_checked` (which
+    /// builds the document with the edit) judge it first.
+    pub fn append_edit(&mut self, e: crate::character::log::Edit) {
+        self.edits.truncate(self.cursor);
+        self.edits.push(e);
+        self.cursor = self.edits.len();
     }
 
     /// Moves the cursor back by one edit.

@@ -15,6 +15,7 @@
 pub mod assembly;
 pub mod crease;
 pub mod doc;
+pub mod doc_ranges;
 pub mod log;
 pub mod measure;
 pub mod part;

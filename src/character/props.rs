@@ -135,7 +135,8 @@ impl PropSpec {
             path: path.clone(),
             message: m,
         };
-        let text = std::fs::read_to_string(&path).map_err(|e| file(e.to_string()))?;
+        let text = crate::mesh::io::read_input_text(&path, "conv model")
+            .map_err(|e| file(e.to_string()))?;
         let model =
             Model::from_json(&text).map_err(|e| file(format!("not a conv model file: {e}")))?;
         Ok((text, model))
@@ -211,27 +212,38 @@ pub fn compose(
     rings_per_height: f64,
 ) -> Result<Vec<PropReport>, PropError> {
     let cells = resolution(rings_per_height);
-    let mut out = Vec::with_capacity(props.len());
-    for p in props {
-        p.validate()?;
-        let (text, model) = p.read_model(base)?;
-        let m = build_model(&text, &model, cells).map_err(|e| PropError::Build {
-            name: p.name.clone(),
-            source: e,
-        })?;
-        let m = place(m, p);
-        crate::conv::sample::check_f32_output(&m).map_err(|e| PropError::Build {
-            name: p.name.clone(),
-            source: e,
-        })?;
-        out.push(PropReport {
-            name: p.name.clone(),
-            model: p.model.clone(),
-            triangles: m.triangles.len(),
-            resolution: cells,
-            stitched: false,
-        });
-        mesh.append(&m);
-    }
-    Ok(out)
+    props
+        .iter()
+        .map(|p| compose_one(mesh, p, base, cells))
+        .collect()
+}
+
+/// Builds one prop at `cells` grid cells and appends it to `mesh` (its
+/// own group, not stitched).
+pub fn compose_one(
+    mesh: &mut Mesh,
+    p: &PropSpec,
+    base: &Path,
+    cells: usize,
+) -> Result<PropReport, PropError> {
+    p.validate()?;
+    let (text, model) = p.read_model(base)?;
+    let m = build_model(&text, &model, cells).map_err(|e| PropError::Build {
+        name: p.name.clone(),
+        source: e,
+    })?;
+    let m = place(m, p);
+    crate::conv::sample::check_f32_output(&m).map_err(|e| PropError::Build {
+        name: p.name.clone(),
+        source: e,
+    })?;
+    let report = PropReport {
+        name: p.name.clone(),
+        model: p.model.clone(),
+        triangles: m.triangles.len(),
+        resolution: cells,
+        stitched: false,
+    };
+    mesh.append(&m);
+    Ok(report)
 }

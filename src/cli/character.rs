@@ -1,11 +1,12 @@
 //! `pdesculpt character build|edit|undo|redo|log`.
 
+use super::outputs::{self, LOCK_WAIT};
 use pdesculpt::character::doc::CharacterDoc;
 use pdesculpt::character::log::Edit;
 use pdesculpt::character::Resolution;
 use pdesculpt::mesh::io;
 use pdesculpt::pipeline::build_document;
-use pdesculpt::pipeline::push_checked;
+use pdesculpt::pipeline::{push_checked, redo_checked, BuildOptions};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `pdesculpt character`.
@@ -26,15 +27,19 @@ pub enum Sub {
         /// The character document (JSON, version 1; schema in the docs of
         /// `pdesculpt::character::doc`).
         doc: PathBuf,
-        /// Output mesh (.obj, .glb, .stl, .ply).
+        /// Output mesh (.obj, .glb, .gltf, .stl, .ply): one node/object
+        /// per part, transition, removed part and prop.
         #[arg(short, long)]
         output: PathBuf,
+        #[command(flatten)]
+        layout: super::units::LayoutArgs,
         /// Also save the document with its derived parts filled in.
         #[arg(long)]
         save_doc: Option<PathBuf>,
     },
-    /// Append one edit (validated first) to the document's log, dropping
-    /// the redo tail; saves the document atomically.
+    /// Append one edit to the document's log, dropping the redo tail: the
+    /// document with the edit is built once and kept only when that build
+    /// succeeds with finite geometry; saves that build's document atomically.
     Edit {
         /// The character document (must have stored parts).
         doc: PathBuf,
@@ -57,9 +62,33 @@ pub enum Sub {
 }
 
 fn read_edit(path: &Path) -> anyhow::Result<Edit> {
-    let text =
-        std::fs::read_to_string(path).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    let text = io::read_input_text(path, "edit")?;
     serde_json::from_str(&text).map_err(|e| anyhow::anyhow!("{}: not an edit: {e}", path.display()))
+}
+
+/// The files a document reads (profiles, removed parts' profiles, props'
+/// models), resolved against the document's directory, for the output
+/// checks.
+fn doc_inputs(d: &CharacterDoc, doc: &Path) -> Vec<PathBuf> {
+    use pdesculpt::character::doc::ProfileInput;
+    let mut out = Vec::new();
+    let mut profile = |p: &ProfileInput| {
+        if let ProfileInput::Path(s) = p {
+            out.push(CharacterDoc::resolve(doc, s));
+        }
+    };
+    profile(&d.inputs.front);
+    if let Some(s) = &d.inputs.side {
+        profile(s);
+    }
+    for r in &d.removed_parts {
+        profile(&r.front);
+        if let Some(s) = &r.side {
+            profile(s);
+        }
+    }
+    out.extend(d.props.iter().map(|p| CharacterDoc::resolve(doc, &p.model)));
+    out
 }
 
 fn print_log(d: &CharacterDoc, json: bool) -> anyhow::Result<()> {
@@ -90,23 +119,54 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         Sub::Build {
             doc,
             output,
+            layout,
             save_doc,
         } => {
             io::Format::from_path(&output)?;
-            let d = CharacterDoc::load(&doc)?;
-            let base = doc.parent().map(PathBuf::from).unwrap_or_default();
-            let built = build_document(&d, &base, Resolution::default(), false)?;
             if let Some(p) = &save_doc {
-                built.doc.save(p)?;
-                eprintln!("wrote {}", p.display());
+                outputs::doc_output("--save-doc", p)?;
             }
-            super::sketch::finish(&built, &output, json)
+            // saving the derived parts into the document itself is the
+            // documented way to store them: that one file is locked, read
+            // whole, and replaced atomically
+            let lock = match &save_doc {
+                Some(p) if io::same_file(p, &doc) => Some(io::FileLock::acquire(&doc, LOCK_WAIT)?),
+                _ => None,
+            };
+            let d = CharacterDoc::load(&doc)?;
+            let read = doc_inputs(&d, &doc);
+            let mut inputs: Vec<(&str, &Path)> = read
+                .iter()
+                .map(|p| ("file of the document", p.as_path()))
+                .collect();
+            if lock.is_none() {
+                inputs.push(("DOC", &doc));
+            }
+            let mut outs: Vec<(&str, &Path)> = vec![("-o", &output)];
+            if let Some(p) = &save_doc {
+                outs.push(("--save-doc", p));
+            }
+            outputs::check(&inputs, &outs)?;
+            let base = doc.parent().map(PathBuf::from).unwrap_or_default();
+            let progress = pdesculpt::progress::Progress::spinner("character build", json);
+            let built = build_document(&d, &base, Resolution::default(), false)?;
+            progress.finish();
+            if let Some(l) = &lock {
+                if !l.unchanged() {
+                    anyhow::bail!("{}: the document was replaced by another program during the build; nothing written: run it again", doc.display());
+                }
+            }
+            let with_doc = save_doc.as_deref().map(|p| (&built.doc, p));
+            outputs::write_mesh_and_doc(&built.model.mesh, &output, layout.layout(), with_doc)?;
+            super::sketch::report(&built, &output, json)
         }
         Sub::Edit { doc, op, drawn } => {
+            // one editor at a time: a second waits, then edits the result
+            let lock = io::FileLock::acquire(&doc, LOCK_WAIT)?;
             let mut d = CharacterDoc::load(&doc)?;
             let mut e = read_edit(&op)?;
             if let Some(p) = &drawn {
-                let text = std::fs::read_to_string(p)
+                let text = io::read_input_text(p, "drawn stroke")
                     .map_err(|err| anyhow::anyhow!("{}: {err}", p.display()))?;
                 let s: pdesculpt::sasm::Stroke = serde_json::from_str(&text)
                     .map_err(|err| anyhow::anyhow!("{}: not a drawn stroke: {err}", p.display()))?;
@@ -114,8 +174,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             }
             let summary = e.summary();
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
-            push_checked(&mut d, e, &base)?;
-            d.save(&doc)?;
+            // the document with the edit built once; that document is saved
+            push_checked(&mut d, e, &BuildOptions::new(&base), None)?;
+            outputs::save_locked(&d, &doc, &lock)?;
             eprintln!("edit {}: {summary}", d.cursor - 1);
             if json {
                 print_log(&d, true)?;
@@ -132,13 +193,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
 }
 
 fn step(doc: &Path, json: bool, undo: bool) -> anyhow::Result<i32> {
+    let lock = io::FileLock::acquire(doc, LOCK_WAIT)?;
     let mut d = CharacterDoc::load(doc)?;
     if undo {
         d.undo()?;
     } else {
-        d.redo()?;
+        // the edit re-applied is validated by its effect, as when pushed
+        let base = doc.parent().map(PathBuf::from).unwrap_or_default();
+        redo_checked(&mut d, &BuildOptions::new(&base), None)?;
     }
-    d.save(doc)?;
+    outputs::save_locked(&d, doc, &lock)?;
     eprintln!(
         "{} edit {}: {} edits active",
         if undo { "undid" } else { "redid" },

@@ -96,13 +96,15 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 "reference" => Sampler::Reference,
                 other => bail!("--sampler: expected fast or reference, got {other:?}"),
             };
-            let text = std::fs::read_to_string(&model)
-                .with_context(|| format!("reading {}", model.display()))?;
+            super::outputs::check(&[("MODEL", &model)], &[("-o", &output)])?;
+            let text = pdesculpt::mesh::io::read_input_text(&model, "conv model")?;
             let m = Model::from_json(&text).with_context(|| format!("{}", model.display()))?;
             let t0 = std::time::Instant::now();
+            let progress = pdesculpt::progress::Progress::spinner("conv build", json);
             let built = m.build()?;
             let mesh =
                 built.polygonize_with(resolution, m.options.threshold, method, sampler_kind)?;
+            progress.finish();
             let secs = t0.elapsed().as_secs_f64();
             pdesculpt::conv::sample::check_f32_output(&mesh)?;
             let unit = units.write_input(&mesh, &output)?;

@@ -6,16 +6,18 @@
 //! sixth-order PDE reconstruction of the result from its cross sections
 //! (paper 002), and a teddy bear sketched in eight silhouette strokes
 //! standing beside it (paper 003, convolution surfaces). Writes into `out/`:
-//! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body with the teddy,
-//! groups `skin` and `teddy`, front and side),
-//! `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, one colour per
-//! part), `demo-sketch.glb` (step 1: the bundled female built from her
-//! sketches, paper 000 sec 4.1) and `demo.json` (what every step measured). GLBs are metres (a
+//! `demo.glb`, `demo.obj`, `demo.png` (the sculpted body, the skirt and
+//! the teddy: three models, objects `body`, `skirt` and `teddy`; front and
+//! side), `demo-pde6.glb`, `demo-pde6.png` (the reconstruction, model
+//! `reconstruction`, one node and colour per part and transition),
+//! `demo-sketch.glb` (step 1: the bundled female built from her sketches,
+//! paper 000 sec 4.1; model `female`, one node per part and transition)
+//! and `demo.json` (what every step measured). GLBs are metres (a
 //! 1.67 m body), `demo.obj` is in `--unit` (default metres), `demo.json`'s
 //! lengths are decimetres, the MakeHuman template's unit (`"unit": "dm"`).
 
 use pdesculpt::demo;
-use pdesculpt::mesh::io;
+use pdesculpt::mesh::io::{self, Scene};
 use pdesculpt::render::{render_views, RenderOptions, View};
 use std::path::PathBuf;
 
@@ -49,10 +51,13 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     eprintln!(
         "sculpting (chest: 4-sided PDE; belly: plate bending), reconstructing (C2 PDE6 patches), sketching a prop (convolution surfaces)..."
     );
+    let progress = pdesculpt::progress::Progress::spinner("demo", json);
     let d = demo::build()?;
-    let mut scene = d.sculpted.clone();
-    scene.append(&d.skirt);
-    scene.append(&d.prop);
+    progress.finish();
+    let models = Scene::single("body", d.sculpted.clone())
+        .with("skirt", d.skirt.clone())
+        .with("teddy", d.prop.clone());
+    let scene = models.flatten();
     let views = |m| {
         render_views(
             m,
@@ -73,14 +78,16 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         args.out.join("demo.json"),
         args.out.join("demo-sketch.glb"),
     ];
-    let unit_glb = args.units.write(&scene, &files[0], d.unit)?;
-    let unit_obj = args.units.write(&scene, &files[1], d.unit)?;
+    let unit_glb = args.units.write_scene(&models, &files[0], d.unit)?;
+    let unit_obj = args.units.write_scene(&models, &files[1], d.unit)?;
     views(&scene).save_png(&files[2])?;
-    args.units.write(&d.reconstruction, &files[3], d.unit)?;
+    let reconstruction = Scene::single("reconstruction", d.reconstruction.clone());
+    args.units.write_scene(&reconstruction, &files[3], d.unit)?;
     views(&d.reconstruction).save_png(&files[4])?;
     io::write_atomic(&files[5], &serde_json::to_vec_pretty(&d.report)?)?;
+    let female = Scene::single("female", d.sketched.clone());
     args.units
-        .write(&d.sketched, &files[6], pdesculpt::mesh::unit::Unit::M)?;
+        .write_scene(&female, &files[6], pdesculpt::mesh::unit::Unit::M)?;
     let k = &d.report.sketched;
     eprintln!(
         "  sketched female (paper 000 sec 4.1, {} level): {} triangles, closed {}, profile error {}, max C1 jump {:.1e}",

@@ -4,6 +4,7 @@
 
 mod convert;
 mod demo;
+mod outputs;
 mod render;
 mod units;
 
@@ -41,7 +42,7 @@ pub enum Command {
     Verify(verify::Args),
     /// Render a mesh to a PNG preview.
     Render(render::Args),
-    /// Convert a mesh between OBJ, STL, PLY (read) and OBJ, GLB, STL, PLY (write).
+    /// Convert a mesh between OBJ, GLB, glTF, STL and PLY (models and parts kept).
     Convert(convert::Args),
     /// Build the demo character from bundled data into out/.
     Demo(demo::Args),

@@ -184,8 +184,8 @@ fn run_surface(
     if let Some(n) = nv {
         limits::check("--nv", n, limits::TESS_NV)?;
     }
-    let text =
-        std::fs::read_to_string(spec).with_context(|| format!("reading {}", spec.display()))?;
+    let text = pdesculpt::mesh::io::read_input_text(spec, "spec")
+        .with_context(|| format!("reading {}", spec.display()))?;
     let sp: Spec =
         serde_json::from_str(&text).with_context(|| format!("parsing spec {}", spec.display()))?;
     let s = sp.build()?;
@@ -228,7 +228,7 @@ fn run_network(
     pdesculpt::mesh::io::Format::from_path(out)?;
     pdesculpt::mesh::io::refuse_overwriting_input(&[network], out)?;
     limits::check("--samples", samples, limits::TESS_NU)?;
-    let text = std::fs::read_to_string(network)
+    let text = pdesculpt::mesh::io::read_input_text(network, "network")
         .with_context(|| format!("reading {}", network.display()))?;
     let doc =
         NetworkDoc::from_json(&text).with_context(|| format!("network {}", network.display()))?;
@@ -300,7 +300,8 @@ fn run_face(
                 "--mesh {}: the face needs an OBJ with the MakeHuman base topology",
                 p.display()
             );
-            std::fs::read_to_string(p).with_context(|| format!("reading {}", p.display()))?
+            pdesculpt::mesh::io::read_input_text(p, "mesh")
+                .with_context(|| format!("reading {}", p.display()))?
         }
         None => pdesculpt::makehuman::BASE_OBJ.to_string(),
     };

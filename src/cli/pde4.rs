@@ -78,7 +78,7 @@ enum Cmd {
             allow_hyphen_values = true
         )]
         radius: f64,
-        /// Input mesh (OBJ/STL/PLY).
+        /// Input mesh (OBJ/GLB/glTF/STL/PLY).
         #[arg(long, conflicts_with = "makehuman")]
         mesh: Option<PathBuf>,
         /// Use the MakeHuman base body.
@@ -113,9 +113,9 @@ fn parse_list(s: &str, n: usize, what: &str) -> anyhow::Result<Vec<f64>> {
     Ok(v)
 }
 
-fn load_spec(path: &PathBuf) -> anyhow::Result<Spec> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+fn load_spec(path: &std::path::Path) -> anyhow::Result<Spec> {
+    let text = pdesculpt::mesh::io::read_input_text(path, "spec")
+        .with_context(|| format!("reading {}", path.display()))?;
     serde_json::from_str(&text).with_context(|| format!("parsing spec {}", path.display()))
 }
 
@@ -195,7 +195,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             };
             let r = match (curve, axis) {
                 (Some(curve), _) => {
-                    let text = std::fs::read_to_string(&curve)
+                    let text = pdesculpt::mesh::io::read_input_text(&curve, "curve file")
                         .with_context(|| format!("reading {}", curve.display()))?;
                     let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
                         format!("parsing curve {} (a list of [x, y, z])", curve.display())

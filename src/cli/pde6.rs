@@ -196,7 +196,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 sampling,
                 ..BodyOptions::default()
             };
+            let progress = pdesculpt::progress::Progress::spinner("pde6 body", json);
             let (mesh, report) = reconstruct_base_parts(&opts)?;
+            progress.finish();
             let unit = units.write(&mesh, &output, pdesculpt::mesh::unit::MAKEHUMAN)?;
             let mut out = serde_json::to_value(&report)?;
             out["unit"] = serde_json::json!(unit);
@@ -225,7 +227,9 @@ fn body_closed(
     json: bool,
 ) -> anyhow::Result<i32> {
     eprintln!("pde6 body: finding the layout, tracing, fitting and joining the parts");
+    let progress = pdesculpt::progress::Progress::spinner("pde6 body", json);
     let b = reconstruct_closed_from(mesh.as_deref(), morph, output, opts)?;
+    progress.finish();
     let unit = units.write(&b.model.mesh, output, pdesculpt::mesh::unit::MAKEHUMAN)?;
     let r = &b.report;
     for arm in &r.thumbless {

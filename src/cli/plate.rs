@@ -28,7 +28,8 @@ pub enum Cmd {
 
 #[derive(clap::Args, Debug)]
 pub struct DeformArgs {
-    /// Input mesh (.obj, .stl, .ply).
+    /// Input mesh (.obj, .glb, .gltf, .stl, .ply; FILE.glb#NODE,... reads
+    /// only the named nodes).
     pub mesh: PathBuf,
     /// Region file: vertex indices (text), or JSON {"vertices": [...]} or
     /// {"lasso": {"view": [x,y,z], "polygon": [[x,y],...]}}.
@@ -117,7 +118,7 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     io::Format::from_path(&a.output)?;
     io::refuse_overwriting_input(&[&a.mesh, &a.region], &a.output)?;
     let mesh = io::read(&a.mesh)?;
-    let text = std::fs::read_to_string(&a.region)
+    let text = io::read_input_text(&a.region, "region file")
         .with_context(|| format!("reading region file {}", a.region.display()))?;
     let region = parse_region(&text, &mesh)?;
     let opts = RegionOptions {
@@ -139,7 +140,9 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
             MappingMethod::LengthBased
         },
     };
+    let progress = pdesculpt::progress::Progress::spinner("plate: precomputing", json);
     let plate = PlateDeformer::new(&mesh, &region, &opts)?;
+    progress.finish();
     let dir = if a.normal {
         Direction::Normal
     } else {

@@ -46,7 +46,8 @@ pub enum Command {
 
 #[derive(clap::Args, Debug)]
 pub struct ExtractArgs {
-    /// Input mesh (.obj, .stl, .ply).
+    /// Input mesh (.obj, .glb, .gltf, .stl, .ply; FILE.glb#NODE,... reads
+    /// only the named nodes).
     pub mesh: PathBuf,
     /// View: front, side or top.
     #[arg(long)]
@@ -105,6 +106,7 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
     if !ext.eq_ignore_ascii_case("svg") {
         bail!("{}: the output must be an .svg file", a.output.display());
     }
+    super::outputs::check(&[("MESH", &a.mesh)], &[("-o", &a.output)])?;
     let mesh = io::read(&a.mesh)?;
     let opts = OutlineOptions {
         resolution: a.resolution,

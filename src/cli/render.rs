@@ -8,7 +8,8 @@ use std::path::PathBuf;
 /// Arguments of `pdesculpt render`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Input mesh (.obj, .stl, .ply).
+    /// Input mesh (.obj, .glb, .gltf, .stl, .ply; FILE.glb#NODE,... reads
+    /// only the named nodes).
     pub mesh: PathBuf,
     /// Output PNG.
     #[arg(short, long)]

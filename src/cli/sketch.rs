@@ -63,9 +63,12 @@ pub struct BuildArgs {
     /// (auto: a quadruped when the outline is longer than tall).
     #[arg(long, default_value = "auto")]
     pub body_plan: BodyPlan,
-    /// Output mesh (.obj, .glb, .stl, .ply).
+    /// Output mesh (.obj, .glb, .gltf, .stl, .ply): one node/object per
+    /// part and transition.
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub layout: super::units::LayoutArgs,
     /// Also save the character document (with the derived parts).
     #[arg(long)]
     pub save_doc: Option<PathBuf>,
@@ -79,6 +82,19 @@ fn abs(p: &Path) -> anyhow::Result<String> {
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let Sub::Build(a) = args.command;
     io::Format::from_path(&a.output)?;
+    let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
+    if let Some(p) = &a.side {
+        inputs.push(("--side", p));
+    }
+    if let Some(p) = &a.sections {
+        inputs.push(("--sections", p));
+    }
+    let mut outs: Vec<(&str, &Path)> = vec![("-o", &a.output)];
+    if let Some(p) = &a.save_doc {
+        super::outputs::doc_output("--save-doc", p)?;
+        outs.push(("--save-doc", p));
+    }
+    super::outputs::check(&inputs, &outs)?;
     let sections: Vec<KeySection> = match &a.sections {
         Some(p) => {
             #[derive(serde::Deserialize)]
@@ -86,8 +102,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             struct File {
                 sections: Vec<KeySection>,
             }
-            let text =
-                std::fs::read_to_string(p).map_err(|e| anyhow::anyhow!("{}: {e}", p.display()))?;
+            let text = io::read_input_text(p, "sections file")?;
             serde_json::from_str::<File>(&text)
                 .map_err(|e| anyhow::anyhow!("{}: not a sections file: {e}", p.display()))?
                 .sections
@@ -122,17 +137,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         body_plan: a.body_plan,
     };
     let doc = CharacterDoc::from_inputs(inputs, level);
+    let progress = pdesculpt::progress::Progress::spinner("sketch build", json);
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
-    if let Some(p) = &a.save_doc {
-        built.doc.save(p)?;
-        eprintln!("wrote {}", p.display());
-    }
-    finish(&built, &a.output, json)
+    progress.finish();
+    let with_doc = a.save_doc.as_deref().map(|p| (&built.doc, p));
+    super::outputs::write_mesh_and_doc(&built.model.mesh, &a.output, a.layout.layout(), with_doc)?;
+    report(&built, &a.output, json)
 }
 
-/// Writes the mesh and prints the report (shared with `character build`).
-pub fn finish(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
-    io::write(&built.model.mesh, output)?;
+/// Prints the report of a build written to `output` (shared with
+/// `character build`).
+pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
     let r = &built.report;
     eprintln!(
         "wrote {} ({} vertices, {} triangles; watertight {}, manifold {}, oriented {}; max C1 jump {:.2e})",

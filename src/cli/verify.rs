@@ -25,7 +25,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             );
         }
     }
+    let progress = pdesculpt::progress::Progress::spinner("verify: running the checks", json);
     let checks = check::run(args.family.as_deref());
+    progress.finish();
     let failed = checks.iter().filter(|c| !c.passed).count();
     if json {
         super::print_json(&serde_json::json!({

@@ -172,12 +172,55 @@ pub fn raw_segments(sk: &Skeleton, radius_factor: f64) -> Vec<RawSegment> {
         .collect()
 }
 
+/// Refuses a skeleton extraction over the work budget before it starts:
+/// each of the about `points` sleeve triangles weighs two circles by
+/// `4 area_samples^2` point-in-polygon tests of `points` edges each, so
+/// the work is about `8 area_samples^2 points^2`; the point count follows
+/// from the stroke and `stroke.spacing` (a fraction of the perimeter): a
+/// spacing of 1e-4 gives 10 000 points and 1e11 operations, minutes.
+fn check_skeleton_work(points: usize, opts: &ConvOptions) -> Result<(), ConvError> {
+    let (n, s) = (points as f64, opts.skeleton.area_samples as f64);
+    let work = 8.0 * s * s * n * n;
+    if work > crate::limits::CONV_WORK {
+        return Err(ConvError::Parameter(format!(
+            "the filtered stroke has {points} points: the skeleton's circle tests would need about {} operations (8 x area_samples^2 x points^2), over the budget of {}; raise stroke.spacing (now {}, a fraction of the perimeter) or lower skeleton.area_samples (now {})",
+            crate::limits::Num(work),
+            crate::limits::Num(crate::limits::CONV_WORK),
+            crate::limits::Num(opts.stroke.spacing),
+            opts.skeleton.area_samples
+        )));
+    }
+    Ok(())
+}
+
+/// Refuses a global fit over the work budget before it starts: the fit
+/// forms the normal equations of `points x segments` field values
+/// (`points * segments^2`) and solves on the free face (`segments^3`); the
+/// counts follow from the stroke and `stroke.spacing` (a fraction of the
+/// perimeter), so a spacing at the bottom of its range on a long stroke
+/// is refused by name instead of running for minutes.
+fn check_fit_work(points: usize, segments: usize, opts: &ConvOptions) -> Result<(), ConvError> {
+    let (m, n) = (points as f64, segments as f64);
+    let work = m * n * n + n * n * n;
+    if work > crate::limits::CONV_WORK {
+        return Err(ConvError::Parameter(format!(
+            "the filtered stroke has {points} points and {segments} skeleton segments: the global fit would need about {} operations, over the budget of {}; raise stroke.spacing (now {}, a fraction of the perimeter) or stroke.dp_tolerance",
+            crate::limits::Num(work),
+            crate::limits::Num(crate::limits::CONV_WORK),
+            crate::limits::Num(opts.stroke.spacing)
+        )));
+    }
+    Ok(())
+}
+
 /// Reconstructs a component from a raw closed stroke (plane coordinates).
 pub fn build(raw_stroke: &[[f64; 2]], opts: &ConvOptions) -> Result<Sketch, ConvError> {
     opts.validate()?;
     let polygon = stroke::filter_stroke(raw_stroke, &opts.stroke)?;
+    check_skeleton_work(polygon.len(), opts)?;
     let sk = skeleton::extract(&polygon, &opts.skeleton)?;
     let raws = raw_segments(&sk, opts.radius_factor);
+    check_fit_work(polygon.len(), raws.len(), opts)?;
     let mean_r = raws.iter().map(|r| 0.5 * (r.rp + r.rq)).sum::<f64>() / raws.len() as f64;
     if !(mean_r.is_finite() && mean_r > 0.0) {
         return Err(ConvError::ZeroArea { area: 0.0 });

@@ -34,7 +34,7 @@ pub enum DemoError {
     #[error("SketchCo prop")]
     Conv(#[from] crate::conv::ConvError),
     #[error("sketched female")]
-    Sketch(#[from] crate::sketch::SketchError),
+    Sketch(#[from] crate::pipeline::BuildError),
     #[error("{0}")]
     Step(String),
 }
@@ -65,6 +65,9 @@ pub struct SketchStep {
     /// Max profile error per view, relative to the height.
     pub profile_error: Vec<(&'static str, f64)>,
     pub max_c1: f64,
+    /// The document's parts, transitions and removed parts, by name: the
+    /// nodes of `demo-sketch.glb` (checked in Blender by CI).
+    pub parts: Vec<String>,
 }
 
 /// Builds the bundled female from her sketches (metres).
@@ -90,6 +93,11 @@ pub fn sketched_female() -> Result<(Mesh, SketchStep), DemoError> {
             .map(|p| (p.view, p.max_rel))
             .collect(),
         max_c1: r.max_c1,
+        parts: (b.doc.parts.iter().map(|p| &p.name))
+            .chain(b.doc.transitions.iter().map(|t| &t.name))
+            .chain(b.doc.removed_parts.iter().map(|r| &r.name))
+            .cloned()
+            .collect(),
     };
     Ok((b.model.mesh, step))
 }

@@ -54,8 +54,29 @@ pub enum MeshError {
         offset: usize,
         message: String,
     },
+    #[error("{path}: {source}")]
+    Gltf {
+        path: String,
+        #[source]
+        source: io::GltfError,
+    },
     #[error("the mesh has no triangles")]
     Empty,
+    #[error("{path}: the {what} is {kind}, not a regular file")]
+    NotAFile {
+        path: String,
+        what: String,
+        kind: &'static str,
+    },
+    #[error(
+        "{path}: the {what} has {bytes} bytes, over the limit of {limit} bytes for one input file"
+    )]
+    InputTooLarge {
+        path: String,
+        what: String,
+        bytes: u64,
+        limit: u64,
+    },
     #[error("{0}")]
     Invalid(String),
 }

@@ -24,7 +24,7 @@ struct SectionEntry {
 /// Reads a sections JSON: `{"sections": [{"u": .., "gec"|"fourier": ..}, ..]}`.
 pub fn read_sections(path: &Path) -> Result<Vec<Section>, Pde6Error> {
     let what = path.display().to_string();
-    let text = std::fs::read_to_string(path)
+    let text = crate::mesh::io::read_input_text(path, "sections file")
         .map_err(|e| Pde6Error::Input(format!("reading {what}: {e}")))?;
     let f: SectionFile = serde_json::from_str(&text)
         .map_err(|e| Pde6Error::Input(format!("parsing {what}: {e}")))?;

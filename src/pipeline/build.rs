@@ -1,13 +1,17 @@
-//! Document -> model: a character document's drawings read, its parts
-//! derived when it has none, its edit log replayed, its parts and
-//! transitions assembled into one mesh, its props composed, and the result
-//! measured.
+//! Document -> model, once: a character document's drawings read, its
+//! parts derived when it has none, its edit log replayed once, its parts
+//! and transitions assembled into one mesh, its props composed, and the
+//! result measured ([`build`]). Every caller (the CLI, the TUI's worker,
+//! the demo, the figures, an editing [`super::Session`], a checked push)
+//! goes through it.
 
 use crate::character::assembly::{build_model_with, Model, PartCache};
-use crate::character::doc::{CharacterDoc, Level};
-use crate::character::log::{Edit, EditError};
+use crate::character::doc::{CharacterDoc, DocError, Level};
+use crate::character::log::{check_order, Edit, EditError};
 use crate::character::part::PartSurface;
-use crate::character::Resolution;
+use crate::character::props::{self, PropError};
+use crate::character::spec::PartSpec;
+use crate::character::{ModelError, Resolution};
 use crate::mesh::Mesh;
 use crate::sketch::derive::derive;
 use crate::sketch::input::{read_profile, Outline, ViewKind};
@@ -18,56 +22,152 @@ use std::path::Path;
 /// Everything a build produces.
 #[derive(Clone, Debug)]
 pub struct Built {
-    /// The document with its derived parts and transitions filled in.
+    /// The document with its derived parts and transitions filled in (the
+    /// stored, unedited parts and the log: saving it never applies an edit
+    /// twice).
     pub doc: CharacterDoc,
+    /// The parts with the log's spec-level edits applied (what the model
+    /// was built from).
+    pub edited: Vec<PartSpec>,
     pub model: Model,
     pub report: SketchReport,
     pub front: Outline,
     pub side: Option<Outline>,
 }
 
-/// Builds a document: reads its profiles (relative to `base`), derives the
-/// parts and transitions when the document has none, replays the active
-/// edits of its log (`crate::edit`, `crate::sasm`), builds the mesh and measures it.
-/// `rederive` forces derivation from the inputs. `Built::doc` holds the
-/// derived, unedited parts and the log; the report describes the edited
-/// parts.
-pub fn build_document(
-    doc: &CharacterDoc,
-    base: &Path,
-    res: Resolution,
-    rederive: bool,
-) -> Result<Built, SketchError> {
-    build_document_with(doc, base, res, rederive, None)
+/// Errors of a build, by step.
+#[derive(Debug, thiserror::Error)]
+pub enum BuildError {
+    /// The document fails its own validation.
+    #[error(transparent)]
+    Doc(#[from] DocError),
+    /// Reading the drawings or deriving the parts failed.
+    #[error(transparent)]
+    Sketch(#[from] SketchError),
+    /// The document's level needs an input it does not have.
+    #[error("document: level {level} needs {needs}")]
+    Level {
+        level: &'static str,
+        needs: &'static str,
+    },
+    /// An edit of the log failed when replayed.
+    #[error("document: {0}")]
+    Edit(#[from] EditError),
+    /// Assembling the parts and transitions failed.
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// A prop failed.
+    #[error("document: {0}")]
+    Prop(#[from] PropError),
+    /// The built mesh has a vertex that is not finite.
+    #[error("document: the built mesh has a non-finite vertex {index} ({position:?})")]
+    NonFinite { index: usize, position: [f64; 3] },
+    /// The cancel hook asked the build to stop.
+    #[error("cancelled")]
+    Cancelled,
 }
 
-/// [`build_document`] with an optional cache of built parts (an editing
-/// session re-solves only the parts an edit changed; the result is the same
-/// bit for bit).
-pub fn build_document_with(
+/// How to build a document. `BuildOptions::new(base)` gives the defaults;
+/// the builders set the rest.
+#[derive(Clone, Copy)]
+#[non_exhaustive]
+pub struct BuildOptions<'a> {
+    /// Directory that relative profile and prop paths are resolved against
+    /// (the document's directory).
+    pub base: &'a Path,
+    /// Mesh resolution (default [`Resolution::default`]).
+    pub res: Resolution,
+    /// Derive the parts from the inputs even when the document stores them
+    /// (default false: stored parts are built as they are).
+    pub rederive: bool,
+    /// Asked before the drawings are read, between the parts' solves,
+    /// between the props and at the end; `true` stops the build with
+    /// [`BuildError::Cancelled`] (default: never). One part's solve, the
+    /// assembly of the mesh and one prop's build are not interrupted.
+    pub cancel: Option<&'a dyn Fn() -> bool>,
+}
+
+impl std::fmt::Debug for BuildOptions<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("BuildOptions")
+            .field("base", &self.base)
+            .field("res", &self.res)
+            .field("rederive", &self.rederive)
+            .field("cancel", &self.cancel.is_some())
+            .finish()
+    }
+}
+
+impl<'a> BuildOptions<'a> {
+    /// The defaults, profiles relative to `base`.
+    pub fn new(base: &'a Path) -> BuildOptions<'a> {
+        BuildOptions {
+            base,
+            res: Resolution::default(),
+            rederive: false,
+            cancel: None,
+        }
+    }
+
+    /// Sets the mesh resolution.
+    pub fn res(mut self, res: Resolution) -> Self {
+        self.res = res;
+        self
+    }
+
+    /// Derives the parts again from the inputs.
+    pub fn rederive(mut self, rederive: bool) -> Self {
+        self.rederive = rederive;
+        self
+    }
+
+    /// Sets the cancel hook.
+    pub fn cancel(mut self, cancel: &'a dyn Fn() -> bool) -> Self {
+        self.cancel = Some(cancel);
+        self
+    }
+
+    fn check_cancel(&self) -> Result<(), BuildError> {
+        match self.cancel {
+            Some(c) if c() => Err(BuildError::Cancelled),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// Builds a document: reads its profiles, derives the parts and
+/// transitions when the document has none (or `opts.rederive`), replays the
+/// active edits of its log once, in order (spec-level edits and force
+/// displacements on the parts, `crate::edit`; then the plate and SASM
+/// edits on the built mesh, [`apply_mesh_edits`]), solves the parts (from
+/// `cache` when given: a rebuild re-solves only the parts whose
+/// specification changed, bit for bit the same), assembles the mesh,
+/// composes the props and measures the result. `Built::doc` holds the
+/// derived, unedited parts and the log; the report describes the edited
+/// parts.
+pub fn build(
     doc: &CharacterDoc,
-    base: &Path,
-    res: Resolution,
-    rederive: bool,
+    opts: &BuildOptions,
     cache: Option<&mut PartCache>,
-) -> Result<Built, SketchError> {
+) -> Result<Built, BuildError> {
+    opts.check_cancel()?;
     doc.validate()?;
+    let base = opts.base;
     let tol = doc.inputs.tolerance;
     let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
     let side = match &doc.inputs.side {
         Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
         None => None,
     };
+    let level = |needs| BuildError::Level {
+        level: doc.level.name(),
+        needs,
+    };
     if doc.level != Level::Initial && side.is_none() {
-        return Err(SketchError::Document(format!(
-            "level {} needs a side profile",
-            doc.level.name()
-        )));
+        return Err(level("a side profile"));
     }
     if doc.level == Level::Final && doc.inputs.sections.is_empty() {
-        return Err(SketchError::Document(
-            "level final needs key cross-section sketches".into(),
-        ));
+        return Err(level("key cross-section sketches"));
     }
     let removed = doc
         .removed_parts
@@ -77,7 +177,7 @@ pub fn build_document_with(
     let mut out = doc.clone();
     let (yr, _) = crate::sketch::poly::bounds(&front.points);
     let height = yr[1] - yr[0];
-    if rederive || doc.parts.is_empty() {
+    if opts.rederive || doc.parts.is_empty() {
         let d = derive(
             &front.points,
             side.as_ref().map(|s| s.points.as_slice()),
@@ -90,21 +190,15 @@ pub fn build_document_with(
         out.parts.extend(removed.iter().map(|r| r.spec.clone()));
         out.transitions = d.transitions;
     }
-    // replay the edit log on a copy: `out` keeps the unedited parts and the
-    // log, so saving it and building again never applies an edit twice
-    // PDE-level edits change the parts (spec edits) or add displacements
-    // (forces); mesh-level edits (plate, SASM) then act on the built mesh,
-    // in log order
-    let active = out.active_edits();
-    let edit_err = |e: EditError| SketchError::Document(e.to_string());
-    crate::character::log::check_order(&out.transitions, active).map_err(edit_err)?;
-    let edited = crate::edit::apply_to_parts(&out.parts, active).map_err(edit_err)?;
-    let disp = crate::edit::displacements(active).map_err(edit_err)?;
-    let mut model = build_model_with(&edited, &out.transitions, height, res, &disp, cache)?;
-    apply_mesh_edits(&mut model.mesh, &model.parts, active).map_err(edit_err)?;
-    let props =
-        crate::character::props::compose(&mut model.mesh, &doc.props, base, res.rings_per_height)
-            .map_err(|e| SketchError::Document(e.to_string()))?;
+    let (edited, model) = replay(&out, height, opts, cache)?;
+    let mut model = model;
+    let mut props = Vec::with_capacity(doc.props.len());
+    let cells = props::resolution(opts.res.rings_per_height);
+    for p in &doc.props {
+        opts.check_cancel()?;
+        props.push(props::compose_one(&mut model.mesh, p, base, cells)?);
+    }
+    opts.check_cancel()?;
     let report = crate::sketch::report::report(
         &out,
         &edited,
@@ -115,13 +209,65 @@ pub fn build_document_with(
         props,
         height,
     );
+    super::effect::finite_result(&model.mesh, &report)?;
     Ok(Built {
         doc: out,
+        edited,
         model,
         report,
         front,
         side,
     })
+}
+
+/// The log replayed once on `doc`'s parts: the spec-level edits applied,
+/// the force displacements made, the parts solved one by one (asking the
+/// cancel hook between them), the mesh assembled and the mesh-level edits
+/// applied.
+fn replay(
+    doc: &CharacterDoc,
+    height: f64,
+    opts: &BuildOptions,
+    cache: Option<&mut PartCache>,
+) -> Result<(Vec<PartSpec>, Model), BuildError> {
+    let active = doc.active_edits();
+    check_order(&doc.transitions, active)?;
+    let edited = crate::edit::apply_to_parts(&doc.parts, active)?;
+    let disp = crate::edit::displacements(active)?;
+    let mut local = PartCache::default();
+    let cache = match cache {
+        Some(c) => c,
+        None => &mut local,
+    };
+    for p in &edited {
+        opts.check_cancel()?;
+        cache.get(p)?;
+    }
+    let mut model = build_model_with(
+        &edited,
+        &doc.transitions,
+        height,
+        opts.res,
+        &disp,
+        Some(cache),
+    )?;
+    apply_mesh_edits(&mut model.mesh, &model.parts, active)?;
+    Ok((edited, model))
+}
+
+/// Builds a document with the defaults but `res` and `rederive` (a
+/// shorthand for [`build`]).
+pub fn build_document(
+    doc: &CharacterDoc,
+    base: &Path,
+    res: Resolution,
+    rederive: bool,
+) -> Result<Built, BuildError> {
+    build(
+        doc,
+        &BuildOptions::new(base).res(res).rederive(rederive),
+        None,
+    )
 }
 
 /// Applies the mesh-level edits among `edits` to the built mesh, in log
@@ -137,7 +283,28 @@ pub fn apply_mesh_edits(
 ) -> Result<(), EditError> {
     for e in edits {
         match e {
-            Edit::Plate { .. } => crate::edit::apply_plate(mesh, e)?,
+            Edit::Plate {
+                part,
+                centre,
+                radius,
+                ..
+            } => {
+                // the region's centre must lie on its part (as pushing
+                // checks it): the part's built surface within the radius
+                if let Some(p) = parts.iter().find(|p| &p.name == part) {
+                    let d = crate::edit::distance_to_part(p, *centre);
+                    if d > *radius {
+                        return Err(EditError::Invalid {
+                            op: e.op(),
+                            part: part.clone(),
+                            message: format!(
+                                "the region centre lies {d:.4} from the part's surface, farther than the radius {radius}"
+                            ),
+                        });
+                    }
+                }
+                crate::edit::apply_plate(mesh, e)?
+            }
             Edit::Sasm(_) | Edit::SasmAux(_) => {
                 let invalid = |m: String| EditError::Invalid {
                     op: e.op(),

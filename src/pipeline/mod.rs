@@ -1,7 +1,7 @@
 //! Document -> model: the one build of a character (paper 000 secs 4-5).
 //!
 //! A character document (`crate::character::doc`) is its inputs, its
-//! derived parts and transitions and an edit log. [`build_document`] reads
+//! derived parts and transitions and an edit log. [`build`] reads
 //! the drawings, derives the parts when the document has none
 //! (`crate::sketch`), replays the active edits of the log in order
 //! (spec-level and force edits: `crate::edit`; plate and SASM edits on the
@@ -16,9 +16,10 @@
 //! (`sketch`, `edit`, `sasm`), which never name each other.
 
 mod build;
+pub mod effect;
 mod push;
 mod session;
 
-pub use build::{apply_mesh_edits, build_document, build_document_with, Built};
+pub use build::{apply_mesh_edits, build, build_document, BuildError, BuildOptions, Built};
 pub use push::project_force_stroke;
-pub use session::{push_checked, Session};
+pub use session::{push_checked, redo_checked, Session};

@@ -24,9 +24,7 @@ impl CharacterDoc {
         check_order(&self.transitions, &log)?;
         crate::edit::apply_one(&mut parts, &e)?;
         check_builds(&parts, &e)?;
-        self.edits.truncate(self.cursor);
-        self.edits.push(e);
-        self.cursor = self.edits.len();
+        self.append_edit(e);
         Ok(())
     }
 }

@@ -32,9 +32,9 @@ impl From<Profile> for ProfileJson {
 /// Reads a JSON profile; see [`parse_json`].
 pub fn read_json(path: &Path) -> Result<Profile, ProfileError> {
     let name = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| ProfileError::Io {
-        path: name.clone(),
-        source,
+    let text = crate::mesh::io::read_input_text(path, "JSON profile").map_err(|e| match e {
+        crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
+        e => ProfileError::Input(e),
     })?;
     parse(&text, &name)
 }

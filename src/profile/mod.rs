@@ -63,12 +63,14 @@ mod outline;
 mod polygon;
 pub mod shapes;
 mod svg;
+mod svg_guard;
 
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
 pub use json::{parse_json, read_json, to_json};
 pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
 pub use polygon::{boundary_distance, contains_point, Profile};
 pub use svg::{parse_svg, read_svg, to_svg, write_svg, Cut, SvgSketch};
+pub use svg_guard::estimate_points;
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -188,6 +190,36 @@ pub enum ProfileError {
         path: String,
         #[source]
         source: std::io::Error,
+    },
+    #[error("{0}")]
+    Input(crate::mesh::MeshError),
+    #[error("{0}")]
+    Limit(#[from] crate::limits::LimitError),
+    #[error("{element}: attribute {attribute} holds {token:?}, {why}")]
+    BadNumber {
+        element: String,
+        attribute: String,
+        token: String,
+        why: &'static str,
+    },
+    #[error("shape {id}: {message}")]
+    Shape { id: String, message: String },
+    #[error("path {id:?} is closed, but an id starting with `cut` marks a cut, an open polyline across a part; rename it if it is the outline")]
+    ClosedCut { id: String },
+    #[error("flattening the drawing at tolerance {} would give about {} points ({largest} alone {}), over the limit of {limit}; raise the tolerance or simplify the drawing", crate::limits::Num(*.tolerance), crate::limits::Num(*.estimate), crate::limits::Num(*.largest_estimate))]
+    TooManyPoints {
+        tolerance: f64,
+        estimate: f64,
+        largest: String,
+        largest_estimate: f64,
+        limit: u64,
+    },
+    #[error("the drawing is {} model units across ({what}), outside the range {} to {} (SVG user units are model units, metres): scale the drawing", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
+    DrawingSize {
+        size: f64,
+        what: String,
+        min: f64,
+        max: f64,
     },
     #[error("{path}: invalid JSON profile: {source}")]
     Json {

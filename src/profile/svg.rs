@@ -1,6 +1,7 @@
 //! SVG input (parsed by usvg, curves flattened by kurbo) and output. The
 //! conventions are in the module docs of [`crate::profile`].
 
+use super::svg_guard::{self, Planned};
 use super::{Profile, ProfileError, View};
 use kurbo::{BezPath, PathEl, Point};
 use serde::{Deserialize, Serialize};
@@ -24,11 +25,13 @@ pub struct Cut {
     pub points: Vec<[f64; 2]>,
 }
 
-/// Reads an SVG sketch; see [`parse_svg`].
+/// Reads an SVG sketch; see [`parse_svg`]. Only a regular file is read
+/// (a FIFO or device is refused without blocking), at most
+/// [`crate::limits::INPUT_BYTES`].
 pub fn read_svg(path: &Path, view: View, tolerance: f64) -> Result<SvgSketch, ProfileError> {
-    let text = std::fs::read_to_string(path).map_err(|source| ProfileError::Io {
-        path: path.display().to_string(),
-        source,
+    let text = crate::mesh::io::read_input_text(path, "SVG drawing").map_err(|e| match e {
+        crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
+        e => ProfileError::Input(e),
     })?;
     parse_svg(&text, view, tolerance)
 }
@@ -64,6 +67,9 @@ pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, Pr
     let mut outlines: Vec<Subpath> = Vec::new();
     for s in subpaths {
         if s.id.starts_with("cut") {
+            if s.closed {
+                return Err(ProfileError::ClosedCut { id: s.id });
+            }
             cuts.push(Cut {
                 id: s.id,
                 points: s.points.into_iter().map(to_model).collect(),
@@ -105,11 +111,9 @@ fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, Profil
     let svg_err = |e: &dyn std::fmt::Display| ProfileError::Svg {
         message: e.to_string(),
     };
-    let xml_opt = || roxmltree::ParsingOptions {
-        allow_dtd: true,
-        ..Default::default()
-    };
-    let doc = roxmltree::Document::parse_with_options(text, xml_opt()).map_err(|e| svg_err(&e))?;
+    let doc = roxmltree::Document::parse_with_options(text, svg_guard::xml_options())
+        .map_err(svg_guard::xml_error)?;
+    svg_guard::check_numbers(&doc)?;
     // (position, bytes removed, text inserted), in document order
     let mut edits: Vec<(usize, usize, String)> = Vec::new();
     if let Some(a) = doc
@@ -156,14 +160,62 @@ fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, Profil
         }
         t.push_str(&text[pos..]);
         edited = t;
-        roxmltree::Document::parse_with_options(&edited, xml_opt()).map_err(|e| svg_err(&e))?
+        roxmltree::Document::parse_with_options(&edited, svg_guard::xml_options())
+            .map_err(svg_guard::xml_error)?
     };
     let tree =
-        usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| svg_err(&e))?;
-    let mut out = Vec::new();
+        usvg::Tree::from_xmltree(&doc, &svg_guard::usvg_options()).map_err(|e| svg_err(&e))?;
+    let mut shapes = Vec::new();
     let mut shape = 0usize;
-    collect(tree.root(), tolerance, &ellipses, &mut shape, &mut out);
+    collect(tree.root(), tolerance, &ellipses, &mut shape, &mut shapes);
+    let plans: Vec<Planned> = shapes.iter().map(|s| s.plan(tolerance)).collect();
+    svg_guard::check_plan(&plans, tolerance)?;
+    let mut out = Vec::new();
+    for s in shapes {
+        let subs = match s.geometry {
+            Geometry::Ellipse(e) => vec![(e.points(), true)],
+            Geometry::Path(b) => flatten(&b, tolerance),
+        };
+        let many = subs.len() > 1;
+        for (k, (points, closed)) in subs.into_iter().enumerate() {
+            let id = if many {
+                format!("{} (subpath {})", s.id, k + 1)
+            } else {
+                s.id.clone()
+            };
+            out.push(Subpath { id, points, closed });
+        }
+    }
     Ok(out)
+}
+
+/// A shape read by usvg, transformed to model-oriented user units, not
+/// yet flattened.
+struct Shape {
+    id: String,
+    geometry: Geometry,
+}
+
+enum Geometry {
+    Path(BezPath),
+    Ellipse(Ellipse),
+}
+
+impl Shape {
+    fn plan(&self, tolerance: f64) -> Planned {
+        match &self.geometry {
+            Geometry::Path(b) => Planned::of_path(self.id.clone(), b, tolerance),
+            Geometry::Ellipse(e) => {
+                let r = [e.a[0].abs() + e.b[0].abs(), e.a[1].abs() + e.b[1].abs()];
+                Planned {
+                    id: self.id.clone(),
+                    lo: [e.c[0] - r[0], e.c[1] - r[1]],
+                    hi: [e.c[0] + r[0], e.c[1] + r[1]],
+                    estimate: e.n as f64,
+                }
+            }
+        }
+    }
 }
 
 fn collect(
@@ -171,7 +223,7 @@ fn collect(
     tolerance: f64,
     ellipses: &[String],
     shape: &mut usize,
-    out: &mut Vec<Subpath>,
+    out: &mut Vec<Shape>,
 ) {
     for node in g.children() {
         match node {
@@ -184,34 +236,47 @@ fn collect(
                     p.id().to_string()
                 };
                 let is_ellipse = !p.id().is_empty() && ellipses.iter().any(|e| e == p.id());
-                let subs = match exact_ellipse(p, tolerance).filter(|_| is_ellipse) {
-                    Some(points) => vec![(points, true)],
-                    None => flatten(&to_kurbo(p.data(), p.abs_transform()), tolerance),
+                let geometry = match exact_ellipse(p, tolerance).filter(|_| is_ellipse) {
+                    Some(e) => Geometry::Ellipse(e),
+                    None => Geometry::Path(to_kurbo(p.data(), p.abs_transform())),
                 };
-                let many = subs.len() > 1;
-                for (k, (points, closed)) in subs.into_iter().enumerate() {
-                    let id = if many {
-                        format!("{id} (subpath {})", k + 1)
-                    } else {
-                        id.clone()
-                    };
-                    out.push(Subpath { id, points, closed });
-                }
+                out.push(Shape { id, geometry });
             }
             _ => {}
         }
     }
 }
 
-/// Most points of one flattened ellipse.
-const MAX_ELLIPSE_POINTS: usize = 1 << 20;
+/// An exact ellipse `c + a cos t + b sin t` (model-oriented user units)
+/// and the number of samples that keeps every chord within the tolerance.
+struct Ellipse {
+    c: [f64; 2],
+    a: [f64; 2],
+    b: [f64; 2],
+    n: usize,
+}
+
+impl Ellipse {
+    fn points(&self) -> Vec<[f64; 2]> {
+        (0..self.n)
+            .map(|k| {
+                let th = 2.0 * std::f64::consts::PI * k as f64 / self.n as f64;
+                let (s, c) = th.sin_cos();
+                [
+                    self.c[0] + self.a[0] * c + self.b[0] * s,
+                    self.c[1] + self.a[1] * c + self.b[1] * s,
+                ]
+            })
+            .collect()
+    }
+}
 
 /// The exact ellipse of a `circle`/`ellipse` element (its local bounding
 /// box: usvg builds it from four arcs through the extreme points), under
 /// the path's absolute transform, sampled so that every chord is within
 /// `tolerance`: for `x(t) = c + A cos t + B sin t` the chord error of a
 /// step `dt` is at most `(|A| + |B|) dt^2 / 8`.
-fn exact_ellipse(p: &usvg::Path, tolerance: f64) -> Option<Vec<[f64; 2]>> {
+fn exact_ellipse(p: &usvg::Path, tolerance: f64) -> Option<Ellipse> {
     let b = p.data().bounds();
     let (cx, cy) = (
         0.5 * (b.left() + b.right()) as f64,
@@ -227,16 +292,15 @@ fn exact_ellipse(p: &usvg::Path, tolerance: f64) -> Option<Vec<[f64; 2]>> {
     if !(size.is_finite() && size > 0.0) {
         return None;
     }
-    let dt = (8.0 * tolerance / size).sqrt();
-    let n = ((2.0 * std::f64::consts::PI / dt).ceil() as usize).clamp(8, MAX_ELLIPSE_POINTS);
-    Some(
-        (0..n)
-            .map(|k| {
-                let th = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
-                map(cx + rx * th.cos(), cy + ry * th.sin())
-            })
-            .collect(),
-    )
+    // counted (and refused over the budget) before any point is made;
+    // the cast saturates for an absurd count, which the budget refuses
+    let n = svg_guard::ellipse_points(size, tolerance) as usize;
+    Some(Ellipse {
+        c: map(cx, cy),
+        a,
+        b: bb,
+        n,
+    })
 }
 
 /// The path with the affine transform applied (before flattening, so the
@@ -352,8 +416,27 @@ pub fn to_svg(profiles: &[&Profile]) -> String {
     s
 }
 
-/// Writes [`to_svg`] atomically (temporary file, then rename).
+/// Writes [`to_svg`] atomically (temporary file, then rename). Refuses
+/// profiles that the SVG readers would refuse (a coordinate beyond the
+/// drawing range [`crate::limits::DRAWING_SIZE`]), so that every SVG
+/// written reads back.
 pub fn write_svg(path: &Path, profiles: &[&Profile]) -> Result<(), ProfileError> {
+    let range = crate::limits::DRAWING_SIZE;
+    for pr in profiles {
+        let reach = pr
+            .points()
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        if reach.is_nan() || reach > range.max {
+            return Err(ProfileError::DrawingSize {
+                size: reach,
+                what: format!("the {} outline's largest coordinate", pr.view().name()),
+                min: range.min,
+                max: range.max,
+            });
+        }
+    }
     crate::mesh::io::write_atomic(path, to_svg(profiles).as_bytes()).map_err(|e| match e {
         crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
         e => ProfileError::Mesh(e),

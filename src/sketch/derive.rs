@@ -308,6 +308,32 @@ fn tilt_top(
     }
 }
 
+/// The side profile must be drawn at the front's heights: its lowest point
+/// within [`HEIGHT_MISMATCH`] of the front's height from the front's (the
+/// views share model y; a side drawn 5 m higher would be measured against
+/// a model that is not there). Checked on the outlines as drawn.
+pub(super) fn check_side_position(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+) -> Result<(), SketchError> {
+    let Some(sd) = side else { return Ok(()) };
+    let (fy, _) = super::poly::bounds(front);
+    let (ys, _) = super::poly::bounds(sd);
+    let shift = (ys[0] - fy[0]).abs() / (fy[1] - fy[0]);
+    if shift > HEIGHT_MISMATCH {
+        return Err(SketchError::Mismatch(format!(
+            "the side profile spans model y {:.4} to {:.4}, the front {:.4} to {:.4}: draw both views at the same heights (their lowest points within {:.0} % of the height; they differ by {:.1} %)",
+            ys[0],
+            ys[1],
+            fy[0],
+            fy[1],
+            100.0 * HEIGHT_MISMATCH,
+            100.0 * shift
+        )));
+    }
+    Ok(())
+}
+
 /// The side profile's height must match the front's within
 /// [`HEIGHT_MISMATCH`].
 pub(super) fn check_side_height(
@@ -342,6 +368,7 @@ pub fn derive(
     level: Level,
     plan: BodyPlan,
 ) -> Result<Derived, SketchError> {
+    check_side_position(front, side)?;
     if super::quadruped::resolve_plan(plan, front) == BodyPlan::Quadruped {
         return super::quadruped::derive(front, side, sections, cuts, level);
     }

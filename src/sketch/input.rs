@@ -73,10 +73,17 @@ pub fn read_profile(
             if ext == "svg" {
                 read_svg(&path, view, tol)?
             } else {
-                let text = std::fs::read_to_string(&path).map_err(|e| SketchError::File {
-                    path: path.display().to_string(),
-                    message: e.to_string(),
-                })?;
+                let text =
+                    crate::mesh::io::read_input_text(&path, "JSON profile").map_err(|e| {
+                        let message = match e {
+                            crate::mesh::MeshError::Io { source, .. } => source.to_string(),
+                            e => without_path(&path, e.to_string()),
+                        };
+                        SketchError::File {
+                            path: path.display().to_string(),
+                            message,
+                        }
+                    })?;
                 (json_points(&path, &text)?, Vec::new())
             }
         }
@@ -88,6 +95,7 @@ pub fn read_profile(
         }
     })?;
     let points = profile.points().to_vec();
+    check_drawing_size(what, &points)?;
     let height = profile.height();
     if tol > MAX_RELATIVE_TOLERANCE * height {
         return Err(SketchError::Outline {
@@ -102,6 +110,32 @@ pub fn read_profile(
         validate_cut(id, c, &points)?;
     }
     Ok(Outline { points, cuts })
+}
+
+/// A profile's size (largest side of its bounding box) and coordinates
+/// must lie in the drawing range [`crate::limits::DRAWING_SIZE`] (SVG
+/// drawings are held to it before flattening; inline and JSON points
+/// here): a 1e30-sized drawing is refused by its size, not by a solver's
+/// condition number later.
+fn check_drawing_size(what: &str, points: &[[f64; 2]]) -> Result<(), SketchError> {
+    let r = crate::limits::DRAWING_SIZE;
+    let (ys, xs) = super::poly::bounds(points);
+    let size = (xs[1] - xs[0]).max(ys[1] - ys[0]);
+    let reach = points.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    if size >= r.min && size <= r.max && reach <= r.max {
+        return Ok(());
+    }
+    Err(SketchError::Outline {
+        what: what.into(),
+        message: format!(
+            "the drawing is {} model units across and reaches {} from the origin: its size must lie in {} to {} and its coordinates within +-{} (model units are metres): scale the drawing",
+            crate::limits::Num(size),
+            crate::limits::Num(reach),
+            crate::limits::Num(r.min),
+            crate::limits::Num(r.max),
+            crate::limits::Num(r.max)
+        ),
+    })
 }
 
 /// A cut must be an open polyline crossing the outline at least twice.
@@ -142,7 +176,7 @@ fn read_svg(
         // the I/O variant already names the path: keep only its cause
         let message = match e {
             crate::profile::ProfileError::Io { source, .. } => source.to_string(),
-            other => other.to_string(),
+            other => without_path(path, other.to_string()),
         };
         SketchError::File {
             path: path.display().to_string(),
@@ -153,6 +187,16 @@ fn read_svg(
         sk.outline.points().to_vec(),
         sk.cuts.into_iter().map(|c| (c.id, c.points)).collect(),
     ))
+}
+
+/// `message` without a leading `path: ` (the error that wraps it names
+/// the path already).
+fn without_path(path: &Path, message: String) -> String {
+    let prefix = format!("{}: ", path.display());
+    match message.strip_prefix(&prefix) {
+        Some(rest) => rest.to_string(),
+        None => message,
+    }
 }
 
 impl ViewKind {

@@ -274,18 +274,32 @@ impl App {
     }
 
     /// After every change of the document: refresh, autosave, rebuild.
+    /// Nothing is created before the first save: the autosave is written
+    /// only where the document's directory exists.
     pub(super) fn changed(&mut self) -> Vec<Effect> {
         self.refresh_edited();
+        self.changed_without_replay()
+    }
+
+    /// [`App::changed`] when the edited parts are known already (a checked
+    /// edit's build brought them).
+    pub(super) fn changed_without_replay(&mut self) -> Vec<Effect> {
         self.stale = true;
+        let dir = self.path.parent().filter(|d| !d.as_os_str().is_empty());
+        if dir.is_some_and(|d| !d.is_dir()) {
+            return vec![Effect::Rebuild];
+        }
         if let Err(e) = autosave::write(&self.doc, &self.path) {
             self.say(format!("autosave failed: {e}"), true);
         }
         vec![Effect::Rebuild]
     }
 
-    /// Saves the document and removes the sidecar.
+    /// Saves the document and removes the sidecar; refused when another
+    /// program changed the file since this session read or saved it
+    /// ([`autosave::save_checked`]).
     pub fn save(&mut self) -> bool {
-        match self.doc.save(&self.path) {
+        match autosave::save_checked(&self.doc, &self.path, self.saved.as_ref()) {
             Ok(()) => {
                 self.saved = Some(self.doc.clone());
                 let _ = autosave::remove(&self.path);
@@ -295,22 +309,6 @@ impl App {
             Err(e) => {
                 self.say(format!("save failed: {e}"), true);
                 false
-            }
-        }
-    }
-
-    pub(super) fn push(&mut self, e: crate::character::log::Edit) -> Vec<Effect> {
-        let summary = e.summary();
-        match self.doc.push_edit(e) {
-            Ok(()) => {
-                self.history.record_edit();
-                self.say(format!("applied: {summary}"), false);
-                self.log_sel = self.doc.cursor;
-                self.changed()
-            }
-            Err(err) => {
-                self.say(format!("not applied: {err}"), true);
-                Vec::new()
             }
         }
     }
@@ -386,6 +384,7 @@ impl App {
         self.good = Some(self.doc.clone());
         self.good_history = self.history.clone();
         self.stale = false;
+        self.edited = r.edited;
         let id = self.shown.as_ref().map_or(1, |s| s.id + 1);
         self.shown = Some(Shown {
             id,

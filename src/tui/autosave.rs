@@ -17,6 +17,33 @@ pub fn sidecar(path: &Path) -> PathBuf {
     PathBuf::from(s)
 }
 
+/// How long a save waits for a `character edit` of the same document.
+const SAVE_LOCK_WAIT: std::time::Duration = std::time::Duration::from_secs(5);
+
+/// Saves `doc` to `path` unless the file changed since the session read or
+/// saved it (`saved`): the file is locked as `character edit` locks it and
+/// compared with `saved`; when another program edited it meanwhile,
+/// saving would lose that edit, so nothing is written (the changes stay in
+/// the autosave).
+pub fn save_checked(
+    doc: &CharacterDoc,
+    path: &Path,
+    saved: Option<&CharacterDoc>,
+) -> Result<(), DocError> {
+    if !path.exists() {
+        return doc.save(path);
+    }
+    let _lock = crate::mesh::io::FileLock::acquire(path, SAVE_LOCK_WAIT)?;
+    let on_disk = CharacterDoc::load(path).ok();
+    if on_disk.is_none() || on_disk.as_ref() != saved {
+        return Err(DocError::Invalid(format!(
+            "save refused: {} was changed by another program since it was opened; your changes are kept in the autosave (quit, then reopen to recover them onto the new file)",
+            path.display()
+        )));
+    }
+    doc.save(path)
+}
+
 /// Writes `doc` to the sidecar of `path` atomically.
 pub fn write(doc: &CharacterDoc, path: &Path) -> Result<(), DocError> {
     doc.save(&sidecar(path))

@@ -222,7 +222,7 @@ fn ellipse(c: [f64; 2], a: f64, b: f64) -> Vec<[f64; 2]> {
 
 /// Points of a closed-curve file for `part` near `y`.
 fn curve_file(path: &Path, part: &str, y: f64) -> Result<Vec<[f64; 2]>, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = crate::mesh::io::read_input_text(path, "drawing").map_err(|e| e.to_string())?;
     let v: serde_json::Value =
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     let points = |v: &serde_json::Value| -> Result<Vec<[f64; 2]>, String> {
@@ -374,14 +374,14 @@ impl App {
                 return Vec::new();
             }
         };
-        if let Err(e) = self.doc.push_edit(edit) {
-            self.say(format!("not applied: {e}"), true);
-            return Vec::new();
-        }
+        // the worker built the document with the edit: it enters the log
+        // as judged there (no second replay here)
+        self.doc.append_edit(edit);
         self.history.record_edit();
         self.log_sel = self.doc.cursor;
+        self.edited = r.edited.clone();
         // autosave; the build with the edit is at hand (no second rebuild)
-        let _ = self.changed();
+        let _ = self.changed_without_replay();
         self.say(format!("applied: {summary}"), false);
         self.built(*r, elapsed)
     }

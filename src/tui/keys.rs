@@ -4,7 +4,6 @@
 use super::app::{App, Effect, Focus, Mode};
 use super::commands::PromptKind;
 use super::params::{self, Parsed};
-use crate::character::log::Edit;
 use crossterm::event::{KeyCode, KeyEvent};
 
 /// Every key binding: keys, what they do.
@@ -314,16 +313,11 @@ impl App {
                     }
                     Ok(Parsed::Edit(e)) => {
                         self.mode = Mode::Normal;
-                        if matches!(
-                            e,
-                            Edit::Force { .. } | Edit::Boundary { .. } | Edit::Plate { .. }
-                        ) {
-                            // judged on the built mesh, on the worker
-                            self.say(format!("checking: {}", e.summary()), false);
-                            vec![Effect::Check(e)]
-                        } else {
-                            self.push(e)
-                        }
+                        // every edit is judged by building the document
+                        // with it once, on the worker (never a solve on
+                        // the UI thread)
+                        self.say(format!("checking: {}", e.summary()), false);
+                        vec![Effect::Check(e)]
                     }
                 }
             }

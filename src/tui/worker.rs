@@ -4,12 +4,14 @@
 //! [`Outcome`]s. Jobs are numbered (`gen`); when several rebuilds are queued
 //! only the newest runs (the others are stale). Cancelling
 //! ([`Worker::cancel`]) marks every job up to a number as abandoned: the
-//! running build checks the mark before it starts, between the solves of
-//! its parts (they are solved one by one into the part cache before the
-//! model is assembled), between its props, and after the model is built
-//! (before an export writes anything), and stops there with the error
-//! [`CANCELLED`]; the app drops the result and the document stays as it
-//! was. What is not interruptible: one part's solve, the transitions and
+//! running build (the one `pipeline::build`, with the cancel hook) checks
+//! the mark before it starts, between the solves of its parts (they are
+//! solved one by one into the part cache before the model is assembled),
+//! between its props, and after the model is built (before an export
+//! writes anything), and stops there with the error [`CANCELLED`]; the app
+//! drops the result and the document stays as it was. A checked edit
+//! ([`Task::Check`]) is pushed by `pipeline::push_checked`: the document
+//! with the edit built once, with the same cache and hook. What is not interruptible: one part's solve, the transitions and
 //! the mesh assembly (`character::assembly::build_model_with`), one prop's conv
 //! build, the file write (atomic). A panic inside a build is caught (`catch_unwind`) and reported as
 //! [`Outcome::Panicked`]; the thread lives on.
@@ -23,7 +25,7 @@ use crate::character::doc::CharacterDoc;
 use crate::character::log::Edit;
 use crate::character::Resolution;
 use crate::mesh::Mesh;
-use crate::pipeline::build_document_with;
+use crate::pipeline::{build as build_doc, push_checked, BuildError, BuildOptions};
 use crate::sketch::SketchReport;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -61,6 +63,9 @@ pub struct Job {
 pub struct Rebuilt {
     /// The document with its derived parts filled in.
     pub doc: CharacterDoc,
+    /// Its parts with the log's spec-level edits applied (the app's part
+    /// tree and parameter rows read them: no replay on the UI thread).
+    pub edited: Vec<crate::character::spec::PartSpec>,
     pub mesh: Mesh,
     pub report: SketchReport,
 }
@@ -126,78 +131,28 @@ pub fn build_with(job: &Job, cache: Option<&mut PartCache>) -> Result<Rebuilt, S
 /// The error of a cancelled build.
 pub const CANCELLED: &str = "cancelled";
 
-/// Solves the parts into `cache` one by one and builds the props, asking
-/// `cancelled` before each (the build that follows finds them cached).
-fn prewarm(
-    doc: &CharacterDoc,
-    job: &Job,
-    cache: &mut PartCache,
-    cancelled: &dyn Fn() -> bool,
-) -> Result<(), String> {
-    if !doc.parts.is_empty() {
-        let edited = crate::edit::apply_to_parts(&doc.parts, doc.active_edits())
-            .map_err(|e| e.to_string())?;
-        for p in &edited {
-            if cancelled() {
-                return Err(CANCELLED.into());
-            }
-            cache.get(p).map_err(|e| e.to_string())?;
-        }
-    }
-    let cells = crate::character::props::resolution(job.res.rings_per_height);
-    for p in &doc.props {
-        if cancelled() {
-            return Err(CANCELLED.into());
-        }
-        // errors are reported by the build itself
-        if let Ok((text, model)) = p.read_model(&job.base) {
-            let _ = crate::character::props::build_model(&text, &model, cells);
-        }
-    }
-    Ok(())
-}
-
-/// [`build_with`] that stops with [`CANCELLED`] when `cancelled` says so
-/// (asked before the build, between parts and props, and after the build).
+/// [`build_with`] that stops with [`CANCELLED`] when `cancelled` says so:
+/// the one build (`pipeline::build`) asks it before it starts, before
+/// each part's solve, before each prop and at its end.
 pub fn build_cancellable(
-    job: &Job,
-    cache: Option<&mut PartCache>,
-    cancelled: &dyn Fn() -> bool,
-) -> Result<Rebuilt, String> {
-    if cancelled() {
-        return Err(CANCELLED.into());
-    }
-    let r = build_inner(job, cache, cancelled)?;
-    if cancelled() {
-        return Err(CANCELLED.into());
-    }
-    Ok(r)
-}
-
-fn build_inner(
     job: &Job,
     cache: Option<&mut PartCache>,
     cancelled: &dyn Fn() -> bool,
 ) -> Result<Rebuilt, String> {
     let text = serde_json::to_string_pretty(&job.doc).map_err(|e| e.to_string())?;
     let mut doc = CharacterDoc::parse(&text, Path::new("document")).map_err(|e| e.to_string())?;
-    if let Task::Check { edit } = &job.task {
-        let built = crate::pipeline::push_checked(&mut doc, edit.clone(), &job.base)
-            .map_err(|e| e.to_string())?;
-        return Ok(Rebuilt {
-            doc: built.doc,
-            mesh: built.model.mesh,
-            report: built.report,
-        });
-    }
-    let mut cache = cache;
-    if let Some(c) = cache.as_deref_mut() {
-        prewarm(&doc, job, c, cancelled)?;
-    }
-    let built =
-        build_document_with(&doc, &job.base, job.res, false, cache).map_err(|e| e.to_string())?;
+    let opts = BuildOptions::new(&job.base).res(job.res).cancel(cancelled);
+    let built = match &job.task {
+        Task::Check { edit } => push_checked(&mut doc, edit.clone(), &opts, cache),
+        _ => build_doc(&doc, &opts, cache),
+    };
+    let built = built.map_err(|e| match e {
+        BuildError::Cancelled => CANCELLED.to_string(),
+        e => e.to_string(),
+    })?;
     Ok(Rebuilt {
         doc: built.doc,
+        edited: built.edited,
         mesh: built.model.mesh,
         report: built.report,
     })

@@ -23,8 +23,12 @@ fn parsers_never_panic_hang_or_return_non_finite_numbers() {
         "OBJ documents",
         "PLY documents",
         "STL documents",
+        "GLB documents",
         "pde4 spec JSON",
         "GEC JSON",
+        "SVG drawings",
+        "character documents",
+        "edits",
     ] {
         let x = t.iter().find(|x| x.name == name).expect("target");
         assert!(x.accepted > 0, "{name} never accepted: {}", table(&t));

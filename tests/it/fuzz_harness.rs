@@ -17,6 +17,10 @@
 
 #![allow(dead_code)]
 
+/// The targets of the new surfaces: SVG, documents, edits (issue 35).
+#[path = "fuzz_targets.rs"]
+pub mod targets;
+
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
@@ -143,10 +147,15 @@ pub fn parser_targets() -> Vec<(&'static str, GenFn, ParseFn)> {
         ("PLY documents", gen_ply, parse_ply),
         ("STL bytes", gen_bytes, parse_stl),
         ("STL documents", gen_stl, parse_stl),
+        ("GLB bytes", gen_bytes, parse_glb),
+        ("GLB documents", gen_glb, parse_glb),
         ("pde4 spec JSON", gen_pde4_spec, parse_pde4_spec),
         ("GEC JSON", gen_gec_json, parse_gec),
         ("CSV bytes", gen_bytes, parse_csv_fit),
         ("CSV documents", gen_csv, parse_csv_fit),
+        ("SVG drawings", targets::gen_svg, targets::parse_svg),
+        ("character documents", targets::gen_doc, targets::parse_doc),
+        ("edits", targets::gen_edit, targets::apply_edit),
     ]
 }
 
@@ -185,6 +194,75 @@ fn parse_ply(b: &[u8]) -> Result<Vec<f64>, String> {
 fn parse_stl(b: &[u8]) -> Result<Vec<f64>, String> {
     let m = pdesculpt::mesh::io::parse_stl(b, "fuzz.stl").map_err(|e| e.to_string())?;
     mesh_numbers(m)
+}
+
+fn parse_glb(b: &[u8]) -> Result<Vec<f64>, String> {
+    let opts = pdesculpt::mesh::io::GltfOptions::default();
+    let s = pdesculpt::mesh::io::parse_gltf(b, None, &opts).map_err(|e| e.to_string())?;
+    mesh_numbers(s.flatten())
+}
+
+/// A valid GLB (a small torus in two parts) with one field of its JSON set
+/// to a hostile number or count, bytes overwritten, or cut short.
+fn gen_glb(p: &mut Pick) -> Vec<u8> {
+    let mut m = pdesculpt::mesh::samples::torus_mesh(3);
+    m.groups = vec!["a".into(), "b".into()];
+    m.tri_group = (0..m.triangles.len()).map(|t| (t % 2) as u32).collect();
+    let fmt = pdesculpt::mesh::io::Format::Glb;
+    let mut b = pdesculpt::mesh::io::encode(&m, fmt).unwrap_or_default();
+    let jl = u32::from_le_bytes([b[12], b[13], b[14], b[15]]) as usize;
+    match p.below(4) {
+        0 | 1 => {
+            let mut doc: serde_json::Value =
+                serde_json::from_slice(&b[20..20 + jl]).unwrap_or_default();
+            // (object, key, 0 for a scalar or the length of an array of it)
+            let fields: [(&str, &str, usize); 15] = [
+                ("/accessors/0", "count", 0),
+                ("/accessors/2", "count", 0),
+                ("/accessors/0", "byteOffset", 0),
+                ("/accessors/2", "componentType", 0),
+                ("/bufferViews/0", "byteOffset", 0),
+                ("/bufferViews/1", "byteLength", 0),
+                ("/bufferViews/2", "byteStride", 0),
+                ("/buffers/0", "byteLength", 0),
+                ("/meshes/0/primitives/0", "mode", 0),
+                ("/meshes/1/primitives/0", "indices", 0),
+                ("/nodes/0", "children", 1),
+                ("", "scene", 0),
+                ("/nodes/1", "translation", 3),
+                ("/nodes/0", "scale", 3),
+                ("/nodes/2", "rotation", 4),
+            ];
+            let value = if p.chance(50) { p.num() } else { p.count() };
+            let value = serde_json::from_str(&value).unwrap_or(serde_json::Value::String(value));
+            let (path, key, arity) = *p.of(&fields);
+            let value = match arity {
+                0 => value,
+                n => serde_json::Value::Array(vec![value; n]),
+            };
+            if let Some(serde_json::Value::Object(o)) = doc.pointer_mut(path) {
+                o.insert(key.to_string(), value);
+            }
+            let mut j = serde_json::to_vec(&doc).unwrap_or_default();
+            j.resize(j.len().div_ceil(4) * 4, b' ');
+            let bin = b[20 + jl..].to_vec();
+            b = b"glTF".to_vec();
+            for x in [2, (12 + 8 + j.len() + bin.len()) as u32, j.len() as u32] {
+                b.extend(x.to_le_bytes());
+            }
+            b.extend(b"JSON");
+            b.extend(j);
+            b.extend(bin);
+        }
+        2 => {
+            for _ in 0..1 + p.below(8) {
+                let i = p.below(b.len());
+                b[i] = p.u() as u8;
+            }
+        }
+        _ => b.truncate(p.below(b.len())),
+    }
+    b
 }
 
 fn parse_pde4_spec(b: &[u8]) -> Result<Vec<f64>, String> {
@@ -798,7 +876,17 @@ pub fn command_targets() -> Vec<(&'static str, CommandGen)> {
         ("render (mesh + numbers)", cmd_render),
         ("convert (OBJ/PLY/STL)", cmd_convert),
         ("plate compare (numbers)", cmd_plate_compare),
+        (
+            "profile check (SVG + tolerance)",
+            targets::cmd_profile_check,
+        ),
     ]
+}
+
+/// Command targets too slow for `cargo test`'s debug binary (each case
+/// builds a character); the fuzz example runs them on the release binary.
+pub fn heavy_command_targets() -> Vec<(&'static str, CommandGen)> {
+    vec![("character edit (edit JSON)", targets::cmd_character_edit)]
 }
 
 fn runner(seed: u64) -> TestRunner {
@@ -870,7 +958,19 @@ pub fn run_commands(
     seed: u64,
     limit: Duration,
 ) -> Vec<Tally> {
-    command_targets()
+    run_command_targets(command_targets(), exe, scratch, cases, seed, limit)
+}
+
+/// Runs the given command targets (see [`run_commands`]).
+pub fn run_command_targets(
+    targets: Vec<(&'static str, CommandGen)>,
+    exe: &Path,
+    scratch: &Path,
+    cases: usize,
+    seed: u64,
+    limit: Duration,
+) -> Vec<Tally> {
+    targets
         .into_iter()
         .enumerate()
         .map(|(k, (name, gen))| {

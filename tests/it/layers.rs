@@ -34,6 +34,7 @@ const UPPER: &[&str] = &[
     "makehuman",
     "verify",
     "cli",
+    "progress",
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -251,7 +251,12 @@ fn cli_network_writes_a_mesh_and_a_report_and_refuses_bad_input_without_a_file()
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
     assert_eq!(v["report"]["patches"], 24);
-    assert!(out.exists());
+    // one node per patch (issue 34's part layout), named after the patch
+    let g = crate::gltf::glb_json(&std::fs::read(&out).expect("glb"));
+    let nodes = g["nodes"].as_array().expect("nodes");
+    let named = |n: &str| nodes.iter().any(|x| x["name"].as_str() == Some(n));
+    assert_eq!(nodes.iter().filter(|x| x.get("mesh").is_some()).count(), 24);
+    assert!(named("vase.0.0"), "{nodes:?}");
     let mut doc = samples::wavy_grid(1, 1, &[]);
     let c0 = doc.patches[0].curves[0];
     doc.patches[0].curves.push(c0);

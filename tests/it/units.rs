@@ -29,21 +29,31 @@ fn read_glb(path: &Path) -> (Vec<[f64; 3]>, usize, serde_json::Value) {
     let bin_at = 20 + json_len;
     assert_eq!(&b[bin_at + 4..bin_at + 8], b"BIN\0");
     let bin = &b[bin_at + 8..bin_at + 8 + u32_at(bin_at)];
-    let prim = &doc["meshes"][0]["primitives"];
-    let pos_acc = prim[0]["attributes"]["POSITION"]
-        .as_u64()
-        .expect("POSITION") as usize;
-    let acc = &doc["accessors"][pos_acc];
-    let view = &doc["bufferViews"][acc["bufferView"].as_u64().expect("view") as usize];
-    let off = view["byteOffset"].as_u64().unwrap_or(0) as usize;
-    let count = acc["count"].as_u64().expect("count") as usize;
-    let f = |i: usize| {
-        f32::from_le_bytes(bin[off + 4 * i..off + 4 * i + 4].try_into().expect("f32")) as f64
-    };
-    let pos = (0..count)
-        .map(|v| [f(3 * v), f(3 * v + 1), f(3 * v + 2)])
+    // every primitive of every mesh (one mesh per part), each POSITION
+    // accessor read once
+    let prims: Vec<&serde_json::Value> = doc["meshes"]
+        .as_array()
+        .expect("meshes")
+        .iter()
+        .flat_map(|m| m["primitives"].as_array().expect("primitives"))
         .collect();
-    let n = prim.as_array().map(|a| a.len()).unwrap_or(0);
+    let mut seen = std::collections::BTreeSet::new();
+    let mut pos = Vec::new();
+    for p in &prims {
+        let pos_acc = p["attributes"]["POSITION"].as_u64().expect("POSITION") as usize;
+        if !seen.insert(pos_acc) {
+            continue;
+        }
+        let acc = &doc["accessors"][pos_acc];
+        let view = &doc["bufferViews"][acc["bufferView"].as_u64().expect("view") as usize];
+        let off = view["byteOffset"].as_u64().unwrap_or(0) as usize;
+        let count = acc["count"].as_u64().expect("count") as usize;
+        let f = |i: usize| {
+            f32::from_le_bytes(bin[off + 4 * i..off + 4 * i + 4].try_into().expect("f32")) as f64
+        };
+        pos.extend((0..count).map(|v| [f(3 * v), f(3 * v + 1), f(3 * v + 2)]));
+    }
+    let n = prims.len();
     (pos, n, doc)
 }
 

@@ -62,6 +62,20 @@ fn check_patch(e: &Edit, a: f64, force: &crate::pde4::Force) -> Result<(), EditE
     })
 }
 
+/// A length or coordinate of an edit (model units): finite, at most
+/// [`crate::limits::MODEL_COORD`] in size, the bound of every document
+/// length.
+fn length(e: &Edit, name: &'static str, value: f64) -> Result<(), EditError> {
+    let max = crate::limits::MODEL_COORD;
+    param(
+        e,
+        name,
+        value,
+        value.abs() <= max,
+        &format!("a finite length of at most {max:e} model units in size"),
+    )
+}
+
 /// `Ok` when `ok` holds and `value` is finite, else the edit's named
 /// [`EditError::Parameter`] with the range `expected`.
 pub fn param(
@@ -100,7 +114,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
         Edit::GecTransform { transform, .. } => match transform {
             SectionTransform::Translate { d } => {
                 for (k, name) in ["d[0]", "d[1]", "d[2]"].into_iter().enumerate() {
-                    param(e, name, d[k], true, "a finite number")?;
+                    length(e, name, d[k])?;
                 }
                 Ok(())
             }
@@ -118,7 +132,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 Ok(())
             }
             SectionTransform::Bump { h, theta, sigma } => {
-                param(e, "h", *h, true, "finite")?;
+                length(e, "h", *h)?;
                 param(e, "theta", *theta, true, "finite")?;
                 param(
                     e,
@@ -188,7 +202,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                     .into_iter()
                     .enumerate()
                 {
-                    param(e, name, t[k], true, "finite")?;
+                    length(e, name, t[k])?;
                 }
             }
             if let Some(c) = curve {
@@ -217,15 +231,10 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
             centre, radius, d, ..
         } => {
             for k in 0..3 {
-                param(
-                    e,
-                    ["centre[0]", "centre[1]", "centre[2]"][k],
-                    centre[k],
-                    true,
-                    "finite",
-                )?;
-                param(e, ["d[0]", "d[1]", "d[2]"][k], d[k], true, "finite")?;
+                length(e, ["centre[0]", "centre[1]", "centre[2]"][k], centre[k])?;
+                length(e, ["d[0]", "d[1]", "d[2]"][k], d[k])?;
             }
+            length(e, "radius", *radius)?;
             param(e, "radius", *radius, *radius > 0.0, "a positive radius")
         }
         // strokes are validated against the built part in `check_builds`

@@ -40,8 +40,8 @@ pub fn run(a: Args, json: bool) -> anyhow::Result<i32> {
     if let Some(n) = samples {
         limits::check("--samples", n, limits::GEC_SAMPLES)?;
     }
-    let text =
-        std::fs::read_to_string(&gec).with_context(|| format!("reading {}", gec.display()))?;
+    let text = pdesculpt::mesh::io::read_input_text(&gec, "GEC file")
+        .with_context(|| format!("reading {}", gec.display()))?;
     let v: serde_json::Value =
         serde_json::from_str(&text).with_context(|| format!("parsing {}", gec.display()))?;
     let v = v.get("gec").cloned().unwrap_or(v);

@@ -55,8 +55,8 @@ pub enum Command {
 }
 
 fn read_input(path: &Path) -> anyhow::Result<Input> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let text = pdesculpt::mesh::io::read_input_text(path, "points file")
+        .with_context(|| format!("reading {}", path.display()))?;
     parse_points(&text).with_context(|| format!("parsing {}", path.display()))
 }
 

@@ -45,7 +45,8 @@ pub enum Command {
 
 #[derive(clap::Args, Debug)]
 pub struct FitArgs {
-    /// `makehuman` (the bundled base body, every OBJ vertex) or a mesh file.
+    /// `makehuman` (the bundled base body, every OBJ vertex) or a mesh file
+    /// (.obj, .glb, .gltf, .stl, .ply).
     #[arg(long)]
     pub template: String,
     /// Front profile (SVG or JSON).
@@ -57,9 +58,11 @@ pub struct FitArgs {
     /// Key cross-sections (JSON): high level (needs --side).
     #[arg(long)]
     pub sections: Option<PathBuf>,
-    /// Output mesh (.obj, .glb, .stl, .ply).
+    /// Output mesh (.obj, .glb, .gltf, .stl, .ply).
     #[arg(short, long)]
     pub output: PathBuf,
+    #[command(flatten)]
+    pub layout: super::units::LayoutArgs,
     /// Write the mesh even when a fitted profile stays farther than 0.5 % of
     /// the height from the sketch (default: fail with an error, no output);
     /// the miss is reported (stderr, and `within: false` in --json).
@@ -99,6 +102,17 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
 fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let t0 = std::time::Instant::now();
     io::Format::from_path(&a.output)?;
+    let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
+    if a.template != "makehuman" {
+        inputs.push(("--template", Path::new(&a.template)));
+    }
+    if let Some(p) = &a.side {
+        inputs.push(("--side", p));
+    }
+    if let Some(p) = &a.sections {
+        inputs.push(("--sections", p));
+    }
+    super::outputs::check(&inputs, &[("-o", &a.output)])?;
     let template: Template = if a.template == "makehuman" {
         makehuman_template(&[])?
     } else {
@@ -113,7 +127,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         sketch.side = Some(profile(s, View::Side).context("side profile")?);
     }
     if let Some(s) = &a.sections {
-        let text = std::fs::read_to_string(s).with_context(|| s.display().to_string())?;
+        let text = io::read_input_text(s, "sections file")?;
         #[derive(serde::Deserialize)]
         #[serde(deny_unknown_fields)]
         struct File {
@@ -127,11 +141,13 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     if a.accept_miss {
         opts.on_miss = OnMiss::Report;
     }
+    let progress = pdesculpt::progress::Progress::spinner("template fit", json);
     let r = fit(&template, &sketch, &opts, &mesh_outline)?;
+    progress.finish();
     let errors = profile_errors(&template, r.last(), &sketch)?;
     let mut out = template.mesh.clone();
     out.positions = r.last().to_vec();
-    io::write(&out, &a.output)?;
+    a.layout.write(&out, &a.output)?;
     let report = Report {
         output: a.output.display().to_string(),
         vertices: out.positions.len(),

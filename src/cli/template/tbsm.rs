@@ -150,6 +150,14 @@ pub fn run(cmd: TbsmCommand, json: bool) -> anyhow::Result<i32> {
             if !(1..=40).contains(&a.terms) {
                 bail!("--terms must be 1 to 40, got {}", a.terms);
             }
+            super::super::outputs::doc_output("-o", &a.output)?;
+            // the output may be DOC itself (updated in place); never the
+            // template mesh
+            let mut inputs: Vec<(&str, &std::path::Path)> = Vec::new();
+            if a.source.template != "makehuman-foot" {
+                inputs.push(("--template", std::path::Path::new(&a.source.template)));
+            }
+            super::super::outputs::check(&inputs, &[("-o", &a.output)])?;
             let mut doc = CharacterDoc::load(&a.doc)?;
             let (part, _) = template_part(&a.source)?;
             let replaced = replace_in_doc(&mut doc, &a.part, &part, a.terms)?;
@@ -178,6 +186,11 @@ pub fn run(cmd: TbsmCommand, json: bool) -> anyhow::Result<i32> {
         }
         TbsmCommand::Create(a) => {
             io::Format::from_path(&a.output)?;
+            let mut inputs: Vec<(&str, &std::path::Path)> = vec![("--profile", &a.profile)];
+            if a.source.template != "makehuman-foot" {
+                inputs.push(("--template", std::path::Path::new(&a.source.template)));
+            }
+            super::super::outputs::check(&inputs, &[("-o", &a.output)])?;
             let view = match a.view.as_str() {
                 "front" => View::Front,
                 "side" => View::Side,

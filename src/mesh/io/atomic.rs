@@ -17,39 +17,106 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// Writes `bytes` to a temporary file beside `path`, syncs it and renames it
-/// over `path`. Creates missing parent directories.
+/// over `path`. Creates missing parent directories. A symbolic link is
+/// followed: its target is replaced and the link kept
+/// ([`super::write_target`]); an existing file keeps its permissions (and,
+/// best effort, its owner).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), MeshError> {
+    write_all_atomic(&[(path, bytes)])
+}
+
+/// Several files written as one step: every temporary file is written and
+/// synced first, and only when all of them are complete are they renamed
+/// over their targets, so a failure (a full disk, a missing permission)
+/// leaves every target as it was. Each file as in [`write_atomic`].
+pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<(), MeshError> {
+    let mut staged: Vec<Staged> = Vec::with_capacity(files.len());
+    for (path, bytes) in files {
+        match stage(path, bytes) {
+            Ok(s) => staged.push(s),
+            Err(e) => {
+                for s in &staged {
+                    let _ = std::fs::remove_file(&s.tmp);
+                }
+                return Err(e);
+            }
+        }
+    }
+    let mut first_err = None;
+    for s in &staged {
+        if let Err(source) = std::fs::rename(&s.tmp, &s.target) {
+            let _ = std::fs::remove_file(&s.tmp);
+            first_err.get_or_insert(MeshError::Io {
+                path: s.path.display().to_string(),
+                source,
+            });
+        }
+    }
+    drop(staged);
+    first_err.map_or(Ok(()), Err)
+}
+
+/// A complete temporary file waiting to be renamed over its target.
+struct Staged {
+    path: PathBuf,
+    target: PathBuf,
+    tmp: PathBuf,
+    _guard: signals::Guard,
+}
+
+fn stage(path: &Path, bytes: &[u8]) -> Result<Staged, MeshError> {
     let err = |source| MeshError::Io {
         path: path.display().to_string(),
         source,
     };
-    if path.is_dir() {
+    let target = super::write_target(path)?;
+    if target.is_dir() {
         return Err(MeshError::Invalid(format!(
             "{}: is a directory, not a file path",
             path.display()
         )));
     }
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+    if let Some(dir) = target.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).map_err(err)?;
     }
-    let file_name = path
+    let file_name = target
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "out".into());
-    sweep_stale(path, &file_name);
-    let tmp = path.with_file_name(format!(".{file_name}.tmp-{}", std::process::id()));
+    sweep_stale(&target, &file_name);
+    let tmp = target.with_file_name(format!(".{file_name}.tmp-{}", std::process::id()));
     let guard = signals::register(&tmp);
+    let previous = std::fs::metadata(&target).ok();
     let result = (|| {
         let mut f = std::fs::File::create(&tmp)?;
+        if let Some(m) = &previous {
+            keep_mode_and_owner(&f, m)?;
+        }
         f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
+        f.sync_all()
     })();
-    if result.is_err() {
+    if let Err(e) = result {
         let _ = std::fs::remove_file(&tmp);
+        return Err(err(e));
     }
-    drop(guard);
-    result.map_err(err)
+    Ok(Staged {
+        path: path.to_path_buf(),
+        target,
+        tmp,
+        _guard: guard,
+    })
+}
+
+/// Gives the new file the replaced file's permissions, and its owner when
+/// the process may (best effort: a user cannot give a file away).
+fn keep_mode_and_owner(f: &std::fs::File, previous: &std::fs::Metadata) -> std::io::Result<()> {
+    f.set_permissions(previous.permissions())?;
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let _ = std::os::unix::fs::fchown(f, Some(previous.uid()), Some(previous.gid()));
+    }
+    Ok(())
 }
 
 /// Removes `.NAME.tmp-PID` files beside `path` whose PID is not a live

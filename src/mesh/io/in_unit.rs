@@ -2,7 +2,8 @@
 //! (the rule is in [`crate::mesh::unit`]). GLB is always written in metres;
 //! OBJ, STL and PLY in the unit asked for.
 
-use super::{encode, write_atomic, Format};
+use super::scene::{encode_scene, model_name, Layout, Scene};
+use super::{write_atomic, Format};
 use crate::mesh::unit::{self, Unit};
 use crate::mesh::{Mesh, MeshError};
 use std::path::Path;
@@ -11,27 +12,40 @@ use std::path::Path;
 /// ignores the request (glTF is metres), the others follow it.
 pub fn output_unit(fmt: Format, requested: Unit) -> Unit {
     match fmt {
-        Format::Glb => unit::GLB,
+        Format::Glb | Format::Gltf => unit::GLB,
         Format::Obj | Format::Stl | Format::Ply => requested,
     }
 }
 
 /// Writes `m`, whose coordinates are in `source`, to `path` (format by
 /// extension) converted to [`output_unit`]`(format, requested)`, atomically
-/// and validated like [`super::write`]. Returns the unit written, for the
-/// caller's report.
+/// and validated like [`super::write`], as one model named after the file
+/// in the default layout. Returns the unit written, for the caller's
+/// report.
 pub fn write_in_unit(
     m: &Mesh,
     path: &Path,
     source: Unit,
     requested: Unit,
 ) -> Result<Unit, MeshError> {
+    let scene = Scene::single(&model_name(path), m.clone());
+    write_scene_in_unit(&scene, path, source, requested, Layout::Parts)
+}
+
+/// [`write_in_unit`] for a scene of several models, in `layout`.
+pub fn write_scene_in_unit(
+    scene: &Scene,
+    path: &Path,
+    source: Unit,
+    requested: Unit,
+    layout: Layout,
+) -> Result<Unit, MeshError> {
     let fmt = Format::from_path(path)?;
     let to = output_unit(fmt, requested);
     let bytes = if to == source {
-        encode(m, fmt)?
+        encode_scene(scene, fmt, layout)?
     } else {
-        encode(&unit::convert(m, source, to), fmt)?
+        encode_scene(&scene.scaled(source.factor_to(to)), fmt, layout)?
     };
     write_atomic(path, &bytes)?;
     Ok(to)

@@ -1,7 +1,10 @@
 //! Wavefront OBJ: `v`, `f` (any polygon, fan-triangulated; `v/vt/vn`
-//! references; negative indices), `g`/`o` groups. Other statements are
-//! ignored. Errors name the line.
+//! references; negative indices), `g`/`o` groups (a group is made when its
+//! first face arrives, so an `o` followed by `g`s makes no empty group).
+//! Other statements are ignored. Errors name the line. Written with one `o`
+//! per part over one shared vertex list ([`super::scene`]).
 
+use super::scene::{Layout, Scene};
 use crate::mesh::{Mesh, MeshError};
 use std::fmt::Write;
 
@@ -12,6 +15,7 @@ pub fn parse_obj(text: &str, path: &str) -> Result<Mesh, MeshError> {
         ..Mesh::default()
     };
     let mut group: Option<u32> = None;
+    let mut pending: Option<String> = None;
     let err = |line: usize, message: String| MeshError::Parse {
         path: path.to_string(),
         line,
@@ -61,14 +65,12 @@ pub fn parse_obj(text: &str, path: &str) -> Result<Mesh, MeshError> {
                         format!("face has {} vertices, needs 3", idx.len()),
                     ));
                 }
-                let g = match group {
-                    Some(g) => g,
-                    None => {
-                        let g = m.group_index("default");
-                        group = Some(g);
-                        g
-                    }
+                let g = match (pending.take(), group) {
+                    (Some(name), _) => m.group_index(&name),
+                    (None, Some(g)) => g,
+                    (None, None) => m.group_index("default"),
                 };
+                group = Some(g);
                 for k in 1..idx.len() - 1 {
                     m.triangles.push([idx[0], idx[k], idx[k + 1]]);
                     m.tri_group.push(g);
@@ -81,7 +83,7 @@ pub fn parse_obj(text: &str, path: &str) -> Result<Mesh, MeshError> {
                 } else {
                     name
                 };
-                group = Some(m.group_index(&name));
+                pending = Some(name);
             }
             _ => {}
         }
@@ -92,29 +94,53 @@ pub fn parse_obj(text: &str, path: &str) -> Result<Mesh, MeshError> {
     Ok(m)
 }
 
-/// Encodes a mesh as OBJ text with vertex normals and one `g` per group.
+/// Encodes a mesh as OBJ text with vertex normals and one `o` per group.
 pub fn encode_obj(m: &Mesh) -> String {
-    let mut s = String::with_capacity(m.positions.len() * 64 + m.triangles.len() * 32);
+    encode_obj_scene(&Scene::single("pdesculpt", m.clone()), Layout::Parts)
+}
+
+/// Encodes a scene as OBJ text: every model's vertices and normals (one
+/// list, seams shared), then per model a `# model NAME` comment and one
+/// `o PART` per part ([`Layout::Parts`]), or one `o` named after the
+/// models with one `g PART` per part ([`Layout::SingleMesh`]).
+pub fn encode_obj_scene(scene: &Scene, layout: Layout) -> String {
+    let nv: usize = scene.models.iter().map(|m| m.mesh.positions.len()).sum();
+    let nt: usize = scene.models.iter().map(|m| m.mesh.triangles.len()).sum();
+    let mut s = String::with_capacity(nv * 64 + nt * 32);
     let _ = writeln!(s, "# written by pdesculpt {}", env!("CARGO_PKG_VERSION"));
-    for p in &m.positions {
-        let _ = writeln!(s, "v {} {} {}", p[0] as f32, p[1] as f32, p[2] as f32);
-    }
-    for n in m.vertex_normals() {
-        let _ = writeln!(s, "vn {} {} {}", n[0] as f32, n[1] as f32, n[2] as f32);
-    }
-    for (g, name) in m.groups.iter().enumerate() {
-        let mut header = false;
-        for (t, tri) in m.triangles.iter().enumerate() {
-            if m.tri_group[t] as usize != g {
-                continue;
-            }
-            if !header {
-                let _ = writeln!(s, "g {name}");
-                header = true;
-            }
-            let [a, b, c] = [tri[0] + 1, tri[1] + 1, tri[2] + 1];
-            let _ = writeln!(s, "f {a}//{a} {b}//{b} {c}//{c}");
+    for model in &scene.models {
+        for p in &model.mesh.positions {
+            let _ = writeln!(s, "v {} {} {}", p[0] as f32, p[1] as f32, p[2] as f32);
         }
+    }
+    for model in &scene.models {
+        for n in model.mesh.vertex_normals() {
+            let _ = writeln!(s, "vn {} {} {}", n[0] as f32, n[1] as f32, n[2] as f32);
+        }
+    }
+    if layout == Layout::SingleMesh {
+        let _ = writeln!(s, "o {}", scene.joined_name());
+    }
+    let mut base = 1u64;
+    for model in &scene.models {
+        let m = &model.mesh;
+        let _ = writeln!(s, "# model {}", model.name);
+        for (g, name) in m.groups.iter().enumerate() {
+            let mut header = false;
+            for (t, tri) in m.triangles.iter().enumerate() {
+                if m.tri_group[t] as usize != g {
+                    continue;
+                }
+                if !header {
+                    let tag = if layout == Layout::Parts { "o" } else { "g" };
+                    let _ = writeln!(s, "{tag} {name}");
+                    header = true;
+                }
+                let [a, b, c] = tri.map(|i| i as u64 + base);
+                let _ = writeln!(s, "f {a}//{a} {b}//{b} {c}//{c}");
+            }
+        }
+        base += m.positions.len() as u64;
     }
     s
 }

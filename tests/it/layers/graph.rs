@@ -382,7 +382,7 @@ fn loops(g: &Graph) -> Vec<Vec<String>> {
 /// template modeling, local edits, SASM, the body reconstruction).
 const LAYERS: &[&[&str]] = &[
     &["vec3", "polygon"],
-    &["check", "limits"],
+    &["check", "limits", "progress"],
     &["jet"],
     &["mesh"],
     &["surface", "makehuman", "render"],

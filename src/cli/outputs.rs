@@ -1,0 +1,74 @@
+//! Output paths checked before any work, files written together, and the
+//! document lock of the commands that change a document in place.
+//!
+//! Every command names its inputs and outputs to [`check`] before it
+//! computes anything: an output that is an input (after following links),
+//! two outputs that are one file, or an output that is a directory are
+//! refused with nothing written. A command with several outputs writes
+//! them with `mesh::io::write_all_atomic`: all complete, or none replaced.
+
+use pdesculpt::character::doc::CharacterDoc;
+use pdesculpt::mesh::io;
+use std::path::Path;
+use std::time::Duration;
+
+/// How long `character edit/undo/redo` wait for another process editing
+/// the same document (each edit holds it for one build, about a second).
+pub const LOCK_WAIT: Duration = Duration::from_secs(120);
+
+/// Refuses outputs that are inputs or each other (see the module docs).
+pub fn check(inputs: &[(&str, &Path)], outputs: &[(&str, &Path)]) -> anyhow::Result<()> {
+    io::check_outputs(inputs, outputs)?;
+    Ok(())
+}
+
+/// A character document is written as JSON: refuses another extension
+/// (`--save-doc x.obj` would put JSON into a mesh file name).
+pub fn doc_output(role: &str, path: &Path) -> anyhow::Result<()> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if ext != "json" {
+        anyhow::bail!(
+            "{role} {}: a character document is JSON; give a path ending in .json",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Writes the mesh (format by extension) and, when given, the document,
+/// as one step: both files complete, or neither replaced.
+pub fn write_mesh_and_doc(
+    mesh: &pdesculpt::mesh::Mesh,
+    output: &Path,
+    layout: io::Layout,
+    doc: Option<(&CharacterDoc, &Path)>,
+) -> anyhow::Result<()> {
+    let scene = io::Scene::single(&io::model_name(output), mesh.clone());
+    let mesh_bytes = io::encode_scene(&scene, io::Format::from_path(output)?, layout)?;
+    match doc {
+        Some((d, p)) => {
+            let doc_bytes = d.to_bytes()?;
+            io::write_all_atomic(&[(output, &mesh_bytes), (p, &doc_bytes)])?;
+            eprintln!("wrote {}", p.display());
+        }
+        None => io::write_atomic(output, &mesh_bytes)?,
+    }
+    Ok(())
+}
+
+/// Saves `d` to `path` while `lock` is held, unless another program
+/// replaced the file since the lock was taken (then nothing is written).
+pub fn save_locked(d: &CharacterDoc, path: &Path, lock: &io::FileLock) -> anyhow::Result<()> {
+    if !lock.unchanged() {
+        anyhow::bail!(
+            "{}: the document was replaced by another program while this command ran; nothing written: run it again",
+            path.display()
+        );
+    }
+    d.save(path)?;
+    Ok(())
+}
