@@ -364,23 +364,7 @@ impl FaceTemplate {
             columns.push(col);
         }
         let vertices = place(base, &region, &win, nu, nv);
-        let mut on_body = vec![false; base.positions.len()];
-        for (t, _) in base.triangles.iter().zip(body).filter(|(_, b)| **b) {
-            for &i in t {
-                on_body[i as usize] = true;
-            }
-        }
-        let top = (0..base.positions.len())
-            .filter(|&i| on_body[i])
-            .max_by(|&a, &b| base.positions[a][1].total_cmp(&base.positions[b][1]))
-            .unwrap_or(0) as u32;
-        let chin = vertices
-            .iter()
-            .min_by(|a, b| {
-                base.positions[a.vertex as usize][1]
-                    .total_cmp(&base.positions[b.vertex as usize][1])
-            })
-            .map_or(0, |p| p.vertex);
+        let (top, chin) = top_and_chin(base, body, &vertices);
         Ok(FaceTemplate {
             window: win,
             nu,
@@ -392,6 +376,28 @@ impl FaceTemplate {
             chin,
         })
     }
+}
+
+/// The highest body vertex (the top of the head) and the lowest placed
+/// face vertex (the chin): the head height the errors are measured over.
+fn top_and_chin(base: &Mesh, body: &[bool], vertices: &[Placed]) -> (u32, u32) {
+    let mut on_body = vec![false; base.positions.len()];
+    for (t, _) in base.triangles.iter().zip(body).filter(|(_, b)| **b) {
+        for &i in t {
+            on_body[i as usize] = true;
+        }
+    }
+    let top = (0..base.positions.len())
+        .filter(|&i| on_body[i])
+        .max_by(|&a, &b| base.positions[a][1].total_cmp(&base.positions[b][1]))
+        .unwrap_or(0) as u32;
+    let chin = vertices
+        .iter()
+        .min_by(|a, b| {
+            base.positions[a.vertex as usize][1].total_cmp(&base.positions[b.vertex as usize][1])
+        })
+        .map_or(0, |p| p.vertex);
+    (top, chin)
 }
 
 /// Every region vertex inside the window with its patch (column, row)

@@ -5,8 +5,7 @@
 //! curves; the network then knows only the curves, and the patches
 //! between them are the ODE's (the `v`-sides pass near, not through, the
 //! sampled curves: the report measures how near). `data/network/*.json`
-//! are these documents, written by `tests/it/ode6_network.rs` (which fails
-//! when a file and its generator differ).
+//! are these documents (`tests/it/ode6_network.rs` compares them).
 
 use super::doc::{Apex, CurveDoc, NetworkDoc, PatchDoc, DEFAULT_PARAMS, NETWORK_VERSION};
 use crate::ode6::Params;
@@ -396,8 +395,7 @@ pub fn quadruped() -> NetworkDoc {
     doc
 }
 
-/// The quadruped's tail (a tube closed at its tip) and four legs (front
-/// legs of three patches, rear legs of two, each closed at the paw).
+/// The quadruped's tail and legs (front: 3 patches, rear: 2; closed at the tip).
 fn tail_and_legs(doc: &mut NetworkDoc) {
     let x = [1.0, 0.0, 0.0];
     let y = [0.0, 1.0, 0.0];
