@@ -13,6 +13,7 @@
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
+//! | [`equations`] | all | the equation index: equation, implementing function, checks, ERRATA |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
 //! | [`render`] | - | CPU rasteriser for PNG previews |
@@ -28,6 +29,7 @@
 //! | [`pipeline`] | all | document -> model: the one build that replays the log |
 //! | [`demo`] | all | the demo character |
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
+//! | `harness` | - | (feature `harness`) proptest strategies and surface properties for any solver |
 
 pub mod body;
 pub mod character;
@@ -36,7 +38,10 @@ pub mod conv;
 pub mod curve;
 pub mod demo;
 pub mod edit;
+pub mod equations;
 pub mod face;
+#[cfg(feature = "harness")]
+pub mod harness;
 pub mod jet;
 pub mod limits;
 pub mod makehuman;

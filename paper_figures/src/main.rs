@@ -20,6 +20,7 @@ mod plate;
 mod sasm;
 mod sketch;
 mod template;
+mod thumbnails;
 
 use common::{Ctx, Figure};
 
@@ -77,7 +78,7 @@ fn run() -> anyhow::Result<()> {
     match args.first().map(String::as_str) {
         None | Some("list") | Some("--help") | Some("-h") => {
             println!(
-                "usage: paper_figures [--out DIR] list | all | gallery | <id or paper number, e.g. 001>..."
+                "usage: paper_figures [--out DIR] list | all | gallery | thumbnails [DEMO_DIR] | <id or paper number, e.g. 001>..."
             );
             for f in &figures {
                 println!("{:<24} paper {}  {}", f.id, f.paper, f.title);
@@ -94,6 +95,15 @@ fn run() -> anyhow::Result<()> {
             write_gallery(&ctx, &figures)
         }
         Some("gallery") => write_gallery(&ctx, &figures),
+        // small copies of a few figures and of the demo picture (from
+        // DEMO_DIR, default out/) for the repository's docs/img/
+        Some("thumbnails") => {
+            let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+            let demo = args
+                .get(1)
+                .map_or(root.join("out"), std::path::PathBuf::from);
+            thumbnails::write(&ctx.out, &demo, &root.join("docs"))
+        }
         Some(_) => {
             for id in &args {
                 let chosen: Vec<&Figure> = figures

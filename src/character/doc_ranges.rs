@@ -19,7 +19,9 @@
 //! | `props` | at most [`DOC_PROPS`]; each `PropSpec::validate` |
 //! | names of parts, transitions, removed parts, props | non-empty, unique |
 
-use super::doc::{CharacterDoc, DocError, ProfileInput};
+use super::inputs::{DocError, Inputs, ProfileInput, RemovedPart};
+use super::props::PropSpec;
+use super::spec::TransitionSpec;
 use super::spec::{PartSpec, SectionShape, SectionSpec};
 use crate::limits::{
     Num, Range, DOC_PROPS, KEY_SECTION_POINTS, LOG_EDITS, MODEL_COORD, PART_SECTIONS,
@@ -94,8 +96,20 @@ fn profile_input(field: &str, p: &ProfileInput) -> Result<(), DocError> {
     }
 }
 
-/// Checks every value of `doc` against its documented range.
-pub fn check(doc: &CharacterDoc) -> Result<(), DocError> {
+/// What [`check`] reads of a document (`CharacterDoc::validate` lends
+/// its fields: this file does not name the document's own file).
+pub struct Fields<'a> {
+    pub inputs: &'a Inputs,
+    pub parts: &'a [PartSpec],
+    pub transitions: &'a [TransitionSpec],
+    pub removed_parts: &'a [RemovedPart],
+    pub props: &'a [PropSpec],
+    /// The length of the edit log.
+    pub edits: usize,
+}
+
+/// Checks every value of a document against its documented range.
+pub fn check(doc: &Fields) -> Result<(), DocError> {
     let i = &doc.inputs;
     crate::limits::check_real(
         "inputs.tolerance",
@@ -148,14 +162,15 @@ pub fn check(doc: &CharacterDoc) -> Result<(), DocError> {
             profile_input(&format!("removed_parts[{k}] ('{}').side", r.name), s)?;
         }
     }
-    count("edits", doc.edits.len(), LOG_EDITS)?;
+    count("edits", doc.edits, LOG_EDITS)?;
     count("props", doc.props.len(), DOC_PROPS)?;
     names(doc)
 }
 
 /// Names: non-empty and unique across parts, transitions, removed parts
-/// and props (a removed part named like a part would replace it).
-fn names(doc: &CharacterDoc) -> Result<(), DocError> {
+/// and props, except that a removed part (an input: an outline built as
+/// its own component) shares its name with the part derived from it.
+fn names(doc: &Fields) -> Result<(), DocError> {
     let all: Vec<(String, &str)> = doc
         .parts
         .iter()
@@ -188,11 +203,13 @@ fn names(doc: &CharacterDoc) -> Result<(), DocError> {
                 "a non-empty name".into(),
             ));
         }
-        if let Some((first, _)) = all[..k].iter().find(|(_, n)| n == name) {
+        let derived =
+            |first: &str| field.starts_with("removed_parts[") && first.starts_with("parts[");
+        if let Some((first, _)) = all[..k].iter().find(|(f, n)| n == name && !derived(f)) {
             return Err(range_err(
                 field.clone(),
                 format!("{name:?}"),
-                format!("a name not used before; {first} is {name:?} already"),
+                format!("a name not used before (a name used twice); {first} is {name:?} already"),
             ));
         }
     }

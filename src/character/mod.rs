@@ -16,6 +16,7 @@ pub mod assembly;
 pub mod crease;
 pub mod doc;
 pub mod doc_ranges;
+pub mod inputs;
 pub mod log;
 pub mod measure;
 pub mod part;

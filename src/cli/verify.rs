@@ -12,6 +12,11 @@ pub struct Args {
     /// Print only failing checks in the table.
     #[arg(long)]
     pub failures: bool,
+    /// Write the equation index (markdown: paper, equation, implementing
+    /// function, checks, ERRATA entries) generated from every family's
+    /// checks to this file, e.g. docs/equations.md, instead of the table.
+    #[arg(long, value_name = "FILE", conflicts_with = "family")]
+    pub index: Option<std::path::PathBuf>,
 }
 
 /// Runs the checks; exit code 1 when any fails.
@@ -29,6 +34,19 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let checks = check::run(args.family.as_deref());
     progress.finish();
     let failed = checks.iter().filter(|c| !c.passed).count();
+    if let Some(path) = &args.index {
+        let text = pdesculpt::equations::index_markdown(&checks, pdesculpt::equations::ERRATA);
+        pdesculpt::mesh::io::write_atomic(path, text.as_bytes())?;
+        eprintln!("wrote {} ({} checks)", path.display(), checks.len());
+        if json {
+            super::print_json(&serde_json::json!({
+                "index": path.display().to_string(),
+                "total": checks.len(),
+                "failed": failed,
+            }))?;
+        }
+        return Ok(if failed == 0 { 0 } else { 1 });
+    }
     if json {
         super::print_json(&serde_json::json!({
             "checks": checks,

@@ -3,16 +3,13 @@
 //! finite geometry and a finite report, and the model stays within a bound
 //! of its size before the edit.
 //!
-//! [`validate_by_build`] is the one entry point (`character edit`, `redo`,
+//! `pipeline::session::validate_by_build` is the one entry point (`character edit`, `redo`,
 //! the TUI's pushes through [`super::push_checked`]); it builds once with
 //! [`super::build`], the one document-to-model build. [`finite_result`] is what every build checks: a
 //! build whose mesh or report holds a non-finite number is an error
 //! naming the part or the report field, never a report printed with
 //! `NaN` and exit 0.
 
-use super::{BuildError, BuildOptions, Built};
-use crate::character::assembly::PartCache;
-use crate::character::doc::CharacterDoc;
 use crate::character::spec::{PartSpec, SectionShape};
 use crate::mesh::Mesh;
 use crate::sketch::report::SketchReport;
@@ -140,34 +137,4 @@ pub fn finite_result(mesh: &Mesh, report: &SketchReport) -> Result<(), SketchErr
         )));
     }
     Ok(())
-}
-
-/// Builds `doc` once ([`super::build`] with `opts` and `cache`) and
-/// accepts it only if the result is finite ([`finite_result`], checked by
-/// every build) and the model (props aside) stays within [`GROWTH`] model
-/// sizes of its stored, unedited parts ([`Extent::of_parts`]). `what`
-/// names the change in messages (`edit 3 (force on arm_l)`). A failed
-/// build's error is returned as it is, so that callers can name it.
-pub fn validate_by_build(
-    doc: &CharacterDoc,
-    opts: &BuildOptions,
-    cache: Option<&mut PartCache>,
-    what: &str,
-) -> Result<Built, BuildError> {
-    let built = super::build(doc, opts, cache)?;
-    if !doc.parts.is_empty() {
-        let b = Extent::of_parts(&doc.parts);
-        let props: Vec<&str> = doc.props.iter().map(|p| p.name.as_str()).collect();
-        let after = Extent::of_groups(&built.model.mesh, &props);
-        let reach = b.overreach(&after);
-        if reach.is_nan() || reach > GROWTH {
-            return Err(SketchError::Document(format!(
-                "{what}: the model would reach {} model sizes outside its extent before the change (limit {GROWTH}; its size, the bounding box diagonal, is {}): the values are too large",
-                crate::limits::Num(reach),
-                crate::limits::Num(b.diagonal())
-            ))
-            .into());
-        }
-    }
-    Ok(built)
 }

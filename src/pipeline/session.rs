@@ -3,6 +3,7 @@
 //! both build through the one [`build`].
 
 use super::build::{build, BuildError, BuildOptions, Built};
+use super::effect::{Extent, GROWTH};
 use crate::character::assembly::PartCache;
 use crate::character::doc::CharacterDoc;
 use crate::character::log::{check_order, validate_params, Edit, EditError};
@@ -72,13 +73,12 @@ pub fn push_checked(
     check_order(&next.transitions, next.active_edits())?;
     let index = next.cursor - 1;
     let what = format!("edit {index} ({})", next.edits[index].summary());
-    let built =
-        super::effect::validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
-            BuildError::Edit(EditError::Replay {
-                index: i, source, ..
-            }) if i == index => BuildError::Edit(*source),
-            other => other,
-        })?;
+    let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
+        BuildError::Edit(EditError::Replay {
+            index: i, source, ..
+        }) if i == index => BuildError::Edit(*source),
+        other => other,
+    })?;
     *doc = next;
     Ok(built)
 }
@@ -97,13 +97,42 @@ pub fn redo_checked(
         .map_err(|err| BuildError::Sketch(SketchError::Document(err.to_string())))?;
     let i = next.cursor - 1;
     let what = format!("redo of edit {i} ({})", next.edits[i].summary());
-    let built =
-        super::effect::validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
-            BuildError::Cancelled => BuildError::Cancelled,
-            other => BuildError::Sketch(SketchError::Document(format!(
-                "{what} refused: the document it gives does not build: {other}"
-            ))),
-        })?;
+    let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
+        BuildError::Cancelled => BuildError::Cancelled,
+        other => BuildError::Sketch(SketchError::Document(format!(
+            "{what} refused: the document it gives does not build: {other}"
+        ))),
+    })?;
     *doc = next;
+    Ok(built)
+}
+
+/// Builds `doc` once ([`super::build`] with `opts` and `cache`) and
+/// accepts it only if the result is finite ([`super::effect::finite_result`], checked by
+/// every build) and the model (props aside) stays within [`GROWTH`] model
+/// sizes of its stored, unedited parts ([`Extent::of_parts`](Extent::of_parts)). `what`
+/// names the change in messages (`edit 3 (force on arm_l)`). A failed
+/// build's error is returned as it is, so that callers can name it.
+pub fn validate_by_build(
+    doc: &CharacterDoc,
+    opts: &BuildOptions,
+    cache: Option<&mut PartCache>,
+    what: &str,
+) -> Result<Built, BuildError> {
+    let built = build(doc, opts, cache)?;
+    if !doc.parts.is_empty() {
+        let b = Extent::of_parts(&doc.parts);
+        let props: Vec<&str> = doc.props.iter().map(|p| p.name.as_str()).collect();
+        let after = Extent::of_groups(&built.model.mesh, &props);
+        let reach = b.overreach(&after);
+        if reach.is_nan() || reach > GROWTH {
+            return Err(SketchError::Document(format!(
+                "{what}: the model would reach {} model sizes outside its extent before the change (limit {GROWTH}; its size, the bounding box diagonal, is {}): the values are too large",
+                crate::limits::Num(reach),
+                crate::limits::Num(b.diagonal())
+            ))
+            .into());
+        }
+    }
     Ok(built)
 }

@@ -175,7 +175,11 @@ pub fn write_export(r: &Rebuilt, path: &Path) -> Result<(), String> {
             .save_png(path)
             .map_err(|e| e.to_string())
     } else {
-        crate::mesh::io::write(&r.mesh, path).map_err(|e| e.to_string())
+        // the same file as `character build -o PATH`: one model named
+        // after the file, a node (object) per part
+        use crate::mesh::io::{model_name, write_scene, Layout, Scene};
+        let scene = Scene::single(&model_name(path), r.mesh.clone());
+        write_scene(&scene, path, Layout::Parts).map_err(|e| e.to_string())
     }
 }
 

@@ -851,7 +851,7 @@ fn cli_build_refuses_out_of_range_models_clearly() {
     let missing = d.join("missing.json");
     for (model, res, needle) in [
         (&missing, "16", "No such file"),
-        (&d, "16", "reading"),
+        (&d, "16", "a directory, not a regular file"),
         (&ok, "100000", "resolution"),
         (&ok, "3", "resolution"),
     ] {

@@ -143,10 +143,13 @@ fn number_paths(v: &Value, at: &mut Vec<String>, out: &mut Vec<Vec<String>>) {
     }
 }
 
-fn at_path<'a>(v: &'a mut Value, path: &[String]) -> &'a mut Value {
-    path.iter().fold(v, |v, k| match v {
-        Value::Array(a) => &mut a[k.parse::<usize>().expect("index")],
-        other => &mut other[k.as_str()],
+/// The value at `path`, if an earlier mutation (a list cut short) has not
+/// removed it.
+fn at_path<'a>(v: &'a mut Value, path: &[String]) -> Option<&'a mut Value> {
+    path.iter().try_fold(v, |v, k| match v {
+        Value::Array(a) => a.get_mut(k.parse::<usize>().ok()?),
+        Value::Object(o) => o.get_mut(k.as_str()),
+        _ => None,
     })
 }
 
@@ -166,7 +169,10 @@ pub fn gen_doc(p: &mut Pick) -> Vec<u8> {
             _ => {
                 let path = p.of(&paths).clone();
                 let text = json_num(p);
-                *at_path(&mut v, &path) = serde_json::from_str(&text).unwrap_or(Value::Null);
+                let Some(at) = at_path(&mut v, &path) else {
+                    continue;
+                };
+                *at = serde_json::from_str(&text).unwrap_or(Value::Null);
                 if text == "NaN" {
                     // not JSON: the text itself must be refused
                     return v.to_string().replacen("null", "NaN", 1).into_bytes();

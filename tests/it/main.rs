@@ -1,10 +1,12 @@
 //! Integration tests: one binary (fast links), one module per area.
 
 mod cli;
+mod equations;
 mod fuzz;
 mod fuzz_harness;
 mod gltf;
 mod gltf_bad;
+mod harness;
 mod infra;
 mod layers;
 mod nan;
@@ -13,6 +15,7 @@ mod registry;
 mod sizes;
 mod strategies;
 mod tolerances;
+mod tutorial;
 mod units;
 
 mod body;

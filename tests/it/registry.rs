@@ -1,8 +1,18 @@
 //! The whole verification registry passes.
 
+use pdesculpt::check::Check;
+use std::sync::OnceLock;
+
+/// Every family's checks, run once per test process and shared by the tests
+/// that read the whole registry (a run takes most of a minute).
+pub fn all_checks() -> &'static [Check] {
+    static CHECKS: OnceLock<Vec<Check>> = OnceLock::new();
+    CHECKS.get_or_init(|| pdesculpt::verify::run(None))
+}
+
 #[test]
 fn every_check_passes() {
-    let checks = pdesculpt::verify::run(None);
+    let checks = all_checks();
     assert!(!checks.is_empty());
     let failed: Vec<String> = checks
         .iter()
@@ -19,7 +29,7 @@ fn every_check_passes() {
 
 #[test]
 fn check_names_are_unique() {
-    let checks = pdesculpt::verify::run(None);
+    let checks = all_checks();
     let mut names: Vec<&str> = checks.iter().map(|c| c.name.as_str()).collect();
     names.sort_unstable();
     let before = names.len();
@@ -193,7 +203,7 @@ fn named_alone_parses_labels() {
 
 #[test]
 fn every_numbered_equation_has_a_check() {
-    let checks = pdesculpt::verify::run(None);
+    let checks = all_checks();
     let mut unchecked_new = Vec::new();
     let mut now_checked = Vec::new();
     for (paper, eqs) in numbered_equations() {

@@ -232,9 +232,13 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
     key(&mut app, KeyCode::Char('s'));
     // the TUI's export and `character build` of the saved document agree
     let dir = app.base.clone();
-    let tui_glb = dir.join("tui.glb");
+    // one file name in two directories: the model is named after the file
+    for sub in ["tui", "cli"] {
+        std::fs::create_dir_all(dir.join(sub)).expect("dir");
+    }
+    let tui_glb = dir.join("tui").join("model.glb");
     export(&app, &tui_glb);
-    let cli_glb = dir.join("cli.glb");
+    let cli_glb = dir.join("cli").join("model.glb");
     let out = pdesculpt(&[
         "character",
         "build",

@@ -176,7 +176,10 @@ fn export_save_quit(s: &Session) {
 
 /// The TUI's `char.glb` in `dir` equals `character build` of the saved `doc`.
 fn assert_export_equals_build(dir: &Path, doc: &Path) {
-    let reference = dir.join("reference.glb");
+    // the same file name in its own directory: the model is named after
+    // the file
+    let reference = dir.join("reference").join("char.glb");
+    std::fs::create_dir_all(dir.join("reference")).expect("dir");
     let out = pdesculpt(&[
         "character",
         "build",

@@ -18,3 +18,8 @@ fi
 dir="${TMPDIR:-/tmp}/pdesculpt-gallery-test"
 npm install --silent --no-audit --no-fund --prefix "$dir" playwright-core@1.64.1 three@0.170.0 >/dev/null
 GALLERY_NODE_MODULES="$dir/node_modules" CHROMIUM="$chromium" node verify/gallery/test.mjs "$out"
+# The README shows verify/gallery/screenshot.png: every passing run replaces
+# it with the screenshot it just took, so the committed picture is the page
+# as the last test run saw it (commit it with the change that altered the page).
+cp "$out/gallery-screenshot.png" verify/gallery/screenshot.png
+echo "updated verify/gallery/screenshot.png"

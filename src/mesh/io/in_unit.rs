@@ -2,7 +2,8 @@
 //! (the rule is in [`crate::mesh::unit`]). GLB is always written in metres;
 //! OBJ, STL and PLY in the unit asked for.
 
-use super::scene::{encode_scene, model_name, Layout, Scene};
+use super::encode_scene;
+use super::scene::{model_name, Layout, Scene};
 use super::{write_atomic, Format};
 use crate::mesh::unit::{self, Unit};
 use crate::mesh::{Mesh, MeshError};

@@ -31,7 +31,7 @@ pub use lock::FileLock;
 pub use obj::{encode_obj, parse_obj};
 pub use ply::{encode_ply, parse_ply};
 pub use read_gltf::{parse_gltf, GltfError, GltfOptions};
-pub use scene::{encode_scene, model_name, write_scene, Layout, Model, Scene};
+pub use scene::{model_name, Layout, Model, Scene};
 pub use stl::{encode_stl, parse_stl};
 
 use super::{Mesh, MeshError};
@@ -188,4 +188,24 @@ pub fn check_f32_range(m: &Mesh) -> Result<(), MeshError> {
         }
     }
     Ok(())
+}
+
+/// Encodes `scene` (a [`scene::Scene`]) in `fmt` in `layout` after validating it.
+pub fn encode_scene(scene: &Scene, fmt: Format, layout: Layout) -> Result<Vec<u8>, MeshError> {
+    scene.validate()?;
+    Ok(match fmt {
+        Format::Glb => glb::encode_glb_scene(scene, layout),
+        Format::Gltf => glb::encode_gltf_scene(scene, layout),
+        Format::Obj => obj::encode_obj_scene(scene, layout).into_bytes(),
+        Format::Stl => encode_stl(&scene.flatten()),
+        Format::Ply => encode_ply(&scene.flatten()),
+    })
+}
+
+/// Writes `scene` to `path` (format by extension) in `layout`, validated
+/// and atomically.
+pub fn write_scene(scene: &Scene, path: &Path, layout: Layout) -> Result<(), MeshError> {
+    let fmt = Format::from_path(path)?;
+    let bytes = encode_scene(scene, fmt, layout)?;
+    write_atomic(path, &bytes)
 }

@@ -16,7 +16,7 @@
 //! part), for 3D printing or booleans. STL and PLY have no parts: every
 //! layout writes the welded whole.
 
-use super::{check_f32_range, Format};
+use super::check_f32_range;
 use crate::mesh::{Mesh, MeshError};
 use std::path::Path;
 
@@ -116,24 +116,4 @@ pub fn model_name(path: &Path) -> String {
         .map(|s| s.to_string_lossy().into_owned())
         .filter(|s| !s.is_empty())
         .unwrap_or_else(|| "model".into())
-}
-
-/// Encodes `scene` in `fmt` in `layout` after validating it.
-pub fn encode_scene(scene: &Scene, fmt: Format, layout: Layout) -> Result<Vec<u8>, MeshError> {
-    scene.validate()?;
-    Ok(match fmt {
-        Format::Glb => super::glb::encode_glb_scene(scene, layout),
-        Format::Gltf => super::glb::encode_gltf_scene(scene, layout),
-        Format::Obj => super::obj::encode_obj_scene(scene, layout).into_bytes(),
-        Format::Stl => super::encode_stl(&scene.flatten()),
-        Format::Ply => super::encode_ply(&scene.flatten()),
-    })
-}
-
-/// Writes `scene` to `path` (format by extension) in `layout`, validated
-/// and atomically.
-pub fn write_scene(scene: &Scene, path: &Path, layout: Layout) -> Result<(), MeshError> {
-    let fmt = Format::from_path(path)?;
-    let bytes = encode_scene(scene, fmt, layout)?;
-    super::write_atomic(path, &bytes)
 }

@@ -393,7 +393,7 @@ const LAYERS: &[&[&str]] = &[
     &["pipeline"],
     &[],
     &["demo"],
-    &["verify", "tui"],
+    &["verify", "tui", "equations", "harness"],
     &["cli", "main"],
 ];
 
