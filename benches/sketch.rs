@@ -10,9 +10,12 @@
 //! second pair.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use pdesculpt::character::doc::{Level, PartSpec, ProfileInput, SectionShape, SectionSpec};
+use pdesculpt::character::doc::{
+    CharacterDoc, Inputs, Level, PartSpec, ProfileInput, SectionShape, SectionSpec,
+};
 use pdesculpt::character::{build_model, Model, Resolution};
 use pdesculpt::mesh::Mesh;
+use pdesculpt::pipeline::build_document;
 use pdesculpt::profile::{parse_svg, View};
 use pdesculpt::sketch::derive::{derive, Derived};
 use pdesculpt::sketch::input::{read_profile, ViewKind};
@@ -29,7 +32,7 @@ const RING: usize = 48;
 fn derived() -> (Derived, f64) {
     let svg = parse_svg(FRONT, View::Front, TOL).expect("bundled SVG");
     let pts = ProfileInput::Points(svg.outline.points().to_vec());
-    let front = read_profile(&pts, Path::new("."), ViewKind::Front, TOL).expect("front");
+    let front = read_profile(&pts, Path::new("."), ViewKind::Front, Some(TOL)).expect("front");
     let (lo, hi) = front
         .points
         .iter()
@@ -152,5 +155,53 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+/// A document at the intermediate level from a front and side SVG under
+/// `data/sketch/` (paths as `sketch build` takes them).
+fn intermediate(front: &str, side: &str) -> CharacterDoc {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sketch");
+    CharacterDoc::from_inputs(
+        Inputs {
+            front: ProfileInput::Path(dir.join(front).display().to_string()),
+            side: Some(ProfileInput::Path(dir.join(side).display().to_string())),
+            sections: Vec::new(),
+            tolerance: None,
+            height: None,
+            body_plan: Default::default(),
+        },
+        Level::Intermediate,
+    )
+}
+
+/// Issue 28: the intermediate build of a corpus drawing (a T-pose in an
+/// Inkscape mm page, read, sized, placed, segmented along the arms' axis,
+/// built and measured) beside the bundled female's (target < 300 ms).
+fn bench_corpus(c: &mut Criterion) {
+    let corpus = intermediate("corpus/t_pose_front.svg", "corpus/t_pose_side.svg");
+    let female = intermediate("female_front.svg", "female_side.svg");
+    let mut g = c.benchmark_group("sketch_intermediate_build");
+    g.sample_size(10);
+    g.bench_function("corpus_t_pose", |b| {
+        b.iter(|| {
+            black_box(build_document(
+                &corpus,
+                Path::new("."),
+                Resolution::default(),
+                true,
+            ))
+        })
+    });
+    g.bench_function("bundled_female_baseline", |b| {
+        b.iter(|| {
+            black_box(build_document(
+                &female,
+                Path::new("."),
+                Resolution::default(),
+                true,
+            ))
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_corpus);
 criterion_main!(benches);

@@ -34,7 +34,8 @@ fn main() -> anyhow::Result<()> {
             front: path("female_front.svg"),
             side: Some(path("female_side.svg")),
             sections: sections.clone(),
-            tolerance: 2e-3,
+            tolerance: None,
+            height: None,
             body_plan: BodyPlan::Auto,
         };
         let doc = CharacterDoc::from_inputs(inputs, level);

@@ -13,6 +13,7 @@
 //! | [`jet`] | - | exact derivatives by truncated Taylor arithmetic |
 //! | [`check`] | all | verification reports, kinds, named tolerances (a leaf) |
 //! | [`verify`] | all | the registry of every family's checks (the top) |
+//! | [`study`] | all | experiments over many inputs, `pdesculpt study NAME` (the top) |
 //! | [`equations`] | all | the equation index: equation, implementing function, checks, ERRATA |
 //! | [`surface`] | - | the parametric-surface trait, tessellation |
 //! | [`mesh`] | - | triangle meshes, files, metrics, slicing, topology |
@@ -57,6 +58,7 @@ pub mod progress;
 pub mod render;
 pub mod sasm;
 pub mod sketch;
+pub mod study;
 pub mod surface;
 pub mod template;
 pub mod tui;

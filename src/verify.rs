@@ -42,33 +42,49 @@ pub fn families() -> &'static [Family] {
 /// `None`). Families run in parallel threads; the order of the result is the
 /// registry order.
 pub fn run(family: Option<&str>) -> Vec<Check> {
+    let names: Vec<&str> = family.into_iter().collect();
+    run_timed(&names).0
+}
+
+/// Runs the checks of the families named in `names` (all when empty), in
+/// parallel threads, and returns them in registry order with each family's
+/// wall time in seconds (measured on its own thread; `verify --timings`).
+pub fn run_timed(names: &[&str]) -> (Vec<Check>, Vec<(&'static str, f64)>) {
     let selected: Vec<&Family> = families()
         .iter()
-        .filter(|f| family.is_none_or(|n| n == f.name))
+        .filter(|f| names.is_empty() || names.contains(&f.name))
         .collect();
     std::thread::scope(|s| {
         let handles: Vec<_> = selected
             .iter()
-            .map(|f| s.spawn(move || (f.checks)()))
-            .collect();
-        handles
-            .into_iter()
-            .zip(&selected)
-            .flat_map(|(h, f)| {
-                h.join().unwrap_or_else(|_| {
-                    vec![Check::new(
-                        f.name,
-                        f.papers,
-                        "-",
-                        &format!("{}.checks-panicked", f.name),
-                        Kind::Reference,
-                        f64::NAN,
-                        0.0,
-                    )
-                    .note("the family's check generator panicked (a bug)")]
+            .map(|f| {
+                s.spawn(move || {
+                    let t0 = std::time::Instant::now();
+                    let c = (f.checks)();
+                    (c, t0.elapsed().as_secs_f64())
                 })
             })
-            .collect()
+            .collect();
+        let mut checks = Vec::new();
+        let mut times = Vec::new();
+        for (h, f) in handles.into_iter().zip(&selected) {
+            let (c, t) = h.join().unwrap_or_else(|_| {
+                let c = Check::new(
+                    f.name,
+                    f.papers,
+                    "-",
+                    &format!("{}.checks-panicked", f.name),
+                    Kind::Reference,
+                    f64::NAN,
+                    0.0,
+                )
+                .note("the family's check generator panicked (a bug)");
+                (vec![c], f64::NAN)
+            });
+            checks.extend(c);
+            times.push((f.name, t));
+        }
+        (checks, times)
     })
 }
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Draws the bundled sketch examples as data (committed SVG and JSON).
 
-Model units are metres. SVG user units are model units and model y = -svg y;
+Model units are metres. The page's width and height are in cm, one user
+unit of the viewBox per metre (so the drawing's physical size is the
+model's), and model y = -svg y;
 in a front view svg x is model x, in a side view svg x is model z (front of
 the body at +z). Each outline is a smooth closed curve: a centripetal
 Catmull-Rom spline through hand-placed key points of the right half (front)
@@ -71,6 +73,7 @@ def write_svg(path, pts, cuts=()):
     x0, x1, y0, y1 = min(xs) - pad, max(xs) + pad, min(ys) - pad, max(ys) + pad
     body = [
         '<svg xmlns="http://www.w3.org/2000/svg" '
+        f'width="{100 * float(f"{x1 - x0:.4f}"):.2f}cm" height="{100 * float(f"{y1 - y0:.4f}"):.2f}cm" '
         f'viewBox="{x0:.4f} {y0:.4f} {x1 - x0:.4f} {y1 - y0:.4f}">',
         f'  <path id="outline" d="{d}" fill="none" stroke="black" stroke-width="0.003"/>',
     ]

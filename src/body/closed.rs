@@ -45,9 +45,9 @@
 //! shoulders do not cross, within the max error target.
 
 use super::hand::find_hand;
-use super::intersect::crossing_pairs;
+use super::intersect::{crossing_pairs, CrossingPair};
 use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
-use super::report::measure;
+use super::report::measure_with_crossings;
 pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
 use super::BodyError;
 use crate::character::assembly::{build_model_with, Model, PartCache, Resolution};
@@ -635,7 +635,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
     specs.extend(hand_specs);
     let mut transitions = transitions(skin, &lay, &specs)?;
     transitions.extend(wrists);
-    let (transitions, model) = shoulder_cuts(
+    let (transitions, model, pairs) = shoulder_cuts(
         skin,
         &specs,
         transitions,
@@ -645,7 +645,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             transition_rows: o.transition_rows,
         },
     )?;
-    let mut report = measure(skin, &lay, &model, &specs, &hands);
+    let mut report = measure_with_crossings(skin, &lay, &model, &specs, &hands, &pairs);
     report.thumbless = thumbless;
     Ok(ClosedBody {
         model,
@@ -678,15 +678,16 @@ pub fn shoulder_cut_angles(cuts: [(usize, usize); 2]) -> Vec<f64> {
     vec![a(cuts[0].0), a(cuts[1].0), a(cuts[0].1), a(cuts[1].1)]
 }
 
-/// Crossing triangle pairs with a triangle in the shoulders transition, and
-/// the largest distance (relative to the height) from the transition's
-/// vertices and triangle centroids to the skin.
-fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64) {
+/// Crossing pairs with a triangle in the shoulders transition, the largest
+/// distance (relative to the height) from its vertices and triangle
+/// centroids to the skin, and every crossing pair of `m` (for the report).
+fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64, Vec<CrossingPair>) {
+    let pairs = crossing_pairs(m);
     let Some(g) = m.groups.iter().position(|g| g == "shoulders") else {
-        return (0, 0.0);
+        return (0, 0.0, pairs);
     };
     let g = g as u32;
-    let crossings = crossing_pairs(m)
+    let crossings = pairs
         .iter()
         .filter(|&&(t, u, _)| m.tri_group[t] == g || m.tri_group[u] == g)
         .count();
@@ -702,7 +703,7 @@ fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64) {
             }
         }
     }
-    (crossings, far / h)
+    (crossings, far / h, pairs)
 }
 
 /// The shoulders' cuts of one body, measured (issue 15's female armpits).
@@ -725,23 +726,21 @@ fn shoulder_state(skin_bvh: &TriangleBvh, m: &Mesh, h: f64) -> (usize, f64) {
 /// larger head loop bulges more in front of the throat) or within that of
 /// the fixed cuts. Bodies whose shoulders do not cross (the base, the male
 /// bodies) keep the fixed cuts untouched. Returns the chosen transitions
-/// and model.
+/// and model, and the model's crossing pairs.
 fn shoulder_cuts(
     skin: &Mesh,
     specs: &[PartSpec],
     mut transitions: Vec<TransitionSpec>,
     h: f64,
     res: Resolution,
-) -> Result<(Vec<TransitionSpec>, Model), BodyError> {
+) -> Result<(Vec<TransitionSpec>, Model, Vec<CrossingPair>), BodyError> {
     let mut cache = PartCache::default();
     let model = build_model_with(specs, &transitions, h, res, &[], Some(&mut cache))?;
     let bvh = TriangleBvh::new(skin);
-    let (x0, far0) = shoulder_state(&bvh, &model.mesh, h);
-    if x0 == 0 {
-        return Ok((transitions, model));
-    }
-    let Some(k) = transitions.iter().position(|t| t.name == "shoulders") else {
-        return Ok((transitions, model));
+    let (x0, far0, pairs0) = shoulder_state(&bvh, &model.mesh, h);
+    let shoulders = transitions.iter().position(|t| t.name == "shoulders");
+    let Some(k) = shoulders.filter(|_| x0 > 0) else {
+        return Ok((transitions, model, pairs0));
     };
     let bound = MAX_MAX_REL.max(far0);
     let mut shifts: Vec<(usize, usize)> = (0..=SHOULDER_CUT_SHIFT_MAX)
@@ -749,25 +748,26 @@ fn shoulder_cuts(
         .filter(|&s| s != (0, 0))
         .collect();
     shifts.sort_by_key(|&(a, b)| (a + b, a));
-    let mut best: (usize, Vec<f64>, Option<Model>) = (x0, Vec::new(), None);
+    type Best = (usize, Vec<f64>, Option<(Model, Vec<CrossingPair>)>);
+    let mut best: Best = (x0, Vec::new(), None);
     for (a, b) in shifts {
         let mut tr = transitions.clone();
         tr[k].cut_angles = shoulder_cut_angles(shifted_shoulder_cuts(a, b));
         let m = build_model_with(specs, &tr, h, res, &[], Some(&mut cache))?;
-        let (x, far) = shoulder_state(&bvh, &m.mesh, h);
+        let (x, far, pairs) = shoulder_state(&bvh, &m.mesh, h);
         if x < best.0 && far <= bound {
-            best = (x, tr[k].cut_angles.clone(), Some(m));
+            best = (x, tr[k].cut_angles.clone(), Some((m, pairs)));
             if x == 0 {
                 break;
             }
         }
     }
     match best {
-        (_, angles, Some(m)) => {
+        (_, angles, Some((m, pairs))) => {
             transitions[k].cut_angles = angles;
-            Ok((transitions, m))
+            Ok((transitions, m, pairs))
         }
-        _ => Ok((transitions, model)),
+        _ => Ok((transitions, model, pairs0)),
     }
 }
 

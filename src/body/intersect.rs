@@ -105,9 +105,12 @@ pub fn known_crossings(body: &str) -> usize {
 /// up to (extent / cell)^3 cells.
 pub const GRID_SPAN_MAX: i64 = 16;
 
+/// A crossing pair of triangles and a point where they cross.
+pub type CrossingPair = (usize, usize, [f64; 3]);
+
 /// Every crossing pair `(t, s, point)` of triangles of `m` that share no
 /// vertex (`t < s` for the grid's triangles), in the order found.
-pub fn crossing_pairs(m: &Mesh) -> Vec<(usize, usize, [f64; 3])> {
+pub fn crossing_pairs(m: &Mesh) -> Vec<CrossingPair> {
     let n = m.triangles.len();
     if n == 0 {
         return Vec::new();
@@ -185,9 +188,15 @@ pub fn crossing_pairs(m: &Mesh) -> Vec<(usize, usize, [f64; 3])> {
 
 /// Every crossing pair of triangles of `m` that share no vertex.
 pub fn self_intersections(m: &Mesh) -> Intersections {
+    intersections_of(m, &crossing_pairs(m))
+}
+
+/// [`self_intersections`] from the [`crossing_pairs`] of `m` found before
+/// (the shoulder-cut search has them for the model it keeps).
+pub fn intersections_of(m: &Mesh, pairs: &[CrossingPair]) -> Intersections {
     let mut out = Intersections::default();
     let mut groups: HashMap<String, usize> = HashMap::new();
-    for (t, s, p) in crossing_pairs(m) {
+    for &(t, s, p) in pairs {
         out.pairs += 1;
         out.example.get_or_insert(p);
         let (mut a, mut b) = (group_of(m, t), group_of(m, s));

@@ -3,7 +3,7 @@
 //! reconstruct.
 
 use super::cavity::{find_cavities, Cavities};
-use super::intersect::{self_intersections, Intersections};
+use super::intersect::{intersections_of, Intersections};
 use super::layout::Layout;
 use super::sites::{closest_hits, error_sites, hit_distances, ErrorSite};
 use super::BodyError;
@@ -83,6 +83,21 @@ pub fn measure(
     specs: &[PartSpec],
     hands: &[(super::hand::Hand, f64)],
 ) -> ClosedReport {
+    let pairs = super::intersect::crossing_pairs(&model.mesh);
+    measure_with_crossings(skin, lay, model, specs, hands, &pairs)
+}
+
+/// [`measure`] with the crossing pairs of `model.mesh` found before
+/// ([`super::intersect::crossing_pairs`]; the closed reconstruction's
+/// shoulder-cut search finds them for the model it keeps).
+pub fn measure_with_crossings(
+    skin: &Mesh,
+    lay: &Layout,
+    model: &Model,
+    specs: &[PartSpec],
+    hands: &[(super::hand::Hand, f64)],
+    pairs: &[super::intersect::CrossingPair],
+) -> ClosedReport {
     let h = lay.height();
     let hand_reports = hands
         .iter()
@@ -161,7 +176,7 @@ pub fn measure(
         skin_to_recon_outer_max_rel: s2r_outer.max / h,
         skin_to_recon_outer_max_at: s2r_outer_at,
         max_join,
-        self_intersections: self_intersections(&model.mesh),
+        self_intersections: intersections_of(&model.mesh, pairs),
         joins: model.joins.clone(),
         seams: model.seams.clone(),
         sections,

@@ -39,7 +39,7 @@ fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
 
 /// The triangles on each undirected edge `(low, high)` of `m`, in triangle
 /// order.
-pub(super) fn edge_triangles(m: &Mesh) -> HashMap<(u32, u32), Vec<usize>> {
+pub fn edge_triangles(m: &Mesh) -> HashMap<(u32, u32), Vec<usize>> {
     let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
     for (t, tr) in m.triangles.iter().enumerate() {
         for e in 0..3 {

@@ -11,7 +11,8 @@
 //!     "front": {"path": "front.svg"} | {"points": [[x, y], ...]},
 //!     "side": null | {"path": "side.svg"} | {"points": [[z, y], ...]},
 //!     "sections": [{"part": "torso", "y": 1.2, "points": [[x, z], ...]}],
-//!     "tolerance": 0.002
+//!     "tolerance": 0.002,
+//!     "height": 1.75
 //!   },
 //!   "parts": [ PartSpec ... ],
 //!   "transitions": [ TransitionSpec ... ],
@@ -176,11 +177,15 @@ impl CharacterDoc {
             crate::character::log::validate_params(e)
                 .map_err(|err| DocError::Invalid(format!("edit {i}: {err}")))?;
         }
-        if !(self.inputs.tolerance.is_finite() && self.inputs.tolerance > 0.0) {
-            return Err(DocError::Invalid(format!(
-                "inputs.tolerance must be positive, got {}",
-                self.inputs.tolerance
-            )));
+        for (name, v) in [
+            ("inputs.tolerance", self.inputs.tolerance),
+            ("inputs.height", self.inputs.height),
+        ] {
+            if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+                return Err(DocError::Invalid(format!(
+                    "{name} must be positive, got {v}"
+                )));
+            }
         }
         let mut names: Vec<&str> = self.parts.iter().map(|p| p.name.as_str()).collect();
         names.extend(self.transitions.iter().map(|t| t.name.as_str()));

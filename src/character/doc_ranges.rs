@@ -111,18 +111,10 @@ pub struct Fields<'a> {
 /// Checks every value of a document against its documented range.
 pub fn check(doc: &Fields) -> Result<(), DocError> {
     let i = &doc.inputs;
-    crate::limits::check_real(
-        "inputs.tolerance",
-        i.tolerance,
-        crate::limits::SKETCH_TOLERANCE,
-    )
-    .map_err(|e| {
-        range_err(
-            "inputs.tolerance".into(),
-            Num(i.tolerance).to_string(),
-            e.to_string(),
-        )
-    })?;
+    if let Some(t) = i.tolerance {
+        crate::limits::check_real("inputs.tolerance", t, crate::limits::SKETCH_TOLERANCE)
+            .map_err(|e| range_err("inputs.tolerance".into(), Num(t).to_string(), e.to_string()))?;
+    }
     profile_input("inputs.front", &i.front)?;
     if let Some(s) = &i.side {
         profile_input("inputs.side", s)?;

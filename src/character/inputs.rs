@@ -145,17 +145,18 @@ pub struct Inputs {
     pub side: Option<ProfileInput>,
     #[serde(default)]
     pub sections: Vec<KeySection>,
-    /// SVG flattening tolerance in model units.
-    #[serde(default = "default_tolerance")]
-    pub tolerance: f64,
+    /// SVG flattening tolerance in metres of the drawing as drawn (None:
+    /// 1/1000 of its height, `sketch::input::DEFAULT_FLATNESS`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// The model's height in metres: the drawing is scaled uniformly to it
+    /// (None: the drawing's physical size, `sketch::place`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub height: Option<f64>,
     /// Humanoid or quadruped segmentation (default: decided from the front
     /// outline's shape).
     #[serde(default, skip_serializing_if = "BodyPlan::is_auto")]
     pub body_plan: BodyPlan,
-}
-
-fn default_tolerance() -> f64 {
-    2e-3
 }
 
 /// A part removed from the main profile, to be modeled from its own

@@ -10,6 +10,7 @@ mod units;
 
 mod character;
 mod sketch;
+mod study;
 mod verify;
 
 mod conv;
@@ -40,6 +41,8 @@ pub struct Cli {
 pub enum Command {
     /// Run the verification checks of every equation family.
     Verify(verify::Args),
+    /// Run a study: an experiment over many inputs (every checked body, the template study's cases, the data-size table).
+    Study(study::Args),
     /// Render a mesh to a PNG preview.
     Render(render::Args),
     /// Convert a mesh between OBJ, GLB, glTF, STL and PLY (models and parts kept).
@@ -76,6 +79,7 @@ pub fn main() -> i32 {
     let json = cli.json;
     let result = match cli.command {
         Command::Verify(a) => verify::run(a, json),
+        Command::Study(a) => study::run(a, json),
         Command::Render(a) => render::run(a, json),
         Command::Convert(a) => convert::run(a, json),
         Command::Demo(a) => demo::run(a, json),

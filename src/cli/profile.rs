@@ -1,7 +1,8 @@
 //! `pdesculpt profile`: outlines of a view.
 //!
 //! * `profile extract MESH --view front|side|top -o OUT.svg [--resolution N]`
-//! * `profile check SKETCH.svg|SKETCH.json --view V [--tolerance T]`
+//! * `profile check SKETCH.svg|SKETCH.json --view V [--tolerance T]`: sizes
+//!   in metres (the drawing's physical size; JSON sketches are metres)
 //!
 //! With the global `--json` the report goes to stdout as JSON; without it a
 //! summary goes to stderr.
@@ -9,14 +10,19 @@
 use anyhow::{bail, Context};
 use pdesculpt::mesh::io;
 use pdesculpt::profile::{
-    outline_of_mesh, read_json, read_svg, write_svg, OutlineOptions, Profile, View, MAX_RESOLUTION,
+    outline_of_mesh, read_json, read_svg_with, write_svg, Flatness, OutlineOptions, Profile, View,
+    MAX_RESOLUTION,
 };
+use pdesculpt::sketch::input::DEFAULT_FLATNESS;
 use std::path::PathBuf;
 
 const CONVENTIONS: &str = "\
 CONVENTIONS (SVG files; the same for sketches read by other commands):
-  SVG user units are model units; the root viewBox is ignored, every other
-  transform (groups, transform attributes) is applied.
+  A drawing has its document's physical size, in metres: the root width and
+  height (mm, cm, in, pt, pc, px; a bare number is px = 1/96 in) over the
+  viewBox give the length of one user unit (no viewBox, or no width and
+  height: one user unit is one px); every transform on the way to a path
+  (groups, transform attributes, nested svg) is applied.
   front: SVG x = model x, SVG y = -model y (y up)
   side:  SVG x = model z, SVG y = -model y
   top:   SVG x = model x, SVG y = model z
@@ -55,6 +61,10 @@ pub struct ExtractArgs {
     /// Output SVG.
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Unit of the mesh's coordinates: m, dm, cm or mm (the SVG page is
+    /// sized so that it reads back at the mesh's physical size).
+    #[arg(long, default_value = "m")]
+    pub input_unit: pdesculpt::mesh::unit::Unit,
     /// Pixels along the larger extent of the projection (accuracy: the
     /// outline is within one pixel of the exact one), at most 8192.
     #[arg(long, default_value_t = OutlineOptions::default().resolution)]
@@ -68,9 +78,10 @@ pub struct CheckArgs {
     /// View the sketch is drawn in: front, side or top.
     #[arg(long)]
     pub view: String,
-    /// Curve flattening tolerance, model units.
-    #[arg(long, default_value_t = 1e-3)]
-    pub tolerance: f64,
+    /// Curve flattening tolerance in metres of the drawing's physical size
+    /// (default: 1/1000 of the drawing's height).
+    #[arg(long)]
+    pub tolerance: Option<f64>,
 }
 
 /// Runs a `profile` subcommand.
@@ -114,7 +125,7 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
     };
     let p = outline_of_mesh(&mesh, view, &opts)
         .with_context(|| format!("{}: {view} outline", a.mesh.display()))?;
-    write_svg(&a.output, &[&p])?;
+    write_svg(&a.output, &[&p], a.input_unit.metres())?;
     eprintln!(
         "wrote {}: {view} outline, {} points, width {:.6}, height {:.6}, area {:.6}",
         a.output.display(),
@@ -139,6 +150,7 @@ fn check(a: CheckArgs, json: bool) -> anyhow::Result<i32> {
         .extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+    let mut units = None;
     let (p, cuts) = if is_json {
         let p = read_json(&a.sketch)?;
         if p.view() != view {
@@ -150,22 +162,34 @@ fn check(a: CheckArgs, json: bool) -> anyhow::Result<i32> {
         }
         (p, Vec::new())
     } else {
-        let s = read_svg(&a.sketch, view, a.tolerance)
+        let flat = match a.tolerance {
+            Some(t) => Flatness::Metres(t),
+            None => Flatness::OfHeight(DEFAULT_FLATNESS),
+        };
+        let s = read_svg_with(&a.sketch, view, flat)
+            .and_then(|s| s.into_metres())
             .with_context(|| a.sketch.display().to_string())?;
+        units = Some(s.units);
         (s.outline, s.cuts)
     };
     eprintln!(
-        "{}: valid {view} profile, {} points, width {:.6}, height {:.6}, area {:.6}, {} cuts",
+        "{}: valid {view} profile, {} points, width {:.6} m, height {:.6} m, area {:.6} m^2, {} cuts{}",
         a.sketch.display(),
         p.len(),
         p.width(),
         p.height(),
         p.area(),
-        cuts.len()
+        cuts.len(),
+        units
+            .as_ref()
+            .map_or(String::new(), |u| format!("; document unit {} ({})", u.unit, u.rule))
     );
     if json {
         let mut v = summary(&p);
         v["cuts"] = serde_json::json!(cuts);
+        v["unit"] = serde_json::json!("m");
+        v["height_m"] = serde_json::json!(p.height());
+        v["document"] = serde_json::json!(units);
         super::print_json(&v)?;
     }
     Ok(0)

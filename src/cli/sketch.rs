@@ -7,10 +7,16 @@ use pdesculpt::mesh::io;
 use pdesculpt::pipeline::{build_document, Built};
 use std::path::{Path, PathBuf};
 
-const CONVENTIONS: &str = "Input conventions: SVG user units are model units; SVG y points down and \
-model y up (model y = -svg y); in a front view svg x is model x, in a side view svg x is model z \
-(the front of the body at +z). Each SVG holds one closed path for the outline (any path commands, \
-flattened with --tolerance, at most 1 % of the drawing's height); extra paths whose id starts with \
+const CONVENTIONS: &str = "Input conventions: the model is the drawing's physical size in metres: \
+the SVG root's width and height (mm, cm, in, pt, pc, px; a bare number is px = 1/96 in) over its \
+viewBox give one user unit's length (no viewBox, or no width and height: one px), every transform \
+on the way to a path is applied; --height 1.75m (175cm, 1750mm) scales the model uniformly to a \
+height instead. JSON profiles are metres. SVG y points down and model y up; in a front view svg x \
+is model x, in a side view svg x is model z (the front of the body at +z). Each view is placed by \
+its own outline, wherever it sits on the page: its lowest point at y = 0, the front's torso axis at \
+x = 0, the side's torso centred at z = 0; a side view whose height differs from the front's by at \
+most 5 % is scaled to it with a warning, more is an error. Each SVG holds one closed path for the \
+outline (any path commands, flattened with --tolerance, at most 1 % of the drawing's height); extra paths whose id starts with \
 `cut` are explicit part boundaries: drawn across an arm (below the armpit), a leg (below the crotch) \
 or the neck, a cut places that join at its mean height. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
 segmentation expects a standing humanoid seen from the front, arms away from the body and legs apart \
@@ -21,8 +27,7 @@ silhouette (model x-y, head toward +x or -x, legs apart: 2, or all 4 in a walkin
 the animal seen head-on (model z-y, left and right legs apart in z); parts body, head (neck and head), \
 tail, back (a domed back between tail and withers, when drawn), legs leg_fl/fr/bl/br (4: the outer \
 leg of each pair is the near one, at +z) or leg_f/leg_b (2); the tail and head must rise above the back. \
-The side outline must have the \
-front's height within 5 %. SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
+SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
 \"points\": [[x, z], ...]}]}: closed curves in the horizontal plane at height y, fitted by GECs at \
 the final level.";
 
@@ -56,9 +61,15 @@ pub struct BuildArgs {
     /// initial | intermediate | final (default: the most the inputs allow).
     #[arg(long)]
     pub level: Option<Level>,
-    /// SVG flattening tolerance in model units.
-    #[arg(long, default_value_t = 2e-3)]
-    pub tolerance: f64,
+    /// SVG flattening tolerance in metres of the model (default: 1/1000 of
+    /// the drawing's height).
+    #[arg(long)]
+    pub tolerance: Option<f64>,
+    /// The model's height (`1.75m`, `175cm`, `1750mm`; a bare number is
+    /// metres): the drawing is scaled uniformly to it. Default: the
+    /// drawing's physical size.
+    #[arg(long, value_parser = parse_height)]
+    pub height: Option<f64>,
     /// auto | humanoid | quadruped: how the front outline is segmented
     /// (auto: a quadruped when the outline is longer than tall).
     #[arg(long, default_value = "auto")]
@@ -72,6 +83,29 @@ pub struct BuildArgs {
     /// Also save the character document (with the derived parts).
     #[arg(long)]
     pub save_doc: Option<PathBuf>,
+}
+
+/// A length with a unit (`m`, `dm`, `cm`, `mm`; bare: metres), in metres.
+pub fn parse_height(s: &str) -> Result<f64, String> {
+    let t = s.trim();
+    let digits = t.trim_end_matches(|c: char| c.is_ascii_alphabetic());
+    let unit = &t[digits.len()..];
+    let x: f64 = digits
+        .trim()
+        .parse()
+        .map_err(|_| format!("{s:?} is not a length (e.g. 1.75m, 175cm, 1750mm)"))?;
+    let per = if unit.is_empty() {
+        1.0
+    } else {
+        unit.parse::<pdesculpt::mesh::unit::Unit>()
+            .map_err(|e| e.to_string())?
+            .metres()
+    };
+    let m = x * per;
+    if !(m.is_finite() && m > 0.0) {
+        return Err(format!("{s:?}: a height must be positive and finite"));
+    }
+    Ok(m)
 }
 
 fn abs(p: &Path) -> anyhow::Result<String> {
@@ -134,6 +168,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             .map(ProfileInput::Path),
         sections,
         tolerance: a.tolerance,
+        height: a.height,
         body_plan: a.body_plan,
     };
     let doc = CharacterDoc::from_inputs(inputs, level);
@@ -149,6 +184,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
 /// `character build`).
 pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
     let r = &built.report;
+    for w in &r.warnings {
+        eprintln!("warning: {w}");
+    }
     eprintln!(
         "wrote {} ({} vertices, {} triangles; watertight {}, manifold {}, oriented {}; max C1 jump {:.2e})",
         output.display(),
@@ -159,14 +197,23 @@ pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
         r.topology.oriented,
         r.max_c1
     );
-    for p in &r.profile_error {
+    eprintln!(
+        "model height {:.4} m (drawn {:.4} m, document unit {})",
+        r.height_m, r.drawing.drawn_height_m, r.drawing.document_unit
+    );
+    for p in &r.quality.whole.views {
         eprintln!(
-            "profile error ({}): max {:.3} %, rms {:.3} % of height",
+            "profile error ({}): max {:.3} %, rms {:.3} % of height; outside the drawing {:.3} %",
             p.view,
             100.0 * p.max_rel,
-            100.0 * p.rms_rel
+            100.0 * p.rms_rel,
+            100.0 * p.outside_rel
         );
     }
+    eprintln!(
+        "largest dihedral turn {:.1} degrees, creased length {:.3} heights",
+        r.quality.whole.dihedral_deg, r.quality.whole.creased_rel
+    );
     if json {
         super::print_json(r)?;
     }

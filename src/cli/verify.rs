@@ -1,17 +1,25 @@
-//! `pdesculpt verify [--family F] [--json]`: run the check registry.
+//! `pdesculpt verify [--family F]... [--timings] [--json]`: run the check
+//! registry.
 
+use pdesculpt::check::Check;
 use pdesculpt::verify as check;
 
 /// Arguments of `pdesculpt verify`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// Only this family: jet, mesh, surface, gec, pde4, plate, pde6, ode6,
-    /// conv, profile, sketch, template, edit, sasm, body, derivatives.
+    /// Only these families (repeatable): jet, mesh, surface, gec, pde4,
+    /// plate, pde6, ode6, conv, profile, sketch, template, edit, sasm, body,
+    /// derivatives. The studies that used to run here (every MakeHuman
+    /// morph's body, the template study's other cases, the data-size study)
+    /// are `pdesculpt study NAME`.
     #[arg(long)]
-    pub family: Option<String>,
+    pub family: Vec<String>,
     /// Print only failing checks in the table.
     #[arg(long)]
     pub failures: bool,
+    /// Print each family's wall time on stderr (families run in parallel).
+    #[arg(long)]
+    pub timings: bool,
     /// Write the equation index (markdown: paper, equation, implementing
     /// function, checks, ERRATA entries) generated from every family's
     /// checks to this file, e.g. docs/equations.md, instead of the table.
@@ -21,7 +29,7 @@ pub struct Args {
 
 /// Runs the checks; exit code 1 when any fails.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
-    if let Some(f) = &args.family {
+    for f in &args.family {
         if !check::families().iter().any(|x| x.name == f) {
             let names: Vec<&str> = check::families().iter().map(|x| x.name).collect();
             anyhow::bail!(
@@ -30,9 +38,15 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             );
         }
     }
+    let names: Vec<&str> = args.family.iter().map(String::as_str).collect();
     let progress = pdesculpt::progress::Progress::spinner("verify: running the checks", json);
-    let checks = check::run(args.family.as_deref());
+    let (checks, times) = check::run_timed(&names);
     progress.finish();
+    if args.timings {
+        for (name, s) in &times {
+            eprintln!("verify: {name:<12} {s:7.3} s");
+        }
+    }
     let failed = checks.iter().filter(|c| !c.passed).count();
     if let Some(path) = &args.index {
         let text = pdesculpt::equations::index_markdown(&checks, pdesculpt::equations::ERRATA);
@@ -54,22 +68,29 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             "failed": failed,
         }))?;
     } else {
-        println!(
-            "{:<8} {:<5} {:<16} {:<14} {:<48} {:>11} {:>9}  result",
-            "family", "paper", "equation", "kind", "name", "measured", "tol"
-        );
-        for c in checks.iter().filter(|c| !args.failures || !c.passed) {
-            let verdict = match (c.passed, c.paper_differs) {
-                (true, true) => "ok (differs, as ERRATA.md records)",
-                (true, false) => "ok",
-                (false, _) => "FAILED",
-            };
-            println!(
-                "{:<8} {:<5} {:<16} {:<14} {:<48} {:>11.3e} {:>9.1e}  {}",
-                c.family, c.paper, c.equation, c.kind, c.name, c.measured, c.tolerance, verdict
-            );
-        }
-        println!("{} checks, {} failed", checks.len(), failed);
+        print_table(&checks, args.failures);
     }
     Ok(if failed == 0 { 0 } else { 1 })
+}
+
+/// The table of checks on stdout (only the failing ones with `failures`)
+/// and the count line.
+pub fn print_table(checks: &[Check], failures: bool) {
+    let failed = checks.iter().filter(|c| !c.passed).count();
+    println!(
+        "{:<8} {:<5} {:<16} {:<14} {:<48} {:>11} {:>9}  result",
+        "family", "paper", "equation", "kind", "name", "measured", "tol"
+    );
+    for c in checks.iter().filter(|c| !failures || !c.passed) {
+        let verdict = match (c.passed, c.paper_differs) {
+            (true, true) => "ok (differs, as ERRATA.md records)",
+            (true, false) => "ok",
+            (false, _) => "FAILED",
+        };
+        println!(
+            "{:<8} {:<5} {:<16} {:<14} {:<48} {:>11.3e} {:>9.1e}  {}",
+            c.family, c.paper, c.equation, c.kind, c.name, c.measured, c.tolerance, verdict
+        );
+    }
+    println!("{} checks, {} failed", checks.len(), failed);
 }

@@ -156,9 +156,14 @@ pub fn svg_length_metres(s: &str) -> Result<f64, UnitError> {
         given: s.into(),
         reason,
     };
+    // the unit is the trailing run of letters or `%` (so `1e-3mm` is a
+    // number in exponent form followed by mm)
     let split = t
-        .find(|c: char| c.is_ascii_alphabetic() || c == '%')
-        .unwrap_or(t.len());
+        .char_indices()
+        .rev()
+        .take_while(|(_, c)| c.is_ascii_alphabetic() || *c == '%')
+        .last()
+        .map_or(t.len(), |(i, _)| i);
     let (num, unit) = t.split_at(split);
     let x: f64 = num.trim().parse().map_err(|_| bad("not a number"))?;
     if !x.is_finite() || x <= 0.0 {

@@ -14,7 +14,7 @@ use crate::character::spec::PartSpec;
 use crate::character::{ModelError, Resolution};
 use crate::mesh::Mesh;
 use crate::sketch::derive::derive;
-use crate::sketch::input::{read_profile, Outline, ViewKind};
+use crate::sketch::input::Outline;
 use crate::sketch::report::SketchReport;
 use crate::sketch::SketchError;
 use std::path::Path;
@@ -153,12 +153,16 @@ pub fn build(
     opts.check_cancel()?;
     doc.validate()?;
     let base = opts.base;
-    let tol = doc.inputs.tolerance;
-    let front = read_profile(&doc.inputs.front, base, ViewKind::Front, tol)?;
-    let side = match &doc.inputs.side {
-        Some(s) => Some(read_profile(s, base, ViewKind::Side, tol)?),
-        None => None,
-    };
+    let (front, side, tol) = crate::sketch::place::read_views(doc, base)?;
+    let placed = crate::sketch::place::place(
+        &front,
+        side.as_ref(),
+        doc.inputs.height,
+        doc.inputs.body_plan,
+    )?;
+    let warnings = placed.warnings.clone();
+    let placement = placed.report.placement;
+    let (front, side) = (placed.front, placed.side);
     let level = |needs| BuildError::Level {
         level: doc.level.name(),
         needs,
@@ -172,7 +176,7 @@ pub fn build(
     let removed = doc
         .removed_parts
         .iter()
-        .map(|r| crate::sketch::removed::removed_part(r, base, tol))
+        .map(|r| crate::sketch::removed::removed_part(r, base, tol, &placement))
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
     let (yr, _) = crate::sketch::poly::bounds(&front.points);
@@ -181,7 +185,7 @@ pub fn build(
         let d = derive(
             &front.points,
             side.as_ref().map(|s| s.points.as_slice()),
-            &doc.inputs.sections,
+            &crate::sketch::place::placed_sections(&doc.inputs.sections, &placement),
             &front.cuts,
             doc.level,
             doc.inputs.body_plan,
@@ -208,6 +212,8 @@ pub fn build(
         &removed,
         props,
         height,
+        placed.report,
+        warnings,
     );
     super::effect::finite_result(&model.mesh, &report)?;
     Ok(Built {

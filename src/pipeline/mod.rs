@@ -16,6 +16,7 @@
 //! (`sketch`, `edit`, `sasm`), which never name each other.
 
 mod build;
+pub mod corpus;
 pub mod effect;
 mod push;
 mod session;

@@ -19,10 +19,14 @@
 //! | side | model z | model y | model z | -model y |
 //! | top | model x | model z | model x | model z |
 //!
-//! SVG input: **SVG user units are model units**; the root `viewBox` (and
-//! `preserveAspectRatio`) are ignored, `width`/`height` only size the page;
-//! every other transform (groups, `transform` attributes, nested `<svg>`) is
-//! applied. In the front and side views model y = -(SVG y) (SVG y points
+//! SVG input: [`parse_svg`] returns the outline in the document's **user
+//! units** with every transform applied (groups, `transform` attributes,
+//! nested `<svg>`) except the root `viewBox`; [`SvgSketch::units`] says how
+//! many metres one user unit is, from the root's `width`/`height` and
+//! `viewBox` ([`units`]), and [`SvgSketch::into_metres`] scales the sketch
+//! to its physical size. Every command that reads a drawing (`sketch
+//! build`, `template fit`, `template tbsm create`, `profile check`, the
+//! TUI) reads it at its physical size in metres. In the front and side views model y = -(SVG y) (SVG y points
 //! down); in the top view SVG y is model z (looking down on the character
 //! from +y, +z, its front, toward the bottom of the page). Any path commands
 //! and the basic shapes (`rect`, `circle`, `ellipse`, `polygon`, `polyline`,
@@ -64,13 +68,18 @@ mod polygon;
 pub mod shapes;
 mod svg;
 mod svg_guard;
+pub mod units;
 
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
 pub use json::{parse_json, read_json, to_json};
 pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
 pub use polygon::{boundary_distance, contains_point, Profile};
-pub use svg::{parse_svg, read_svg, to_svg, write_svg, Cut, SvgSketch};
+pub use svg::{
+    parse_svg, parse_svg_with, read_svg, read_svg_with, to_svg, to_svg_physical, write_svg, Cut,
+    Flatness, SvgSketch,
+};
 pub use svg_guard::estimate_points;
+pub use units::{document_units, DocumentUnits};
 
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -165,6 +174,12 @@ pub enum ProfileError {
     SeveralOutlines { ids: Vec<String> },
     #[error("SVG: {message}")]
     Svg { message: String },
+    #[error("SVG root element's {attribute}=\"{value}\": {reason}")]
+    DocumentSize {
+        attribute: String,
+        value: String,
+        reason: String,
+    },
     #[error("unknown view {name:?} (expected front, side or top)")]
     UnknownView { name: String },
     #[error("expected a {expected} profile, got a {found} one")]
@@ -214,7 +229,7 @@ pub enum ProfileError {
         largest_estimate: f64,
         limit: u64,
     },
-    #[error("the drawing is {} model units across ({what}), outside the range {} to {} (SVG user units are model units, metres): scale the drawing", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
+    #[error("the drawing is {} user units across ({what}), outside the range {} to {} user units: scale the drawing on the page (the model's size is the drawing's physical size, or give --height)", crate::limits::Num(*.size), crate::limits::Num(*.min), crate::limits::Num(*.max))]
     DrawingSize {
         size: f64,
         what: String,

@@ -2,6 +2,7 @@
 //! conventions are in the module docs of [`crate::profile`].
 
 use super::svg_guard::{self, Planned};
+use super::units::DocumentUnits;
 use super::{Profile, ProfileError, View};
 use kurbo::{BezPath, PathEl, Point};
 use serde::{Deserialize, Serialize};
@@ -9,11 +10,26 @@ use std::fmt::Write as _;
 use std::path::Path;
 use usvg::roxmltree;
 
-/// A sketch read from SVG: the closed outline and the optional cuts.
+/// A sketch read from SVG: the closed outline and the optional cuts, in
+/// user units, and the document's physical size of one user unit.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SvgSketch {
     pub outline: Profile,
     pub cuts: Vec<Cut>,
+    /// Metres per user unit ([`super::units`]).
+    pub units: DocumentUnits,
+}
+
+/// How finely curves are flattened.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Flatness {
+    /// Within this many user units.
+    UserUnits(f64),
+    /// Within this many metres of the drawing's physical size.
+    Metres(f64),
+    /// Within this fraction of the height of the drawing's bounding box
+    /// (every shape, transforms applied).
+    OfHeight(f64),
 }
 
 /// An open polyline whose SVG id starts with `cut` (an explicit part
@@ -29,11 +45,21 @@ pub struct Cut {
 /// (a FIFO or device is refused without blocking), at most
 /// [`crate::limits::INPUT_BYTES`].
 pub fn read_svg(path: &Path, view: View, tolerance: f64) -> Result<SvgSketch, ProfileError> {
+    read_svg_with(path, view, Flatness::UserUnits(tolerance))
+}
+
+/// Reads an SVG sketch; see [`parse_svg_with`]. Only a regular file is
+/// read, at most [`crate::limits::INPUT_BYTES`].
+pub fn read_svg_with(
+    path: &Path,
+    view: View,
+    flatness: Flatness,
+) -> Result<SvgSketch, ProfileError> {
     let text = crate::mesh::io::read_input_text(path, "SVG drawing").map_err(|e| match e {
         crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
         e => ProfileError::Input(e),
     })?;
-    parse_svg(&text, view, tolerance)
+    parse_svg_with(&text, view, flatness)
 }
 
 /// A flattened subpath in model-oriented SVG user units (transforms
@@ -48,6 +74,18 @@ struct Subpath {
 /// any cuts (ids starting with `cut`); curves flattened to within
 /// `tolerance` model units. Errors: see the module docs.
 pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, ProfileError> {
+    parse_svg_with(text, view, Flatness::UserUnits(tolerance))
+}
+
+/// [`parse_svg`] with the flattening tolerance given as a [`Flatness`].
+pub fn parse_svg_with(
+    text: &str,
+    view: View,
+    flatness: Flatness,
+) -> Result<SvgSketch, ProfileError> {
+    let tolerance = match flatness {
+        Flatness::UserUnits(t) | Flatness::Metres(t) | Flatness::OfHeight(t) => t,
+    };
     if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(ProfileError::InvalidParameter {
             message: format!(
@@ -55,7 +93,7 @@ pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, Pr
             ),
         });
     }
-    let subpaths = flattened_subpaths(text, tolerance)?;
+    let (subpaths, units) = flattened_subpaths(text, flatness)?;
     let to_model = |p: [f64; 2]| {
         if view.svg_y_flipped() {
             [p[0], -p[1]]
@@ -85,7 +123,11 @@ pub fn parse_svg(text: &str, view: View, tolerance: f64) -> Result<SvgSketch, Pr
         1 => {
             let s = outlines.pop().unwrap_or_else(|| unreachable!());
             let outline = Profile::new(view, s.points.into_iter().map(to_model).collect())?;
-            Ok(SvgSketch { outline, cuts })
+            Ok(SvgSketch {
+                outline,
+                cuts,
+                units,
+            })
         }
         _ => Err(ProfileError::SeveralOutlines {
             ids: outlines.into_iter().map(|s| s.id).collect(),
@@ -103,17 +145,23 @@ const ELLIPSE_ID: &str = "pdesculpt-ellipse-";
 /// gives `id (subpath K)`.
 ///
 /// Two edits of the XML text (never of path data) before usvg sees it: the
-/// root `viewBox` is blanked (user units are model units, so the canvas
-/// maps user space by the identity), and `circle`/`ellipse` elements
-/// without an id get one, so that they are flattened from their exact
-/// conic rather than from usvg's cubic approximation.
-fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, ProfileError> {
+/// root `viewBox` is blanked (the points stay in user units, the canvas maps
+/// user space by the identity; the physical size of a user unit is read
+/// from the root element by [`super::units::document_units`]), and
+/// `circle`/`ellipse` elements without an id get one, so that they are
+/// flattened from their exact conic rather than from usvg's cubic
+/// approximation.
+fn flattened_subpaths(
+    text: &str,
+    flatness: Flatness,
+) -> Result<(Vec<Subpath>, DocumentUnits), ProfileError> {
     let svg_err = |e: &dyn std::fmt::Display| ProfileError::Svg {
         message: e.to_string(),
     };
     let doc = roxmltree::Document::parse_with_options(text, svg_guard::xml_options())
         .map_err(svg_guard::xml_error)?;
     svg_guard::check_numbers(&doc)?;
+    let units = super::units::document_units(doc.root_element())?;
     // (position, bytes removed, text inserted), in document order
     let mut edits: Vec<(usize, usize, String)> = Vec::new();
     if let Some(a) = doc
@@ -165,6 +213,24 @@ fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, Profil
     };
     let tree =
         usvg::Tree::from_xmltree(&doc, &svg_guard::usvg_options()).map_err(|e| svg_err(&e))?;
+    let tolerance = match flatness {
+        Flatness::UserUnits(t) => t,
+        Flatness::Metres(t) => t / units.max_scale(),
+        Flatness::OfHeight(r) => {
+            let h = tree.root().abs_bounding_box().height() as f64;
+            if !(h.is_finite() && h > 0.0) {
+                return Err(ProfileError::NoOutline);
+            }
+            r * h
+        }
+    };
+    if !(tolerance.is_finite() && tolerance > 0.0) {
+        return Err(ProfileError::InvalidParameter {
+            message: format!(
+                "the flattening tolerance in user units ({tolerance:e}) must be finite and positive"
+            ),
+        });
+    }
     let mut shapes = Vec::new();
     let mut shape = 0usize;
     collect(tree.root(), tolerance, &ellipses, &mut shape, &mut shapes);
@@ -186,7 +252,7 @@ fn flattened_subpaths(text: &str, tolerance: f64) -> Result<Vec<Subpath>, Profil
             out.push(Subpath { id, points, closed });
         }
     }
-    Ok(out)
+    Ok((out, units))
 }
 
 /// A shape read by usvg, transformed to model-oriented user units, not
@@ -363,8 +429,21 @@ fn flatten(b: &BezPath, tolerance: f64) -> Vec<(Vec<[f64; 2]>, bool)> {
 /// name, `-2`, `-3`... appended on repeats), stroke only, with a `viewBox`
 /// (and equal `width`/`height`) fitting every profile with a 5 % margin.
 /// Coordinates follow the module conventions, printed so that they read
-/// back exactly in f64 (usvg itself parses in f32).
+/// back exactly in f64 (usvg itself parses in f32). The page size is
+/// unitless, so a reader of physical sizes takes a user unit for a CSS
+/// pixel ([`super::units`]); [`to_svg_physical`] states the size.
 pub fn to_svg(profiles: &[&Profile]) -> String {
+    svg_document(profiles, None)
+}
+
+/// [`to_svg`] with the page's `width`/`height` in millimetres so that one
+/// user unit (one model unit) is `metres_per_unit` metres when read back by
+/// the physical-size rule ([`super::units`]).
+pub fn to_svg_physical(profiles: &[&Profile], metres_per_unit: f64) -> String {
+    svg_document(profiles, Some(metres_per_unit))
+}
+
+fn svg_document(profiles: &[&Profile], metres_per_unit: Option<f64>) -> String {
     let svg_pt = |v: View, p: [f64; 2]| if v.svg_y_flipped() { [p[0], -p[1]] } else { p };
     let mut lo = [f64::INFINITY; 2];
     let mut hi = [f64::NEG_INFINITY; 2];
@@ -387,9 +466,13 @@ pub fn to_svg(profiles: &[&Profile]) -> String {
     let (w, h) = (hi[0] - lo[0] + 2.0 * m, hi[1] - lo[1] + 2.0 * m);
     let mut s = String::new();
     let _ = writeln!(s, r#"<?xml version="1.0" encoding="UTF-8"?>"#);
+    let (pw, ph) = match metres_per_unit {
+        Some(m) => (format!("{}mm", 1e3 * m * w), format!("{}mm", 1e3 * m * h)),
+        None => (w.to_string(), h.to_string()),
+    };
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="{x0} {y0} {w} {h}">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{pw}" height="{ph}" viewBox="{x0} {y0} {w} {h}">"#
     );
     let mut used: Vec<View> = Vec::new();
     for pr in profiles {
@@ -416,11 +499,16 @@ pub fn to_svg(profiles: &[&Profile]) -> String {
     s
 }
 
-/// Writes [`to_svg`] atomically (temporary file, then rename). Refuses
+/// Writes [`to_svg_physical`] atomically (temporary file, then rename):
+/// one model unit is `metres_per_unit` metres on the page. Refuses
 /// profiles that the SVG readers would refuse (a coordinate beyond the
 /// drawing range [`crate::limits::DRAWING_SIZE`]), so that every SVG
 /// written reads back.
-pub fn write_svg(path: &Path, profiles: &[&Profile]) -> Result<(), ProfileError> {
+pub fn write_svg(
+    path: &Path,
+    profiles: &[&Profile],
+    metres_per_unit: f64,
+) -> Result<(), ProfileError> {
     let range = crate::limits::DRAWING_SIZE;
     for pr in profiles {
         let reach = pr
@@ -437,8 +525,37 @@ pub fn write_svg(path: &Path, profiles: &[&Profile]) -> Result<(), ProfileError>
             });
         }
     }
-    crate::mesh::io::write_atomic(path, to_svg(profiles).as_bytes()).map_err(|e| match e {
+    let text = to_svg_physical(profiles, metres_per_unit);
+    crate::mesh::io::write_atomic(path, text.as_bytes()).map_err(|e| match e {
         crate::mesh::MeshError::Io { path, source } => ProfileError::Io { path, source },
         e => ProfileError::Mesh(e),
     })
+}
+
+impl SvgSketch {
+    /// The sketch at its physical size: outline and cuts scaled from user
+    /// units to metres by [`DocumentUnits::metres_per_unit`] (a uniform
+    /// scale unless the document says `preserveAspectRatio="none"`).
+    pub fn into_metres(self) -> Result<SvgSketch, ProfileError> {
+        let [sx, sy] = self.units.metres_per_unit;
+        let (h, v) = (sx, sy);
+        let scale = |p: &[f64; 2]| [h * p[0], v * p[1]];
+        let outline = super::Profile::new(
+            self.outline.view(),
+            self.outline.points().iter().map(scale).collect(),
+        )?;
+        let cuts = self
+            .cuts
+            .into_iter()
+            .map(|c| super::Cut {
+                id: c.id,
+                points: c.points.iter().map(scale).collect(),
+            })
+            .collect();
+        Ok(SvgSketch {
+            outline,
+            cuts,
+            units: self.units,
+        })
+    }
 }

@@ -308,7 +308,7 @@ pub(super) fn check_plan(shapes: &[Planned], tolerance: f64) -> Result<(), Profi
             return Err(ProfileError::Shape {
                 id: s.id.clone(),
                 message: format!(
-                    "reaches a coordinate of {} model units after its transforms, beyond the drawing range of +-{} (SVG user units are model units, metres): scale the drawing down",
+                    "reaches a coordinate of {} user units after its transforms, beyond the drawing range of +-{} user units: scale the drawing down on the page (the model's size is the drawing's physical size, or give --height)",
                     crate::limits::Num(reach),
                     crate::limits::Num(DRAWING_SIZE.max)
                 ),

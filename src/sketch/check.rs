@@ -7,7 +7,7 @@ use crate::check::{tol, Check, Kind};
 use crate::check::{worst, Worst};
 use crate::mesh::Mesh;
 use crate::pipeline::build_document;
-use crate::profile::{parse_svg, View};
+use crate::profile::{parse_svg_with, View};
 
 /// Largest front-view profile error at the final level (relative to the
 /// height): the 1 % (bundled female 0.71 %, male 0.76 %, at the
@@ -52,15 +52,23 @@ pub fn bundled(name: &str, level: Level) -> Option<CharacterDoc> {
     struct File {
         sections: Vec<KeySection>,
     }
-    let front = parse_svg(f, View::Front, 2e-3).ok()?;
-    let side = parse_svg(s, View::Side, 2e-3).ok()?;
+    let flat = crate::profile::Flatness::OfHeight(super::input::DEFAULT_FLATNESS);
+    let front = parse_svg_with(f, View::Front, flat)
+        .ok()?
+        .into_metres()
+        .ok()?;
+    let side = parse_svg_with(s, View::Side, flat)
+        .ok()?
+        .into_metres()
+        .ok()?;
     let sections = serde_json::from_str::<File>(k).ok()?.sections;
     Some(CharacterDoc::from_inputs(
         Inputs {
             front: ProfileInput::Points(front.outline.points().to_vec()),
             side: Some(ProfileInput::Points(side.outline.points().to_vec())),
             sections,
-            tolerance: 2e-3,
+            tolerance: None,
+            height: None,
             body_plan: Default::default(),
         },
         level,

@@ -12,8 +12,8 @@ use crate::character::doc::{
     TransitionSpec,
 };
 
-/// Sections per part: `3 P + 1` (the C2 PDE chain's rule), P = 4.
-pub const SECTIONS_PER_PART: usize = 13;
+pub use super::section_place::SECTIONS_PER_PART;
+use super::section_place::{place, Sample};
 /// Tilt of an arm's top section (degrees from horizontal, see `tilt_top`).
 pub const SHOULDER_TILT_DEG: f64 = 60.0;
 /// Sections of an arm's top that are tilted (by linearly less).
@@ -42,17 +42,11 @@ pub struct Derived {
     pub transitions: Vec<TransitionSpec>,
 }
 
-struct Sample {
-    y: f64,
-    c: f64,
-    w: f64,
-}
-
 fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
     let n = PROFILE_SAMPLES;
     // stay a hair inside the tip so the slice exists
     let eps = 1e-4 * (r.y1 - r.y0);
-    (0..=n)
+    let s = (0..=n)
         .filter_map(|k| {
             let t = k as f64 / n as f64;
             let y = if r.downward {
@@ -66,66 +60,35 @@ fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
                 w: 0.5 * (iv[1] - iv[0]),
             })
         })
-        .collect()
+        .collect::<Vec<_>>();
+    connected_run(s)
 }
 
-/// Indices of `m` samples: half arc length, half profile variation. The
-/// variation is that of the front profile (squared half-width and centre)
-/// plus, when `depth` is given (half depth and centre z from the side
-/// profile at each sample's height), that of the side profile the same way:
-/// key sections are placed where either profile's curvature changes (paper
-/// 000 sec 4.1.2, "key sections are re-placed from the curvature of both").
-fn place(s: &[Sample], depth: Option<&[(f64, f64)]>, m: usize) -> Vec<usize> {
-    let n = s.len();
-    let mut len = vec![0.0; n];
-    let mut inc = vec![0.0; n];
-    let wmax = s.iter().map(|q| q.w).fold(f64::MIN_POSITIVE, f64::max);
-    for i in 1..n {
-        len[i] = len[i - 1] + (s[i].y - s[i - 1].y).hypot(s[i].c - s[i - 1].c);
-        if i + 1 < n {
-            // second differences of the squared half-width (smooth at a
-            // round tip, where the half-width itself is not) and the centre
-            let w2 = |k: usize| s[k].w * s[k].w / wmax;
-            let d2w = w2(i + 1) - 2.0 * w2(i) + w2(i - 1);
-            let d2c = s[i + 1].c - 2.0 * s[i].c + s[i - 1].c;
-            inc[i] = d2w.abs() + d2c.abs();
-            if let Some(d) = depth {
-                let dmax = d.iter().map(|q| q.1).fold(f64::MIN_POSITIVE, f64::max);
-                let b2 = |k: usize| d[k].1 * d[k].1 / dmax;
-                let d2b = b2(i + 1) - 2.0 * b2(i) + b2(i - 1);
-                let d2z = d[i + 1].0 - 2.0 * d[i].0 + d[i - 1].0;
-                inc[i] += d2b.abs() + d2z.abs();
-            }
-        }
+/// The run of samples around the region's middle whose slice intervals
+/// overlap their neighbours' ones: one connected tube. Near a join a slice
+/// can miss the part's own interval and catch a sliver of a neighbour
+/// beside it (a T-pose arm's top beside the neck); such a sample jumps
+/// sideways by more than the two half widths, and a section there (nearly
+/// on top of the next one, in another frame) made the PDE chain overshoot
+/// by metres. No tolerance: two slices of one tube, `PROFILE_SAMPLES`
+/// apart, always overlap.
+fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
+    if s.len() < 3 {
+        return s;
     }
-    // no single slice may attract more than a few sections
-    let mean = inc.iter().sum::<f64>() / n as f64;
-    let mut var = vec![0.0; n];
-    for i in 1..n {
-        var[i] = var[i - 1] + inc[i].min(4.0 * mean);
+    let overlaps = |a: &Sample, b: &Sample| (a.c - b.c).abs() <= a.w + b.w;
+    let m = s.len() / 2;
+    let mut lo = m;
+    while lo > 0 && overlaps(&s[lo - 1], &s[lo]) {
+        lo -= 1;
     }
-    let (lt, vt) = (len[n - 1], var[n - 1].max(f64::MIN_POSITIVE));
-    let f: Vec<f64> = (0..n)
-        .map(|i| 0.5 * len[i] / lt + 0.5 * var[i] / vt)
-        .collect();
-    let mut idx: Vec<usize> = (0..m)
-        .map(|j| {
-            let target = j as f64 / (m - 1) as f64;
-            f.iter().position(|&v| v >= target - 1e-12).unwrap_or(n - 1)
-        })
-        .collect();
-    idx[0] = 0;
-    idx[m - 1] = n - 1;
-    // strictly increasing, keeping the ends
-    for j in 1..m {
-        idx[j] = idx[j].max(idx[j - 1] + 1).min(n - m + j);
+    let mut hi = m;
+    while hi + 1 < s.len() && overlaps(&s[hi], &s[hi + 1]) {
+        hi += 1;
     }
-    for j in (0..m - 1).rev() {
-        if idx[j] >= idx[j + 1] {
-            idx[j] = idx[j + 1] - 1;
-        }
-    }
-    idx
+    s.truncate(hi + 1);
+    s.drain(..lo);
+    s
 }
 
 /// Side-profile depth at height y: `(centre z, half depth)` of the slice
@@ -167,7 +130,7 @@ pub(super) fn part_from_region(
     let s = samples(front, r);
     if s.len() < SECTIONS_PER_PART + 2 {
         return Err(SketchError::Segmentation(format!(
-            "{}: only {} slices",
+            "{}: only {} slices: draw it larger (longer or wider)",
             r.name,
             s.len()
         )));
@@ -419,6 +382,69 @@ pub fn derive(
     Ok(d)
 }
 
+/// The two arms traced from the armpits ([`super::limb`]): their parts
+/// and their shoulder points (left, right). An arm starts a join band
+/// ([`super::segment::GAP_FRACTION`] of the height) out from its cut, or
+/// where a user's cut path crosses it.
+fn traced_arms(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &Landmarks,
+    joins: &super::cuts::JoinHeights,
+) -> Result<(Vec<PartSpec>, [[f64; 2]; 2]), SketchError> {
+    let g = super::segment::GAP_FRACTION * lm.height();
+    let neck = super::segment::neck_interval(front, lm)
+        .ok_or_else(|| SketchError::Segmentation(
+            "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
+        ))?;
+    // hidden in the side view: the arms hang at the torso's centre depth
+    // at the armpits' height
+    let ya = lm.armpit_l[1].min(lm.armpit_r[1]);
+    let z = side
+        .and_then(|sd| {
+            let s = slice(sd, ya);
+            Some(0.5 * (s.first()?[0] + s.last()?[1]))
+        })
+        .unwrap_or(0.0);
+    let mut parts = Vec::new();
+    let mut shoulders = [[0.0; 2]; 2];
+    for (k, (name, armpit, sign, neck_x)) in [
+        ("arm_l", lm.armpit_l, -1.0, neck[0]),
+        ("arm_r", lm.armpit_r, 1.0, neck[1]),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let t = super::limb::trace_arm(front, armpit, sign, neck_x, name)?;
+        let cut_mid = [
+            0.5 * (t.armpit[0] + t.shoulder[0]),
+            0.5 * (t.armpit[1] + t.shoulder[1]),
+        ];
+        let start = match joins.limb(name) {
+            // the arc length along the traced axis to where its centre
+            // passes the cut's height
+            Some(yc) => {
+                let mut s = 0.0;
+                let mut prev = cut_mid;
+                let mut found = None;
+                for c in &t.centre {
+                    s += (c[0] - prev[0]).hypot(c[1] - prev[1]);
+                    prev = *c;
+                    if c[1] <= yc {
+                        found = Some(s);
+                        break;
+                    }
+                }
+                found.unwrap_or(g)
+            }
+            None => g,
+        };
+        parts.push(super::limb::part_from_trace(front, name, &t, start, z)?);
+        shoulders[k] = t.shoulder;
+    }
+    Ok((parts, shoulders))
+}
+
 fn derive_upright(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
@@ -438,6 +464,11 @@ fn derive_upright(
         .iter()
         .map(|r| part_from_region(front, side, r))
         .collect::<Result<Vec<_>, _>>()?;
+    let (arms, shoulders) = traced_arms(front, side, &lm, &joins)?;
+    // parts in the order torso, head, arm_l, arm_r, leg_l, leg_r
+    for (k, arm) in arms.into_iter().enumerate() {
+        parts.insert(2 + k, arm);
+    }
     if level == Level::Final {
         for k in sections {
             super::keysection::apply_key_section(&mut parts, k)?;
@@ -454,11 +485,7 @@ fn derive_upright(
     let top_c = torso.sections.last().map(|s| s.centre).unwrap_or([0.0; 3]);
     // shoulder apex: the top of the outline halfway between the neck's side
     // and the shoulder's outer side (at the armpits' height)
-    let neck_iv = interval(
-        front,
-        super::segment::Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
-        lm.neck_base,
-    );
+    let neck_iv = super::segment::neck_interval(front, &lm);
     let outer = slice(front, ya + g);
     let apex = |sign: f64| -> [f64; 3] {
         let neck_x = match neck_iv {
@@ -471,16 +498,13 @@ fn derive_upright(
             }
             None => top_c[0] + sign * 0.5 * r_top,
         };
-        let out_x = match (outer.first(), outer.last()) {
-            (Some(a), Some(b)) => {
-                if sign < 0.0 {
-                    a[0]
-                } else {
-                    b[1]
-                }
-            }
-            _ => top_c[0] + sign * r_top,
+        // the arm's shoulder point (the upper end of its cut)
+        let out_x = if sign < 0.0 {
+            shoulders[0][0]
+        } else {
+            shoulders[1][0]
         };
+        let _ = &outer;
         let x = 0.5 * (neck_x + out_x);
         let y = shoulder_top(front, x)
             .filter(|y| *y < lm.neck_base + g)

@@ -1,5 +1,11 @@
 //! Reading profiles and cuts: SVG files (one closed outline path, optional
 //! `cut*` paths), JSON polylines or inline points.
+//!
+//! Every profile is read at its physical size, in metres: an SVG by its
+//! document's size ([`crate::profile::units`]: `width`/`height` over the
+//! `viewBox`, transforms applied), a JSON polyline or inline points as
+//! metres. Scaling to `--height` and placing each view by its own outline
+//! follow in [`super::place`].
 
 use super::poly::segments_intersect;
 use super::SketchError;
@@ -8,6 +14,11 @@ use std::path::Path;
 
 /// Largest SVG flattening tolerance relative to the drawing's height.
 pub const MAX_RELATIVE_TOLERANCE: f64 = 0.01;
+/// Flattening tolerance when none is given, relative to the height of the
+/// drawing's bounding box: a tenth of [`MAX_RELATIVE_TOLERANCE`]'s 1 %, so
+/// that flattening stays well below the 1.5 % profile bound of a build
+/// whatever the drawing's size or unit.
+pub const DEFAULT_FLATNESS: f64 = 1e-3;
 
 /// Which view a profile is drawn in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,11 +29,14 @@ pub enum ViewKind {
     Side,
 }
 
-/// A profile: validated counter-clockwise outline and its cuts.
+/// A profile: validated counter-clockwise outline and its cuts, in metres.
 #[derive(Clone, Debug)]
 pub struct Outline {
     pub points: Vec<[f64; 2]>,
     pub cuts: Vec<(String, Vec<[f64; 2]>)>,
+    /// The SVG document's size of a user unit (None for JSON or inline
+    /// points, which are metres).
+    pub units: Option<crate::profile::DocumentUnits>,
 }
 
 fn json_points(path: &Path, text: &str) -> Result<Vec<[f64; 2]>, SketchError> {
@@ -41,22 +55,27 @@ fn json_points(path: &Path, text: &str) -> Result<Vec<[f64; 2]>, SketchError> {
     })
 }
 
-/// Reads one profile.
+/// Reads one profile at its physical size (metres). `tol`: the flattening
+/// tolerance in metres of the drawing as drawn; None: [`DEFAULT_FLATNESS`]
+/// of its height.
 pub fn read_profile(
     input: &ProfileInput,
     base: &Path,
     view: ViewKind,
-    tol: f64,
+    tol: Option<f64>,
 ) -> Result<Outline, SketchError> {
     let what = match view {
         ViewKind::Front => "front profile",
         ViewKind::Side => "side profile",
     };
-    crate::limits::check_real(
-        "tolerance (--tolerance, inputs.tolerance)",
-        tol,
-        crate::limits::SKETCH_TOLERANCE,
-    )?;
+    if let Some(tol) = tol {
+        crate::limits::check_real(
+            "tolerance (--tolerance, inputs.tolerance)",
+            tol,
+            crate::limits::SKETCH_TOLERANCE,
+        )?;
+    }
+    let mut units = None;
     let (raw, cuts) = match input {
         ProfileInput::Points(p) => (p.clone(), Vec::new()),
         ProfileInput::Path(p) => {
@@ -71,7 +90,9 @@ pub fn read_profile(
                 .unwrap_or("")
                 .to_ascii_lowercase();
             if ext == "svg" {
-                read_svg(&path, view, tol)?
+                let (raw, cuts, u) = read_svg(&path, view, tol)?;
+                units = Some(u);
+                (raw, cuts)
             } else {
                 let text =
                     crate::mesh::io::read_input_text(&path, "JSON profile").map_err(|e| {
@@ -97,6 +118,7 @@ pub fn read_profile(
     let points = profile.points().to_vec();
     check_drawing_size(what, &points)?;
     let height = profile.height();
+    let tol = tol.unwrap_or(DEFAULT_FLATNESS * height);
     if tol > MAX_RELATIVE_TOLERANCE * height {
         return Err(SketchError::Outline {
             what: what.into(),
@@ -109,7 +131,11 @@ pub fn read_profile(
     for (id, c) in &cuts {
         validate_cut(id, c, &points)?;
     }
-    Ok(Outline { points, cuts })
+    Ok(Outline {
+        points,
+        cuts,
+        units,
+    })
 }
 
 /// A profile's size (largest side of its bounding box) and coordinates
@@ -170,12 +196,30 @@ pub fn validate_cut(id: &str, cut: &[[f64; 2]], outline: &[[f64; 2]]) -> Result<
 fn read_svg(
     path: &Path,
     view: ViewKind,
-    tol: f64,
-) -> Result<(Vec<[f64; 2]>, Vec<(String, Vec<[f64; 2]>)>), SketchError> {
-    let sk = crate::profile::read_svg(path, view.profile_view(), tol).map_err(|e| {
+    tol: Option<f64>,
+) -> Result<
+    (
+        Vec<[f64; 2]>,
+        Vec<(String, Vec<[f64; 2]>)>,
+        crate::profile::DocumentUnits,
+    ),
+    SketchError,
+> {
+    let flat = match tol {
+        Some(t) => crate::profile::Flatness::Metres(t),
+        None => crate::profile::Flatness::OfHeight(DEFAULT_FLATNESS),
+    };
+    let read = crate::profile::read_svg_with(path, view.profile_view(), flat)
+        .and_then(|s| s.into_metres());
+    let sk = read.map_err(|e| {
         // the I/O variant already names the path: keep only its cause
         let message = match e {
             crate::profile::ProfileError::Io { source, .. } => source.to_string(),
+            crate::profile::ProfileError::NoOutline => format!(
+                "{e}; if it has one, the drawing may be too small to read: the SVG reader keeps \
+                 about 7 significant digits of each coordinate, so a shape smaller than a millionth \
+                 of its position on the page collapses (draw it larger, or give --height)"
+            ),
             other => without_path(path, other.to_string()),
         };
         SketchError::File {
@@ -186,6 +230,7 @@ fn read_svg(
     Ok((
         sk.outline.points().to_vec(),
         sk.cuts.into_iter().map(|c| (c.id, c.points)).collect(),
+        sk.units,
     ))
 }
 

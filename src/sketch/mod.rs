@@ -47,14 +47,22 @@
 
 pub mod align;
 pub mod check;
+pub mod corpus;
 pub mod cuts;
 pub mod derive;
+pub mod figure;
+pub mod figure_animal;
+pub mod figure_params;
 pub mod input;
 pub mod keysection;
+pub mod limb;
+pub mod place;
 pub mod poly;
 pub mod quadruped;
+pub mod quality;
 pub mod removed;
 pub mod report;
+pub mod section_place;
 pub mod segment;
 
 pub use report::SketchReport;

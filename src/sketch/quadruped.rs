@@ -127,14 +127,14 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     by_x(&mut top);
     if legs.len() != 1 && legs.len() != 3 {
         return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); the lateral view must show 2 or 4 legs apart",
+            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
             legs.len(),
             legs.len() + 1
         )));
     }
     if top.is_empty() || top.len() > 2 {
         return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them)",
+            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them): draw the neck and the tail rising above the back line (a tail hanging down or level with the back is not recognised yet)",
             top.len()
         )));
     }
@@ -227,7 +227,7 @@ pub fn regions(
             + g;
         if interval(front, pick, y0).is_none() {
             return Err(SketchError::Segmentation(format!(
-                "quadruped: no outline above the corner at y = {:.4}",
+                "quadruped: no outline above the corner at y = {:.4}: draw the neck and the tail rising above the back, each meeting it at a corner (a tail hanging down or level with the back is not recognised yet)",
                 y0 - g
             )));
         }
@@ -280,7 +280,7 @@ pub fn regions(
             - LEG_BAND * g;
         if interval(front, pick, y1).is_none() {
             return Err(SketchError::Segmentation(format!(
-                "{name}: no outline below its join"
+                "{name}: no outline below its join: draw each leg reaching down from the body to the ground"
             )));
         }
         let y0 = reach(front, pick, y1, lm.y_min - g);
@@ -307,7 +307,7 @@ pub fn regions(
     for r in &out {
         if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
             return Err(SketchError::Segmentation(format!(
-                "{}: too short ({:.4} between {:.4} and {:.4})",
+                "{}: too short ({:.4} between y = {:.4} and {:.4}): draw it longer",
                 r.name,
                 r.y1 - r.y0,
                 r.y0,

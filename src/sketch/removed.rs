@@ -21,6 +21,7 @@
 use super::align::{axes, Alignment, ROTATION_EPS_DEG};
 use super::derive::part_from_region;
 use super::input::{read_profile, Outline, ViewKind};
+use super::place::Placement;
 use super::segment::{Pick, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{PartSpec, RemovedPart, SectionShape};
@@ -35,17 +36,25 @@ pub struct BuiltRemoved {
 }
 
 /// Builds one removed part from its profiles (relative paths against
-/// `base`).
-pub fn removed_part(rp: &RemovedPart, base: &Path, tol: f64) -> Result<BuiltRemoved, SketchError> {
+/// `base`), drawn on the body's pages: `placement` takes them to the
+/// model's frame as it takes the body's views ([`super::place`]).
+pub fn removed_part(
+    rp: &RemovedPart,
+    base: &Path,
+    tol: Option<f64>,
+    placement: &Placement,
+) -> Result<BuiltRemoved, SketchError> {
     let bad = |m: String| SketchError::Part {
         part: rp.name.clone(),
         message: m,
     };
     let front =
         read_profile(&rp.front, base, ViewKind::Front, tol).map_err(|e| bad(e.to_string()))?;
+    let front = Placement::apply(&front, |p| placement.front(p));
     let side = match &rp.side {
         Some(s) => {
-            Some(read_profile(s, base, ViewKind::Side, tol).map_err(|e| bad(e.to_string()))?)
+            let o = read_profile(s, base, ViewKind::Side, tol).map_err(|e| bad(e.to_string()))?;
+            Some(Placement::apply(&o, |p| placement.side(p)))
         }
         None => None,
     };

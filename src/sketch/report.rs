@@ -61,7 +61,20 @@ pub struct ProfileErrorReport {
 #[derive(Clone, Debug, Serialize)]
 pub struct SketchReport {
     pub level: Level,
+    /// The model's unit (always `"m"`).
+    pub unit: &'static str,
+    /// The model's height in metres (the front outline's, after scaling).
+    pub height_m: f64,
     pub height: f64,
+    /// The drawing's size and placement ([`super::place`]).
+    pub drawing: super::place::DrawingReport,
+    /// Everything the build warns about (also printed on stderr by the
+    /// CLI): a side view scaled to the front's height, a measure over its
+    /// bound ([`super::quality`]).
+    pub warnings: Vec<String>,
+    /// Profile error, outside distance, dihedral and creased length per
+    /// part and for the whole model ([`super::quality`]).
+    pub quality: super::quality::Quality,
     pub parts: Vec<PartReport>,
     pub transitions: Vec<TransitionReport>,
     pub topology: TopologyReport,
@@ -112,6 +125,8 @@ pub fn report(
     removed: &[BuiltRemoved],
     props: Vec<PropReport>,
     height: f64,
+    drawing: super::place::DrawingReport,
+    mut warnings: Vec<String>,
 ) -> SketchReport {
     let out = doc;
     let topo = topology(&model.mesh);
@@ -183,9 +198,31 @@ pub fn report(
     let body = without_groups(&model.mesh, &names);
     let profile_error = profile_errors(&body, front, side, height);
     let removed_reports = removed_errors(&model.mesh, removed, height);
+    let part_names: Vec<String> = edited
+        .iter()
+        .map(|p| p.name.clone())
+        .filter(|n| !names.contains(&n.as_str()))
+        .chain(out.transitions.iter().map(|t| t.name.clone()))
+        .collect();
+    let quality = super::quality::measure(
+        &body,
+        &front.points,
+        side.map(|s| s.points.as_slice()),
+        height,
+        &part_names,
+    );
+    warnings.extend(super::quality::warnings(
+        &quality,
+        &super::quality::Bounds::ISSUE,
+    ));
     SketchReport {
         level: out.level,
+        unit: "m",
+        height_m: height,
         height,
+        drawing,
+        warnings,
+        quality,
         parts,
         transitions,
         topology: topo,

@@ -50,37 +50,146 @@ impl Landmarks {
     }
 }
 
-/// Finds the armpits, crotch and neck.
+/// Where the torso's `side` end (-1 left, +1 right) first moves outward
+/// faster than [`ARMPIT_SLOPE`] times the rise, going up from the crotch
+/// along the slice interval that holds the torso: an arm leaving the torso
+/// (the merge of a hanging arm's interval at its gap top, or a T-pose arm's
+/// underside, which closes no gap). Returns the torso's end just below
+/// that height. A second merge with an interval outside the torso further
+/// up (below `top`) means the arm touched the body there and leaves it
+/// again: an error naming the heights.
+fn armpit(front: &[[f64; 2]], crotch: GapTop, top: f64, side: f64) -> Result<GapTop, SketchError> {
+    let n = LANDMARK_SLICES;
+    let y0 = crotch.y + 2.0 * GAP_FRACTION * (top - crotch.y);
+    let dy = (top - y0) / n as f64;
+    let which = if side < 0.0 { "left" } else { "right" };
+    let mut mid = crotch.x;
+    let mut prev: Option<(f64, f64, bool)> = None;
+    let mut found: Option<GapTop> = None;
+    let mut left_again: Option<f64> = None;
+    for k in 0..n {
+        let y = y0 + k as f64 * dy;
+        let s = slice(front, y);
+        let Some(iv) = s.iter().find(|iv| iv[0] <= mid && mid <= iv[1]).copied() else {
+            break;
+        };
+        let end = if side > 0.0 { iv[1] } else { iv[0] };
+        // another interval outside the torso on this side (an arm apart)
+        let apart = s.iter().any(|o| side * (0.5 * (o[0] + o[1]) - end) > 0.0);
+        if let Some((py, pe, was_apart)) = prev {
+            let jump = side * (end - pe) > ARMPIT_SLOPE * (y - py);
+            match (found, left_again) {
+                (None, _) if jump => found = Some(GapTop { x: pe, y: py }),
+                (Some(_), None) if side * (end - pe) < -ARMPIT_SLOPE * (y - py) => {
+                    left_again = Some(y)
+                }
+                (Some(f), Some(y2)) if jump && was_apart => {
+                    return Err(SketchError::Segmentation(format!(
+                        "the {which} arm touches the body between y = {:.4} and {:.4}: leave a gap between the arm and the body",
+                        f.y, y2
+                    )));
+                }
+                _ => {}
+            }
+        }
+        mid = 0.5 * (iv[0] + iv[1]);
+        prev = Some((y, end, apart));
+    }
+    found.ok_or_else(|| {
+        SketchError::Segmentation(format!(
+            "no {which} armpit found: the torso's {which} side never meets an arm going up from the crotch; draw the {which} arm reaching out from the shoulder"
+        ))
+    })
+}
+
+/// A torso side moving outward faster than this many times the rise is an
+/// arm leaving it (a slope of 72 degrees from the vertical: steeper than
+/// any hip or belly, shallower than a T-pose arm's underside; a geometric
+/// choice, not fitted to drawings).
+pub const ARMPIT_SLOPE: f64 = 3.0;
+/// The crotch's gap must run down to this fraction of its height above the
+/// lowest point (the legs reach the ground; a drawing a few degrees off
+/// upright lifts one foot, so not to the lowest point itself). A gap
+/// between a hanging arm and the torso ends at the hand, at least a third
+/// of its height above the ground for any arm shorter than the legs.
+pub const GROUND_FRACTION: f64 = 0.15;
+
+/// Whether the gap below `t` runs down to the ground ([`GROUND_FRACTION`])
+/// between two intervals (the legs) at every height: the crotch's gap
+/// does, a gap between a hanging arm and the torso opens to the outside
+/// below the hand.
+fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> bool {
+    let n = LANDMARK_SLICES / 4;
+    let ground = y_min + GROUND_FRACTION * (t.y - y_min);
+    let mut x = t.x;
+    for k in 1..=n {
+        let y = t.y - (t.y - ground) * k as f64 / n as f64;
+        let s = slice(front, y);
+        let left = s
+            .iter()
+            .filter(|iv| iv[1] <= x)
+            .map(|iv| iv[1])
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.max(v))));
+        let right = s
+            .iter()
+            .filter(|iv| iv[0] >= x)
+            .map(|iv| iv[0])
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.min(v))));
+        match (left, right) {
+            (Some(a), Some(b)) => x = 0.5 * (a + b),
+            _ => return false,
+        }
+    }
+    true
+}
+
+/// Finds the crotch, armpits and neck. The crotch is the highest gap top
+/// whose gap runs down to the ground between the legs
+/// ([`reaches_ground`]); each armpit is where the torso's side, followed
+/// up from the crotch, meets its arm ([`armpit`]): for arms hanging apart
+/// the gap top between arm and torso, for a T-pose the arm's underside.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let (yr, _) = super::poly::bounds(front);
     let h = yr[1] - yr[0];
     let mut tops: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
     tops.sort_by(|a, b| b.y.total_cmp(&a.y));
-    if tops.len() < 3 {
-        return Err(SketchError::Segmentation(format!(
-            "found {} gap tops, a standing humanoid needs 3 (two armpits and the crotch): arms away from the body, legs apart",
-            tops.len()
-        )));
-    }
-    let (mut a0, mut a1) = (tops[0], tops[1]);
-    if a0.x > a1.x {
-        std::mem::swap(&mut a0, &mut a1);
-    }
-    let crotch = tops[2..]
+    let crotch = tops
         .iter()
-        .find(|t| t.x > a0.x && t.x < a1.x && t.y < a0.y.min(a1.y) - 2.0 * GAP_FRACTION * h)
+        .find(|t| reaches_ground(front, t, yr[0]))
         .copied()
         .ok_or_else(|| {
-            SketchError::Segmentation("no crotch (gap top between the armpits) found".into())
+            SketchError::Segmentation(
+                "no crotch found (no gap between the legs running down to the ground): draw the legs apart, \
+                 or add a cut path across each leg"
+                    .into(),
+            )
         })?;
+    // a hanging arm's gap closes at a gap top: the armpit is that point
+    // (where the gap's two sides meet), not the torso's side below it
+    let at_gap = |a: GapTop| -> GapTop {
+        tops.iter()
+            .filter(|t| (t.x - a.x).hypot(t.y - a.y) <= 2.0 * GAP_FRACTION * h)
+            .min_by(|p, q| {
+                (p.x - a.x)
+                    .hypot(p.y - a.y)
+                    .total_cmp(&(q.x - a.x).hypot(q.y - a.y))
+            })
+            .copied()
+            .unwrap_or(a)
+    };
+    let a0 = at_gap(armpit(front, crotch, yr[1], -1.0)?);
+    let a1 = at_gap(armpit(front, crotch, yr[1], 1.0)?);
     // neck: narrowest single interval between armpits and top
     let ya = a0.y.max(a1.y);
     let d = yr[1] - ya;
+    // the width of the interval on the torso's axis (a T-pose's arms are
+    // in it up to the shoulders; an arm's top beside the neck is not)
+    let axis = 0.5 * (a0.x + a1.x);
     let width = |y: f64| -> Option<f64> {
         slice(front, y)
             .iter()
+            .find(|iv| iv[0] <= axis && axis <= iv[1])
             .map(|iv| iv[1] - iv[0])
-            .fold(None, |m: Option<f64>, w| Some(m.map_or(w, |v| v.max(w))))
     };
     let n = 200;
     let mut neck = (f64::INFINITY, ya);
@@ -94,7 +203,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     }
     if !neck.0.is_finite() {
         return Err(SketchError::Segmentation(
-            "no neck found above the armpits".into(),
+            "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
         ));
     }
     let mut base = neck.1;
@@ -114,6 +223,16 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
         neck_base: base,
         neck: neck.1,
     })
+}
+
+/// The neck's slice interval at the neck base: the one on the torso's axis
+/// (midway between the armpits; an arm's top beside the neck at that
+/// height is not the neck).
+pub fn neck_interval(front: &[[f64; 2]], lm: &Landmarks) -> Option<[f64; 2]> {
+    let axis = 0.5 * (lm.armpit_l[0] + lm.armpit_r[0]);
+    slice(front, lm.neck_base)
+        .into_iter()
+        .find(|iv| iv[0] <= axis && axis <= iv[1])
 }
 
 /// Which slice interval belongs to a part at height y.
@@ -197,7 +316,12 @@ pub fn regions(
             name: "head".into(),
             y0: lm.neck_base,
             y1: lm.y_max,
-            pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
+            // slices centred over the neck (within a neck's width of it):
+            // not an arm's top beside it
+            pick: match neck_interval(front, lm) {
+                Some([a, b]) => Pick::CentreIn(a - (b - a), b + (b - a)),
+                None => Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
+            },
             downward: false,
             tip: true,
             shoulder: None,
@@ -205,9 +329,9 @@ pub fn regions(
             side: SidePick::Whole,
         },
     ];
+    let _ = big;
+    // the arms are traced along their own axis (`super::limb`)
     for (name, lo, hi, top, shoulder) in [
-        ("arm_l", -big, lm.armpit_l[0], lm.armpit_l[1], Some(-1.0)),
-        ("arm_r", lm.armpit_r[0], big, lm.armpit_r[1], Some(1.0)),
         ("leg_l", lm.armpit_l[0], lm.crotch[0], lm.crotch[1], None),
         ("leg_r", lm.crotch[0], lm.armpit_r[0], lm.crotch[1], None),
     ] {
@@ -215,7 +339,7 @@ pub fn regions(
         let y1 = cuts.limb(name).unwrap_or(top - g);
         if interval(front, pick, y1).is_none() {
             return Err(SketchError::Segmentation(format!(
-                "{name}: no outline below its join"
+                "{name}: no outline below its join: draw each leg reaching down to the ground"
             )));
         }
         // lowest height where the region still has an interval
@@ -258,11 +382,13 @@ pub fn regions(
     for r in &out {
         if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
             return Err(SketchError::Segmentation(format!(
-                "{}: too short ({:.4} between {:.4} and {:.4})",
+                "{}: too short to build ({:.4} between y = {:.4} and {:.4}, less than two join bands of {:.4}): \
+                 draw it longer (a torso: the armpits higher above the crotch)",
                 r.name,
                 r.y1 - r.y0,
                 r.y0,
-                r.y1
+                r.y1,
+                2.0 * g
             )));
         }
     }

@@ -56,10 +56,12 @@ pub fn belly_miss(template: &Template, positions: &[[f64; 3]], target: &Mesh) ->
 }
 
 /// The check: on the study's pregnant case (the check options of
-/// [`super::check`]: condition numbers off, misses reported) the high
-/// level's belly slices lie within [`BELLY_REL`] of the target's.
-pub fn belly_checks(out: &mut Vec<crate::check::Check>) {
-    let measured = pregnant_high_miss().unwrap_or(f64::INFINITY);
+/// `template::check`: condition numbers off, misses reported) the high
+/// level's belly slices lie within [`BELLY_REL`] of the target's. `high`:
+/// that fit's high-level positions (`None` when the case did not run;
+/// the caller shares the fit with the case's other checks).
+pub fn belly_checks(out: &mut Vec<crate::check::Check>, high: Option<&[[f64; 3]]>) {
+    let measured = high.and_then(pregnant_high_miss).unwrap_or(f64::INFINITY);
     let mut c = crate::check::Check::new(
         "template",
         "000",
@@ -73,19 +75,13 @@ pub fn belly_checks(out: &mut Vec<crate::check::Check>) {
     out.push(c);
 }
 
-/// [`belly_miss`] of the study's pregnant case at the high level; `None`
-/// when the case does not run.
-fn pregnant_high_miss() -> Option<f64> {
+/// [`belly_miss`] of the high-level positions `high` of the study's
+/// pregnant case; `None` when the case's template or target does not load.
+fn pregnant_high_miss(high: &[[f64; 3]]) -> Option<f64> {
     let case = super::study::CASES
         .iter()
         .find(|c| c.name == "female->pregnant")?;
-    let opts = super::fit::FitOptions {
-        condition: false,
-        on_miss: super::OnMiss::Report,
-        ..Default::default()
-    };
     let template = super::study::makehuman_template(case.template).ok()?;
     let target = super::study::target_mesh(case).ok()?;
-    let (_, meshes) = super::study::run_case(case, &opts).ok()?;
-    Some(belly_miss(&template, meshes.get(3)?, &target))
+    Some(belly_miss(&template, high, &target))
 }

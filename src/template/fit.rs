@@ -104,6 +104,8 @@ pub fn fit(
     outline: &OutlineFn,
 ) -> Result<FitResult, TemplateError> {
     let t0 = Instant::now();
+    let memo = super::memo::OutlineMemo::new(outline); // passes re-ask unchanged skins
+    let outline: &OutlineFn = &|m: &Mesh, v: View| memo.outline(m, v);
     if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
         return Err(TemplateError::BadProfile {
             what: "the fit options".into(),
@@ -125,10 +127,8 @@ pub fn fit(
         });
     }
     let front = validated("the sketched front profile", &sketch.front)?;
-    let side = match &sketch.side {
-        Some(s) => Some(validated("the sketched side profile", s)?),
-        None => None,
-    };
+    let side_of = |s: &Vec<[f64; 2]>| validated("the sketched side profile", s);
+    let side = sketch.side.as_ref().map(side_of).transpose()?;
     if !sketch.sections.is_empty() && side.is_none() {
         return Err(TemplateError::BadProfile {
             what: "the sketch".into(),

@@ -33,6 +33,18 @@ pub fn profile_errors(
     positions: &[[f64; 3]],
     sketch: &Sketch,
 ) -> Result<Vec<ViewError>, TemplateError> {
+    profile_errors_with(template, positions, sketch, &mesh_outline)
+}
+
+/// [`profile_errors`] with the outlines from `outline` (a
+/// [`super::memo::OutlineMemo`] of [`mesh_outline`] that the fit used: the
+/// last level's outlines are then not extracted again).
+pub fn profile_errors_with(
+    template: &Template,
+    positions: &[[f64; 3]],
+    sketch: &Sketch,
+    outline: &super::OutlineFn,
+) -> Result<Vec<ViewError>, TemplateError> {
     let skin = template.skin_at(positions);
     let mut out = Vec::new();
     let mut views = vec![(View::Front, &sketch.front)];
@@ -44,7 +56,7 @@ pub fn profile_errors(
             what: format!("the {} profile", view.name()),
             problem: e.to_string(),
         };
-        let fitted = Profile::new(view, mesh_outline(&skin, view)?).map_err(bad)?;
+        let fitted = Profile::new(view, outline(&skin, view)?).map_err(bad)?;
         let sketched = Profile::new(view, pts.clone()).map_err(bad)?;
         out.push(ViewError {
             view,

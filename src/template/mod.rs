@@ -39,6 +39,7 @@ pub mod envelope;
 pub mod fit;
 pub mod landmarks;
 pub mod measure;
+pub mod memo;
 pub mod options;
 pub mod outlines;
 pub mod polygon;

@@ -6,7 +6,7 @@
 //! bounding box.
 
 use super::fit::{fit, FitOptions, Level, Sketch, Template};
-use super::measure::{bbox_baseline, mesh_outline, profile_errors, vertex_errors, ViewError};
+use super::measure::{bbox_baseline, mesh_outline, profile_errors_with, vertex_errors, ViewError};
 use super::sections::SectionSketch;
 use super::{TemplateError, View};
 use crate::makehuman;
@@ -304,17 +304,20 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
     let bb = bbox_baseline(&template, &sketch);
     let regions = crease_regions(&template);
     let creases = |pos: &[[f64; 3]]| creases_of(&template, &regions, pos);
+    let memo = super::memo::OutlineMemo::new(&mesh_outline);
+    let outline = |m: &Mesh, v: View| memo.outline(m, v);
+    let profile_errors = |pos: &[[f64; 3]]| profile_errors_with(&template, pos, &sketch, &outline);
     let (rms, mx) = vertex_errors(&skin_of(&bb), &target.positions, h);
     let mut rows = vec![Row {
         case: case.name.into(),
         method: "bbox".into(),
         rms_rel: rms,
         max_rel: mx,
-        profiles: profile_errors(&template, &bb, &sketch)?,
+        profiles: profile_errors(&bb)?,
         creases: creases(&bb),
         seconds: 0.0,
     }];
-    let r = fit(&template, &sketch, opts, &mesh_outline)?;
+    let r = fit(&template, &sketch, opts, &outline)?;
     let mut meshes = vec![template.mesh.positions.clone()];
     for (rep, pos) in &r.levels {
         let (rms, mx) = vertex_errors(&skin_of(pos), &target.positions, h);
@@ -328,7 +331,7 @@ pub fn run_case(case: &Case, opts: &FitOptions) -> Result<CaseResult, TemplateEr
             .into(),
             rms_rel: rms,
             max_rel: mx,
-            profiles: profile_errors(&template, pos, &sketch)?,
+            profiles: profile_errors(pos)?,
             creases: creases(pos),
             seconds: rep.seconds,
         });

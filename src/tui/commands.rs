@@ -193,7 +193,8 @@ pub fn add_part(
         front: ProfileInput::Path(stored_path(&path, base)),
         side: None,
     };
-    let built = crate::sketch::removed::removed_part(&rp, base, doc.inputs.tolerance)
+    let placement = crate::sketch::place::placement(doc, base).map_err(|e| e.to_string())?;
+    let built = crate::sketch::removed::removed_part(&rp, base, doc.inputs.tolerance, &placement)
         .map_err(|e| e.to_string())?;
     let mut out = doc.clone();
     out.removed_parts.push(rp);

@@ -180,7 +180,12 @@ fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
             "sections {}",
             if secs.is_empty() { "none".into() } else { secs }
         )),
-        Line::from(format!("template none · tol {}", d.inputs.tolerance)),
+        Line::from(format!(
+            "template none · tol {}",
+            d.inputs
+                .tolerance
+                .map_or("1/1000 of the height".to_string(), |t| format!("{t} m"))
+        )),
     ];
     f.render_widget(
         Paragraph::new(lines)

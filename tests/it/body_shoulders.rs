@@ -8,8 +8,8 @@ use pdesculpt::body::intersect::self_intersections;
 /// shoulders' cut angles (empty: the fixed cuts).
 fn shoulders(morph: Option<&str>) -> (usize, Vec<f64>) {
     let morphs: Vec<String> = morph.map(|m| vec![format!("{m}=1")]).unwrap_or_default();
-    let skin = load_body(None, &morphs).unwrap();
-    let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
+    let morphs: Vec<&str> = morphs.iter().map(String::as_str).collect();
+    let b = crate::shared::closed_body(&morphs);
     let n = self_intersections(&b.model.mesh)
         .by_groups
         .iter()
@@ -46,8 +46,9 @@ const NO_SHOULDER_CROSSINGS: &[Option<&str>] = &[
 
 #[test]
 fn the_male_bodies_and_the_base_have_no_shoulder_crossings() {
-    for m in NO_SHOULDER_CROSSINGS {
-        let (n, cuts) = shoulders(*m);
+    // the bodies reconstructed side by side (crate::shared::parallel_map)
+    let found = crate::shared::parallel_map(NO_SHOULDER_CROSSINGS, |m| shoulders(*m));
+    for (m, (n, cuts)) in NO_SHOULDER_CROSSINGS.iter().zip(found) {
         assert_eq!(n, 0, "{}", m.unwrap_or("base"));
         // no crossing with the fixed cuts: body::closed::shoulder_cuts keeps them
         assert!(cuts.is_empty(), "{}: {cuts:?}", m.unwrap_or("base"));
@@ -62,11 +63,12 @@ fn the_male_bodies_and_the_base_have_no_shoulder_crossings() {
 #[test]
 fn the_female_armpits_have_no_shoulder_crossings_with_measured_cuts() {
     use pdesculpt::body::closed::{shifted_shoulder_cuts, shoulder_cut_angles};
-    for m in [
+    let females = [
         "universal-female-young-averagemuscle-maxweight",
         "caucasian-female-young",
-    ] {
-        let (n, cuts) = shoulders(Some(m));
+    ];
+    let found = crate::shared::parallel_map(&females, |m| shoulders(Some(m)));
+    for (m, (n, cuts)) in females.into_iter().zip(found) {
         assert_eq!(n, 0, "{m}");
         assert_eq!(cuts.len(), 4, "{m}: {cuts:?}");
         assert_ne!(

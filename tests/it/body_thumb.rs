@@ -10,8 +10,7 @@ use pdesculpt::body::hand::winding_number;
 
 #[test]
 fn the_base_body_has_a_thumb_on_each_hand_and_an_open_web() {
-    let skin = load_body(None, &[]).unwrap();
-    let b = reconstruct_closed(&skin, &ClosedOptions::default()).unwrap();
+    let b = crate::shared::closed_body(&[]);
     let r = &b.report;
     for side in ["l", "r"] {
         for part in [format!("thumb_{side}"), format!("hand_{side}")] {

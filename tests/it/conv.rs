@@ -16,7 +16,7 @@ const FIT_BLOWUP: f64 = 0.5;
 
 #[test]
 fn checks_pass() {
-    for c in pdesculpt::conv::check::checks() {
+    for c in crate::shared::family_checks("conv") {
         assert!(
             c.passed,
             "{} measured {} tol {}: {}",

@@ -260,9 +260,9 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
 
 #[test]
 fn edit_checks_pass() {
-    let checks = pdesculpt::edit::check::checks();
+    let checks = crate::shared::family_checks("edit");
     assert!(checks.len() >= 10);
-    for c in &checks {
+    for c in checks {
         assert!(
             c.passed,
             "{} measured {} > {}",

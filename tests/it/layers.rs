@@ -33,6 +33,7 @@ const UPPER: &[&str] = &[
     "render",
     "makehuman",
     "verify",
+    "study",
     "cli",
     "progress",
 ];
@@ -173,6 +174,7 @@ fn families_name_no_modeling_module_nor_each_other() {
         "render",
         "tui",
         "verify",
+        "study",
         "cli",
     ];
     let mut bad = Vec::new();

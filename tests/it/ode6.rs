@@ -22,7 +22,7 @@ const PARAM_MISMATCH_SEEN: f64 = 1e-4;
 /// Every ode6 check passes.
 #[test]
 fn ode6_checks_pass() {
-    let checks = pdesculpt::ode6::check::checks();
+    let checks = crate::shared::family_checks("ode6");
     assert!(checks.len() > 60);
     let failed: Vec<_> = checks
         .iter()

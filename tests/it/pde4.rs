@@ -2,7 +2,7 @@
 
 use pdesculpt::check::tol;
 use pdesculpt::pde4::check::{
-    checks, plate_centre, rel, two_sided_boundary, two_sided_residual, PLATE_SQUARE_UNIFORM_PRECISE,
+    plate_centre, rel, two_sided_boundary, two_sided_residual, PLATE_SQUARE_UNIFORM_PRECISE,
 };
 use pdesculpt::pde4::four_sided::{self, FourSided};
 use pdesculpt::pde4::samples::{sample_boundary, sample_forces};
@@ -19,9 +19,9 @@ const SECOND_ORDER_RATIO_SLACK: f64 = 0.1;
 
 #[test]
 fn pde4_checks_pass() {
-    let cs = checks();
+    let cs = crate::shared::family_checks("pde4");
     assert!(cs.len() >= 20);
-    for c in &cs {
+    for c in cs {
         assert!(
             c.passed,
             "{} measured {:e} tol {:e}: {}",

@@ -27,7 +27,7 @@ const ROUGHNESS_RATIO_MAX: f64 = 0.5;
 
 #[test]
 fn all_pde6_checks_pass() {
-    for c in pdesculpt::pde6::check::checks() {
+    for c in crate::shared::family_checks("pde6") {
         assert!(
             c.passed,
             "{} measured {:e} tol {:e}: {}",

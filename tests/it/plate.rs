@@ -4,7 +4,7 @@ use pdesculpt::check::tol;
 use pdesculpt::mesh::io;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::plate::baselines::{DeltaMushParams, LaplacianParams};
-use pdesculpt::plate::check::{checks, ellipse_centre, observed_order, rectangle_centre};
+use pdesculpt::plate::check::{ellipse_centre, observed_order, rectangle_centre};
 use pdesculpt::plate::shapes::{compare, region_in_polygon, sheet, Shape};
 use pdesculpt::plate::{
     BoundaryMethod, Direction, MappingMethod, Material, PlateDeformer, PlateError, RegionOptions,
@@ -41,9 +41,9 @@ fn ellipse_poly(a: f64, b: f64, rot: f64) -> Vec<[f64; 2]> {
 
 #[test]
 fn plate_checks_pass() {
-    let c = checks();
+    let c = crate::shared::family_checks("plate");
     assert!(c.len() >= 15);
-    for k in &c {
+    for k in c {
         assert!(
             k.passed,
             "{} failed: {} > {}",

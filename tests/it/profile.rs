@@ -3,8 +3,8 @@
 use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 use pdesculpt::check::tol;
 use pdesculpt::profile::check::{
-    checks, cross, hull_outline, outline_error_px, CHECK_RESOLUTION, CORNER_PX, SMOOTH_PX,
-    SVG_ROUNDING, USVG_ARC_REL,
+    cross, hull_outline, outline_error_px, CHECK_RESOLUTION, CORNER_PX, SMOOTH_PX, SVG_ROUNDING,
+    USVG_ARC_REL,
 };
 use pdesculpt::profile::shapes::{box_mesh, sphere, torus};
 use pdesculpt::profile::{
@@ -24,9 +24,9 @@ fn data(name: &str) -> String {
 
 #[test]
 fn the_family_checks_pass() {
-    let cs = checks();
+    let cs = crate::shared::family_checks("profile");
     assert!(cs.len() >= 8);
-    for c in &cs {
+    for c in cs {
         assert!(
             c.passed,
             "{}: measured {} > {} ({})",

@@ -4,10 +4,11 @@ use pdesculpt::check::Check;
 use std::sync::OnceLock;
 
 /// Every family's checks, run once per test process and shared by the tests
-/// that read the whole registry (a run takes most of a minute).
+/// that read the whole registry (each family's from `crate::shared`, so a
+/// family test and the registry tests compute it once between them).
 pub fn all_checks() -> &'static [Check] {
     static CHECKS: OnceLock<Vec<Check>> = OnceLock::new();
-    CHECKS.get_or_init(|| pdesculpt::verify::run(None))
+    CHECKS.get_or_init(crate::shared::all_checks)
 }
 
 #[test]
@@ -91,6 +92,7 @@ fn lower_layers_name_no_family() {
         "curve",
         "character",
         "verify",
+        "study",
         "makehuman",
     ];
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");

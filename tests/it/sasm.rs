@@ -250,8 +250,8 @@ proptest! {
 
 #[test]
 fn sasm_family_passes_on_the_bundled_female() {
-    let checks = pdesculpt::sasm::check::checks();
-    for c in &checks {
+    let checks = crate::shared::family_checks("sasm");
+    for c in checks {
         println!(
             "{} {} {:.3e} <= {:.1e} {}",
             c.name, c.passed, c.measured, c.tolerance, c.note

@@ -20,9 +20,9 @@ const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch");
 
 #[test]
 fn sketch_checks_pass() {
-    let checks = pdesculpt::sketch::check::checks();
+    let checks = crate::shared::family_checks("sketch");
     assert!(checks.len() >= 10);
-    for c in &checks {
+    for c in checks {
         assert!(
             c.passed,
             "{} measured {} > {}",
@@ -123,7 +123,7 @@ fn max_position_difference(a: &Mesh, b: &Mesh) -> f64 {
 }
 
 fn svg(body: &str) -> String {
-    format!("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"-1 -2 2 2\">{body}</svg>")
+    format!("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200cm\" height=\"200cm\" viewBox=\"-1 -2 2 2\">{body}</svg>")
 }
 
 fn front_path() -> String {

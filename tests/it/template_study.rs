@@ -171,7 +171,7 @@ fn bands(case: &pdesculpt::template::study::Case, meshes: &[Vec<[f64; 3]>]) {
 /// bounding-box baseline on each, TBSM round trip).
 #[test]
 fn template_checks_pass() {
-    for c in pdesculpt::template::check::checks() {
+    for c in crate::shared::family_checks("template") {
         eprintln!("{} {} (tol {})", c.name, c.measured, c.tolerance);
         assert!(
             c.passed,
@@ -179,6 +179,57 @@ fn template_checks_pass() {
             c.name, c.measured, c.tolerance, c.note
         );
     }
+}
+
+/// Every check of one MakeHuman study case that `verify` no longer runs
+/// (issue 30 moved them to `pdesculpt study template`): the same checks
+/// `template_checks_pass` ran for every case before, one test per case so
+/// that the cases fit in parallel and each test stays short.
+fn study_case_passes(name: &str) {
+    let mut checks = Vec::new();
+    pdesculpt::template::check::study_case_checks(&mut checks, name);
+    assert!(!checks.is_empty(), "{name}: no checks");
+    for c in &checks {
+        assert!(
+            c.passed,
+            "{} measured {} tol {}: {}",
+            c.name, c.measured, c.tolerance, c.note
+        );
+    }
+}
+
+macro_rules! study_cases {
+    ($($test:ident: $case:literal,)*) => {
+        $(
+            #[test]
+            fn $test() {
+                study_case_passes($case);
+            }
+        )*
+        /// The cases the tests above run.
+        const TESTED_CASES: &[&str] = &[$($case),*];
+    };
+}
+
+study_cases! {
+    study_case_male_fat: "male->fat",
+    study_case_male_boy: "male->boy",
+    study_case_male_old: "male->old",
+    study_case_female_fat: "female->fat",
+    study_case_female_girl: "female->girl",
+    study_case_female_old: "female->old",
+}
+
+/// The tests above and `verify`'s case cover exactly the study's cases: a
+/// case added to `template::study::CASES` needs its test.
+#[test]
+fn every_study_case_has_a_test() {
+    let mut tested: Vec<&str> = TESTED_CASES.to_vec();
+    tested.push(pdesculpt::template::check::VERIFY_CASE);
+    tested.sort_unstable();
+    let mut cases: Vec<&str> = CASES.iter().map(|c| c.name).collect();
+    cases.sort_unstable();
+    assert_eq!(tested, cases);
 }
 
 /// Diagnostic (`STUDY_WHERE=1`): per level, where the side profile's

@@ -31,7 +31,7 @@ pub(crate) fn tail_svg(dir: &Path) -> PathBuf {
         })
         .collect();
     let svg = format!(
-        r#"<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 -1 1 1"><path id="outline" d="{} Z"/></svg>"#,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="100cm" height="100cm" viewBox="0 -1 1 1"><path id="outline" d="{} Z"/></svg>"#,
         d.join(" ")
     );
     let p = dir.join("tail.svg");

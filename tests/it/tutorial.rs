@@ -368,7 +368,8 @@ fn ch07_ex1_a_figure_of_your_own_builds_watertight() {
         front: ProfileInput::Points(drawn_figure()),
         side: None,
         sections: Vec::new(),
-        tolerance: 2e-3,
+        tolerance: None,
+        height: None,
         body_plan: BodyPlan::Humanoid,
     };
     let doc = CharacterDoc::from_inputs(inputs, Level::Initial);

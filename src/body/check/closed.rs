@@ -1,10 +1,11 @@
-//! Checks of the closed body (issue 15): the base MakeHuman body and the
-//! morphs of [`CHECKED_MORPHS`] reconstruct as one watertight, manifold,
-//! oriented mesh, C1 at every join, within the error targets.
+//! Checks of the closed body (issue 15): the base MakeHuman body (in
+//! `verify`) and the morphs of [`CHECKED_MORPHS`](crate::body::closed::CHECKED_MORPHS) (`pdesculpt study
+//! bodies`) reconstruct as one watertight, manifold, oriented mesh, C1 at
+//! every join, within the error targets.
 
 use crate::body::closed::{
-    load_body, reconstruct_closed, ClosedOptions, CHECKED_MORPHS, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX,
-    MAX_MAX_REL, RMS_MAX_REL, THUMB_SKIN_MAX_REL,
+    load_body, reconstruct_closed, ClosedOptions, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX, MAX_MAX_REL,
+    RMS_MAX_REL, THUMB_SKIN_MAX_REL,
 };
 use crate::body::intersect::known_crossings;
 use crate::check::worst;
@@ -14,13 +15,21 @@ const FAMILY: &str = "body";
 const PAPER: &str = "002";
 const WHERE: &str = "sec 4, Figs 5-6 (closed body)";
 
-/// `pde6.body_closed_*` for the base body and each checked morph.
+/// `pde6.body_closed_*` for the base body (family `body` of `verify`).
 pub fn body_closed_checks(out: &mut Vec<Check>) {
-    let mut bodies: Vec<(String, Vec<String>)> = vec![("base".into(), vec![])];
-    for m in CHECKED_MORPHS {
-        let name = m.split('=').next().unwrap_or(m).to_string();
-        bodies.push((name, vec![m.to_string()]));
-    }
+    closed_checks(out, vec![("base".into(), vec![])]);
+}
+
+/// `pde6.body_closed_*` for the checked morph `m` of [`CHECKED_MORPHS`](crate::body::closed::CHECKED_MORPHS)
+/// (`NAME=WEIGHT`; the checks are named after `NAME`): the multi-body table
+/// of `pdesculpt study bodies` ([`crate::study`]), where each body runs on
+/// its own thread.
+pub fn morph_closed_checks(out: &mut Vec<Check>, m: &str) {
+    let name = m.split('=').next().unwrap_or(m).to_string();
+    closed_checks(out, vec![(name, vec![m.to_string()])]);
+}
+
+fn closed_checks(out: &mut Vec<Check>, bodies: Vec<(String, Vec<String>)>) {
     for (name, morphs) in bodies {
         let known = known_crossings(&name);
         let run = load_body(None, &morphs)

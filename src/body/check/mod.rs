@@ -7,9 +7,11 @@ use crate::check::Check;
 mod closed;
 mod parts;
 
+pub use closed::morph_closed_checks;
 pub use parts::{ROUGHNESS_RATIO_MAX, SLIP_MAX_DEG};
 
-/// All checks of the body reconstruction.
+/// The checks of family `body` in `verify`: the base body (the checked
+/// morphs are `pdesculpt study bodies`, [`morph_closed_checks`]).
 pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
     parts::body_smoothness_checks(&mut out);

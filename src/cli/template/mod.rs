@@ -9,7 +9,7 @@
 
 use anyhow::Context;
 use pdesculpt::mesh::io;
-use pdesculpt::profile::{read_json, read_svg, View};
+use pdesculpt::profile::{read_json, read_svg_with, Flatness, View};
 use pdesculpt::template::measure::{mesh_outline, profile_errors, ViewError};
 use pdesculpt::template::sections::SectionSketch;
 use pdesculpt::template::study::makehuman_template;
@@ -63,32 +63,59 @@ pub struct FitArgs {
     pub output: PathBuf,
     #[command(flatten)]
     pub layout: super::units::LayoutArgs,
-    /// Write the mesh even when a fitted profile stays farther than 0.5 % of
-    /// the height from the sketch (default: fail with an error, no output);
-    /// the miss is reported (stderr, and `within: false` in --json).
+    /// Refuse (an error, no output) when a fitted profile stays farther
+    /// than 0.5 % of the height from the sketch. Default: write the best
+    /// fit, warn with the measured miss on stderr (and `within: false` in
+    /// --json) and exit 0.
     #[arg(long)]
+    pub strict: bool,
+    /// The default since `--strict` exists (kept so scripts keep working).
+    #[arg(long, hide = true)]
     pub accept_miss: bool,
+    /// The character's height (`1.75m`, `175cm`, `1750mm`): the drawings
+    /// are scaled uniformly to it. Default: the drawings' physical size.
+    #[arg(long, value_parser = crate::cli::sketch::parse_height)]
+    pub height: Option<f64>,
 }
 
 #[derive(serde::Serialize)]
 struct Report {
     output: String,
+    /// The written mesh's unit (always metres).
+    unit: &'static str,
+    /// The model's height in metres (the placed front drawing's).
+    height_m: f64,
+    /// The drawings' size and placement (as `sketch build` reports it).
+    drawing: pdesculpt::sketch::place::DrawingReport,
+    /// Placement warnings (side height scaled).
+    warnings: Vec<String>,
     vertices: usize,
     levels: Vec<LevelReport>,
     profile_errors: Vec<ViewError>,
     seconds: f64,
 }
 
-fn profile(path: &Path, view: View) -> anyhow::Result<Vec<[f64; 2]>> {
-    let p = if path
+/// A drawing at its physical size in metres (SVG: the document's size;
+/// JSON: metres), as `sketch build` reads it.
+fn profile(path: &Path, view: View) -> anyhow::Result<pdesculpt::sketch::input::Outline> {
+    if path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("json"))
     {
-        read_json(path)?
-    } else {
-        read_svg(path, view, 1e-3)?.outline
-    };
-    Ok(p.points().to_vec())
+        let p = read_json(path)?;
+        return Ok(pdesculpt::sketch::input::Outline {
+            points: p.points().to_vec(),
+            cuts: Vec::new(),
+            units: None,
+        });
+    }
+    let flat = Flatness::OfHeight(pdesculpt::sketch::input::DEFAULT_FLATNESS);
+    let s = read_svg_with(path, view, flat)?.into_metres()?;
+    Ok(pdesculpt::sketch::input::Outline {
+        points: s.outline.points().to_vec(),
+        cuts: Vec::new(),
+        units: Some(s.units),
+    })
 }
 
 /// Runs a `template` subcommand.
@@ -119,13 +146,31 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         let m = io::read(Path::new(&a.template))?;
         Template::whole(m)
     };
+    let front = profile(&a.front, View::Front).context("front profile")?;
+    let side = match &a.side {
+        Some(s) => Some(profile(s, View::Side).context("side profile")?),
+        None => None,
+    };
+    // the same size and placement as `sketch build` (the template's unit:
+    // MakeHuman is decimetres, a mesh file metres)
+    let placed =
+        pdesculpt::sketch::place::place(&front, side.as_ref(), a.height, Default::default())?;
+    for w in &placed.warnings {
+        eprintln!("warning: {w}");
+    }
+    let k = if a.template == "makehuman" {
+        1.0 / pdesculpt::mesh::unit::MAKEHUMAN.metres()
+    } else {
+        1.0
+    };
+    let to_template = |o: &pdesculpt::sketch::input::Outline| -> Vec<[f64; 2]> {
+        o.points.iter().map(|p| [k * p[0], k * p[1]]).collect()
+    };
     let mut sketch = Sketch {
-        front: profile(&a.front, View::Front).context("front profile")?,
+        front: to_template(&placed.front),
         ..Default::default()
     };
-    if let Some(s) = &a.side {
-        sketch.side = Some(profile(s, View::Side).context("side profile")?);
-    }
+    sketch.side = placed.side.as_ref().map(to_template);
     if let Some(s) = &a.sections {
         let text = io::read_input_text(s, "sections file")?;
         #[derive(serde::Deserialize)]
@@ -138,18 +183,34 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         sketch.sections = f.sections;
     }
     let mut opts = FitOptions::default();
-    if a.accept_miss {
-        opts.on_miss = OnMiss::Report;
-    }
+    opts.on_miss = if a.strict {
+        OnMiss::Fail
+    } else {
+        OnMiss::Report
+    };
     let progress = pdesculpt::progress::Progress::spinner("template fit", json);
     let r = fit(&template, &sketch, &opts, &mesh_outline)?;
     progress.finish();
     let errors = profile_errors(&template, r.last(), &sketch)?;
     let mut out = template.mesh.clone();
     out.positions = r.last().to_vec();
-    a.layout.write(&out, &a.output)?;
+    // the fitted mesh is in the template's unit; written in metres
+    let k = if a.template == "makehuman" {
+        pdesculpt::mesh::unit::MAKEHUMAN.metres()
+    } else {
+        1.0
+    };
+    let mut metres = out.clone();
+    for p in &mut metres.positions {
+        *p = [k * p[0], k * p[1], k * p[2]];
+    }
+    a.layout.write(&metres, &a.output)?;
     let report = Report {
         output: a.output.display().to_string(),
+        unit: "m",
+        height_m: placed.report.height_m,
+        drawing: placed.report.clone(),
+        warnings: placed.warnings.clone(),
         vertices: out.positions.len(),
         levels: r.levels.iter().map(|(l, _)| l.clone()).collect(),
         profile_errors: errors,
@@ -158,7 +219,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     for l in &report.levels {
         for v in l.profiles.iter().filter(|v| !v.within) {
             eprintln!(
-                "warning: {} level: {} profile {:.2} % of the height off the sketch (tolerance {:.2} %), written anyway (--accept-miss)",
+                "warning: {} level: {} profile {:.2} % of the height off the sketch (tolerance {:.2} %): the best fit is written (--strict refuses)",
                 l.level.name(),
                 v.view.name(),
                 100.0 * v.max_rel,

@@ -196,10 +196,23 @@ pub fn run(cmd: TbsmCommand, json: bool) -> anyhow::Result<i32> {
                 "side" => View::Side,
                 v => bail!("--view must be front or side, got '{v}'"),
             };
+            // the part's drawing at its physical size (metres), not
+            // placed: a part is drawn where it sits; in the template's unit
             let profile = super::profile(&a.profile, view).context("part profile")?;
+            let source = if a.source.template == "makehuman-foot" {
+                pdesculpt::mesh::unit::MAKEHUMAN
+            } else {
+                pdesculpt::mesh::unit::Unit::M
+            };
+            let k = 1.0 / source.metres();
+            let pts: Vec<[f64; 2]> = profile
+                .points
+                .iter()
+                .map(|p| [k * p[0], k * p[1]])
+                .collect();
             let (_, mut mesh) = template_part(&a.source)?;
-            mesh.positions = part_from_view(&mesh, &profile, view, &mesh_outline)?;
-            io::write(&mesh, &a.output)?;
+            mesh.positions = part_from_view(&mesh, &pts, view, &mesh_outline)?;
+            io::write_in_unit(&mesh, &a.output, source, pdesculpt::mesh::unit::Unit::M)?;
             let rep = CreateReport {
                 output: a.output.display().to_string(),
                 vertices: mesh.positions.len(),

@@ -393,7 +393,7 @@ const LAYERS: &[&[&str]] = &[
     &["pipeline"],
     &[],
     &["demo"],
-    &["verify", "tui", "equations", "harness"],
+    &["verify", "study", "tui", "equations", "harness"],
     &["cli", "main"],
 ];
 

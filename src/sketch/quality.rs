@@ -1,0 +1,364 @@
+//! How well a built model follows its drawing, per part and as a whole
+//! (issue 28 item 5), and the warnings when a measure passes its bound.
+//!
+//! Per view (front, side), relative to the model height:
+//! - **profile error**: the symmetric distance between the model's
+//!   silhouette (`profile::outline_of_mesh`) and the drawn outline, max and
+//!   RMS over arc-length samples of both (as `profile::profile_distance`);
+//! - **outside**: how far the model leaves the drawn outline: the largest
+//!   distance to the outline of a silhouette sample lying outside it.
+//!
+//! Per mesh (no view):
+//! - **dihedral**: the largest turn (degrees) between the normals of two
+//!   adjacent triangles;
+//! - **creased length**: the total length of the edges turning by more
+//!   than [`CREASED_EDGE_DEG`], relative to the height.
+//!
+//! Per part: a silhouette sample belongs to the part of the nearest
+//! projected mesh vertex (a vertex to the group of its first triangle); a
+//! drawn-outline sample to the part of its nearest silhouette sample. The
+//! part's profile error and outside distance are taken over its samples;
+//! its dihedral and creased length over the edges with a triangle in it.
+//!
+//! The bounds ([`Bounds::ISSUE`]) are the issue's: profile error at most
+//! 1.5 % front and 2 % side (max), dihedral at most 120 degrees, creased
+//! length at most 0.3 of the height, outside at most 1 %.
+
+use crate::mesh::{dist, dot, norm, scale, Mesh};
+use crate::profile::{outline_of_mesh, OutlineOptions, Profile, ProfileIndex, View};
+use serde::Serialize;
+
+/// An edge turning by more than this (degrees) is creased (the issue's 60).
+pub const CREASED_EDGE_DEG: f64 = 60.0;
+
+/// Arc-length samples per outline (as `profile::distance::MIN_SAMPLES`).
+const SAMPLES: usize = 4000;
+
+/// Upper bounds of the measures (relative to the height where lengths).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Bounds {
+    pub profile_front: f64,
+    pub profile_side: f64,
+    pub dihedral_deg: f64,
+    pub creased_rel: f64,
+    pub outside: f64,
+}
+
+impl Bounds {
+    /// Issue 28's "done" bounds for a build at the intermediate level.
+    pub const ISSUE: Bounds = Bounds {
+        profile_front: 0.015,
+        profile_side: 0.02,
+        dihedral_deg: 120.0,
+        creased_rel: 0.3,
+        outside: 0.01,
+    };
+}
+
+/// One view's measures.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct ViewQuality {
+    pub view: &'static str,
+    pub max_rel: f64,
+    pub rms_rel: f64,
+    pub outside_rel: f64,
+}
+
+/// One part's (or the whole model's) measures.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct PartQuality {
+    pub part: String,
+    pub views: Vec<ViewQuality>,
+    pub dihedral_deg: f64,
+    pub creased_rel: f64,
+}
+
+/// Everything measured.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Quality {
+    pub whole: PartQuality,
+    pub parts: Vec<PartQuality>,
+}
+
+/// The group of each vertex (that of its first triangle).
+fn vertex_groups(m: &Mesh) -> Vec<u32> {
+    let mut g = vec![u32::MAX; m.positions.len()];
+    for (t, tr) in m.triangles.iter().enumerate() {
+        for &v in tr {
+            if g[v as usize] == u32::MAX {
+                g[v as usize] = m.tri_group[t];
+            }
+        }
+    }
+    g
+}
+
+/// Nearest projected vertex by a uniform grid.
+struct VertexGrid {
+    o: [f64; 2],
+    h: f64,
+    n: [usize; 2],
+    cells: Vec<Vec<u32>>,
+    pts: Vec<[f64; 2]>,
+}
+
+impl VertexGrid {
+    fn new(pts: Vec<[f64; 2]>) -> VertexGrid {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &pts {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        let ext = (hi[0] - lo[0]).max(hi[1] - lo[1]).max(f64::MIN_POSITIVE);
+        let side = ((pts.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        let h = ext / side as f64;
+        let n = [
+            (((hi[0] - lo[0]) / h) as usize + 1).min(4096),
+            (((hi[1] - lo[1]) / h) as usize + 1).min(4096),
+        ];
+        let mut cells = vec![Vec::new(); n[0] * n[1]];
+        for (i, p) in pts.iter().enumerate() {
+            let c = Self::cell_of(lo, h, n, *p);
+            cells[c[1] * n[0] + c[0]].push(i as u32);
+        }
+        VertexGrid {
+            o: lo,
+            h,
+            n,
+            cells,
+            pts,
+        }
+    }
+
+    fn cell_of(o: [f64; 2], h: f64, n: [usize; 2], p: [f64; 2]) -> [usize; 2] {
+        let f = |k: usize| (((p[k] - o[k]) / h).max(0.0) as usize).min(n[k] - 1);
+        [f(0), f(1)]
+    }
+
+    /// Index of the nearest point (rings of cells until the best is proven).
+    fn nearest(&self, q: [f64; 2]) -> Option<usize> {
+        let c = Self::cell_of(self.o, self.h, self.n, q);
+        let mut best: Option<(f64, usize)> = None;
+        for r in 0..self.n[0].max(self.n[1]) {
+            let (x0, x1) = (c[0].saturating_sub(r), (c[0] + r).min(self.n[0] - 1));
+            let (y0, y1) = (c[1].saturating_sub(r), (c[1] + r).min(self.n[1] - 1));
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let ring = x == x0 || x == x1 || y == y0 || y == y1;
+                    if !ring {
+                        continue;
+                    }
+                    for &i in &self.cells[y * self.n[0] + x] {
+                        let p = self.pts[i as usize];
+                        let d = (p[0] - q[0]).hypot(p[1] - q[1]);
+                        if best.is_none_or(|b| d < b.0) {
+                            best = Some((d, i as usize));
+                        }
+                    }
+                }
+            }
+            // every point within r * h of q has been seen
+            if let Some((d, _)) = best {
+                if d <= r as f64 * self.h {
+                    break;
+                }
+            }
+        }
+        best.map(|b| b.1)
+    }
+}
+
+/// Per-sample distances of one view: (part of the sample, distance,
+/// outside distance or 0).
+/// A sample of one view: (part group, distance to the other outline,
+/// distance outside the drawn outline or 0), as [`view_samples`] returns them.
+type Sample = (u32, f64, f64);
+
+fn view_samples(
+    mesh: &Mesh,
+    groups: &[u32],
+    view: View,
+    drawn: &[[f64; 2]],
+) -> Option<Vec<Sample>> {
+    let sketch = Profile::new(view, drawn.to_vec()).ok()?;
+    let model = outline_of_mesh(mesh, view, &OutlineOptions::default()).ok()?;
+    let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
+    let (isk, imo) = (ProfileIndex::new(&sketch), ProfileIndex::new(&model));
+    let ms = model.resample_arclength(SAMPLES);
+    let part_of = |q: [f64; 2]| grid.nearest(q).map_or(u32::MAX, |i| groups[i]);
+    let mut out = Vec::with_capacity(2 * SAMPLES);
+    let mut model_parts = Vec::with_capacity(ms.len());
+    for &q in ms.iter().chain(model.points()) {
+        let d = isk.distance(q);
+        let outside = if sketch.contains(q) { 0.0 } else { d };
+        let g = part_of(q);
+        model_parts.push(g);
+        out.push((g, d, outside));
+    }
+    for q in sketch.resample_arclength(SAMPLES) {
+        let (d, _, _, near) = imo.nearest(q);
+        out.push((part_of(near), d, 0.0));
+    }
+    Some(out)
+}
+
+fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
+    let n = m.face_normal_area(t);
+    scale(n, 1.0 / norm(n).max(f64::MIN_POSITIVE))
+}
+
+/// Largest dihedral and creased length per group (edges between two
+/// groups count for both) and for the whole mesh.
+fn dihedrals(m: &Mesh) -> (Vec<(f64, f64)>, (f64, f64)) {
+    let edges = crate::character::crease::edge_triangles(m);
+    let normals: Vec<[f64; 3]> = (0..m.triangles.len()).map(|t| unit_normal(m, t)).collect();
+    let mut per = vec![(0.0f64, 0.0f64); m.groups.len()];
+    let mut whole = (0.0f64, 0.0f64);
+    let mut keys: Vec<&(u32, u32)> = edges.keys().collect();
+    keys.sort_unstable();
+    for e in keys {
+        let [t0, t1] = edges[e][..] else { continue };
+        let ang = dot(normals[t0], normals[t1])
+            .clamp(-1.0, 1.0)
+            .acos()
+            .to_degrees();
+        let len = if ang > CREASED_EDGE_DEG {
+            dist(m.positions[e.0 as usize], m.positions[e.1 as usize])
+        } else {
+            0.0
+        };
+        whole.0 = whole.0.max(ang);
+        whole.1 += len;
+        let (g0, g1) = (m.tri_group[t0] as usize, m.tri_group[t1] as usize);
+        for g in if g0 == g1 { vec![g0] } else { vec![g0, g1] } {
+            per[g].0 = per[g].0.max(ang);
+            per[g].1 += len;
+        }
+    }
+    (per, whole)
+}
+
+fn summarise(view: View, s: &[(u32, f64, f64)], height: f64) -> ViewQuality {
+    let (mut max, mut sum2, mut out) = (0.0f64, 0.0, 0.0f64);
+    for &(_, d, o) in s {
+        max = max.max(d);
+        sum2 += d * d;
+        out = out.max(o);
+    }
+    ViewQuality {
+        view: view.name(),
+        max_rel: max / height,
+        rms_rel: (sum2 / s.len().max(1) as f64).sqrt() / height,
+        outside_rel: out / height,
+    }
+}
+
+/// Measures `mesh` (the body, without removed parts or props) against the
+/// drawn outlines; `parts`: the group names reported one by one.
+pub fn measure(
+    mesh: &Mesh,
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    height: f64,
+    parts: &[String],
+) -> Quality {
+    let groups = vertex_groups(mesh);
+    let views: Vec<(View, Option<Vec<Sample>>)> = [(View::Front, Some(front)), (View::Side, side)]
+        .into_iter()
+        .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
+        .collect();
+    let nan = |v: View| ViewQuality {
+        view: v.name(),
+        max_rel: f64::NAN,
+        rms_rel: f64::NAN,
+        outside_rel: f64::NAN,
+    };
+    let (per, whole) = dihedrals(mesh);
+    let part = |name: &str, g: Option<u32>| PartQuality {
+        part: name.to_string(),
+        views: views
+            .iter()
+            .map(|(v, s)| match s {
+                Some(s) => {
+                    let mine: Vec<(u32, f64, f64)> = s
+                        .iter()
+                        .copied()
+                        .filter(|x| g.is_none_or(|g| x.0 == g))
+                        .collect();
+                    summarise(*v, &mine, height)
+                }
+                None => nan(*v),
+            })
+            .collect(),
+        dihedral_deg: g.map_or(whole.0, |g| per[g as usize].0),
+        creased_rel: g.map_or(whole.1, |g| per[g as usize].1) / height,
+    };
+    Quality {
+        whole: part("whole", None),
+        parts: parts
+            .iter()
+            .filter_map(|p| {
+                let g = mesh.groups.iter().position(|x| x == p)? as u32;
+                Some(part(p, Some(g)))
+            })
+            .collect(),
+    }
+}
+
+/// One warning per measure over its bound, naming the part (or "the
+/// model") and both numbers; NaN (a view that could not be measured) is
+/// over every bound.
+pub fn warnings(q: &Quality, b: &Bounds) -> Vec<String> {
+    let mut out = Vec::new();
+    let over = |v: f64, bound: f64| {
+        !matches!(
+            v.partial_cmp(&bound),
+            Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+        )
+    };
+    for p in std::iter::once(&q.whole).chain(&q.parts) {
+        let who = if p.part == "whole" {
+            "the model".to_string()
+        } else {
+            format!("part {}", p.part)
+        };
+        for v in &p.views {
+            let bound = if v.view == "front" {
+                b.profile_front
+            } else {
+                b.profile_side
+            };
+            if over(v.max_rel, bound) {
+                out.push(format!(
+                    "{who}: {} profile error {:.2} % of the height (bound {:.1} %)",
+                    v.view,
+                    100.0 * v.max_rel,
+                    100.0 * bound
+                ));
+            }
+            if over(v.outside_rel, b.outside) {
+                out.push(format!(
+                    "{who}: leaves the drawn {} outline by {:.2} % of the height (bound {:.1} %)",
+                    v.view,
+                    100.0 * v.outside_rel,
+                    100.0 * b.outside
+                ));
+            }
+        }
+        if over(p.dihedral_deg, b.dihedral_deg) {
+            out.push(format!(
+                "{who}: adjacent triangles turn by {:.1} degrees (bound {:.0}): a fold",
+                p.dihedral_deg, b.dihedral_deg
+            ));
+        }
+        if over(p.creased_rel, b.creased_rel) {
+            out.push(format!(
+                "{who}: {:.2} heights of edges turn by more than {CREASED_EDGE_DEG:.0} degrees (bound {:.2})",
+                p.creased_rel, b.creased_rel
+            ));
+        }
+    }
+    out
+}
