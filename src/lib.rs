@@ -40,6 +40,7 @@ pub mod curve;
 pub mod demo;
 pub mod edit;
 pub mod equations;
+pub mod face;
 #[cfg(feature = "harness")]
 pub mod harness;
 pub mod jet;

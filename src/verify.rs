@@ -33,6 +33,7 @@ pub fn families() -> &'static [Family] {
         Family { name: "edit", papers: "000, 001", checks: crate::edit::check::checks },
         Family { name: "sasm", papers: "000", checks: crate::sasm::check::checks },
         Family { name: "body", papers: "002, 000", checks: crate::body::check::checks },
+        Family { name: "face", papers: "004", checks: crate::face::check::checks },
         Family { name: "derivatives", papers: "-", checks: derivative_checks },
     ]
 }

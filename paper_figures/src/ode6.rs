@@ -3,6 +3,7 @@
 //! beside a loft through the same curves, and the data-size table (Table 1)
 //! on MakeHuman regions.
 
+mod networks;
 mod table;
 
 use crate::common::{Ctx, Figure};
@@ -26,6 +27,11 @@ pub fn figures() -> Vec<Figure> {
         Figure { id: "004-fig2-3", paper: "004", title: "Approach 1: boundary curves scaled by w1..w4 (closed and open), beside the loft", run: fig2_3 },
         Figure { id: "004-fig4-5", paper: "004", title: "Approach 2: four control curves, rho = lambda = 1 against 1e-4 (eta = 3), beside the loft", run: fig4_5 },
         Figure { id: "004-fig6", paper: "004", title: "C2 (ODE6) against C1 (rho = 0) and C0 (loft) joins of a chain of patches", run: fig6 },
+        Figure { id: "004-fig7", paper: "004", title: "Objects from C2 ODE patches: vase, flower, plane, four-legged animal (bundled curve networks)", run: networks::fig7 },
+        Figure { id: "004-fig8", paper: "004", title: "A face from its curve network alone: 48 C2 ODE patches (12 columns x 4 rows), one colour each", run: networks::fig8 },
+        Figure { id: "004-fig9", paper: "004", title: "The face rebuilt from its curve network with the original's vertices and faces: MVE, wireframes of both", run: networks::fig9 },
+        Figure { id: "004-fig11-12", paper: "004", title: "The face curve network on the MakeHuman base, front and side", run: networks::fig11_12 },
+        Figure { id: "004-fig13", paper: "004", title: "Facial action units rebuilt from the moved network, with error colour maps", run: networks::fig13 },
         Figure { id: "004-fig10", paper: "004", title: "Shape parameters rho, eta, lambda on one patch, beside the loft", run: fig10 },
         Figure { id: "004-table1", paper: "004", title: "Data size of ODE6 curve networks on MakeHuman regions (leg, head, face)", run: table::table1 },
     ]
@@ -471,6 +477,28 @@ fn lin_curves(terms: &[(f64, &Curve)]) -> Curve {
                 }
             }
             Curve::Hermite { ends }
+        }
+        Curve::Piece {
+            knots, periodic, ..
+        } => {
+            let n = knots.len();
+            let (mut p, mut m) = (vec![[0.0; 3]; n], vec![[0.0; 3]; n]);
+            for (w, c) in terms {
+                if let Curve::Piece { points, m2, .. } = c {
+                    for i in 0..n.min(points.len()) {
+                        for k in 0..3 {
+                            p[i][k] += w * points[i][k];
+                            m[i][k] += w * m2[i][k];
+                        }
+                    }
+                }
+            }
+            Curve::Piece {
+                knots: knots.clone(),
+                points: p,
+                m2: m,
+                periodic: *periodic,
+            }
         }
     }
 }

@@ -50,6 +50,17 @@ pub enum Curve {
     /// Open quintic Hermite segment: `ends[e] = [P, P', P'']` at `v = e`
     /// (`e = 0, 1`), derivatives with respect to `v`.
     Hermite { ends: [[[f64; 3]; 3]; 2] },
+    /// A piece of a longer cubic spline (a network line, see
+    /// [`super::network`]): the cubic on each `[knots[i], knots[i + 1]]` with
+    /// the values `points` and second derivatives `m2` at the knots, `knots`
+    /// increasing from 0 to 1; `periodic` when the piece is a whole closed
+    /// line (the curve is then closed in `v`).
+    Piece {
+        knots: Vec<f64>,
+        points: Vec<[f64; 3]>,
+        m2: Vec<[f64; 3]>,
+        periodic: bool,
+    },
 }
 
 /// The quintic Hermite basis on `[0, 1]`: weights of `P(0), P'(0), P''(0),
@@ -119,7 +130,21 @@ impl Curve {
 
     /// Whether the curve is closed in `v`.
     pub fn closed(&self) -> bool {
-        matches!(self, Curve::Fourier(_))
+        matches!(
+            self,
+            Curve::Fourier(_) | Curve::Piece { periodic: true, .. }
+        )
+    }
+
+    /// The constant curve `P(v) = p` (a collapsed side: the apex of a
+    /// 3-sided network patch).
+    pub fn constant(p: [f64; 3], periodic: bool) -> Curve {
+        Curve::Piece {
+            knots: vec![0.0, 1.0],
+            points: vec![p, p],
+            m2: vec![[0.0; 3]; 2],
+            periodic,
+        }
     }
 
     /// The point at `v` (generic: jets give the derivatives in `v`).
@@ -151,6 +176,24 @@ impl Curve {
                 }
                 p
             }
+            Curve::Piece {
+                knots, points, m2, ..
+            } => {
+                let n = knots.len() - 1;
+                let i = knots
+                    .partition_point(|&t| t <= v.value())
+                    .saturating_sub(1)
+                    .min(n - 1);
+                let t = [knots[i], knots[i + 1]];
+                std::array::from_fn(|k| {
+                    spline::segment(
+                        t,
+                        [points[i][k], points[i + 1][k]],
+                        [m2[i][k], m2[i + 1][k]],
+                        v,
+                    )
+                })
+            }
         }
     }
 
@@ -172,6 +215,17 @@ impl Curve {
                 e.iter_mut().flatten().flatten().for_each(|x| *x *= s);
                 Curve::Hermite { ends: e }
             }
+            Curve::Piece {
+                knots,
+                points,
+                m2,
+                periodic,
+            } => Curve::Piece {
+                knots: knots.clone(),
+                points: sc(points),
+                m2: sc(m2),
+                periodic: *periodic,
+            },
         }
     }
 
@@ -181,6 +235,8 @@ impl Curve {
             Curve::Fourier(f) => 3 * (1 + f.cos.len() + f.sin.len()),
             Curve::Spline { points, .. } => 3 * points.len(),
             Curve::Hermite { .. } => 18,
+            // the knots are the curve's own parameters: one more per point
+            Curve::Piece { points, .. } => 4 * points.len(),
         }
     }
 }
@@ -279,7 +335,9 @@ impl BoundaryCurves {
         BoundaryCurves::new(vec![c1, k2, k3, k5, k6, c4], w.to_vec())
     }
 
-    fn new(keys: Vec<Curve>, weights: Vec<[f64; 6]>) -> Result<BoundaryCurves, Ode6Error> {
+    /// Constraint curves `c_j = sum_m weights[m][j] keys[m]` (all keys open or
+    /// all closed, finite).
+    pub fn new(keys: Vec<Curve>, weights: Vec<[f64; 6]>) -> Result<BoundaryCurves, Ode6Error> {
         if keys.is_empty() {
             return Err(Ode6Error::NoCurves);
         }
@@ -294,6 +352,12 @@ impl BoundaryCurves {
                     points.iter().chain(m2).flatten().all(|x| x.is_finite())
                 }
                 Curve::Hermite { ends } => ends.iter().flatten().flatten().all(|x| x.is_finite()),
+                Curve::Piece {
+                    knots, points, m2, ..
+                } => {
+                    knots.iter().all(|x| x.is_finite())
+                        && points.iter().chain(m2).flatten().all(|x| x.is_finite())
+                }
             };
             if !finite {
                 return Err(Ode6Error::NotFinite {

@@ -35,6 +35,7 @@ pub mod basis;
 pub mod boundary;
 pub mod check;
 pub mod force;
+pub mod network;
 pub mod paper;
 pub mod samples;
 pub mod spec;

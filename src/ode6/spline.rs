@@ -85,6 +85,41 @@ pub fn segment<T: Real>(t: [f64; 2], y: [f64; 2], m2: [f64; 2], u: T) -> T {
     a * y[0] + b * y[1] + ((a * a * a - a) * m2[0] + (b * b * b - b) * m2[1]) * (h * h / 6.0)
 }
 
+/// $M_0..M_n$ of the natural spline through `y` at `t` (strictly
+/// increasing, as many as `y`; not checked here: [`NaturalSpline::new`]
+/// checks them).
+pub fn natural_second_derivatives(t: &[f64], y: &[f64]) -> Vec<f64> {
+    second_derivatives(t, y)
+}
+
+/// $M_0..M_{n-1}$ of the **periodic** cubic spline through `y[0..n]` at
+/// `t[0..n]`, closed by the knot `t[n]` where the values repeat (`y[n] =
+/// y[0]`, `y` has `n + 1` entries). The C1 condition of the module doc at
+/// every knot, indices modulo `n`, is a cyclic tridiagonal system, solved
+/// densely by LU (closed network lines have tens of points). With `n = 1`
+/// the spline is the constant `y[0]`.
+pub fn periodic_second_derivatives(t: &[f64], y: &[f64]) -> Vec<f64> {
+    let n = t.len().saturating_sub(1);
+    if n < 2 {
+        return vec![0.0; n.max(1)];
+    }
+    let h = |i: usize| t[i + 1] - t[i];
+    let mut a = nalgebra::DMatrix::<f64>::zeros(n, n);
+    let mut rhs = nalgebra::DVector::<f64>::zeros(n);
+    for i in 0..n {
+        let (ip, hm) = ((i + n - 1) % n, h((i + n - 1) % n));
+        let hp = h(i);
+        a[(i, ip)] += hm / 6.0;
+        a[(i, i)] += (hm + hp) / 3.0;
+        a[(i, (i + 1) % n)] += hp / 6.0;
+        rhs[i] = (y[i + 1] - y[i]) / hp - (y[i] - y[ip]) / hm;
+    }
+    match a.lu().solve(&rhs) {
+        Some(x) => x.iter().copied().collect(),
+        None => vec![0.0; n],
+    }
+}
+
 /// $M_0..M_n$ of the module doc (Thomas algorithm); `t` strictly increasing.
 fn second_derivatives(t: &[f64], y: &[f64]) -> Vec<f64> {
     let n = t.len();

@@ -321,5 +321,5 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
     }
     ctx.write_bytes("004-table1.md", md.as_bytes())?;
     ctx.write_json("004-table1.json", &json!({"rows": rows, "params": {"rho": 1.0, "eta": 3.0, "lambda": 1.0}, "note": "data size = curve variables / polygon vertices as in paper 004 Table 1 (3 variables per curve vertex: position, first and second derivative)"}))?;
-    Ok(())
+    super::networks::table1_face_rows(ctx)
 }

@@ -25,7 +25,9 @@ mod residual;
 use residual::force_checks;
 mod continuity;
 mod derivation;
+mod network;
 use continuity::continuity_checks;
+pub use network::NETWORK_C2;
 
 const FAMILY: &str = "ode6";
 const PAPER: &str = "004";
@@ -169,5 +171,6 @@ pub fn checks() -> Vec<Check> {
     out.extend(derivation::derivation_checks());
     out.extend(derivation::approach1_join_checks());
     out.push(gec_check());
+    out.extend(network::network_checks());
     out
 }

@@ -389,7 +389,7 @@ const LAYERS: &[&[&str]] = &[
     &["curve"],
     &["pde4", "pde6", "ode6", "plate", "conv", "profile"],
     &["character"],
-    &["sketch", "template", "edit", "sasm", "body"],
+    &["sketch", "template", "edit", "sasm", "body", "face"],
     &["pipeline"],
     &[],
     &["demo"],

@@ -1,0 +1,460 @@
+//! Figures of curve networks and the face (paper 004 Figs 7-9, 11-13):
+//! the bundled networks, the face network, the rebuilt face over the
+//! original with both wireframes, and the action units with error maps.
+
+use super::annotate;
+use crate::common::Ctx;
+use pdesculpt::face::expression;
+use pdesculpt::face::extract::{self, FaceOptions, DEFAULT_PATCHES};
+use pdesculpt::mesh::Mesh;
+use pdesculpt::ode6::network::{samples, Network};
+use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
+use serde_json::json;
+
+const FRONT_3Q: View = View::Perspective {
+    yaw: 30.0,
+    pitch: 15.0,
+};
+
+fn render_box(m: &Mesh, lo: [f64; 3], hi: [f64; 3], o: &RenderOptions) -> Image {
+    let cam = Camera::fit_box(lo, hi, o.view, o.width, o.height, o.margin);
+    render_with_camera(m, o, &cam)
+}
+
+fn curve_overlays(net: &Network, colour: [u8; 4]) -> Vec<Overlay> {
+    net.doc
+        .curves
+        .iter()
+        .map(|c| Overlay {
+            points: c.points.clone(),
+            closed: false,
+            colour,
+            depth_test: true,
+        })
+        .collect()
+}
+
+/// Fig 7: objects made of patches, one colour per patch, curves in black.
+pub fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
+    let mut imgs = Vec::new();
+    let mut captions = Vec::new();
+    let mut data = Vec::new();
+    for (name, doc) in samples::bundled() {
+        let net = Network::build(doc)?;
+        let r = net.report(8);
+        let m = net.mesh(12);
+        let (lo, hi) = m.bbox();
+        let o = RenderOptions {
+            width: 360,
+            height: 360,
+            view: FRONT_3Q,
+            overlays: curve_overlays(&net, [20, 20, 20, 255]),
+            ..Default::default()
+        };
+        imgs.push(render_box(&m, lo, hi, &o));
+        let worst = r
+            .max_relative_u_edges
+            .iter()
+            .chain(&r.max_relative_v_edges)
+            .fold(0.0f64, |a, b| a.max(*b));
+        captions.push(format!(
+            "{name}: {} patches ({} 3-sided)\nlargest relative jump {worst:.0e}\ndata {:.0} % of the mesh's numbers",
+            r.patches,
+            r.three_sided,
+            100.0 * r.data.ratio
+        ));
+        data.push(json!({"network": name, "file": format!("data/network/{name}.json"),
+            "patches": r.patches, "three_sided": r.three_sided, "curves": r.curves,
+            "u_edges": r.u_edges, "v_edges": r.v_edges,
+            "max_relative_u_edges": r.max_relative_u_edges, "max_relative_v_edges": r.max_relative_v_edges,
+            "max_side_relative": r.max_side_relative, "residual": r.residual, "data": r.data}));
+    }
+    annotate(
+        &Image::hstack(&imgs, [255, 255, 255, 255]),
+        "Paper 004 Fig 7: objects from C2 ODE patches (curve networks in data/network/)",
+        &captions,
+        FRONT_3Q,
+        false,
+    )?
+    .save_png(&ctx.path("004-fig7.png"))?;
+    ctx.write_json("004-fig7.json", &json!({"networks": data, "command": "pdesculpt --json ode6 network data/network/NAME.json -o NAME.glb"}))?;
+    Ok(())
+}
+
+/// The head box of the base (for framing the face figures).
+fn head_box(m: &Mesh, ids: &[usize]) -> ([f64; 3], [f64; 3]) {
+    let pts: Vec<[f64; 3]> = ids.iter().map(|&i| m.positions[i]).collect();
+    pdesculpt::vec3::bounds(&pts).unwrap_or(([0.0; 3], [1.0; 3]))
+}
+
+/// The body triangles with every vertex above `y` (the head and neck).
+fn head_mesh(m: &Mesh, y: f64) -> Mesh {
+    let g = m.groups.iter().position(|g| g == "body").unwrap_or(0) as u32;
+    let keep: Vec<bool> = m
+        .triangles
+        .iter()
+        .zip(&m.tri_group)
+        .map(|(t, &gr)| gr == g && t.iter().all(|&i| m.positions[i as usize][1] > y))
+        .collect();
+    let mut out = m.clone();
+    let tris: Vec<([u32; 3], u32)> = m
+        .triangles
+        .iter()
+        .zip(&m.tri_group)
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|((t, g), _)| (*t, *g))
+        .collect();
+    out.triangles = tris.iter().map(|t| t.0).collect();
+    out.tri_group = tris.iter().map(|t| t.1).collect();
+    out
+}
+
+fn wire(m: &Mesh, inside: &[bool], colour: [u8; 4]) -> Vec<Overlay> {
+    let mut out = Vec::new();
+    for t in &m.triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k] as usize, t[(k + 1) % 3] as usize);
+            if a < b && inside[a] && inside[b] {
+                out.push(Overlay {
+                    points: vec![m.positions[a], m.positions[b]],
+                    closed: false,
+                    colour,
+                    depth_test: true,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// The base face rebuilt (default patches, optimised) and what the face
+/// figures draw it with.
+struct FaceScene {
+    head: Mesh,
+    rebuilt: Mesh,
+    inside: Vec<bool>,
+    lo: [f64; 3],
+    hi: [f64; 3],
+    report: extract::FaceReport,
+    net: Network,
+}
+
+fn face_scene() -> anyhow::Result<FaceScene> {
+    let base = pdesculpt::makehuman::base_mesh()?;
+    let (pos, report, net) = extract::rebuild(&base, &FaceOptions::new(DEFAULT_PATCHES, true))?;
+    let t = extract::template(report.columns)?;
+    let mut inside = vec![false; base.positions.len()];
+    for p in &t.vertices {
+        inside[p.vertex as usize] = true;
+    }
+    let ids: Vec<usize> = (0..inside.len()).filter(|&i| inside[i]).collect();
+    let (lo, hi) = head_box(&base, &ids);
+    let head = head_mesh(&base, lo[1] - 0.3);
+    let mut rebuilt = head.clone();
+    rebuilt.positions = pos;
+    extract::mark_face(&mut rebuilt, DEFAULT_PATCHES)?;
+    Ok(FaceScene {
+        head,
+        rebuilt,
+        inside,
+        lo,
+        hi,
+        report,
+        net,
+    })
+}
+
+const GOLD: [u8; 3] = [212, 160, 60];
+const SILVER: [u8; 3] = [190, 190, 196];
+
+/// Gold for group `face`, silver for the others.
+fn colours(n: usize, face: Option<u32>) -> Vec<[u8; 3]> {
+    (0..n)
+        .map(|g| if Some(g as u32) == face { GOLD } else { SILVER })
+        .collect()
+}
+
+fn face_opts(view: View, overlays: Vec<Overlay>, colours: Vec<[u8; 3]>) -> RenderOptions {
+    RenderOptions {
+        width: 420,
+        height: 420,
+        view,
+        overlays,
+        group_colours: Some(colours),
+        ..Default::default()
+    }
+}
+
+/// Figs 11-12: the face network on the original (front, side).
+pub fn fig11_12(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let curves = curve_overlays(&f.net, [200, 30, 30, 255]);
+    let mut panels = Vec::new();
+    for view in [View::Front, View::Side] {
+        let o = face_opts(view, curves.clone(), colours(f.head.groups.len(), None));
+        panels.push(render_box(&f.head, f.lo, f.hi, &o));
+    }
+    annotate(
+        &Image::hstack(&panels, [255, 255, 255, 255]),
+        &format!(
+            "Paper 004 Figs 11-12: face network, {} x {} patches, {} curve points",
+            f.report.columns, f.report.rows, f.report.curve_points
+        ),
+        &["front".into(), "side".into()],
+        View::Front,
+        false,
+    )?
+    .save_png(&ctx.path("004-fig11-12.png"))?;
+    ctx.write_json(
+        "004-fig11-12.json",
+        &json!({"columns": f.report.columns, "rows": f.report.rows, "curve_points": f.report.curve_points,
+            "curve_variables": f.report.curve_variables, "face_vertices": f.report.face_vertices,
+            "command": "pdesculpt --json ode6 face -o face.obj"}),
+    )?;
+    Ok(())
+}
+
+/// Fig 8: the surface of the face network alone, one colour per patch.
+pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let nm = f.net.mesh(10);
+    let o = RenderOptions {
+        width: 420,
+        height: 420,
+        view: FRONT_3Q,
+        overlays: curve_overlays(&f.net, [200, 30, 30, 255]),
+        ..Default::default()
+    };
+    let (nlo, nhi) = nm.bbox();
+    annotate(
+        &render_box(&nm, nlo, nhi, &o),
+        "Paper 004 Fig 8: a face from its curve network alone",
+        &[format!(
+            "{} C2 ODE patches, one colour each",
+            f.net.patches.len()
+        )],
+        FRONT_3Q,
+        false,
+    )?
+    .save_png(&ctx.path("004-fig8.png"))?;
+    Ok(())
+}
+
+/// Fig 9: the rebuilt face (gold) over the original (silver), and the
+/// wireframes of both.
+pub fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
+    let f = face_scene()?;
+    let face_group = f
+        .rebuilt
+        .groups
+        .iter()
+        .position(|g| g == "face-ode6")
+        .map(|g| g as u32);
+    let mut panels = Vec::new();
+    for view in [View::Front, View::Side] {
+        let o = face_opts(
+            view,
+            Vec::new(),
+            colours(f.rebuilt.groups.len(), face_group),
+        );
+        panels.push(render_box(&f.rebuilt, f.lo, f.hi, &o));
+    }
+    let mut both = wire(&f.rebuilt, &f.inside, [200, 30, 30, 255]);
+    both.extend(wire(&f.head, &f.inside, [30, 150, 40, 255]));
+    let o = face_opts(View::Front, both, colours(f.head.groups.len(), None));
+    panels.push(render_box(&f.head, f.lo, f.hi, &o));
+    let r = &f.report;
+    annotate(
+        &Image::hstack(&panels, [255, 255, 255, 255]),
+        &format!(
+            "Paper 004 Fig 9: the face rebuilt with the original's vertices and faces; MVE {:.4} dm ({:.2} % of the head), RMS {:.4} dm",
+            r.max_error,
+            100.0 * r.max_relative,
+            r.rms_error
+        ),
+        &[
+            "front: rebuilt face (gold) in the original".into(),
+            "side".into(),
+            "wireframes: rebuilt (red), original (green)".into(),
+        ],
+        View::Front,
+        false,
+    )?
+    .save_png(&ctx.path("004-fig9.png"))?;
+    ctx.write_json(
+        "004-fig9.json",
+        &json!({"report": r, "command": "pdesculpt --json ode6 face -o face.obj"}),
+    )?;
+    Ok(())
+}
+
+/// Error bins of the colour maps (dm): white below the first edge, dark red
+/// above the last.
+const ERROR_BINS: [f64; 6] = [0.002, 0.005, 0.01, 0.02, 0.03, 0.05];
+
+fn ramp(k: usize) -> [u8; 3] {
+    const C: [[u8; 3]; 7] = [
+        [235, 235, 235],
+        [200, 220, 250],
+        [140, 190, 240],
+        [120, 200, 120],
+        [250, 220, 90],
+        [245, 140, 50],
+        [190, 30, 30],
+    ];
+    C[k.min(6)]
+}
+
+/// Fig 13: action units rebuilt, with error colour maps.
+pub fn fig13(ctx: &Ctx) -> anyhow::Result<()> {
+    let base = pdesculpt::makehuman::base_mesh()?;
+    let mut rows = Vec::new();
+    let mut top = Vec::new();
+    let mut bottom = Vec::new();
+    let mut captions = Vec::new();
+    let t = extract::template(DEFAULT_PATCHES / extract::ROWS)?;
+    let ids: Vec<usize> = t.vertices.iter().map(|p| p.vertex as usize).collect();
+    let (lo, hi) = head_box(&base, &ids);
+    for au in expression::TABLE_UNITS
+        .iter()
+        .chain(["AU25", "AU43R"].iter())
+    {
+        let mut m = base.clone();
+        expression::apply(&mut m.positions, &expression::expression(au, 1.0)?)?;
+        let (pos, r, net) = extract::rebuild(&m, &FaceOptions::new(DEFAULT_PATCHES, true))?;
+        let head = head_mesh(&m, lo[1] - 0.3);
+        let points: Vec<Overlay> = net
+            .doc
+            .curves
+            .iter()
+            .flat_map(|c| c.points.iter())
+            .map(|p| Overlay {
+                points: vec![*p, [p[0], p[1] + 0.004, p[2]]],
+                closed: false,
+                colour: [200, 30, 30, 255],
+                depth_test: true,
+            })
+            .collect();
+        let o = RenderOptions {
+            width: 300,
+            height: 300,
+            view: View::Front,
+            overlays: points,
+            group_colours: Some(vec![[190, 190, 196]; head.groups.len()]),
+            ..Default::default()
+        };
+        top.push(render_box(&head, lo, hi, &o));
+        // error map: triangles grouped by their largest vertex error
+        let err: Vec<f64> = pos
+            .iter()
+            .zip(&m.positions)
+            .map(|(a, b)| pdesculpt::vec3::dist(*a, *b))
+            .collect();
+        let mut map = head.clone();
+        map.positions = pos;
+        map.groups = (0..=ERROR_BINS.len()).map(|k| format!("bin{k}")).collect();
+        map.tri_group = map
+            .triangles
+            .iter()
+            .map(|t| {
+                let e = t.iter().map(|&i| err[i as usize]).fold(0.0, f64::max);
+                ERROR_BINS.iter().filter(|b| e > **b).count() as u32
+            })
+            .collect();
+        let o = RenderOptions {
+            width: 300,
+            height: 300,
+            view: View::Front,
+            group_colours: Some((0..=ERROR_BINS.len()).map(ramp).collect()),
+            ..Default::default()
+        };
+        bottom.push(render_box(&map, lo, hi, &o));
+        captions.push(format!(
+            "{au}: MVE {:.4} dm\nRMS {:.4} dm",
+            r.max_error, r.rms_error
+        ));
+        let unit = expression::FACS.iter().find(|f| f.au == *au);
+        rows.push(
+            json!({"au": au, "name": unit.map(|u| u.name), "units": unit.map(|u| u.units),
+            "in_table_units": expression::TABLE_UNITS.contains(au),
+            "max_error_dm": r.max_error, "rms_error_dm": r.rms_error,
+            "max_relative_to_head": r.max_relative, "worst_vertex": r.worst_vertex,
+            "command": format!("pdesculpt --json ode6 face --expression {au}=1 -o {au}.obj")}),
+        );
+    }
+    let grid = vstack(&[
+        Image::hstack(&top, [255, 255, 255, 255]),
+        Image::hstack(&bottom, [255, 255, 255, 255]),
+    ]);
+    let legend = ERROR_BINS
+        .iter()
+        .map(|b| format!("{b}"))
+        .collect::<Vec<_>>()
+        .join(" / ");
+    annotate(
+        &grid,
+        &format!("Paper 004 Fig 13: action units (top: expressed original with curve points; bottom: error map, bins {legend} dm)"),
+        &captions,
+        View::Front,
+        false,
+    )?
+    .save_png(&ctx.path("004-fig13.png"))?;
+    ctx.write_json(
+        "004-fig13.json",
+        &json!({"units": rows, "error_bins_dm": ERROR_BINS}),
+    )?;
+    Ok(())
+}
+
+/// Images one above the other (white where narrower).
+fn vstack(images: &[Image]) -> Image {
+    let w = images.iter().map(|i| i.width).max().unwrap_or(0);
+    let h = images.iter().map(|i| i.height).sum();
+    let mut out = Image::new(w, h, [255, 255, 255, 255]);
+    let mut y0 = 0;
+    for img in images {
+        for y in 0..img.height {
+            for x in 0..img.width {
+                out.put(x as i64, (y0 + y) as i64, img.get(x, y));
+            }
+        }
+        y0 += img.height;
+    }
+    out
+}
+
+/// Table 1's face rows from the face curve network (sec 6.3): for a few
+/// `--patches`, the face vertices, curve points, curve variables (Table 1
+/// counting: each point with its two cross derivatives), data size and
+/// the MVE against the base. Written beside Table 1 as
+/// `004-table1-face.{md,json}`.
+pub fn table1_face_rows(ctx: &Ctx) -> anyhow::Result<()> {
+    let base = pdesculpt::makehuman::base_mesh()?;
+    let mut md = String::from("| face network | polygon verts | curve points | curve variables | data size | numbers stored / face coordinates | MVE (dm) | RMS (dm) |\n|---|---|---|---|---|---|---|---|\n");
+    let mut rows = Vec::new();
+    for patches in [16, 24, 48, 80] {
+        let (_, r, _) = extract::rebuild(&base, &FaceOptions::new(patches, true))?;
+        md += &format!(
+            "| {} patches ({} x {}) | {} | {} | {} | {:.0}% | {:.0}% | {:.4} | {:.4} |\n",
+            r.patches,
+            r.columns,
+            r.rows,
+            r.face_vertices,
+            r.curve_points,
+            r.curve_variables,
+            100.0 * r.data_ratio,
+            100.0 * r.numbers_ratio,
+            r.max_error,
+            r.rms_error
+        );
+        rows.push(json!({"patches": patches, "report": r,
+            "command": format!("pdesculpt --json ode6 face --patches {patches} -o face.obj")}));
+    }
+    ctx.write_bytes("004-table1-face.md", md.as_bytes())?;
+    ctx.write_json(
+        "004-table1-face.json",
+        &json!({"rows": rows, "paper": "4,081 vertices from 489 curve points: 1,467 variables, 36 %"}),
+    )?;
+    Ok(())
+}
