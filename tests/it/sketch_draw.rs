@@ -406,3 +406,13 @@ fn corpus_drawings_meet_the_issue_bounds() {
         .collect();
     assert!(failed.is_empty(), "over the bounds: {failed:?}");
 }
+
+/// The A4 drawing page the README starts from is valid XML that the
+/// reader takes apart: it is refused only for having no outline yet (an
+/// XML comment holding `--` once made it unreadable).
+#[test]
+fn the_drawing_template_reads_and_asks_for_an_outline() {
+    let page = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch/template_a4.svg");
+    let out = super::cli::pdesculpt(&["profile", "check", page, "--view", "front"]);
+    super::cli::assert_clear_error(&out, "no closed outline");
+}
