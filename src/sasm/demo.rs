@@ -62,9 +62,14 @@ fn outline(pr: &Projector, q: [f64; 2], axis: usize, half: f64) -> Result<f64, S
 const OUTLINE_SAMPLES: usize = 33;
 
 /// The breast (right of the viewer, model +x) on the torso.
-pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
+///
+/// The strokes are drawn on the drawing (in its metres, feet where the
+/// drawing has them); `lift` is the height the build moved the drawing by
+/// to stand it on y = 0 (`drawing.placement.front_shift[1]`), so the
+/// strokes move with the drawing.
+pub fn breast(torso: &PartSurface, lift: f64) -> Result<SasmSpec, SasmError> {
     let pr = Projector::new(torso, View::Front);
-    let (cx, cy, rx, ry, h) = (0.066, 1.075, 0.044, 0.045, 0.028);
+    let (cx, cy, rx, ry, h) = (0.066, 1.075 + lift, 0.044, 0.045, 0.028);
     let curve: Vec<[f64; 2]> = (0..=N)
         .map(|i| {
             let t = 2.0 * PI * i as f64 / N as f64;
@@ -119,10 +124,10 @@ pub fn breast(torso: &PartSurface) -> Result<SasmSpec, SasmError> {
 }
 
 /// The nose on the head: the right half of its interface and the side
-/// profile along the symmetry plane x = 0.
-pub fn nose(head: &PartSurface) -> Result<AuxSpec, SasmError> {
+/// profile along the symmetry plane x = 0 (`lift` as in [`breast`]).
+pub fn nose(head: &PartSurface, lift: f64) -> Result<AuxSpec, SasmError> {
     let pr = Projector::new(head, View::Front);
-    let (top, tip, bottom, w) = (1.605, 1.553, 1.535, 0.019);
+    let (top, tip, bottom, w) = (1.605 + lift, 1.553 + lift, 1.535 + lift, 0.019);
     let line: Vec<[f64; 2]> = (0..=N)
         .map(|i| {
             let t = i as f64 / N as f64;
@@ -171,8 +176,9 @@ pub fn female_fig10() -> Result<Fig10, SasmError> {
             .ok_or_else(|| SasmError::UnknownPart(n.into()))
     };
     let (torso, head) = (part("torso")?, part("head")?);
-    let breast_spec = breast(torso)?;
-    let nose_spec = nose(head)?;
+    let lift = b.report.drawing.placement.front_shift[1];
+    let breast_spec = breast(torso, lift)?;
+    let nose_spec = nose(head, lift)?;
     let fb = Feature::from_spec(torso, &breast_spec)?;
     let fnose = Feature::from_aux(head, &nose_spec)?;
     let before = b.model.mesh.clone();

@@ -478,7 +478,9 @@ fn the_log_order_is_the_application_order_or_the_edit_is_refused() {
     let d0 = female();
     let b = build_document(&d0, Path::new("."), low(), false).expect("builds");
     let torso = b.model.parts.iter().find(|p| p.name == "torso").unwrap();
-    let sasm = Edit::Sasm(breast(torso).expect("the bundled breast"));
+    let sasm = Edit::Sasm(
+        breast(torso, b.report.drawing.placement.front_shift[1]).expect("the bundled breast"),
+    );
     let Edit::Sasm(spec) = &sasm else {
         unreachable!()
     };

@@ -273,7 +273,7 @@ fn sasm_edit_round_trips_replays_and_undoes() {
     let doc = bundled("female", Level::Final).unwrap();
     let b = build_document(&doc, Path::new("."), Resolution::default(), true).unwrap();
     let torso = b.model.parts.iter().find(|p| p.name == "torso").unwrap();
-    let e = Edit::Sasm(breast(torso).unwrap());
+    let e = Edit::Sasm(breast(torso, b.report.drawing.placement.front_shift[1]).unwrap());
     let json = serde_json::to_string(&e).unwrap();
     assert!(json.contains("\"op\":\"sasm\""), "{json}");
     // serde_json's default float parsing may differ from the value in the
@@ -304,7 +304,7 @@ fn sasm_edit_round_trips_replays_and_undoes() {
     let mut d = b.doc.clone();
     let plain = build_document(&d, Path::new("."), Resolution::default(), false).unwrap();
     // a curve beside the body: clear error, document unchanged
-    let mut off = breast(torso).unwrap();
+    let mut off = breast(torso, b.report.drawing.placement.front_shift[1]).unwrap();
     for p in &mut off.curve.points {
         p[0] += 1.0;
     }
