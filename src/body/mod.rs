@@ -28,9 +28,11 @@ pub mod check;
 pub mod closed;
 pub mod hand;
 pub mod intersect;
+pub mod joins;
 pub mod layout;
 pub mod parts;
 pub mod report;
+pub mod sections;
 pub mod sites;
 pub mod study;
 

@@ -68,17 +68,16 @@ mod polygon;
 pub mod shapes;
 mod svg;
 mod svg_guard;
+mod svg_write;
 pub mod units;
 
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
 pub use json::{parse_json, read_json, to_json};
 pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
 pub use polygon::{boundary_distance, contains_point, Profile};
-pub use svg::{
-    parse_svg, parse_svg_with, read_svg, read_svg_with, to_svg, to_svg_physical, write_svg, Cut,
-    Flatness, SvgSketch,
-};
+pub use svg::{parse_svg, parse_svg_with, read_svg, read_svg_with, Cut, Flatness, SvgSketch};
 pub use svg_guard::estimate_points;
+pub use svg_write::{to_svg, to_svg_physical, write_svg};
 pub use units::{document_units, DocumentUnits};
 
 use serde::{Deserialize, Serialize};

@@ -36,6 +36,7 @@
 pub mod belly;
 pub mod check;
 pub mod envelope;
+pub mod features;
 pub mod fit;
 pub mod landmarks;
 pub mod measure;
@@ -45,6 +46,7 @@ pub mod outlines;
 pub mod polygon;
 pub mod rbf;
 pub mod refine;
+pub mod rows;
 pub mod sections;
 pub mod shapes;
 pub mod study;
