@@ -211,6 +211,29 @@ pub const DOC_PROPS: Range = Range {
     max: 64,
     why: "props of one document",
 };
+/// Patches of one curve network (`ode6 network`): the bundled networks
+/// have 24 to 150; each patch is one small ODE solve (about 0.3 ms), so
+/// the limit keeps a solve within seconds.
+pub const NETWORK_PATCHES: Range = Range {
+    min: 1,
+    max: 10_000,
+    why: "patches of one curve network",
+};
+/// Nodes, and curves, of one curve network (a patch has at most 4 curves
+/// and 4 corners).
+pub const NETWORK_CURVES: Range = Range {
+    min: 0,
+    max: 40_000,
+    why: "nodes or curves of one curve network",
+};
+/// Points of one network curve: the bundled curves have 9; a line through
+/// a v-strip joins the curves of up to every patch (a spline per line,
+/// linear in its points), and every point is a constraint of its patch.
+pub const NETWORK_CURVE_POINTS: Range = Range {
+    min: 2,
+    max: 4096,
+    why: "points of one network curve",
+};
 /// Work of each stage of one convolution-surface component, estimated
 /// from the filtered stroke before the stage runs (`conv::sketch`): the
 /// skeleton's circle tests (`8 area_samples^2 points^2`) and the global fit

@@ -105,6 +105,12 @@ fn gunzip(name: &str, bytes: &[u8]) -> Result<String, MeshError> {
     Ok(s)
 }
 
+/// Largest |weight| of a morph target the kit applies (body morphs and
+/// expression units alike): MakeHuman's own sliders span [0, 1] (or
+/// [-1, 1]); 2 allows an exaggeration of twice the modelled shape, beyond
+/// which a target's displacements fold the skin.
+pub const MORPH_WEIGHT_MAX: f64 = 2.0;
+
 /// A target by name: embedded ones first, then
 /// `data/makehuman/targets/*/<name>.target.gz`.
 pub fn target(name: &str) -> Result<Target, MeshError> {

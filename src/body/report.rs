@@ -234,8 +234,7 @@ pub fn load_body(path: Option<&std::path::Path>, morphs: &[String]) -> Result<Me
     Ok(crate::makehuman::body(&targets)?.mesh)
 }
 
-/// Largest |weight| of a morph target.
-pub const MORPH_WEIGHT_MAX: f64 = 2.0;
+pub use crate::makehuman::MORPH_WEIGHT_MAX;
 
 impl ClosedReport {
     /// The RMS the target [`super::closed::RMS_MAX_REL`] is judged on: the

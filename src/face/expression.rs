@@ -286,7 +286,7 @@ pub fn unit_target(name: &str) -> Option<Result<Target, FaceError>> {
 /// The targets of an expression named by AU (`AU12`, any case) or by
 /// MakeHuman unit name, each with weight `w`.
 pub fn expression(name: &str, w: f64) -> Result<Vec<(Target, f64)>, FaceError> {
-    if !w.is_finite() {
+    if !w.is_finite() || w.abs() > crate::makehuman::MORPH_WEIGHT_MAX {
         return Err(FaceError::Weight {
             name: name.to_string(),
             weight: w,

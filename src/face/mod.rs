@@ -50,7 +50,7 @@ pub enum FaceError {
     },
     #[error("unknown expression {name:?}; known: {known}")]
     UnknownExpression { name: String, known: String },
-    #[error("expression weight for {name} is not finite ({weight})")]
+    #[error("expression weight for {name} is {weight}: a weight is a finite number in [-{max}, {max}] (MakeHuman's sliders span [0, 1])", max = crate::makehuman::MORPH_WEIGHT_MAX)]
     Weight { name: String, weight: f64 },
     #[error("face template: {0}")]
     Template(String),

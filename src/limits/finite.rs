@@ -197,46 +197,27 @@ impl<'a> Compound<'a> {
     }
 }
 
-impl ser::SerializeSeq for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), Stop> {
-        self.element(v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
+/// The sequence-like compounds: each element is the next index.
+macro_rules! indexed_compound {
+    ($($trait:ident :: $method:ident),*) => {$(
+        impl ser::$trait for Compound<'_> {
+            type Ok = ();
+            type Error = Stop;
+            fn $method<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), Stop> {
+                self.element(v)
+            }
+            fn end(self) -> Result<(), Stop> {
+                self.done()
+            }
+        }
+    )*};
 }
-impl ser::SerializeTuple for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_element<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), Stop> {
-        self.element(v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
-}
-impl ser::SerializeTupleStruct for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), Stop> {
-        self.element(v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
-}
-impl ser::SerializeTupleVariant for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_field<T: Serialize + ?Sized>(&mut self, v: &T) -> Result<(), Stop> {
-        self.element(v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
-}
+indexed_compound!(
+    SerializeSeq::serialize_element,
+    SerializeTuple::serialize_element,
+    SerializeTupleStruct::serialize_field,
+    SerializeTupleVariant::serialize_field
+);
 impl ser::SerializeMap for Compound<'_> {
     type Ok = ();
     type Error = Stop;
@@ -259,34 +240,26 @@ impl ser::SerializeMap for Compound<'_> {
         self.done()
     }
 }
-impl ser::SerializeStruct for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        k: &'static str,
-        v: &T,
-    ) -> Result<(), Stop> {
-        self.field(k, v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
+/// The struct-like compounds: each field is its name.
+macro_rules! named_compound {
+    ($($trait:ident),*) => {$(
+        impl ser::$trait for Compound<'_> {
+            type Ok = ();
+            type Error = Stop;
+            fn serialize_field<T: Serialize + ?Sized>(
+                &mut self,
+                k: &'static str,
+                v: &T,
+            ) -> Result<(), Stop> {
+                self.field(k, v)
+            }
+            fn end(self) -> Result<(), Stop> {
+                self.done()
+            }
+        }
+    )*};
 }
-impl ser::SerializeStructVariant for Compound<'_> {
-    type Ok = ();
-    type Error = Stop;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        k: &'static str,
-        v: &T,
-    ) -> Result<(), Stop> {
-        self.field(k, v)
-    }
-    fn end(self) -> Result<(), Stop> {
-        self.done()
-    }
-}
+named_compound!(SerializeStruct, SerializeStructVariant);
 
 #[cfg(test)]
 mod tests {

@@ -71,6 +71,31 @@ fn meshes_without_the_base_topology_and_unknown_names_are_refused() {
     ));
 }
 
+/// An expression weight is a finite number within the morph weight range
+/// (1e300 used to reach the solver and fail as "two consecutive equal
+/// points" of a curve).
+#[test]
+fn expression_weights_outside_the_morph_range_are_refused_by_name() {
+    use pdesculpt::makehuman::MORPH_WEIGHT_MAX;
+    for w in [
+        f64::NAN,
+        f64::INFINITY,
+        1e300,
+        -1e300,
+        MORPH_WEIGHT_MAX * 1.5,
+    ] {
+        match expression::expression("AU12", w) {
+            Err(e @ FaceError::Weight { .. }) => {
+                assert!(e.to_string().contains("AU12"), "{e}")
+            }
+            other => panic!("{w}: {other:?}"),
+        }
+    }
+    for w in [0.0, 1.0, -MORPH_WEIGHT_MAX, MORPH_WEIGHT_MAX] {
+        expression::expression("AU12", w).expect("a weight in range");
+    }
+}
+
 #[test]
 fn the_obj_rewrite_keeps_every_line_but_the_vertices() {
     let text = "# c\nv 1 2 3\nvt 0 0\nv 4 5 6\nf 1 2\n";

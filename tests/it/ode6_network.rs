@@ -202,6 +202,32 @@ fn curves_that_miss_their_nodes_and_nan_are_refused() {
     ));
 }
 
+/// Counts and coordinates are bounded before any solve: a curve of 400,000
+/// points once reached the periodic spline's dense LU (a 1.3 TB
+/// allocation, an abort), a node at 1e300 was reported "inf away".
+#[test]
+fn huge_counts_and_far_coordinates_are_refused_before_the_solve() {
+    use pdesculpt::limits::{MODEL_COORD, NETWORK_CURVE_POINTS};
+    let mut doc = samples::wavy_grid(2, 2, &[]);
+    let p = doc.curves[0].points[1];
+    let too_many = NETWORK_CURVE_POINTS.max as usize + 1;
+    doc.curves[0]
+        .points
+        .splice(1..2, std::iter::repeat_n(p, too_many));
+    match refused(doc) {
+        NetworkError::Limit(e) => assert!(e.to_string().contains("curves[0].points"), "{e}"),
+        other => panic!("{other:?}"),
+    }
+    let mut doc = samples::wavy_grid(2, 2, &[]);
+    doc.nodes[0][0] = 1e300;
+    match refused(doc) {
+        NetworkError::Coordinate { value, max, .. } => {
+            assert_eq!((value, max), (1e300, MODEL_COORD))
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
 #[test]
 fn joins_that_cannot_be_c2_are_refused_by_name() {
     // unequal parameters across a v-edge (eq 26)

@@ -130,26 +130,10 @@ fn lower_layers_name_no_family() {
     );
 }
 
-/// Every numbered equation of the five papers (typed from the texts in
-/// /work/shared/papers: 000 eqs 1-16 with appendix eqs A1-A5 and B1-B3; 001
-/// eqs 1-16; 002 eqs 1-27 with appendix eqs A1-A36, numbered as laid out in
-/// `src/pde6/check/printed_appendix.rs`; 003 has no numbered
-/// equations, its displayed definitions are checked under "sec 3.x"; 004
-/// eqs 1-26).
+/// Every numbered equation of the five papers: the one list the equation
+/// index uses ([`pdesculpt::equations::numbered_equations`]).
 fn numbered_equations() -> Vec<(&'static str, Vec<String>)> {
-    let range = |prefix: &str, a: usize, b: usize| -> Vec<String> {
-        (a..=b).map(|i| format!("{prefix}{i}")).collect()
-    };
-    vec![
-        (
-            "000",
-            [range("", 1, 16), range("A", 1, 5), range("B", 1, 3)].concat(),
-        ),
-        ("001", range("", 1, 16)),
-        ("002", [range("", 1, 27), range("A", 1, 36)].concat()),
-        ("003", Vec::new()),
-        ("004", range("", 1, 26)),
-    ]
+    pdesculpt::equations::numbered_equations()
 }
 
 /// Equations that still have no check naming them alone (issue 17). This

@@ -30,7 +30,7 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/body/layout.rs", "find_layout", 135),
     ("src/character/assembly.rs", "build_model_with", 243),
     ("src/character/log/stroke.rs", "new", 157),
-    ("src/character/log/summary.rs", "summary", 126),
+    ("src/character/log/summary.rs", "summary", 114),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/cli/conv.rs", "run", 152),
     ("src/cli/demo.rs", "run", 131),

@@ -8,6 +8,16 @@ fn n(x: f64) -> Num {
     Num(x)
 }
 
+/// A vector as `(x, y, z)` of [`n`]s.
+fn v3(v: &[f64; 3]) -> String {
+    format!("({}, {}, {})", n(v[0]), n(v[1]), n(v[2]))
+}
+
+/// A range as `[a, b]` of [`n`]s.
+fn r2(r: &[f64; 2]) -> String {
+    format!("[{}, {}]", n(r[0]), n(r[1]))
+}
+
 impl Edit {
     /// One line for `character log` and the TUI.
     pub fn summary(&self) -> String {
@@ -23,32 +33,30 @@ impl Edit {
                     None => format!("all sections of {part}"),
                 };
                 let t = match transform {
-                    SectionTransform::Translate { d } => {
-                        format!("translate by ({}, {}, {})", n(d[0]), n(d[1]), n(d[2]))
+                    SectionTransform::Translate { d } => format!("translate by {}", v3(d)),
+                    SectionTransform::Scale { sx, sy } => {
+                        format!("scale by ({}, {})", n(*sx), n(*sy))
                     }
-                    SectionTransform::Scale { sx, sy } => format!("scale by ({}, {})", n(*sx), n(*sy)),
                     SectionTransform::Rotate { angle } => format!("rotate by {} rad", n(*angle)),
-                    SectionTransform::Bend { kappa, axis } => format!(
-                        "bend with curvature {} about ({}, {}, {})",
-                        n(*kappa),
-                        n(axis[0]),
-                        n(axis[1]),
-                        n(axis[2])
-                    ),
+                    SectionTransform::Bend { kappa, axis } => {
+                        format!("bend with curvature {} about {}", n(*kappa), v3(axis))
+                    }
                     SectionTransform::Bump { h, theta, sigma } => {
-                        format!("bump of height {} at {} rad, width {}", n(*h), n(*theta), n(*sigma))
+                        format!(
+                            "bump of height {} at {} rad, width {}",
+                            n(*h),
+                            n(*theta),
+                            n(*sigma)
+                        )
                     }
                 };
                 format!("GEC {t}: {which}")
             }
             Edit::Force { part, u, force, a } => format!(
-                "force {:?} p = ({}, {}, {}) on {part} over u in [{}, {}], a = {}",
+                "force {:?} p = {} on {part} over u in {}, a = {}",
                 force.kind,
-                n(force.p[0]),
-                n(force.p[1]),
-                n(force.p[2]),
-                n(u[0]),
-                n(u[1]),
+                v3(&force.p),
+                r2(u),
                 n(*a)
             ),
             Edit::ForceRegion {
@@ -58,15 +66,11 @@ impl Edit {
                 force,
                 a,
             } => format!(
-                "4-sided force {:?} p = ({}, {}, {}) on {part} inside u in [{}, {}], theta in [{}, {}], a = {}",
+                "4-sided force {:?} p = {} on {part} inside u in {}, theta in {}, a = {}",
                 force.kind,
-                n(force.p[0]),
-                n(force.p[1]),
-                n(force.p[2]),
-                n(u[0]),
-                n(u[1]),
-                n(theta[0]),
-                n(theta[1]),
+                v3(&force.p),
+                r2(u),
+                r2(theta),
                 n(*a)
             ),
             Edit::ForceStroke {
@@ -76,11 +80,9 @@ impl Edit {
                 force,
                 a,
             } => format!(
-                "4-sided force {:?} p = ({}, {}, {}) on {part} inside a stroke of {} points{}, a = {}",
+                "4-sided force {:?} p = {} on {part} inside a stroke of {} points{}, a = {}",
                 force.kind,
-                n(force.p[0]),
-                n(force.p[1]),
-                n(force.p[2]),
+                v3(&force.p),
                 stroke.len(),
                 match corners {
                     Some(c) => format!(" (corners {}, {}, {}, {})", c[0], c[1], c[2], c[3]),
@@ -100,7 +102,7 @@ impl Edit {
                     what.push("new curve".to_string());
                 }
                 if let Some(t) = tangent {
-                    what.push(format!("tangent change ({}, {}, {})", n(t[0]), n(t[1]), n(t[2])));
+                    what.push(format!("tangent change {}", v3(t)));
                 }
                 format!("boundary of {part} at its {end:?}: {}", what.join(", "))
             }
@@ -110,14 +112,10 @@ impl Edit {
                 radius,
                 d,
             } => format!(
-                "plate bend of {part} within {} of ({}, {}, {}) by ({}, {}, {})",
+                "plate bend of {part} within {} of {} by {}",
                 n(*radius),
-                n(centre[0]),
-                n(centre[1]),
-                n(centre[2]),
-                n(d[0]),
-                n(d[1]),
-                n(d[2])
+                v3(centre),
+                v3(d)
             ),
             Edit::Sasm(s) => format!(
                 "SASM on {}: closed curve of {} points ({} view) + {} profile(s)",

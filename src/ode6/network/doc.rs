@@ -232,6 +232,17 @@ impl NetworkDoc {
         if self.patches.is_empty() {
             return Err(NetworkError::Empty);
         }
+        use crate::limits::{check, NETWORK_CURVES, NETWORK_CURVE_POINTS, NETWORK_PATCHES};
+        check("patches (count)", self.patches.len(), NETWORK_PATCHES)?;
+        check("curves (count)", self.curves.len(), NETWORK_CURVES)?;
+        check("nodes (count)", self.nodes.len(), NETWORK_CURVES)?;
+        for (k, c) in self.curves.iter().enumerate() {
+            check(
+                &format!("curves[{k}].points (count)"),
+                c.points.len(),
+                NETWORK_CURVE_POINTS,
+            )?;
+        }
         for (i, p) in self.nodes.iter().enumerate() {
             finite(p, || format!("node {i}"))?;
         }
@@ -348,11 +359,19 @@ impl NetworkDoc {
     }
 }
 
+/// A point's coordinates: finite and within [`crate::limits::MODEL_COORD`].
 fn finite(p: &[f64; 3], what: impl Fn() -> String) -> Result<(), NetworkError> {
-    if p.iter().all(|x| x.is_finite()) {
-        Ok(())
-    } else {
-        Err(NetworkError::NonFinite { what: what() })
+    if !p.iter().all(|x| x.is_finite()) {
+        return Err(NetworkError::NonFinite { what: what() });
+    }
+    let max = crate::limits::MODEL_COORD;
+    match p.iter().find(|x| x.abs() > max) {
+        Some(&value) => Err(NetworkError::Coordinate {
+            what: what(),
+            value,
+            max,
+        }),
+        None => Ok(()),
     }
 }
 

@@ -55,6 +55,10 @@ pub enum NetworkError {
     Version { found: u32, supported: u32 },
     #[error("the network has no patches")]
     Empty,
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
+    #[error("{what} = {value:e} is beyond {max:e} in magnitude (the model coordinate bound)")]
+    Coordinate { what: String, value: f64, max: f64 },
     #[error("{what} is not finite")]
     NonFinite { what: String },
     #[error("curve {curve} names node {node}, but there are {nodes} nodes")]
