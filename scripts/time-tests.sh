@@ -21,11 +21,13 @@ cd "$(dirname "$0")/.."
 OUT=${1:-$(mktemp -d -t pdesculpt-time.XXXXXX)}
 mkdir -p "$OUT"
 log() { echo "time-tests: $*" >&2; }
-# runs "$@" under /usr/bin/time; prints "wall cpu" (seconds) to stdout
+# timed LOG CMD...: runs CMD under /usr/bin/time with its stdout and
+# stderr in LOG (a file or /dev/null); prints "wall cpu" (seconds) to stdout
 timed() {
-    local tf
+    local tf log=$1
+    shift
     tf=$(mktemp)
-    /usr/bin/time -f "%e %U %S" -o "$tf" "$@"
+    /usr/bin/time -f "%e %U %S" -o "$tf" "$@" >"$log" 2>&1
     local rc=$?
     awk '{printf "%.1f %.1f\n", $1, $2 + $3}' "$tf"
     rm -f "$tf"
@@ -34,8 +36,8 @@ timed() {
 export CARGO_TERM_COLOR=never
 
 log "building release and the test binaries (output in $OUT)"
-read -r rb_wall rb_cpu < <(timed cargo build --release --workspace --bins 2>"$OUT/build-release.log")
-read -r tb_wall tb_cpu < <(timed cargo test --workspace --no-run 2>"$OUT/build-tests.log")
+read -r rb_wall rb_cpu < <(timed "$OUT/build-release.log" cargo build --release --workspace --bins)
+read -r tb_wall tb_cpu < <(timed "$OUT/build-tests.log" cargo test --workspace --no-run)
 
 log "listing tests and checks"
 # "binary: test name" (the unit tests of src/lib.rs are binary `pdesculpt`,
@@ -63,14 +65,14 @@ echo "| cargo test --workspace --no-run (warm) | $tb_wall | $tb_cpu |"
 
 if [ -z "${SKIP_CARGO_TEST:-}" ]; then
     log "cargo test --workspace"
-    read -r ct_wall ct_cpu < <(timed cargo test --workspace >"$OUT/cargo-test.log" 2>&1)
+    read -r ct_wall ct_cpu < <(timed "$OUT/cargo-test.log" cargo test --workspace)
     echo "| cargo test --workspace (warm) | $ct_wall | $ct_cpu |"
 fi
-v_line=$(timed target/release/pdesculpt verify --json 2>/dev/null >/dev/null)
+v_line=$(timed /dev/null target/release/pdesculpt verify --json)
 echo "| pdesculpt verify (release, all families) | ${v_line% *} | ${v_line#* } |"
 eq_args=()
 for f in jet mesh surface derivatives gec pde4 plate pde6 ode6 conv; do eq_args+=(--family "$f"); done
-eq_line=$(timed target/release/pdesculpt verify "${eq_args[@]}" --json 2>/dev/null >/dev/null)
+eq_line=$(timed /dev/null target/release/pdesculpt verify "${eq_args[@]}" --json)
 echo "| pdesculpt verify, the equation families (jet mesh surface derivatives gec pde4 plate pde6 ode6 conv) | ${eq_line% *} | ${eq_line#* } |"
 echo
 echo "Verify per family (release, one process each; \`pdesculpt verify --family F --json\`):"
@@ -79,7 +81,7 @@ echo "| family | checks | wall s | CPU s |"
 echo "|---|---:|---:|---:|"
 for f in $(cut -f1 "$OUT/checks.txt" | uniq); do
     n=$(awk -F'\t' -v f="$f" '$1 == f' "$OUT/checks.txt" | wc -l)
-    line=$(timed target/release/pdesculpt verify --family "$f" --json 2>/dev/null >/dev/null)
+    line=$(timed /dev/null target/release/pdesculpt verify --family "$f" --json)
     echo "| $f | $n | ${line% *} | ${line#* } |"
 done
 echo
@@ -87,8 +89,8 @@ echo "$(wc -l <"$OUT/tests.txt") tests, $(wc -l <"$OUT/checks.txt") checks."
 
 if [ -z "${SKIP_NEXTEST:-}" ] && command -v cargo-nextest >/dev/null 2>&1; then
     log "cargo nextest run --workspace (per-test times)"
-    read -r nx_wall nx_cpu < <(timed cargo nextest run --workspace --no-fail-fast \
-        --success-output never --failure-output final >"$OUT/nextest.log" 2>&1)
+    read -r nx_wall nx_cpu < <(timed "$OUT/nextest.log" cargo nextest run --workspace --no-fail-fast \
+        --success-output never --failure-output final)
     echo
     echo "\`cargo nextest run --workspace\`: $nx_wall s wall, $nx_cpu s CPU. Slowest tests (wall, own process):"
     echo
