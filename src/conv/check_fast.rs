@@ -22,8 +22,10 @@ const FAMILY: &str = "conv";
 const PAPER: &str = "003";
 
 /// Largest distance between the narrow-band and the reference surfaces,
-/// relative to the model size (bounding-box diagonal): 0.1 %.
-pub const FAST_MESH_TOLERANCE: f64 = 1e-3;
+/// relative to the model size (bounding-box diagonal). The four bundled
+/// models measure 0.9e-6 to 3.4e-6 (issue 31: within about 10x of what is
+/// measured; issue 16's budget was 1e-3).
+pub const FAST_MESH_TOLERANCE: f64 = 3e-5;
 /// Resolution of the fast-against-reference comparison in `verify`.
 pub const COMPARE_RESOLUTION: usize = 32;
 

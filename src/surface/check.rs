@@ -107,6 +107,11 @@ pub fn derivative_check<S: Surface>(sample: &str, paper: &str, s: &S) -> Check {
     .note(format!(
         "{sample}: jet S_u, S_v, S_uu, S_uv, S_vv vs central differences (step 1e-4 of the domain) at four interior points, relative"
     ))
+    .loose_because(
+        "one central-difference tolerance for every sample, so that no sample's bound is tuned \
+         to its own output: the second differences carry rounding eps / h^2 of about 2e-8 times \
+         the data scale, and the worst sample (derivatives.ode6.grid_3x2_column) measures 7.4e-7",
+    )
 }
 
 fn central<S: Surface>(s: &S, u: f64, v: f64, i: usize, j: usize) -> [f64; 3] {

@@ -28,6 +28,60 @@ fn every_check_passes() {
     assert!(failed.is_empty(), "failing checks:\n{}", failed.join("\n"));
 }
 
+/// Issue 31: a tolerance within about 10x of what is measured, or a stated
+/// reason. A check whose tolerance is more than `LOOSE_RATIO` (1000) times
+/// its measured value names why (`Check::loose_because`), unless it
+/// measures at the level of f64 rounding (`verify` then gives it
+/// `ROUNDING_REASON`).
+#[test]
+fn every_loose_tolerance_states_its_reason() {
+    let loose: Vec<String> = all_checks()
+        .iter()
+        .filter(|c| c.is_loose() && c.tolerance_reason.is_empty())
+        .map(|c| {
+            format!(
+                "{}: measured {:e}, tolerance {:e}",
+                c.name, c.measured, c.tolerance
+            )
+        })
+        .collect();
+    assert!(
+        loose.is_empty(),
+        "tolerances over 1000x the measured value with no reason (tighten them or call \
+         Check::loose_because):\n{}",
+        loose.join("\n")
+    );
+}
+
+#[test]
+fn the_loose_rule_sees_a_loose_tolerance_and_not_a_paper_floor() {
+    use pdesculpt::check::{Check, Kind, ROUNDING_REASON};
+    let loose = Check::new("f", "-", "-", "f.loose", Kind::Reference, 1e-6, 1e-2);
+    assert!(loose.is_loose());
+    assert!(
+        loose
+            .clone()
+            .with_loose_reason()
+            .tolerance_reason
+            .is_empty(),
+        "1e-6 is not rounding"
+    );
+    let tight = Check::new("f", "-", "-", "f.tight", Kind::Reference, 1e-6, 1e-5);
+    assert!(!tight.is_loose());
+    let rounding = Check::new("f", "-", "-", "f.rounding", Kind::Reference, 0.0, 1e-12);
+    assert_eq!(
+        rounding.with_loose_reason().tolerance_reason,
+        ROUNDING_REASON
+    );
+    let floor = Check::paper_literal("f", "-", "-", "f.floor", 5.0, 1e-3, true);
+    assert!(
+        !floor.is_loose(),
+        "a differing paper form's tolerance is a floor"
+    );
+    let nan = Check::new("f", "-", "-", "f.nan", Kind::Reference, f64::NAN, 1.0);
+    assert!(!nan.is_loose());
+}
+
 #[test]
 fn check_names_are_unique() {
     let checks = all_checks();

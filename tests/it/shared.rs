@@ -45,7 +45,7 @@ pub fn family_checks(name: &str) -> &'static [Check] {
         .iter()
         .find(|f| f.name == name)
         .unwrap_or_else(|| panic!("no verify family {name}"));
-    MEMO.get(name, || (f.checks)())
+    MEMO.get(name, || f.run())
 }
 
 /// Every verify check, in registry order ([`family_checks`] of each family,

@@ -137,7 +137,8 @@ fn closed_checks(out: &mut Vec<Check>, bodies: Vec<(String, Vec<String>)>) {
                 c1,
                 JOIN_C1_MAX,
             )
-            .note("largest relative C1 jump of a transition against its parts along every join"),
+            .note("largest relative C1 jump of a transition against its parts along every join")
+            .loose_because(crate::check::JOIN_REQUIREMENT_REASON),
         );
         out.push(
             Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_rms_{name}"), Kind::Threshold, rms, RMS_MAX_REL)

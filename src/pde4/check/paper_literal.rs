@@ -77,7 +77,8 @@ pub(super) fn printed_statement_checks(out: &mut Vec<Check>) {
             (peak - 0.5 * (u0 + u1)).abs(),
             (u1 - u0) / PROFILE_SAMPLES as f64,
         )
-        .note("the corrected bump peaks at the midpoint (u0 + u1)/2 (grid search, 200 samples)"),
+        .note("the corrected bump peaks at the midpoint (u0 + u1)/2 (grid search, 200 samples)")
+        .loose_because("a grid search: the midpoint is a grid sample, so it is found exactly; the tolerance is one grid step, the search's resolution"),
     );
 
     // eq 15: a_t2 varied alone, printed dbar and Galerkin
