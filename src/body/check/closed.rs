@@ -4,8 +4,8 @@
 //! every join, within the error targets.
 
 use crate::body::closed::{
-    load_body, reconstruct_closed, ClosedOptions, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX, MAX_MAX_REL,
-    RMS_MAX_REL, THUMB_SKIN_MAX_REL,
+    load_body, reconstruct_closed, ClosedOptions, ClosedReport, FULL_SKIN_MAX_KNOWN, JOIN_C1_MAX,
+    MAX_MAX_REL, RMS_MAX_REL, THUMB_SKIN_MAX_REL,
 };
 use crate::body::intersect::known_crossings;
 use crate::check::worst;
@@ -29,91 +29,121 @@ pub fn morph_closed_checks(out: &mut Vec<Check>, m: &str) {
     closed_checks(out, vec![(name, vec![m.to_string()])]);
 }
 
+/// What the closed-body checks read from one reconstruction.
+struct Measured {
+    /// Boundary, non-manifold and misoriented edges, non-manifold vertices.
+    topo: f64,
+    c1: f64,
+    rms: f64,
+    /// Outer-skin max, full-skin max.
+    max: [f64; 2],
+    note: String,
+    /// Crossing pairs and their description.
+    crossings: (f64, String),
+    /// Thumb max distance, web points inside, description.
+    thumb: (f64, f64, String),
+}
+
+impl Measured {
+    fn of(r: &ClosedReport) -> Self {
+        let thumb = (
+            // NaN for no hands (a missing hand fails, not 0)
+            if r.hands.is_empty() {
+                f64::NAN
+            } else {
+                r.hands
+                    .iter()
+                    .map(|h| h.thumb_skin_to_recon_max_rel)
+                    .fold(0.0, worst)
+            },
+            r.hands
+                .iter()
+                .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })
+                .sum::<f64>()
+                + if r.hands.len() == 2 { 0.0 } else { f64::INFINITY },
+            format!(
+                "per hand (left, right): {}",
+                r.hands
+                    .iter()
+                    .map(|h| format!(
+                        "{} thumb vertices, max {:.3} %; {} of {} web points inside; thumb arc +-{:.3} rad",
+                        h.thumb_vertices,
+                        100.0 * h.thumb_skin_to_recon_max_rel,
+                        h.web_points_inside,
+                        h.web_points,
+                        h.thumb_arc
+                    ))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ),
+        );
+        let t = &r.topology;
+        let bad =
+            (t.boundary_edges + t.nonmanifold_edges + t.misoriented_edges + t.nonmanifold_vertices)
+                as f64;
+        let note = format!(
+            "{} triangles; recon->skin RMS {:.3} % max {:.3} %, skin->recon RMS {:.3} % max {:.3} % (all skin), outer skin RMS {:.3} % max {:.3} % ({} cavity vertices left out); C0 {:.1e} C1 {:.1e} C2 {:.2} (Hermite transitions: C2 not claimed)",
+            r.triangles,
+            100.0 * r.recon_to_skin_rms_rel,
+            100.0 * r.recon_to_skin_max_rel,
+            100.0 * r.skin_to_recon_rms_rel,
+            100.0 * r.skin_to_recon_max_rel,
+            100.0 * r.skin_to_recon_outer_rms_rel,
+            100.0 * r.skin_to_recon_outer_max_rel,
+            r.skin_cavities.count,
+            r.max_join[0],
+            r.max_join[1],
+            r.max_join[2]
+        );
+        let x = &r.self_intersections;
+        let crossings = (
+            x.pairs as f64,
+            format!(
+                "{} crossing triangle pairs {:?}, first at {:?}",
+                x.pairs, x.by_groups, x.example
+            ),
+        );
+        Measured {
+            topo: bad,
+            c1: r.max_join[1],
+            rms: r.judged_rms_rel(),
+            max: [r.judged_max_rel(), r.skin_to_recon_max_rel],
+            note,
+            crossings,
+            thumb,
+        }
+    }
+
+    /// A failed reconstruction: every measurement NaN, so every check fails.
+    fn failed(e: impl std::fmt::Display) -> Self {
+        Measured {
+            topo: f64::NAN,
+            c1: f64::NAN,
+            rms: f64::NAN,
+            max: [f64::NAN; 2],
+            note: format!("failed: {e}"),
+            crossings: (f64::NAN, String::new()),
+            thumb: (f64::NAN, f64::NAN, String::new()),
+        }
+    }
+}
+
 fn closed_checks(out: &mut Vec<Check>, bodies: Vec<(String, Vec<String>)>) {
     for (name, morphs) in bodies {
         let known = known_crossings(&name);
         let run = load_body(None, &morphs)
             .and_then(|skin| reconstruct_closed(&skin, &ClosedOptions::default()));
-        let (topo, c1, rms, max, note, crossings, thumb) = match run {
-            Ok(b) => {
-                let r = b.report;
-                let thumb = (
-                    // NaN for no hands (a missing hand fails, not 0)
-                    if r.hands.is_empty() {
-                        f64::NAN
-                    } else {
-                        r.hands
-                            .iter()
-                            .map(|h| h.thumb_skin_to_recon_max_rel)
-                            .fold(0.0, worst)
-                    },
-                    r.hands
-                        .iter()
-                        .map(|h| h.web_points_inside as f64 + if h.web_points == 0 { f64::INFINITY } else { 0.0 })
-                        .sum::<f64>()
-                        + if r.hands.len() == 2 { 0.0 } else { f64::INFINITY },
-                    format!(
-                        "per hand (left, right): {}",
-                        r.hands
-                            .iter()
-                            .map(|h| format!(
-                                "{} thumb vertices, max {:.3} %; {} of {} web points inside; thumb arc +-{:.3} rad",
-                                h.thumb_vertices,
-                                100.0 * h.thumb_skin_to_recon_max_rel,
-                                h.web_points_inside,
-                                h.web_points,
-                                h.thumb_arc
-                            ))
-                            .collect::<Vec<_>>()
-                            .join("; ")
-                    ),
-                );
-                let t = &r.topology;
-                let bad = (t.boundary_edges
-                    + t.nonmanifold_edges
-                    + t.misoriented_edges
-                    + t.nonmanifold_vertices) as f64;
-                let note = format!(
-                    "{} triangles; recon->skin RMS {:.3} % max {:.3} %, skin->recon RMS {:.3} % max {:.3} % (all skin), outer skin RMS {:.3} % max {:.3} % ({} cavity vertices left out); C0 {:.1e} C1 {:.1e} C2 {:.2} (Hermite transitions: C2 not claimed)",
-                    r.triangles,
-                    100.0 * r.recon_to_skin_rms_rel,
-                    100.0 * r.recon_to_skin_max_rel,
-                    100.0 * r.skin_to_recon_rms_rel,
-                    100.0 * r.skin_to_recon_max_rel,
-                    100.0 * r.skin_to_recon_outer_rms_rel,
-                    100.0 * r.skin_to_recon_outer_max_rel,
-                    r.skin_cavities.count,
-                    r.max_join[0],
-                    r.max_join[1],
-                    r.max_join[2]
-                );
-                let x = &r.self_intersections;
-                let crossings = (
-                    x.pairs as f64,
-                    format!(
-                        "{} crossing triangle pairs {:?}, first at {:?}",
-                        x.pairs, x.by_groups, x.example
-                    ),
-                );
-                (
-                    bad,
-                    r.max_join[1],
-                    r.judged_rms_rel(),
-                    [r.judged_max_rel(), r.skin_to_recon_max_rel],
-                    note,
-                    crossings,
-                    thumb,
-                )
-            }
-            Err(e) => (
-                f64::NAN,
-                f64::NAN,
-                f64::NAN,
-                [f64::NAN; 2],
-                format!("failed: {e}"),
-                (f64::NAN, String::new()),
-                (f64::NAN, f64::NAN, String::new()),
-            ),
+        let Measured {
+            topo,
+            c1,
+            rms,
+            max,
+            note,
+            crossings,
+            thumb,
+        } = match run {
+            Ok(b) => Measured::of(&b.report),
+            Err(e) => Measured::failed(e),
         };
         out.push(
             Check::new(FAMILY, PAPER, WHERE, &format!("pde6.body_closed_thumb_{name}"), Kind::Threshold, thumb.0, THUMB_SKIN_MAX_REL)
