@@ -112,6 +112,12 @@ impl<const U: usize, const V: usize> Jet<U, V> {
         self.cyclic([c, -s, -c, s])
     }
 
+    /// `(sin, cos)` from one `sin_cos` of the value.
+    pub fn sin_cos(&self) -> (Self, Self) {
+        let (s, c) = self.value().sin_cos();
+        (self.cyclic([s, c, -s, -c]), self.cyclic([c, -s, -c, s]))
+    }
+
     /// Tangent (`sin / cos`).
     pub fn tan(&self) -> Self {
         self.sin() / self.cos()

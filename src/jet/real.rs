@@ -38,6 +38,10 @@ pub trait Real:
     fn ln(self) -> Self;
     fn sin(self) -> Self;
     fn cos(self) -> Self;
+    /// `(sin, cos)`, the angle reduced once.
+    fn sin_cos(self) -> (Self, Self) {
+        (self.sin(), self.cos())
+    }
     fn tan(self) -> Self;
     fn atan(self) -> Self;
     /// `atan2(self, x)`.
@@ -82,6 +86,9 @@ impl Real for f64 {
     }
     fn cos(self) -> Self {
         f64::cos(self)
+    }
+    fn sin_cos(self) -> (Self, Self) {
+        f64::sin_cos(self)
     }
     fn tan(self) -> Self {
         f64::tan(self)
@@ -130,6 +137,9 @@ impl<const U: usize, const V: usize> Real for Jet<U, V> {
     }
     fn cos(self) -> Self {
         Jet::cos(&self)
+    }
+    fn sin_cos(self) -> (Self, Self) {
+        Jet::sin_cos(&self)
     }
     fn tan(self) -> Self {
         Jet::tan(&self)

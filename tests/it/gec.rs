@@ -973,3 +973,20 @@ mod cli {
         assert!(String::from_utf8_lossy(&out.stdout).contains("--turns"));
     }
 }
+
+/// `Gec::sample_plane` reads its sines and cosines from one table of `m`
+/// angles; it agrees with `eval_plane` at each angle to rounding.
+#[test]
+fn sample_plane_equals_eval_plane() {
+    let g = sample_gec();
+    for m in [1, 2, 7, 1024] {
+        let pts = g.sample_plane(m);
+        assert_eq!(pts.len(), m);
+        for (k, p) in pts.iter().enumerate() {
+            let q = g.eval_plane(2.0 * std::f64::consts::PI * k as f64 / m as f64);
+            let d = (p[0] - q[0]).hypot(p[1] - q[1]);
+            assert!(d <= tol::ROUNDING, "m {m} k {k}: {p:?} vs {q:?}");
+        }
+    }
+    assert!(g.sample_plane(0).is_empty());
+}
