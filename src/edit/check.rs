@@ -204,26 +204,29 @@ pub fn sample_edits(doc: &CharacterDoc) -> Vec<Edit> {
     ]
 }
 
+fn c(eq: &str, n: &str, kind: Kind, m: f64, t: f64) -> Check {
+    Check::new("edit", "000", eq, &format!("edit.{n}"), kind, m, t)
+}
+
 /// Every check of the family.
 pub fn checks() -> Vec<Check> {
-    let c = |eq: &str, n: &str, kind, m: f64, t: f64| {
-        Check::new("edit", "000", eq, &format!("edit.{n}"), kind, m, t)
-    };
     let Some(doc) = female() else {
         return vec![c("sec 5", "setup", Kind::Threshold, f64::NAN, 0.0)
             .note("the bundled female failed to build")];
     };
-    let parts = &doc.parts;
-    let h = 1.7;
     let mut out = Vec::new();
-    let torso = &parts[0];
-    let e1 = torso.sections[0].e1;
-    let e2 = torso.sections[0].e2;
-    let parallel = torso
-        .sections
-        .iter()
-        .all(|s| dist(s.e1, e1) < tol::ROUNDING && dist(s.e2, e2) < tol::ROUNDING);
+    force_checks(&doc, &mut out);
+    out.extend(super::check_stroke::checks(&doc, |e| force4_mesh(&doc, e)));
+    transform_checks(&doc.parts, &mut out);
+    boundary_checks(&doc.parts, &mut out);
+    replay_checks(&doc, &mut out);
+    out
+}
 
+/// Sec 5.1: the 2-sided and 4-sided force edits are clamped at their
+/// boundary and local.
+fn force_checks(doc: &CharacterDoc, out: &mut Vec<Check>) {
+    let torso = &doc.parts[0];
     // force: the displacement and its u-derivative vanish at the range ends
     let force = sample_force(torso, [0.0, 0.0, 5.0]);
     let field = super::force4::force_field(&force);
@@ -268,15 +271,24 @@ pub fn checks() -> Vec<Check> {
     out.push(c("sec 5.1", "force4_outside", Kind::Threshold, m.2, 0.0).note(
         "4-sided force edit: largest displacement at 257 x 256 part-parameter samples off the open rectangle (u over twice its range, every angle) / peak (exactly zero)",
     ));
-    let moved_elsewhere = force4_mesh(&doc, &f4);
+    let moved_elsewhere = force4_mesh(doc, &f4);
     out.push(c("sec 5.1", "force4_mesh_local", Kind::Threshold, moved_elsewhere, 0.0).note(
         "4-sided force edit on the female: vertices moved outside the torso's group (the edit did move torso vertices; NaN if not)",
     ));
+}
 
-    out.extend(super::check_stroke::checks(&doc, |e| force4_mesh(&doc, e)));
+/// Sec 5.2: GEC transforms of every torso section equal the same transform
+/// of the surface points.
+fn transform_checks(parts: &[PartSpec], out: &mut Vec<Check>) {
+    let h = 1.7;
+    let torso = &parts[0];
+    let e1 = torso.sections[0].e1;
+    let e2 = torso.sections[0].e2;
+    let parallel = torso
+        .sections
+        .iter()
+        .all(|s| dist(s.e1, e1) < tol::ROUNDING && dist(s.e2, e2) < tol::ROUNDING);
 
-    // GEC transforms of all the torso's sections equal the same transform
-    // of its surface points
     let d = [0.01, -0.02, 0.03];
     let tr = Edit::GecTransform {
         part: "torso".into(),
@@ -325,9 +337,12 @@ pub fn checks() -> Vec<Check> {
     out.push(c("sec 5.2", "gec_rotate", Kind::Reference, m, tol::SOLVE).note(
         "rotating every torso section in its plane by 0.4 rad rotates every ring of the surface about the centre curve",
     ));
+}
 
-    // boundary tangent: the end tangent changes by exactly the request, the
-    // end curve stays
+/// Sec 5.1: a boundary tangent edit changes the end tangent by the request
+/// and keeps the end curve.
+fn boundary_checks(parts: &[PartSpec], out: &mut Vec<Check>) {
+    let h = 1.7;
     let t = [0.05, 0.0, 0.08];
     let bt = Edit::Boundary {
         part: "torso".into(),
@@ -353,10 +368,13 @@ pub fn checks() -> Vec<Check> {
     out.push(c("sec 5.1", "boundary_curve_kept", Kind::Boundary, m_c, tol::SOLVE).note(
         "boundary tangent edit: largest move of the end ring / height (the boundary curve stays)",
     ));
+}
 
-    // undo after N edits and replay against incremental application
-    let edits = sample_edits(&doc);
-    let base = build_document(&doc, Path::new("."), CHECK_RES, false).ok();
+/// Sec 5: undo after N edits and the replayed log against incremental
+/// application, bit for bit.
+fn replay_checks(doc: &CharacterDoc, out: &mut Vec<Check>) {
+    let edits = sample_edits(doc);
+    let base = build_document(doc, Path::new("."), CHECK_RES, false).ok();
     let mut session = Session::new(doc.clone(), PathBuf::from("."), CHECK_RES);
     let mut incremental = None;
     let mut ok = true;
@@ -407,5 +425,4 @@ pub fn checks() -> Vec<Check> {
     out.push(c("sec 5", "undo_bit_for_bit", Kind::Reference, m, 0.0).note(
         "six edits then six undos: differing vertex coordinates against the unedited build (bit for bit; the edits did move vertices)",
     ));
-    out
 }

@@ -21,8 +21,20 @@ pub(super) fn continuity_checks() -> Vec<Check> {
             &format!("jump of d^{i}S/du^{i} across the joins of a 3-patch chain with different shape parameters per patch (paper case, fig 4c case, fig 6b case)"),
         ));
     }
-    // A 3 x 2 grid of separately built patches (own Hermite constraint
-    // curves each, see `grid_knots`): C2 across every u-join and v-join.
+    grid_checks(&mut out);
+    let curves = BoundaryCurves::approach1(
+        Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
+        Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
+        [1.0, 0.5, -1.0, 2.0],
+    );
+    fig6b_check(&curves, &mut out);
+    grid_fast_path_check(curves, &mut out);
+    out
+}
+
+/// A 3 x 2 grid of separately built patches (own Hermite constraint
+/// curves each, see `grid_knots`): C2 across every u-join and v-join.
+fn grid_checks(out: &mut Vec<Check>) {
     let grid = grid_3x2();
     let gj = grid.as_ref().map(|g| g.join_jumps(16));
     let rel = |f: fn(&GridJumps) -> (f64, f64)| match &gj {
@@ -68,12 +80,10 @@ pub(super) fn continuity_checks() -> Vec<Check> {
             &format!("jump of d^{i}S/dv^{i} across the v-joins of the 3 x 2 grid (separate patches whose constraint curves meet C2 at the knot, equal shape parameters within a column), relative to |d^{i}S/dv^{i}| there"),
         ));
     }
-    // Fig 6b: split the same curves at v = 0.4, different parameters.
-    let curves = BoundaryCurves::approach1(
-        Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
-        Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
-        [1.0, 0.5, -1.0, 2.0],
-    );
+}
+
+/// Fig 6b: the same curves split at v = 0.4, different parameters.
+fn fig6b_check(curves: &Result<BoundaryCurves, Ode6Error>, out: &mut Vec<Check>) {
     let split = |pa: Params, pb: Params| -> ([f64; 3], f64) {
         let (Ok(c), Ok(ba), Ok(bb)) = (curves.clone(), Basis::new(pa), Basis::new(pb)) else {
             return ([f64::NAN; 3], f64::NAN);
@@ -104,7 +114,10 @@ pub(super) fn continuity_checks() -> Vec<Check> {
             same[0], fig6b[0], fig6b[1], fig6b[2]
         )),
     );
-    // Grid fast path equals point evaluation.
+}
+
+/// The grid fast path equals point evaluation.
+fn grid_fast_path_check(curves: Result<BoundaryCurves, Ode6Error>, out: &mut Vec<Check>) {
     let grid_err = match (curves, Basis::new(Params::new(1e-4, 3.0, 1e-4))) {
         (Ok(c), Ok(b)) => {
             let s = Ode6Surface::new(b, c).with_force(&Force::Sine {
@@ -138,5 +151,4 @@ pub(super) fn continuity_checks() -> Vec<Check> {
         tol::ROUNDING * 100.0,
         "tensor-product grid evaluator against point evaluation",
     ));
-    out
 }

@@ -3,15 +3,17 @@
 use super::*;
 use crate::check::{worst, Worst};
 
+/// The approach-1 curves of the forced surfaces.
+fn curves() -> Result<BoundaryCurves, Ode6Error> {
+    BoundaryCurves::approach1(
+        Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
+        Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
+        [1.0, 0.5, -1.0, 2.0],
+    )
+}
+
 /// Forced surfaces: residual of eq 2 and the constraints.
 pub(super) fn force_checks() -> Vec<Check> {
-    let curves = || {
-        BoundaryCurves::approach1(
-            Curve::Fourier(test_curve(1.0, 0.0, 0.0)),
-            Curve::Fourier(test_curve(0.6, 1.0, 1.0)),
-            [1.0, 0.5, -1.0, 2.0],
-        )
-    };
     let forces = [
         Force::Polynomial {
             coef: vec![
@@ -76,10 +78,32 @@ pub(super) fn force_checks() -> Vec<Check> {
             }
         }
     }
-    // Simple resonance (kappa^2 = -q_1): u cos particular solution, residual
-    // of the full forced surface; double resonance (repeated root): named error.
+    let resonant_res = resonant_residual();
+    let double = Basis::new(Params::new(1.0, 50.0, 625.0))
+        .ok()
+        .and_then(|b| curves().ok().map(|c| Ode6Surface::new(b, c)))
+        .map(|s| {
+            s.with_force(&Force::Sine {
+                amp: [1.0, 0.0, 0.0],
+                kappa: 5.0,
+                phase: 0.0,
+            })
+        });
+    let resonant = matches!(double, Some(Err(Ode6Error::Resonance { .. })));
+    vec![
+        ck("eq 2", "ode6.force_residual", Kind::Residual, res, tol::SOLVE, "rho S'''''' + eta S'''' + lambda S'' - F on forced surfaces (polynomial and sine F; 4 parameter sets incl. lambda = 0 and eta = lambda = 0), relative, jets"),
+        ck("eq 1", "ode6.force_boundary", Kind::Boundary, bnd, tol::SOLVE, "forced surfaces still meet the six constraints (approach 1 curves)"),
+        ck("eq 2", "ode6.force_resonant_residual", Kind::Residual, resonant_res, tol::SOLVE, "sine force at the simple resonance kappa^2 = -q_1 (rho = lambda = 1, eta = 3): u cos particular solution, relative residual of eq 2 (jets)"),
+        ck("eq 2", "ode6.force_double_resonance_named_error", Kind::Residual, if resonant { 0.0 } else { 1.0 }, 0.0, "a sine force at the repeated root q = -25 (rho = 1, eta = 50, lambda = 625, kappa = 5) gives Ode6Error::Resonance"),
+    ]
+}
+
+/// Simple resonance (kappa^2 = -q_1): the u cos particular solution, the
+/// relative residual of eq 2 on the full forced surface (jets). The double
+/// resonance (repeated root) is a named error, checked in [`force_checks`].
+fn resonant_residual() -> f64 {
     let q1 = Params::new(1.0, 3.0, 1.0).q_roots()[0].0;
-    let resonant_res = match (Basis::new(Params::new(1.0, 3.0, 1.0)), curves()) {
+    match (Basis::new(Params::new(1.0, 3.0, 1.0)), curves()) {
         (Ok(b), Ok(c)) => {
             let f = Force::Sine {
                 amp: [1.0, -0.5, 0.2],
@@ -109,22 +133,5 @@ pub(super) fn force_checks() -> Vec<Check> {
             }
         }
         _ => f64::NAN,
-    };
-    let double = Basis::new(Params::new(1.0, 50.0, 625.0))
-        .ok()
-        .and_then(|b| curves().ok().map(|c| Ode6Surface::new(b, c)))
-        .map(|s| {
-            s.with_force(&Force::Sine {
-                amp: [1.0, 0.0, 0.0],
-                kappa: 5.0,
-                phase: 0.0,
-            })
-        });
-    let resonant = matches!(double, Some(Err(Ode6Error::Resonance { .. })));
-    vec![
-        ck("eq 2", "ode6.force_residual", Kind::Residual, res, tol::SOLVE, "rho S'''''' + eta S'''' + lambda S'' - F on forced surfaces (polynomial and sine F; 4 parameter sets incl. lambda = 0 and eta = lambda = 0), relative, jets"),
-        ck("eq 1", "ode6.force_boundary", Kind::Boundary, bnd, tol::SOLVE, "forced surfaces still meet the six constraints (approach 1 curves)"),
-        ck("eq 2", "ode6.force_resonant_residual", Kind::Residual, resonant_res, tol::SOLVE, "sine force at the simple resonance kappa^2 = -q_1 (rho = lambda = 1, eta = 3): u cos particular solution, relative residual of eq 2 (jets)"),
-        ck("eq 2", "ode6.force_double_resonance_named_error", Kind::Residual, if resonant { 0.0 } else { 1.0 }, 0.0, "a sine force at the repeated root q = -25 (rho = 1, eta = 50, lambda = 625, kappa = 5) gives Ode6Error::Resonance"),
-    ]
+    }
 }

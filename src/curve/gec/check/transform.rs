@@ -57,9 +57,40 @@ pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
         tol::ROUNDING,
         "translation equals translated points",
     ));
-    // bump
+    let d = bump_error(tg, &th);
+    out.push(c(
+        "000 sec 5.2",
+        "gec.transform_bump",
+        Kind::Residual,
+        d,
+        tol::ROUNDING,
+        "local bump in coefficient space equals displaced points; peak height h at theta_c",
+    ));
+    let d = bend_error(tg, &th);
+    out.push(c(
+        "000 sec 5.2",
+        "gec.transform_bend_chain",
+        Kind::Residual,
+        d,
+        tol::ROUNDING,
+        "bending a chain of z-plane sections equals the bend deformer applied to their points",
+    ));
+}
+
+fn space_at(g: &Gec, th: &[f64]) -> Vec<[f64; 3]> {
+    th.iter().map(|t| g.eval(*t)).collect()
+}
+
+/// A local bump in coefficient space against the displaced points, and the
+/// peak height `h` at `theta_c`.
+fn bump_error(tg: &Gec, th: &[f64]) -> f64 {
+    let f = tg.frame;
+    let lift =
+        |p: &[[f64; 2]]| -> Vec<[f64; 3]> { p.iter().map(|q| f.place(q[0], q[1])).collect() };
+    let space = |g: &Gec| space_at(g, th);
+    let p0: Vec<[f64; 2]> = th.iter().map(|t| tg.eval_plane(*t)).collect();
     let (h, tc, sig) = (0.2, 1.1, 0.35);
-    let d = match tg.with_bump(h, tc, sig) {
+    match tg.with_bump(h, tc, sig) {
         Ok(b) => {
             let gs: Vec<f64> = (1..=tg.terms())
                 .map(|n| (-(n as f64 * sig).powi(2) / 2.0).exp())
@@ -85,17 +116,14 @@ pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
             max_diff3(&space(&b), &lift(&want)).worst(dpeak)
         }
         Err(_) => f64::NAN,
-    };
-    out.push(c(
-        "000 sec 5.2",
-        "gec.transform_bump",
-        Kind::Residual,
-        d,
-        tol::ROUNDING,
-        "local bump in coefficient space equals displaced points; peak height h at theta_c",
-    ));
-    // bend: a chain of sections perpendicular to the direction
-    let d = match Bend::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], 0.4) {
+    }
+}
+
+/// Bending a chain of z-plane sections against the bend deformer applied to
+/// their points.
+fn bend_error(tg: &Gec, th: &[f64]) -> f64 {
+    let space = |g: &Gec| space_at(g, th);
+    match Bend::new([0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0], 0.4) {
         Ok(bend) => (0..5)
             .map(|i| {
                 let sec = Gec::new(
@@ -116,13 +144,5 @@ pub(super) fn transform_checks(tg: &Gec, out: &mut Vec<Check>) {
             })
             .fold(0.0, worst),
         Err(_) => f64::NAN,
-    };
-    out.push(c(
-        "000 sec 5.2",
-        "gec.transform_bend_chain",
-        Kind::Residual,
-        d,
-        tol::ROUNDING,
-        "bending a chain of z-plane sections equals the bend deformer applied to their points",
-    ));
+    }
 }
