@@ -193,3 +193,17 @@ fn nan_survives_the_library_measurements() {
     };
     assert!(jumps.relative(0.0).is_nan(), "grid jumps dropped NaN");
 }
+
+/// The adaptive quadrature the conv closed forms are checked against
+/// returns NaN at once for a NaN integrand or tolerance: refining to its
+/// depth limit would take 2^40 Gauss-Kronrod rules (scripts/nan_inject.sh
+/// with NaN in `conv::kernel::f1` hung there before).
+#[test]
+fn the_reference_quadrature_returns_nan_at_once() {
+    use pdesculpt::conv::kernel::integrate;
+    assert!(integrate(&|_| f64::NAN, 0.0, 1.0, 1e-12).is_nan());
+    assert!(integrate(&|t| if t > 0.7 { f64::NAN } else { t }, 0.0, 1.0, 1e-12).is_nan());
+    assert!(integrate(&|t| t * t, 0.0, 1.0, f64::NAN).is_nan());
+    let third = integrate(&|t| t * t, 0.0, 1.0, 1e-12);
+    assert!((third - 1.0 / 3.0).abs() < 1e-12, "{third}");
+}

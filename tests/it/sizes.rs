@@ -42,14 +42,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/conv/stroke.rs", "filter_stroke", 112),
     ("src/demo/skirt.rs", "skirt", 132),
     ("src/mesh/io/ply.rs", "parse_ply", 186),
-    ("src/pde4/check/forces.rs", "force_checks", 173),
-    (
-        "src/pde4/check/four_sided_patch.rs",
-        "four_sided_checks",
-        192,
-    ),
-    ("src/pde4/check/two_sided_patch.rs", "two_sided_checks", 222),
-    ("src/pde6/check/chains.rs", "chain_checks", 200),
     (
         "src/pde6/check/printed_appendix_b.rs",
         "appendix_b_checks",

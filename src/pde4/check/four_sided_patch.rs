@@ -18,6 +18,15 @@ pub fn plate_centre(
 }
 
 pub(super) fn four_sided_checks(out: &mut Vec<Check>) {
+    table_checks(out);
+    fd_checks(out);
+    printed_check(out);
+    clamped_checks(out);
+}
+
+/// Galerkin plate deflections against the published tables (Timoshenko,
+/// Taylor & Govindjee).
+fn table_checks(out: &mut Vec<Check>) {
     let t = PLATE_TERMS;
     let gal = four_sided::Method::Galerkin;
     let sq = plate_centre(ShapeParams::PLATE, ForceKind::Uniform, t, gal);
@@ -85,8 +94,14 @@ pub(super) fn four_sided_checks(out: &mut Vec<Check>) {
             "uniform square vs 0.00126532 (Taylor & Govindjee); M = N = {t}, got {sq:.8}"
         )),
     );
-    // independent FD reference: first its own accuracy on the published uniform value,
-    // then the sinusoidal load (no trusted published clamped-plate value found)
+}
+
+/// The independent FD reference: first its own accuracy on the published
+/// uniform value, then the sinusoidal load (no trusted published
+/// clamped-plate value found).
+fn fd_checks(out: &mut Vec<Check>) {
+    let t = PLATE_TERMS;
+    let gal = four_sided::Method::Galerkin;
     let fd_u = super::super::fd::fd_centre_extrapolated(ShapeParams::PLATE, FD_GRID, |_, _| 1.0)
         .map_or(f64::NAN, |r| r.0);
     out.push(
@@ -134,6 +149,11 @@ pub(super) fn four_sided_checks(out: &mut Vec<Check>) {
             )),
         );
     }
+}
+
+/// Eqs 14-15 as printed against the plate value.
+fn printed_check(out: &mut Vec<Check>) {
+    let t = PLATE_TERMS;
     let pr = plate_centre(
         ShapeParams::PLATE,
         ForceKind::Uniform,
@@ -154,7 +174,11 @@ pub(super) fn four_sided_checks(out: &mut Vec<Check>) {
             "printed d_mn, uniform square, centre: {pr:.6} vs 0.00126532"
         )),
     );
-    // clamped edges of the Galerkin patch
+}
+
+/// The clamped edges of the Galerkin patch and its separable grid.
+fn clamped_checks(out: &mut Vec<Check>) {
+    let gal = four_sided::Method::Galerkin;
     let forces = sample_forces();
     let (bd, gd) = match FourSided::new([ShapeParams::uniform(0.3); 3], &forces, 8, 8, gal) {
         Ok(s) => {

@@ -46,7 +46,18 @@ pub fn two_sided_boundary(t: &TwoSided, b: Option<&Boundary>, samples: usize) ->
     worst
 }
 
+/// Modes (m) and harmonics (n) of the two-sided checks' solutions.
+const SIZE: (usize, usize) = (8, 6);
+
 pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
+    mode_check(out);
+    exact_checks(out);
+    printed_checks(out);
+    grid_check(out);
+}
+
+/// Eq 1's exact clamped modes against mpmath.
+fn mode_check(out: &mut Vec<Check>) {
     let g = golden();
     let modes = g["mode_solutions"].as_array().cloned().unwrap_or_default();
     let mut worst = if modes.is_empty() { f64::NAN } else { 0.0f64 };
@@ -75,8 +86,13 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         Check::new(F, P, "eq 1 modes", "pde4.two_sided.mode_vs_mpmath", Kind::Reference, worst, tol::SOLVE)
             .note("exact clamped mode solutions (distinct, double, complex roots, omega = 0) vs mpmath root-based solutions"),
     );
+}
+
+/// The exact solution: residual and boundary conditions, zero and
+/// non-zero boundary curves.
+fn exact_checks(out: &mut Vec<Check>) {
     let forces = sample_forces();
-    let (m, n) = (8, 6);
+    let (m, n) = SIZE;
     let mut res = 0.0f64;
     let mut bnd = 0.0f64;
     for (_, p) in root_cases() {
@@ -145,6 +161,13 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         )
         .note("PDE residual with non-zero boundary curves and tangents"),
     );
+}
+
+/// The printed forms: eq 7's basis clamped, eq 8 for n = 0, eq 9 against
+/// least squares and the exact solution.
+fn printed_checks(out: &mut Vec<Check>) {
+    let forces = sample_forces();
+    let (m, n) = SIZE;
     // printed basis eq 7: clamped
     let mut cl = 0.0f64;
     for mi in 1..=12 {
@@ -234,7 +257,12 @@ pub(super) fn two_sided_checks(out: &mut Vec<Check>) {
         )
         .note("max |printed solution - exact solution| / max |exact|, 3 parameter sets"),
     );
-    // fast grid
+}
+
+/// The separable grid evaluation against the direct double sum.
+fn grid_check(out: &mut Vec<Check>) {
+    let forces = sample_forces();
+    let (m, n) = SIZE;
     let gd = match TwoSided::new(
         [ShapeParams::uniform(0.3); 3],
         &forces,

@@ -6,8 +6,16 @@ use crate::check::{worst, Worst};
 /// Patches and chains for every sign of a: residual, interpolation, C2 joins,
 /// method 1's claim, conditioning, the fast grid.
 pub(super) fn chain_checks(out: &mut Vec<Check>) {
-    // patches and chains for every sign of a
     let sec = synthetic_sections(12, 6);
+    patch_checks(&sec, out);
+    global_checks(out);
+    method1_checks(&sec, out);
+    condition_check(out);
+    grid_check(&sec, out);
+}
+
+/// Patches and chains for every sign of a.
+fn patch_checks(sec: &[Section], out: &mut Vec<Check>) {
     for (name, a) in SIGNS {
         let nodes: [f64; 6] = std::array::from_fn(|i| sec[3 + i].u - sec[3].u);
         let nodes = nodes.map(|x| x / nodes[5]);
@@ -36,7 +44,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
                 .note(format!("patch failed: {e}")),
             ),
         }
-        match Chain::method2(a, &sec, 3) {
+        match Chain::method2(a, sec, 3) {
             Ok(c) => {
                 let j = c.join_jumps(JOIN_SAMPLES);
                 out.push(
@@ -88,8 +96,10 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
             ),
         }
     }
+}
 
-    // the stable global C2 chain, every sign of a
+/// The stable global C2 chain, every sign of a.
+fn global_checks(out: &mut Vec<Check>) {
     let sec13 = synthetic_sections(13, 6);
     for (name, a) in SIGNS {
         match Chain::c2_global(a, &sec13) {
@@ -145,10 +155,12 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
             ),
         }
     }
+}
 
-    // method 1: the paper claims C2; measure the slope jump
+/// Method 1: the paper claims C2; the slope jump is measured.
+fn method1_checks(sec: &[Section], out: &mut Vec<Check>) {
     let a = SIGNS[0].1;
-    let (m, c0) = match Chain::method1(a, &sec, 3) {
+    let (m, c0) = match Chain::method1(a, sec, 3) {
         Ok(c) => {
             let j = c.join_jumps(JOIN_SAMPLES);
             (j[1], j[0])
@@ -163,8 +175,11 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
         Check::paper_literal(FAMILY, PAPER, "section 3.2.2", "pde6.method1_c2_claim", m, JUMP_FLOOR, true)
             .note("the paper says sharing three sections makes method 1 C2; measured relative jump of S_u at the joins (a = -0.5, 12 sections)"),
     );
+}
 
-    // conditioning over the documented range, stable vs paper basis
+/// Conditioning over the documented range, the stable basis against the
+/// paper's.
+fn condition_check(out: &mut Vec<Check>) {
     let (mut worst, mut worst_paper) = (0.0f64, 0.0f64);
     for &a in &[-10.0, -1.0, -1e-2, -1e-6, 0.0, 1e-6, 1e-2, 1.0, 10.0] {
         for n in [0usize, 1, 5, 10, 15, 20] {
@@ -184,9 +199,11 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
         Check::new(FAMILY, PAPER, "eqs 21-23, A34-A36", "pde6.condition_documented_range", Kind::Threshold, worst, CONDITION_BOUND)
             .note(format!("worst 1-norm condition number of the 6x6 solves, |a| <= 10 (and 1e-6), n <= 20, method 1 and 2 conditions, stable basis; the paper's basis reaches {worst_paper:.2e}")),
     );
+}
 
-    // fast grid against the generic evaluation
-    if let Ok(c) = Chain::method2(SIGNS[2].1, &sec, 0) {
+/// The fast grid against the generic evaluation.
+fn grid_check(sec: &[Section], out: &mut Vec<Check>) {
+    if let Ok(c) = Chain::method2(SIGNS[2].1, sec, 0) {
         let d = c.domain();
         let us: Vec<f64> = (0..=23)
             .map(|i| d.u.0 + (d.u.1 - d.u.0) * i as f64 / 23.0)
