@@ -7,7 +7,10 @@
 # family's verify checks (`src/verify/mutants_oracle.rs`, the same checks as
 # `pdesculpt verify --family FAMILY`) plus the family's own unit tests in the
 # library, all in the library's unit-test binary, so each mutant costs one
-# incremental dev-profile build of the library in test mode. Integration
+# incremental dev-profile build of the library in test mode
+# (`--cargo-arg=--lib` reaches cargo-mutants' build phase, `cargo test
+# --no-run`, as well as the test phase: without it every mutant built the
+# integration tests and the examples too). Integration
 # tests (tests/it) are left out of the oracle: each mutant would relink that
 # 15k-line binary, and CPU on the shared machine does not allow it.
 #
@@ -73,5 +76,6 @@ exec nice -n 10 cargo mutants \
   "${args[@]}" \
   --in-place \
   --output "$root/mutants.out/$family" \
+  --cargo-arg=--lib \
   "$@" \
-  -- --lib -- --include-ignored "$filter" mutants_oracle
+  -- --include-ignored "$filter" mutants_oracle
