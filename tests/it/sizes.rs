@@ -42,16 +42,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/conv/stroke.rs", "filter_stroke", 112),
     ("src/demo/skirt.rs", "skirt", 132),
     ("src/mesh/io/ply.rs", "parse_ply", 186),
-    (
-        "src/pde6/check/printed_appendix_b.rs",
-        "appendix_b_checks",
-        176,
-    ),
-    (
-        "src/pde6/check/printed_checks.rs",
-        "printed_main_checks",
-        223,
-    ),
     ("src/pde6/spline.rs", "c2_global", 131),
     ("src/plate/check/projection.rs", "projection_checks", 127),
     ("src/plate/mapping.rs", "harmonic_disk", 103),

@@ -38,19 +38,48 @@ fn printed_ends(
     }
 }
 
+/// The project's functions of patches 1 and 2, and patch 1's in the
+/// paper's basis, shared by the appendix B checks.
+struct Fns {
+    f1: Vec<(Role, usize, usize, FnBasis, [f64; 6])>,
+    f2: Vec<(Role, usize, usize, FnBasis, [f64; 6])>,
+    paper1: Vec<Option<[f64; 6]>>,
+}
+
+impl Fns {
+    fn new(p2: &Piece, p1: &Piece) -> Fns {
+        let f1 = functions(&p1.patch);
+        let f2 = functions(&p2.patch);
+        let paper1 = f1
+            .iter()
+            .map(|(_, _, _, b, c)| to_paper_basis(b, c))
+            .collect();
+        Fns { f1, f2, paper1 }
+    }
+
+    /// Index of patch 1's function (role, n, k).
+    fn find1(&self, role: Role, n: usize, k: usize) -> Option<usize> {
+        self.f1
+            .iter()
+            .position(|f| f.0 == role && f.1 == n && f.2 == k)
+    }
+}
+
 pub(super) fn appendix_b_checks(out: &mut Vec<Check>, p2: &Piece, p1: &Piece, sec: &[Section]) {
-    let f1 = functions(&p1.patch);
-    let f2 = functions(&p2.patch);
-    let paper1: Vec<Option<[f64; 6]>> = f1
-        .iter()
-        .map(|(_, _, _, b, c)| to_paper_basis(b, c))
-        .collect();
-    let find1 = |role: Role, n: usize, k: usize| {
-        f1.iter().position(|f| f.0 == role && f.1 == n && f.2 == k)
-    };
+    let fns = Fns::new(p2, p1);
+    equalised_checks(&fns, out);
+    end_derivative_checks(&fns, out);
+    substituted_checks(&fns, out);
+    patch2_checks(&fns, p2, sec, out);
+}
+
+/// A17, A18: the equalised conditions, jets of the project functions.
+fn equalised_checks(fns: &Fns, out: &mut Vec<Check>) {
+    let (f1, f2) = (&fns.f1, &fns.f2);
+    let find1 = |role: Role, n: usize, k: usize| fns.find1(role, n, k);
     // A17, A18: the equalised conditions, jets of the project functions
     let (mut e17, mut e18) = (0.0f64, 0.0f64);
-    for (role, n, k, b, c) in &f2 {
+    for (role, n, k, b, c) in f2 {
         let Some(i1) = find1(*role, *n, *k) else {
             e17 = f64::NAN;
             continue;
@@ -82,9 +111,14 @@ pub(super) fn appendix_b_checks(out: &mut Vec<Check>, p2: &Piece, p1: &Piece, se
         )
         .note("A18: the same for A_wn and B_wn (w = x, y; n = 1..6)"),
     );
+}
+
+/// A19-A26: the printed end derivatives against jets.
+fn end_derivative_checks(fns: &Fns, out: &mut Vec<Check>) {
+    let (f1, f2) = (&fns.f1, &fns.f2);
     // A19-A26: printed end derivatives against jets
     let mut errs = [0.0f64; 8];
-    for (patch_fns, at_one) in [(&f1, false), (&f2, true)] {
+    for (patch_fns, at_one) in [(f1, false), (f2, true)] {
         for (role, _, _, b, c) in patch_fns.iter() {
             let Some(pc) = to_paper_basis(b, c) else {
                 errs = [f64::NAN; 8];
@@ -120,9 +154,15 @@ pub(super) fn appendix_b_checks(out: &mut Vec<Check>, p2: &Piece, p1: &Piece, se
         out.push(Check::new(FAMILY, PAPER, &format!("eq {eq}"), &format!("pde6.printed.{}_end_derivative", eq.to_lowercase()), Kind::Reference, errs[i], PRINTED_TOL)
             .note(format!("{eq} as printed (minus signs restored), {what}: the function converted to the paper's basis against the jets of the project's closed form")));
     }
+}
+
+/// A27-A29: the printed substituted conditions on the built chain.
+fn substituted_checks(fns: &Fns, out: &mut Vec<Check>) {
+    let (f2, paper1) = (&fns.f2, &fns.paper1);
+    let find1 = |role: Role, n: usize, k: usize| fns.find1(role, n, k);
     // A27-A29: the printed substituted conditions on the built chain
     let (mut e27, mut e28, mut e29, mut e29p) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
-    for (role, n, k, b, c) in &f2 {
+    for (role, n, k, b, c) in f2 {
         let (Some(pc2), Some(i1)) = (to_paper_basis(b, c), find1(*role, *n, *k)) else {
             e27 = f64::NAN;
             continue;
@@ -154,6 +194,13 @@ pub(super) fn appendix_b_checks(out: &mut Vec<Check>, p2: &Piece, p1: &Piece, se
     }
     out.push(Check::paper_literal(FAMILY, PAPER, "eqs 11, A24, A29", "pde6.paper_literal.a29_b_cos_argument", e29p, PRINTED_TOL, true)
         .note("A29 (and A24) with the printed 2 b_wn,1 q2n cos q2n: residual of the printed slope condition on the chain that satisfies the corrected one (misprint, ERRATA)"));
+}
+
+/// A31-A33 (patch 2 through C1-C4 per group) and A34-A36 with A27-A29
+/// (the 6x6 systems of patch 2 as printed).
+fn patch2_checks(fns: &Fns, p2: &Piece, sec: &[Section], out: &mut Vec<Check>) {
+    let (f1, paper1) = (&fns.f1, &fns.paper1);
+    let find1 = |role: Role, n: usize, k: usize| fns.find1(role, n, k);
     // A31-A33: patch 2 through C1-C4 per group
     let nodes = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0];
     let curves: Vec<&Fourier3> = sec[0..4].iter().map(|s| &s.curve).collect();

@@ -174,14 +174,22 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
             return;
         }
     };
-    let (p2, p1, p3) = (&chain.pieces[0], &chain.pieces[1], &chain.pieces[2]);
-    let all = [p2, p1, p3];
-    let tol = PRINTED_TOL;
     let layout = format!("method-2 chain, a = {a}, 12 synthetic sections with 6 harmonics in the paper's layout (P2 on C1-C4, P1 on C4-C9, P3 on C9-C12, unit local parameters)");
 
+    series_checks(&chain, &sec, &layout, out);
+    group_and_system_checks(&chain, &sec, a, out);
+    derivative_checks(&chain, out);
+    join_checks(&chain, &sec, name, &layout, out);
+}
+
+/// Eq 9's curves (the chain passes through them), the series of eqs 3-5
+/// and 14, and eq 15: patch 1 through C4-C9.
+fn series_checks(chain: &Chain, sec: &[Section], layout: &str, out: &mut Vec<Check>) {
+    let (p2, p1, p3) = (&chain.pieces[0], &chain.pieces[1], &chain.pieces[2]);
+    let all = [p2, p1, p3];
     // eq 9: the printed curves, and the chain passes through them
     let mut e9 = 0.0f64;
-    for s in &sec {
+    for s in sec {
         for j in 0..16 {
             let v = 2.0 * PI * j as f64 / 16.0 + 0.05;
             let (a, b) = (eq9_point(&s.curve, v), chain.point(s.u, v));
@@ -238,6 +246,15 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
         )
         .note("the printed series of patch 1 at u = 0.2 i against C_{i+4}(v), i = 0..5, 16 v"),
     );
+}
+
+/// Eqs 16-18 (the three groups), 6 and A7 (the quintic form), 19 and 21
+/// (patch 1's monomial system), 22-23 (the a < 0 systems) and eq 20 as
+/// printed.
+fn group_and_system_checks(chain: &Chain, sec: &[Section], a: f64, out: &mut Vec<Check>) {
+    let (p2, p1, p3) = (&chain.pieces[0], &chain.pieces[1], &chain.pieces[2]);
+    let all = [p2, p1, p3];
+    let tol = PRINTED_TOL;
     // eqs 16-18: the three groups
     let curves: Vec<&Fourier3> = sec[3..9].iter().map(|s| &s.curve).collect();
     for (eq, role, what) in [
@@ -307,6 +324,12 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
     }
     out.push(Check::paper_literal(FAMILY, PAPER, "eq 20", "pde6.paper_literal.eq20_prints_eq7_form", e20, RESIDUAL_TOL, true)
         .note(format!("eq 20 prints A_wn^P1 = (a0 + a1 u + a2 u^2) e^(q0n u) + (a3 + a4 u + a5 u^2) e^(-q0n u) (eq 7's a > 0 form) while eqs 22-23 solve eq 8's a < 0 form: its relative ODE residual A^(6) - a n^6 A at a = {a}, n = 1..6")));
+}
+
+/// Eqs 10-13: the printed derivatives against jets, and against SymPy.
+fn derivative_checks(chain: &Chain, out: &mut Vec<Check>) {
+    let all = [&chain.pieces[0], &chain.pieces[1], &chain.pieces[2]];
+    let tol = PRINTED_TOL;
     // eqs 10-13: printed derivatives against jets
     let e10 = derivative_error(&all, &[Role::W0], 1, false);
     let e11 = derivative_error(&all, &[Role::A, Role::B], 1, false);
@@ -358,6 +381,12 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
     );
     out.push(Check::new(FAMILY, PAPER, "eqs 11, 13", "pde6.printed.eq11_eq13_vs_sympy", Kind::Reference, eq11_13_vs_sympy(), tol::scaled(tol::ROUNDING, 10.0))
         .note("eqs 11 and 13 as printed (minus signs restored) for each of the six eq 8 basis functions against SymPy's derivatives at (q, u) = (1.3, 0.4), (4.7, 0.85), (2.2, 1) (verify/printed_forms.py, which also proves the restored formulas equal the derivatives symbolically)"));
+}
+
+/// Eq 24 (C2 across the joins in the printed local parameters) and eq 27
+/// (patch 3 as printed, z constant).
+fn join_checks(chain: &Chain, sec: &[Section], name: &str, layout: &str, out: &mut Vec<Check>) {
+    let (p2, p1, p3) = (&chain.pieces[0], &chain.pieces[1], &chain.pieces[2]);
     // eq 24: C2 across the joins in the printed local parameters
     let mut e24 = 0.0f64;
     for (lo, hi) in [(p2, p1), (p1, p3)] {
@@ -375,7 +404,7 @@ pub(super) fn printed_main_checks(out: &mut Vec<Check>) {
     out.push(Check::new(FAMILY, PAPER, "eq 24", &format!("pde6.printed.eq24_c2_local_{name}"), Kind::Continuity, e24, SOLVE_TOL)
         .note(format!("eq 24: dw^P2(1, v)/du = dw^P1(0, v)/du and the same for d2/du2 (and P3(0) against P1(1)), in each patch's own unit parameter, 16 v, {layout}")));
     // eq 27: patch 3 as printed (z constant)
-    let e27 = eq27_printed_interpolation_error(p3, &sec);
+    let e27 = eq27_printed_interpolation_error(p3, sec);
     out.push(Check::paper_literal(FAMILY, PAPER, "eq 27", &format!("pde6.paper_literal.eq27_constant_z_{name}"), e27, SOLVE_TOL, true)
         .note("eq 27 built as printed for patch 3: z^P3(u, v) = A_z0^P3(0) constant; max distance to the sections C9-C12 it must pass through (the corrected A_z0^P3(u) passes: pde6.method2_interpolates_*)"));
 }
