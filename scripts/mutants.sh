@@ -78,4 +78,4 @@ exec nice -n 10 cargo mutants \
   --output "$root/mutants.out/$family" \
   --cargo-arg=--lib \
   "$@" \
-  -- --include-ignored "$filter" mutants_oracle
+  -- -- --include-ignored "$filter" mutants_oracle

@@ -122,32 +122,7 @@ fn load_spec(path: &std::path::Path) -> anyhow::Result<Spec> {
 /// Runs `pdesculpt pde4`.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     match args.cmd {
-        Cmd::Eval { spec, at } => {
-            let sp = load_spec(&spec)?;
-            let patch = sp.solve()?;
-            let mut rows = Vec::new();
-            for a in &at {
-                let uv = parse_list(a, 2, "--at")?;
-                if !(0.0..=1.0).contains(&uv[0]) || !(0.0..=1.0).contains(&uv[1]) {
-                    bail!("--at {a}: u and v must lie in [0, 1]");
-                }
-                let p = patch.point(uv[0], uv[1]);
-                if p.iter().any(|x| !x.is_finite()) {
-                    bail!("non-finite displacement at {a} (printed coefficients singular for these parameters?)");
-                }
-                rows.push(serde_json::json!({"u": uv[0], "v": uv[1], "t": p}));
-                if !json {
-                    println!(
-                        "u={} v={}  t=({:.9e}, {:.9e}, {:.9e})",
-                        uv[0], uv[1], p[0], p[1], p[2]
-                    );
-                }
-            }
-            if json {
-                super::print_json(&serde_json::json!({"spec": sp, "points": rows}))?;
-            }
-            Ok(0)
-        }
+        Cmd::Eval { spec, at } => eval(&spec, &at, json),
         Cmd::Apply {
             spec,
             curve,
@@ -193,33 +168,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
                 None => Direction::Normal,
             };
-            let r = match (curve, axis) {
-                (Some(curve), _) => {
-                    let text = pdesculpt::mesh::io::read_input_text(&curve, "curve file")
-                        .with_context(|| format!("reading {}", curve.display()))?;
-                    let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
-                        format!("parsing curve {} (a list of [x, y, z])", curve.display())
-                    })?;
-                    deform_region(&base, &pts, &patch, dir, drag, depth)?
-                }
-                (None, Some(axis)) => {
-                    let a = parse_list(&axis, 6, "--axis")?;
-                    let r = match &u_range {
-                        Some(t) => parse_list(t, 2, "--u-range").map(|r| (r[0], r[1]))?,
-                        None => pdesculpt::pde4::apply::U_RANGE_DEFAULT,
-                    };
-                    deform_part(
-                        &base,
-                        ([a[0], a[1], a[2]], [a[3], a[4], a[5]]),
-                        r,
-                        radius,
-                        &patch,
-                        dir,
-                        drag,
-                    )?
-                }
-                (None, None) => bail!("give --curve CURVE.json or --axis x0,y0,z0,x1,y1,z1"),
-            };
+            let r = deform(
+                &base, curve, axis, u_range, radius, &patch, dir, drag, depth,
+            )?;
             let source = match makehuman {
                 true => pdesculpt::mesh::unit::MAKEHUMAN,
                 false => units.input_unit,
@@ -238,4 +189,74 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             Ok(0)
         }
     }
+}
+
+/// `pde4 eval`: the patch's displacement at each `--at u,v`.
+fn eval(spec: &std::path::Path, at: &[String], json: bool) -> anyhow::Result<i32> {
+    let sp = load_spec(spec)?;
+    let patch = sp.solve()?;
+    let mut rows = Vec::new();
+    for a in at {
+        let uv = parse_list(a, 2, "--at")?;
+        if !(0.0..=1.0).contains(&uv[0]) || !(0.0..=1.0).contains(&uv[1]) {
+            bail!("--at {a}: u and v must lie in [0, 1]");
+        }
+        let p = patch.point(uv[0], uv[1]);
+        if p.iter().any(|x| !x.is_finite()) {
+            bail!("non-finite displacement at {a} (printed coefficients singular for these parameters?)");
+        }
+        rows.push(serde_json::json!({"u": uv[0], "v": uv[1], "t": p}));
+        if !json {
+            println!(
+                "u={} v={}  t=({:.9e}, {:.9e}, {:.9e})",
+                uv[0], uv[1], p[0], p[1], p[2]
+            );
+        }
+    }
+    if json {
+        super::print_json(&serde_json::json!({"spec": sp, "points": rows}))?;
+    }
+    Ok(0)
+}
+
+/// `pde4 apply`'s deformation: a region inside `--curve` (four-sided spec)
+/// or a part along `--axis` (two-sided spec).
+fn deform(
+    base: &pdesculpt::mesh::Mesh,
+    curve: Option<PathBuf>,
+    axis: Option<String>,
+    u_range: Option<String>,
+    radius: f64,
+    patch: &Patch,
+    dir: Direction,
+    drag: f64,
+    depth: f64,
+) -> anyhow::Result<pdesculpt::pde4::apply::RegionDeformation> {
+    Ok(match (curve, axis) {
+        (Some(curve), _) => {
+            let text = pdesculpt::mesh::io::read_input_text(&curve, "curve file")
+                .with_context(|| format!("reading {}", curve.display()))?;
+            let pts: Vec<[f64; 3]> = serde_json::from_str(&text).with_context(|| {
+                format!("parsing curve {} (a list of [x, y, z])", curve.display())
+            })?;
+            deform_region(base, &pts, patch, dir, drag, depth)?
+        }
+        (None, Some(axis)) => {
+            let a = parse_list(&axis, 6, "--axis")?;
+            let r = match &u_range {
+                Some(t) => parse_list(t, 2, "--u-range").map(|r| (r[0], r[1]))?,
+                None => pdesculpt::pde4::apply::U_RANGE_DEFAULT,
+            };
+            deform_part(
+                base,
+                ([a[0], a[1], a[2]], [a[3], a[4], a[5]]),
+                r,
+                radius,
+                patch,
+                dir,
+                drag,
+            )?
+        }
+        (None, None) => bail!("give --curve CURVE.json or --axis x0,y0,z0,x1,y1,z1"),
+    })
 }

@@ -8,7 +8,56 @@ use crate::check::Worst;
 
 /// The eq 13-16 checks (`c`: the golden projection case).
 pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
-    // eq 13
+    eq13_checks(out, c);
+    // eq 14
+    let frame = LocalFrame::new([0.3, -1.0, 2.0], [0.2, 0.9, -0.4]);
+    let e14 = frame
+        .map(|f| {
+            let p = [1.5, 0.25, -0.75];
+            max_abs_diff(&f.to_local(p), &f.to_local_matrix(p))
+        })
+        .unwrap_or(f64::NAN);
+    out.push(
+        Check::new(
+            F,
+            P,
+            "eq 14",
+            "plate.eq14.matrix_form",
+            Kind::Reference,
+            e14,
+            tol::ROUNDING,
+        )
+        .note("dot-product frame coordinates equal the printed row-vector [T][R] product"),
+    );
+    eq16_map_checks(out);
+    // eq 15: the alpha shape of a k x k grid is its perimeter (4 (k - 1)
+    // vertices), enclosing the full square
+    let k = 12usize;
+    let grid: Vec<[f64; 2]> = (0..k * k)
+        .map(|i| [(i % k) as f64 * 0.1, (i / k) as f64 * 0.1])
+        .collect();
+    let e15 = crate::plate::boundary::alpha_shape(&grid, crate::plate::boundary::ALPHA0_DEFAULT)
+        .map(|b| {
+            let poly: Vec<[f64; 2]> = b.loop_indices.iter().map(|&i| grid[i]).collect();
+            let side = 0.1 * (k - 1) as f64;
+            (b.loop_indices.len() as f64 - 4.0 * (k - 1) as f64).abs()
+                + (crate::plate::boundary::signed_area(&poly) - side * side).abs() / (side * side)
+        })
+        .unwrap_or(f64::NAN);
+    out.push(Check::new(F, P, "eq 15", "plate.eq15.alpha_shape_grid", Kind::Reference, e15, tol::ROUNDING)
+        .note("alpha shape (alpha_0 = 0.86) of a 12x12 grid: |#loop - 44| + relative area error of the loop"));
+    // eq 16 is only C0 inside: on the square of half-side a the map is
+    // rho = max(|x|, |y|)/a, so the normalised deflection (1 - rho^2)^2 has
+    // an x-slope jump 4 rho (1 - rho^2)/a across the diagonal
+    out.push(
+        Check::new(F, P, "eq 16", "plate.eq16.interior_slope_jump", Kind::Reference,
+            square_slope_jump().unwrap_or(f64::NAN), SLOPE_JUMP_TOL)
+        .note("finite-difference x-slope jump of (1-rho^2)^2 across the diagonal of a square at (0.3a, 0.3a) vs 4 rho (1-rho^2)/a: eq 16 creases the surface along rays through corners"),
+    );
+}
+
+/// Eq 13: the corrected and printed projections against SymPy.
+fn eq13_checks(out: &mut Vec<Check>, c: &Eq13) {
     let plane = ViewPlane {
         normal: [c.plane[0], c.plane[1], c.plane[2]],
         d: c.plane[3],
@@ -44,27 +93,11 @@ pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
     );
     out.push(Check::paper_literal(F, P, "eq 13", "plate.eq13.paper_literal", max_abs_diff(&pc, &pl), tol::ROUNDING, true)
         .note("printed 'b p_x' instead of 'b p_y': distance between printed and orthogonal projection"));
-    // eq 14
-    let frame = LocalFrame::new([0.3, -1.0, 2.0], [0.2, 0.9, -0.4]);
-    let e14 = frame
-        .map(|f| {
-            let p = [1.5, 0.25, -0.75];
-            max_abs_diff(&f.to_local(p), &f.to_local_matrix(p))
-        })
-        .unwrap_or(f64::NAN);
-    out.push(
-        Check::new(
-            F,
-            P,
-            "eq 14",
-            "plate.eq14.matrix_form",
-            Kind::Reference,
-            e14,
-            tol::ROUNDING,
-        )
-        .note("dot-product frame coordinates equal the printed row-vector [T][R] product"),
-    );
-    // eq 16: componentwise = radial off the axes; printed form is 0/0 on them
+}
+
+/// Eq 16: the componentwise map equals the radial one off the axes; the
+/// printed form is 0/0 on them.
+fn eq16_map_checks(out: &mut Vec<Check>) {
     let (cc, dpt, dt) = ([0.1, -0.2], [1.3, 0.7], [0.6, 0.8]);
     let tpar = 0.37;
     let b = [
@@ -108,30 +141,6 @@ pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
             true,
         )
         .note("B straight above C: number of printed components that are 0/0 (the u-ratio; measured 1), while the radial ratio is finite"),
-    );
-    // eq 15: the alpha shape of a k x k grid is its perimeter (4 (k - 1)
-    // vertices), enclosing the full square
-    let k = 12usize;
-    let grid: Vec<[f64; 2]> = (0..k * k)
-        .map(|i| [(i % k) as f64 * 0.1, (i / k) as f64 * 0.1])
-        .collect();
-    let e15 = crate::plate::boundary::alpha_shape(&grid, crate::plate::boundary::ALPHA0_DEFAULT)
-        .map(|b| {
-            let poly: Vec<[f64; 2]> = b.loop_indices.iter().map(|&i| grid[i]).collect();
-            let side = 0.1 * (k - 1) as f64;
-            (b.loop_indices.len() as f64 - 4.0 * (k - 1) as f64).abs()
-                + (crate::plate::boundary::signed_area(&poly) - side * side).abs() / (side * side)
-        })
-        .unwrap_or(f64::NAN);
-    out.push(Check::new(F, P, "eq 15", "plate.eq15.alpha_shape_grid", Kind::Reference, e15, tol::ROUNDING)
-        .note("alpha shape (alpha_0 = 0.86) of a 12x12 grid: |#loop - 44| + relative area error of the loop"));
-    // eq 16 is only C0 inside: on the square of half-side a the map is
-    // rho = max(|x|, |y|)/a, so the normalised deflection (1 - rho^2)^2 has
-    // an x-slope jump 4 rho (1 - rho^2)/a across the diagonal
-    out.push(
-        Check::new(F, P, "eq 16", "plate.eq16.interior_slope_jump", Kind::Reference,
-            square_slope_jump().unwrap_or(f64::NAN), SLOPE_JUMP_TOL)
-        .note("finite-difference x-slope jump of (1-rho^2)^2 across the diagonal of a square at (0.3a, 0.3a) vs 4 rho (1-rho^2)/a: eq 16 creases the surface along rays through corners"),
     );
 }
 
