@@ -33,7 +33,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/cli/conv.rs", "run", 152),
     ("src/cli/demo.rs", "run", 131),
-    ("src/cli/gec/fit.rs", "run", 115),
     ("src/conv/model.rs", "build_cached", 160),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
     ("src/conv/skeleton.rs", "extract", 103),

@@ -83,23 +83,7 @@ pub fn run(a: Args, json: bool) -> anyhow::Result<i32> {
         }),
         assume_closed,
     };
-    let outcome = fit_points(&inp, &req).map_err(|e| match e {
-        FitFailure::Theta0(_) | FitFailure::NotFlat | FitFailure::FftNeedsTerms => {
-            anyhow::anyhow!(e)
-        }
-        FitFailure::Open(e) => {
-            anyhow::Error::from(e).context(format!("{name} (pass --assume-closed if it is closed)"))
-        }
-        FitFailure::Gec(GecError::NonFinite { index, .. }) => {
-            anyhow::anyhow!("{name}: {} is not finite", locate(&inp, index))
-        }
-        FitFailure::Gec(GecError::RepeatedPoint { first, second }) => anyhow::anyhow!(
-            "{name}: {} and {} coincide; remove repeated points",
-            locate(&inp, first),
-            locate(&inp, second)
-        ),
-        other => anyhow::anyhow!("{name}: {other}"),
-    })?;
+    let outcome = fit_points(&inp, &req).map_err(|e| failure(e, &name, &inp))?;
     let report = &outcome.report;
     let dropped = outcome.dropped_closing_copy;
     let g = &report.gec;
@@ -121,40 +105,80 @@ pub fn run(a: Args, json: bool) -> anyhow::Result<i32> {
             "output": output.as_ref().map(|o| o.display().to_string()),
         }))?;
     } else {
-        let e = &report.errors;
-        eprintln!(
-            "{name}: {} points{}, J = {}, param {}, solver {solver:?}",
-            outcome.points,
-            if dropped {
-                " (closing copy dropped)"
-            } else {
-                ""
-            },
-            g.terms(),
-            param.name()
-        );
-        eprintln!(
-            "  ErM {:.6e}  ErA {:.6e}  (relative to diagonal {:.4e}: {:.3e}, {:.3e})",
-            e.erm, e.era, e.scale, e.erm_rel, e.era_rel
-        );
-        eprintln!(
-            "  centre (x0, y0) = ({:.9e}, {:.9e}); plane origin {:?}",
-            g.centre[0], g.centre[1], g.frame.origin
-        );
-        eprintln!("   n   a_xn (cos)       b_xn (sin)       a_yn (sin)       b_yn (cos)");
-        for n in 0..g.terms() {
-            eprintln!(
-                "  {:>2} {:>16.9e} {:>16.9e} {:>16.9e} {:>16.9e}",
-                n + 1,
-                g.x[n][0],
-                g.x[n][1],
-                g.y[n][0],
-                g.y[n][1]
-            );
-        }
-        if let Some(out) = &output {
-            eprintln!("wrote {}", out.display());
-        }
+        print_table(&name, &outcome, param, solver, output.as_deref());
     }
     Ok(0)
+}
+
+/// The error `gec fit` reports for a failed fit, naming the input and the
+/// point (with its line) where the failure is one point's.
+fn failure(
+    e: FitFailure,
+    name: &str,
+    inp: &pdesculpt::curve::gec::input::PointsFile,
+) -> anyhow::Error {
+    match e {
+        FitFailure::Theta0(_) | FitFailure::NotFlat | FitFailure::FftNeedsTerms => {
+            anyhow::anyhow!(e)
+        }
+        FitFailure::Open(e) => {
+            anyhow::Error::from(e).context(format!("{name} (pass --assume-closed if it is closed)"))
+        }
+        FitFailure::Gec(GecError::NonFinite { index, .. }) => {
+            anyhow::anyhow!("{name}: {} is not finite", locate(inp, index))
+        }
+        FitFailure::Gec(GecError::RepeatedPoint { first, second }) => anyhow::anyhow!(
+            "{name}: {} and {} coincide; remove repeated points",
+            locate(inp, first),
+            locate(inp, second)
+        ),
+        other => anyhow::anyhow!("{name}: {other}"),
+    }
+}
+
+/// The human-readable report of `gec fit` on stderr.
+fn print_table(
+    name: &str,
+    outcome: &pdesculpt::curve::gec::pipeline::FitOutcome,
+    param: Param,
+    solver: SolverArg,
+    output: Option<&std::path::Path>,
+) {
+    let report = &outcome.report;
+    let dropped = outcome.dropped_closing_copy;
+    let g = &report.gec;
+    let e = &report.errors;
+    eprintln!(
+        "{name}: {} points{}, J = {}, param {}, solver {solver:?}",
+        outcome.points,
+        if dropped {
+            " (closing copy dropped)"
+        } else {
+            ""
+        },
+        g.terms(),
+        param.name()
+    );
+    eprintln!(
+        "  ErM {:.6e}  ErA {:.6e}  (relative to diagonal {:.4e}: {:.3e}, {:.3e})",
+        e.erm, e.era, e.scale, e.erm_rel, e.era_rel
+    );
+    eprintln!(
+        "  centre (x0, y0) = ({:.9e}, {:.9e}); plane origin {:?}",
+        g.centre[0], g.centre[1], g.frame.origin
+    );
+    eprintln!("   n   a_xn (cos)       b_xn (sin)       a_yn (sin)       b_yn (cos)");
+    for n in 0..g.terms() {
+        eprintln!(
+            "  {:>2} {:>16.9e} {:>16.9e} {:>16.9e} {:>16.9e}",
+            n + 1,
+            g.x[n][0],
+            g.x[n][1],
+            g.y[n][0],
+            g.y[n][1]
+        );
+    }
+    if let Some(out) = output {
+        eprintln!("wrote {}", out.display());
+    }
 }
