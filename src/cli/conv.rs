@@ -108,65 +108,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             let secs = t0.elapsed().as_secs_f64();
             pdesculpt::conv::sample::check_f32_output(&mesh)?;
             let unit = units.write_input(&mesh, &output)?;
-            let topo = report(&mesh);
-            let comps: Vec<serde_json::Value> = built
-                .components
-                .iter()
-                .map(|c| {
-                    serde_json::json!({
-                        "name": c.name,
-                        "group": c.group,
-                        "depth": c.depth,
-                        "segments": c.segments.len(),
-                        "s": c.sketch.s,
-                        "fit_max_rel_error": c.sketch.fit.max_rel_error,
-                        "fit_rms_rel_error": c.sketch.fit.rms_rel_error,
-                        "fit_iterations": c.sketch.fit.iterations,
-                        "fit_converged": c.sketch.fit.converged,
-                    })
-                })
-                .collect();
-            if json {
-                super::print_json(&serde_json::json!({
-                    "output": output.display().to_string(),
-                    "unit": unit,
-                    "triangles": mesh.triangles.len(),
-                    "vertices": mesh.positions.len(),
-                    "topology": topo,
-                    "sampler": sampler,
-                    "seconds": secs,
-                    "components": comps,
-                }))?;
-            } else {
-                println!(
-                    "wrote {} ({} triangles, watertight {}, manifold {}, oriented {}) in {:.2} s",
-                    output.display(),
-                    mesh.triangles.len(),
-                    topo.watertight,
-                    topo.manifold,
-                    topo.oriented,
-                    secs
-                );
-                for c in &built.components {
-                    println!(
-                        "  {}: group {}, depth {:.3}, {} segments, fit |F-T|/T max {:.2e} rms {:.2e}{}",
-                        c.name,
-                        c.group,
-                        c.depth,
-                        c.segments.len(),
-                        c.sketch.fit.max_rel_error,
-                        c.sketch.fit.rms_rel_error,
-                        if c.sketch.fit.converged {
-                            String::new()
-                        } else {
-                            format!(
-                                " (solver stopped at its cap of {} iterations, not converged)",
-                                c.sketch.fit.iterations
-                            )
-                        }
-                    );
-                }
-            }
+            print_build(&built, &mesh, &output, &unit, &sampler, secs, json)?;
             Ok(0)
         }
         Cmd::Field {
@@ -174,57 +116,130 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             weights,
             s,
             at,
-        } => {
-            let g = numbers(&segment, 6, "segment")?;
-            let w = numbers(&weights, 2, "weights")?;
-            let r = numbers(&at, 3, "at")?;
-            if !(s.is_finite() && s > 0.0) {
-                bail!("--s must be positive and finite, got {s}");
-            }
-            let seg = Segment {
-                p: [g[0], g[1], g[2]],
-                q: [g[3], g[4], g[5]],
-                w0: w[0],
-                w1: w[1],
-                lambda: 1.0,
-            };
-            if seg.length() <= 0.0 {
-                bail!("--segment: the two endpoints coincide");
-            }
-            let r = [r[0], r[1], r[2]];
-            let f = seg.field(r, s);
-            let (f1, ft) = seg.basis(r, s);
-            let grad = seg.gradient(r, s);
-            if !(f.is_finite()
-                && f1.is_finite()
-                && ft.is_finite()
-                && grad.iter().all(|g| g.is_finite()))
-            {
-                bail!(
-                    "the field is not representable for --s {s} at --at {r:?} (s times the distances \
-                     over- or underflows); use s and coordinates with s * |at - segment| between 1e-100 and 1e100"
-                );
-            }
-            let quad = kernel::field_by_quadrature(&seg, r, s, 1e-14 * f.abs().max(1e-300));
-            if json {
-                super::print_json(&serde_json::json!({
-                    "field": f, "f1": f1, "ft": ft, "gradient": grad,
-                    "quadrature": quad, "relative_difference": (f - quad).abs() / quad.abs().max(1e-300),
-                }))?;
-            } else {
-                println!("F    = {f:.15e}");
-                println!("F_1  = {f1:.15e}");
-                println!("F_t  = {ft:.15e}");
-                println!(
-                    "grad = [{:.12e}, {:.12e}, {:.12e}]",
-                    grad[0], grad[1], grad[2]
-                );
-                println!(
-                    "quadrature F = {quad:.15e} (relative difference {:.2e})",
-                    (f - quad).abs() / quad.abs().max(1e-300)
-                );
-            }
-            Ok(0)
+        } => field(&segment, &weights, s, &at, json),
+    }
+}
+
+/// `conv build`'s report: the JSON document or the human summary with one
+/// line per component.
+fn print_build(
+    built: &pdesculpt::conv::model::BuiltModel,
+    mesh: &pdesculpt::mesh::Mesh,
+    output: &std::path::Path,
+    unit: &pdesculpt::mesh::unit::Unit,
+    sampler: &str,
+    secs: f64,
+    json: bool,
+) -> anyhow::Result<()> {
+    let topo = report(mesh);
+    let comps: Vec<serde_json::Value> = built
+        .components
+        .iter()
+        .map(|c| {
+            serde_json::json!({
+                "name": c.name,
+                "group": c.group,
+                "depth": c.depth,
+                "segments": c.segments.len(),
+                "s": c.sketch.s,
+                "fit_max_rel_error": c.sketch.fit.max_rel_error,
+                "fit_rms_rel_error": c.sketch.fit.rms_rel_error,
+                "fit_iterations": c.sketch.fit.iterations,
+                "fit_converged": c.sketch.fit.converged,
+            })
+        })
+        .collect();
+    if json {
+        super::print_json(&serde_json::json!({
+            "output": output.display().to_string(),
+            "unit": unit,
+            "triangles": mesh.triangles.len(),
+            "vertices": mesh.positions.len(),
+            "topology": topo,
+            "sampler": sampler,
+            "seconds": secs,
+            "components": comps,
+        }))?;
+    } else {
+        println!(
+            "wrote {} ({} triangles, watertight {}, manifold {}, oriented {}) in {:.2} s",
+            output.display(),
+            mesh.triangles.len(),
+            topo.watertight,
+            topo.manifold,
+            topo.oriented,
+            secs
+        );
+        for c in &built.components {
+            println!(
+                "  {}: group {}, depth {:.3}, {} segments, fit |F-T|/T max {:.2e} rms {:.2e}{}",
+                c.name,
+                c.group,
+                c.depth,
+                c.segments.len(),
+                c.sketch.fit.max_rel_error,
+                c.sketch.fit.rms_rel_error,
+                if c.sketch.fit.converged {
+                    String::new()
+                } else {
+                    format!(
+                        " (solver stopped at its cap of {} iterations, not converged)",
+                        c.sketch.fit.iterations
+                    )
+                }
+            );
         }
     }
+    Ok(())
+}
+
+/// `conv field`: the closed-form field of one segment, its basis and
+/// gradient, against quadrature.
+fn field(segment: &str, weights: &str, s: f64, at: &str, json: bool) -> anyhow::Result<i32> {
+    let g = numbers(segment, 6, "segment")?;
+    let w = numbers(weights, 2, "weights")?;
+    let r = numbers(at, 3, "at")?;
+    if !(s.is_finite() && s > 0.0) {
+        bail!("--s must be positive and finite, got {s}");
+    }
+    let seg = Segment {
+        p: [g[0], g[1], g[2]],
+        q: [g[3], g[4], g[5]],
+        w0: w[0],
+        w1: w[1],
+        lambda: 1.0,
+    };
+    if seg.length() <= 0.0 {
+        bail!("--segment: the two endpoints coincide");
+    }
+    let r = [r[0], r[1], r[2]];
+    let f = seg.field(r, s);
+    let (f1, ft) = seg.basis(r, s);
+    let grad = seg.gradient(r, s);
+    if !(f.is_finite() && f1.is_finite() && ft.is_finite() && grad.iter().all(|g| g.is_finite())) {
+        bail!(
+            "the field is not representable for --s {s} at --at {r:?} (s times the distances \
+             over- or underflows); use s and coordinates with s * |at - segment| between 1e-100 and 1e100"
+        );
+    }
+    let quad = kernel::field_by_quadrature(&seg, r, s, 1e-14 * f.abs().max(1e-300));
+    if json {
+        super::print_json(&serde_json::json!({
+            "field": f, "f1": f1, "ft": ft, "gradient": grad,
+            "quadrature": quad, "relative_difference": (f - quad).abs() / quad.abs().max(1e-300),
+        }))?;
+    } else {
+        println!("F    = {f:.15e}");
+        println!("F_1  = {f1:.15e}");
+        println!("F_t  = {ft:.15e}");
+        println!(
+            "grad = [{:.12e}, {:.12e}, {:.12e}]",
+            grad[0], grad[1], grad[2]
+        );
+        println!(
+            "quadrature F = {quad:.15e} (relative difference {:.2e})",
+            (f - quad).abs() / quad.abs().max(1e-300)
+        );
+    }
+    Ok(0)
 }
