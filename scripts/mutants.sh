@@ -58,8 +58,24 @@ if ! command -v cargo-mutants >/dev/null; then
   exit 2
 fi
 
+# --list builds nothing: it lists in this checkout and leaves the scratch
+# copy alone (refreshing it under a running job would overwrite the mutated
+# file of the mutant being tested)
+for arg in "$@"; do
+  if [ "$arg" = "--list" ]; then
+    exec cargo mutants "${args[@]}" "$@"
+  fi
+done
+
 scratch="${MUTANTS_SCRATCH:-/tmp/pdesculpt-mutants}"
-mkdir -p "$scratch/src" "$scratch/target/debug" mutants.out
+mkdir -p "$scratch/target/debug" mutants.out
+# one job at a time on the scratch copy (scripts/nan_inject.sh takes the
+# same lock)
+exec 9>"$scratch.lock"
+if ! flock -n 9; then
+  echo "another mutation or NaN-injection job is using $scratch; wait for it" >&2
+  exit 2
+fi
 rm -rf "$scratch/src" && mkdir -p "$scratch/src"
 tar -C "$root" --exclude=./target --exclude=./mutants.out --exclude=./.git -cf - . | tar -C "$scratch/src" -xf -
 if [ ! -e "$scratch/target/debug/deps" ] && [ -d "$root/target/debug/deps" ]; then

@@ -34,6 +34,13 @@ families=("$@")
 [ ${#families[@]} -eq 0 ] && families=(jet gec pde4 plate pde6 ode6 conv)
 
 mkdir -p "$scratch/target/debug"
+# one job at a time on the scratch copy (scripts/mutants.sh takes the same
+# lock)
+exec 9>"$scratch.lock"
+if ! flock -n 9; then
+  echo "another mutation or NaN-injection job is using $scratch; wait for it" >&2
+  exit 2
+fi
 export CARGO_TARGET_DIR="$scratch/target"
 status=0
 for fam in "${families[@]}"; do
