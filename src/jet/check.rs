@@ -86,7 +86,42 @@ pub fn checks() -> Vec<Check> {
         );
     }
     out.push(identity_check());
+    out.push(f64_path_check(&g));
     out
+}
+
+/// The `f64` side of [`Real`] (what every fast evaluation runs) against
+/// the same SymPy goldens: each golden function evaluated with `T = f64`,
+/// and a generic expression through `Real::cst`, `one`, `zero` and
+/// `recip` whose value is known in closed form.
+fn f64_path_check(g: &Golden) -> Check {
+    fn generic<T: Real>(u: T) -> T {
+        // (u + 1/2) * 1/(u + 1) + 0 at u: a constant, the unit, the zero
+        // and the reciprocal of the generic code paths
+        (u + T::cst(0.5)) * (u + T::one()).recip() + T::zero()
+    }
+    let mut worst: f64 = 0.0;
+    for f in &g.functions {
+        let want = f.derivatives.first().and_then(|r| r.first()).copied();
+        let got = golden_function::<f64>(&f.name, f.u0, f.v0);
+        worst = match (want, got) {
+            (Some(w), Some(x)) => worst.worst((x - w).abs() / w.abs().worst(1.0)),
+            _ => f64::NAN,
+        };
+    }
+    let u = 0.37;
+    worst = worst.worst((generic(u) - (u + 0.5) / (u + 1.0)).abs());
+    worst = worst.worst((generic(Jet6x6::var_u(u)).value() - generic(u)).abs());
+    Check::new(
+        "jet",
+        "-",
+        "Taylor arithmetic",
+        "jet.f64_path",
+        Kind::Reference,
+        worst,
+        tol::ROUNDING,
+    )
+    .note("the golden functions evaluated in f64 against SymPy's values, and (u + cst 1/2) recip(u + one) + zero in f64 against its closed form and the jet's value")
 }
 
 /// sin^2 + cos^2 = 1 and exp(ln x) = x hold as jets: every derivative of the
