@@ -88,63 +88,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let female = Scene::single("female", d.sketched.clone());
     args.units
         .write_scene(&female, &files[6], pdesculpt::mesh::unit::Unit::M)?;
-    let k = &d.report.sketched;
-    eprintln!(
-        "  sketched female (paper 000 sec 4.1, {} level): {} triangles, closed {}, profile error {}, max C1 jump {:.1e}",
-        k.level,
-        k.triangles,
-        k.watertight,
-        k.profile_error
-            .iter()
-            .map(|(v, e)| format!("{v} {:.2} %", 100.0 * e))
-            .collect::<Vec<_>>()
-            .join(", "),
-        k.max_c1
-    );
-    for e in &d.report.edits {
-        eprintln!(
-            "  {} (paper {}): {} vertices moved, max {:.3} dm, first ring inside the clamped edge {:.3} dm",
-            e.name, e.paper, e.moved_vertices, e.max_displacement, e.max_first_ring_displacement
-        );
-    }
-    let b = &d.report.belly_vs_morph;
-    eprintln!(
-        "  plate belly vs MakeHuman's pregnancy morph ({} vertices, peak {:.2} dm): RMS {:.1} % / max {:.1} % of the peak",
-        b.region_vertices,
-        b.peak,
-        100.0 * b.rms_rel,
-        100.0 * b.max_rel
-    );
-    let r = &d.report.reconstruction;
-    eprintln!(
-        "  reconstruction (paper 002, closed body): {} parts, watertight {}, RMS {:.2} % / max {:.2} % of body height, {} GEC numbers for {} vertex coordinates",
-        r.sections.len(),
-        r.topology.watertight,
-        100.0 * r.recon_to_skin_rms_rel,
-        100.0 * r.recon_to_skin_max_rel,
-        r.gec_numbers,
-        r.skin_vertex_numbers
-    );
-    let s = &d.report.skirt;
-    eprintln!(
-        "  skirt (paper 004): C2 ODE surface through 2 boundary + 4 control rings, {} numbers for {} vertex coordinates, clearance min {:.3} dm, {:.1} % of vertices inside the body",
-        s.ode_numbers,
-        s.mesh_numbers,
-        s.min_clearance,
-        100.0 * s.inside_fraction
-    );
-    let p = &d.report.prop;
-    eprintln!(
-        "  teddy (paper 003): {} strokes, {} segments, {} triangles (watertight {}, manifold {}, oriented {}), fit |F-T|/T max {:.1e}, body outline vs stroke max {:.1} % of its size",
-        p.components,
-        p.segments,
-        p.triangles,
-        p.watertight,
-        p.manifold,
-        p.oriented,
-        p.fit_max_rel,
-        100.0 * p.body_silhouette_max_rel
-    );
+    print_summary(&d.report);
     for p in &files {
         eprintln!("wrote {}", p.display());
     }
@@ -162,4 +106,67 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         }))?;
     }
     Ok(0)
+}
+
+/// One line per model of the demo report on stderr: the sketched female,
+/// the local edits, the plate belly against the morph, the closed
+/// reconstruction, the skirt and the teddy.
+fn print_summary(report: &demo::DemoReport) {
+    let k = &report.sketched;
+    eprintln!(
+        "  sketched female (paper 000 sec 4.1, {} level): {} triangles, closed {}, profile error {}, max C1 jump {:.1e}",
+        k.level,
+        k.triangles,
+        k.watertight,
+        k.profile_error
+            .iter()
+            .map(|(v, e)| format!("{v} {:.2} %", 100.0 * e))
+            .collect::<Vec<_>>()
+            .join(", "),
+        k.max_c1
+    );
+    for e in &report.edits {
+        eprintln!(
+            "  {} (paper {}): {} vertices moved, max {:.3} dm, first ring inside the clamped edge {:.3} dm",
+            e.name, e.paper, e.moved_vertices, e.max_displacement, e.max_first_ring_displacement
+        );
+    }
+    let b = &report.belly_vs_morph;
+    eprintln!(
+        "  plate belly vs MakeHuman's pregnancy morph ({} vertices, peak {:.2} dm): RMS {:.1} % / max {:.1} % of the peak",
+        b.region_vertices,
+        b.peak,
+        100.0 * b.rms_rel,
+        100.0 * b.max_rel
+    );
+    let r = &report.reconstruction;
+    eprintln!(
+        "  reconstruction (paper 002, closed body): {} parts, watertight {}, RMS {:.2} % / max {:.2} % of body height, {} GEC numbers for {} vertex coordinates",
+        r.sections.len(),
+        r.topology.watertight,
+        100.0 * r.recon_to_skin_rms_rel,
+        100.0 * r.recon_to_skin_max_rel,
+        r.gec_numbers,
+        r.skin_vertex_numbers
+    );
+    let s = &report.skirt;
+    eprintln!(
+        "  skirt (paper 004): C2 ODE surface through 2 boundary + 4 control rings, {} numbers for {} vertex coordinates, clearance min {:.3} dm, {:.1} % of vertices inside the body",
+        s.ode_numbers,
+        s.mesh_numbers,
+        s.min_clearance,
+        100.0 * s.inside_fraction
+    );
+    let p = &report.prop;
+    eprintln!(
+        "  teddy (paper 003): {} strokes, {} segments, {} triangles (watertight {}, manifold {}, oriented {}), fit |F-T|/T max {:.1e}, body outline vs stroke max {:.1} % of its size",
+        p.components,
+        p.segments,
+        p.triangles,
+        p.watertight,
+        p.manifold,
+        p.oriented,
+        p.fit_max_rel,
+        100.0 * p.body_silhouette_max_rel
+    );
 }

@@ -31,7 +31,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/character/log/stroke.rs", "new", 157),
     ("src/character/log/summary.rs", "summary", 114),
     ("src/character/log/validate.rs", "validate_params", 147),
-    ("src/cli/demo.rs", "run", 131),
     ("src/conv/model.rs", "build_cached", 160),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
     ("src/conv/skeleton.rs", "extract", 103),
