@@ -29,7 +29,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/body/layout.rs", "find_layout", 135),
     ("src/character/assembly.rs", "build_model_with", 243),
     ("src/character/log/stroke.rs", "new", 157),
-    ("src/character/log/summary.rs", "summary", 114),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/model.rs", "build_cached", 160),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),

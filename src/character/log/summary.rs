@@ -32,24 +32,7 @@ impl Edit {
                     Some(s) => format!("section {s} of {part}"),
                     None => format!("all sections of {part}"),
                 };
-                let t = match transform {
-                    SectionTransform::Translate { d } => format!("translate by {}", v3(d)),
-                    SectionTransform::Scale { sx, sy } => {
-                        format!("scale by ({}, {})", n(*sx), n(*sy))
-                    }
-                    SectionTransform::Rotate { angle } => format!("rotate by {} rad", n(*angle)),
-                    SectionTransform::Bend { kappa, axis } => {
-                        format!("bend with curvature {} about {}", n(*kappa), v3(axis))
-                    }
-                    SectionTransform::Bump { h, theta, sigma } => {
-                        format!(
-                            "bump of height {} at {} rad, width {}",
-                            n(*h),
-                            n(*theta),
-                            n(*sigma)
-                        )
-                    }
-                };
+                let t = transform_summary(transform);
                 format!("GEC {t}: {which}")
             }
             Edit::Force { part, u, force, a } => format!(
@@ -132,6 +115,28 @@ impl Edit {
                 s.mirror,
                 s.profile.view
             ),
+        }
+    }
+}
+
+/// One GEC section transform in words.
+fn transform_summary(transform: &SectionTransform) -> String {
+    match transform {
+        SectionTransform::Translate { d } => format!("translate by {}", v3(d)),
+        SectionTransform::Scale { sx, sy } => {
+            format!("scale by ({}, {})", n(*sx), n(*sy))
+        }
+        SectionTransform::Rotate { angle } => format!("rotate by {} rad", n(*angle)),
+        SectionTransform::Bend { kappa, axis } => {
+            format!("bend with curvature {} about {}", n(*kappa), v3(axis))
+        }
+        SectionTransform::Bump { h, theta, sigma } => {
+            format!(
+                "bump of height {} at {} rad, width {}",
+                n(*h),
+                n(*theta),
+                n(*sigma)
+            )
         }
     }
 }
