@@ -6,7 +6,7 @@ use super::intersect::{crossing_pairs, CrossingPair};
 use super::layout::Layout;
 use super::BodyError;
 use crate::character::assembly::{build_model_with, Model, PartCache, Resolution};
-use crate::character::doc::{End, PartSpec, TransitionSpec};
+use crate::character::doc::{PartSpec, TransitionSpec};
 use crate::character::ring::{cut_indices, RING_VERTICES};
 use crate::mesh::metrics::TriangleBvh;
 use crate::mesh::{add, scale, Mesh};
@@ -178,27 +178,10 @@ pub(super) fn transitions(
         }
         apex.push([x, y, top[2]]);
     }
-    Ok(vec![
-        TransitionSpec {
-            name: "hips".into(),
-            parent: "torso".into(),
-            parent_end: End::Start,
-            children: vec!["leg_l".into(), "leg_r".into()],
-            seam_apex: vec![crotch],
-            cut_angles: Vec::new(),
-            tangent_scale: 1.0,
-            continuity: Default::default(),
-        },
-        TransitionSpec {
-            name: "shoulders".into(),
-            parent: "torso".into(),
-            parent_end: End::End,
-            children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
-            seam_apex: apex,
-            // measured per body by shoulder_cuts
-            cut_angles: Vec::new(),
-            tangent_scale: SHOULDER_TANGENT_SCALE,
-            continuity: Default::default(),
-        },
-    ])
+    // the shoulders' cut angles are measured per body by shoulder_cuts
+    Ok(TransitionSpec::humanoid(
+        crotch,
+        apex,
+        SHOULDER_TANGENT_SCALE,
+    ))
 }

@@ -92,6 +92,40 @@ pub struct TransitionSpec {
     pub continuity: Continuity,
 }
 
+impl TransitionSpec {
+    /// The humanoid body plan's two transitions: `hips` (the torso's start to
+    /// both legs, one seam through `crotch`) and `shoulders` (the torso's end
+    /// to the left arm, the head and the right arm, seams through
+    /// `shoulder_apex`), fixed cut angles, C1. Shared by sketch-guided
+    /// modeling (`sketch::derive`) and the closed body (`body::joins`).
+    pub fn humanoid(
+        crotch: [f64; 3],
+        shoulder_apex: Vec<[f64; 3]>,
+        shoulder_tangent_scale: f64,
+    ) -> Vec<TransitionSpec> {
+        let spec = |name: &str, end, children: &[&str], seam_apex, tangent_scale| TransitionSpec {
+            name: name.into(),
+            parent: "torso".into(),
+            parent_end: end,
+            children: children.iter().map(|c| c.to_string()).collect(),
+            seam_apex,
+            cut_angles: Vec::new(),
+            tangent_scale,
+            continuity: Continuity::default(),
+        };
+        vec![
+            spec("hips", End::Start, &["leg_l", "leg_r"], vec![crotch], 1.0),
+            spec(
+                "shoulders",
+                End::End,
+                &["arm_l", "head", "arm_r"],
+                shoulder_apex,
+                shoulder_tangent_scale,
+            ),
+        ]
+    }
+}
+
 /// Continuity of a transition with its parts at its two boundary rings.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]

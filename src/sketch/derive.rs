@@ -8,8 +8,7 @@ use super::poly::slice;
 use super::segment::{landmarks, regions, shoulder_top, Landmarks, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{
-    BodyPlan, End, KeySection, Level, PartSpec, SectionShape, SectionSpec, SurfaceSpec,
-    TransitionSpec,
+    BodyPlan, KeySection, Level, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
 
 pub use super::section_place::SECTIONS_PER_PART;
@@ -461,28 +460,11 @@ fn derive_upright(
         [x, y, top_c[2]]
     };
     let bot_c = torso.sections[0].centre;
-    let transitions = vec![
-        TransitionSpec {
-            name: "hips".into(),
-            parent: "torso".into(),
-            parent_end: End::Start,
-            children: vec!["leg_l".into(), "leg_r".into()],
-            seam_apex: vec![[lm.crotch[0], lm.crotch[1], bot_c[2]]],
-            cut_angles: Vec::new(),
-            tangent_scale: 1.0,
-            continuity: Default::default(),
-        },
-        TransitionSpec {
-            name: "shoulders".into(),
-            parent: "torso".into(),
-            parent_end: End::End,
-            children: vec!["arm_l".into(), "head".into(), "arm_r".into()],
-            seam_apex: vec![apex(-1.0), apex(1.0)],
-            cut_angles: Vec::new(),
-            tangent_scale: 1.0,
-            continuity: Default::default(),
-        },
-    ];
+    let transitions = TransitionSpec::humanoid(
+        [lm.crotch[0], lm.crotch[1], bot_c[2]],
+        vec![apex(-1.0), apex(1.0)],
+        1.0,
+    );
     Ok(Derived {
         plan: BodyPlan::Humanoid,
         alignment: Alignment::identity(),
