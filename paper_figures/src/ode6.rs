@@ -3,6 +3,7 @@
 //! beside a loft through the same curves, and the data-size table (Table 1)
 //! on MakeHuman regions.
 
+mod continuity;
 mod networks;
 mod table;
 
@@ -26,7 +27,7 @@ pub fn figures() -> Vec<Figure> {
     vec![
         Figure { id: "004-fig2-3", paper: "004", title: "Approach 1: boundary curves scaled by w1..w4 (closed and open), beside the loft", run: fig2_3 },
         Figure { id: "004-fig4-5", paper: "004", title: "Approach 2: four control curves, rho = lambda = 1 against 1e-4 (eta = 3), beside the loft", run: fig4_5 },
-        Figure { id: "004-fig6", paper: "004", title: "C2 (ODE6) against C1 (rho = 0) and C0 (loft) joins of a chain of patches", run: fig6 },
+        Figure { id: "004-fig6", paper: "004", title: "C2 (ODE6) against C1 (rho = 0) and C0 (loft) joins: a chain (a), networks joined in v (b), in u and v (c), one surface in 4 patches with C1 and C2 joins (d)", run: fig6 },
         Figure { id: "004-fig7", paper: "004", title: "Objects from C2 ODE patches: vase, flower, plane, four-legged animal (bundled curve networks)", run: networks::fig7 },
         Figure { id: "004-fig8", paper: "004", title: "A face from its curve network alone: 48 C2 ODE patches (12 columns x 4 rows), one colour each", run: networks::fig8 },
         Figure { id: "004-fig9", paper: "004", title: "The face rebuilt from its curve network with the original's vertices and faces: MVE, wireframes of both", run: networks::fig9 },
@@ -596,6 +597,8 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
     let (p2, p1) = (prof(&c2), prof(&c1));
     plot_profiles(
         &ctx.path("004-fig6_curvature.png"),
+        "|S_uu| along u at v = 0.1 (joins at u = 1, 2)",
+        3.0,
         &[
             ("C2: ODE6 rho = lambda = 1, eta = 3", &p2),
             ("C1: rho = 0 (positions + tangents only)", &p1),
@@ -623,15 +626,22 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             "u_jumps_c1_chain": {"c0": j1[0], "c1": j1[1], "c2": j1[2]},
             "grid_3x2_jumps": pdesculpt::ode6::samples::grid_3x2()?.join_jumps(32),
             "v_split_fig6b_params_jumps": split(Params::new(1.0, 1.0, 3.0), Params::new(0.1, 0.1, 3.0))?,
+            "networks_b_c_d": continuity::fig6_networks(ctx)?,
             "note": "S_uu jumps across the joins of the rho = 0 (C1) chain; the ODE6 chain is C2 to rounding. grid_3x2_jumps: the separately built 3 x 2 grid of the check ode6.continuity_grid_3x2 (jumps and derivative magnitudes at its u- and v-joins). Fig 6b's parameters (rho = eta = 1 vs 0.1, lambda = 3) on one split patch break even C0 in v."
         }),
     )?;
     Ok(())
 }
 
-fn plot_profiles(
+/// A sampled function `(x, y)`.
+pub(crate) type Profile = Vec<(f64, f64)>;
+
+/// Line plots of profiles over `0..x_max`.
+pub(crate) fn plot_profiles(
     path: &std::path::Path,
-    series: &[(&str, &Vec<(f64, f64)>)],
+    caption: &str,
+    x_max: f64,
+    series: &[(&str, &Profile)],
 ) -> anyhow::Result<()> {
     use plotters::prelude::*;
     let ymax = series
@@ -642,16 +652,13 @@ fn plot_profiles(
     let root = BitMapBackend::new(path, (900, 420)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut ch = ChartBuilder::on(&root)
-        .caption(
-            "|S_uu| along u at v = 0.1 (joins at u = 1, 2)",
-            ("sans-serif", 20),
-        )
+        .caption(caption, ("sans-serif", 20))
         .margin(10)
         .x_label_area_size(35)
         .y_label_area_size(55)
-        .build_cartesian_2d(0.0..3.0, 0.0..ymax)?;
+        .build_cartesian_2d(0.0..x_max, 0.0..ymax)?;
     ch.configure_mesh()
-        .x_desc("u (3 patches)")
+        .x_desc(format!("u ({x_max} patches)"))
         .y_desc("|S_uu|")
         .draw()?;
     let colours = [RGBColor(30, 90, 200), RGBColor(200, 40, 40)];
