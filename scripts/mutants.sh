@@ -32,6 +32,7 @@ shift
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
 
+skip=()
 case "$family" in
   jet) files=(src/jet/mod.rs src/jet/elementary.rs src/jet/real.rs)
        filter="jet::" ;;
@@ -40,7 +41,9 @@ case "$family" in
   pde4) files=(src/pde4/two_sided/mode.rs src/pde4/two_sided/mod.rs src/pde4/force.rs src/pde4/four_sided.rs)
         filter="pde4::" ;;
   plate) files=(src/plate/mod.rs src/plate/projection.rs src/plate/mapping.rs)
-         filter="plate::" ;;
+         # "plate::" also matches template:: tests (one is an ignored,
+         # failing test, which made every plate mutant look caught)
+         filter="plate::"; skip=(--skip template::) ;;
   pde6) files=(src/pde6/mode.rs src/pde6/patch.rs)
         filter="pde6::" ;;
   ode6) files=(src/ode6/basis/mod.rs src/ode6/basis/roots.rs src/ode6/basis/case_basis.rs)
@@ -85,6 +88,12 @@ if [ ! -e "$scratch/target/debug/deps" ] && [ -d "$root/target/debug/deps" ]; th
 fi
 
 export PDESCULPT_MUTANTS_FAMILY="$family"
+if [ "$family" = jet ]; then
+  # the jets are generic and inlined into every module: at the dev
+  # profile's opt-level 1 a mutant rebuilds in about 70 s, at 0 in about
+  # 7 s, and the jet checks take well under a second either way
+  export CARGO_PROFILE_DEV_OPT_LEVEL=0
+fi
 export CARGO_TARGET_DIR="$scratch/target"
 cd "$scratch/src"
 
@@ -94,4 +103,4 @@ exec nice -n 10 cargo mutants \
   --output "$root/mutants.out/$family" \
   --cargo-arg=--lib \
   "$@" \
-  -- -- --include-ignored "$filter" mutants_oracle
+  -- -- --include-ignored "${skip[@]}" "$filter" mutants_oracle
