@@ -11,6 +11,33 @@ use crate::check::{tol, Check, Kind};
 /// the skin folds between two column curves); 5 % above it.
 pub const BASE_MVE_DM: f64 = 0.05;
 
+/// Bound on the distance (dm) of the base's face-region vertices inside
+/// the sketched web's outer ring from the web's surface
+/// ([`super::sketched`], default strokes): measured 0.0576 (the skin
+/// between the nostril and the cheek, where a 3-sided fan meets the
+/// first ring); 5 % above it.
+pub const SKETCHED_SKIN_DM: f64 = 0.06;
+
+/// The sketched web on the base: `(largest relative jump over its edges,
+/// apex interpolation, skin distance max)`, NaN when it cannot be built.
+fn sketched_web() -> (f64, f64, f64) {
+    use super::sketched::{polar_network, skin_distance, RINGS, SPOKES};
+    let run = || -> Option<(f64, f64, f64)> {
+        let (base, body) = super::extract::base().ok()?;
+        let doc = polar_network(base, body, &super::BASE_WINDOW, RINGS, SPOKES).ok()?;
+        let net = crate::ode6::network::Network::build(doc.clone()).ok()?;
+        let r = net.report(4);
+        let jump = r
+            .max_relative_u_edges
+            .iter()
+            .chain(&r.max_relative_v_edges)
+            .fold(0.0f64, |a, b| crate::ode6::network::report::nan_max(a, *b));
+        let d = skin_distance(base, body, &super::BASE_WINDOW, &doc, &net.mesh(10)).ok()?;
+        Some((jump, r.apex_interpolation, d.max))
+    };
+    run().unwrap_or((f64::NAN, f64::NAN, f64::NAN))
+}
+
 /// The face checks.
 pub fn checks() -> Vec<Check> {
     let base = crate::makehuman::base_mesh();
@@ -27,6 +54,7 @@ pub fn checks() -> Vec<Check> {
         (r.max_error, c2)
     });
     let n = r.as_ref().map_or(0, |r| r.face_vertices);
+    let web = sketched_web();
     vec![
         Check::new(
             "face",
@@ -50,5 +78,35 @@ pub fn checks() -> Vec<Check> {
             tol::SOLVE,
         )
         .note("the face network: largest relative jump of the derivatives up to order 2 across its u- and v-edges"),
+        Check::new(
+            "face",
+            "004",
+            "Fig 8",
+            "face.sketched_c2",
+            Kind::Continuity,
+            web.0,
+            tol::SOLVE,
+        )
+        .note("the web sketched in the front view around the tip of the nose (face::sketched, 3-sided patches at the tip): largest relative jump of the derivatives up to order 2 across its u- and v-edges"),
+        Check::new(
+            "face",
+            "004",
+            "Fig 8",
+            "face.sketched_apex",
+            Kind::Boundary,
+            web.1,
+            tol::SOLVE,
+        )
+        .note("the sketched web's 3-sided patches: largest distance of S(0, v) from the apex (the tip of the nose), relative to the network's size"),
+        Check::new(
+            "face",
+            "004",
+            "Fig 8",
+            "face.sketched_skin_distance",
+            Kind::Threshold,
+            web.2,
+            SKETCHED_SKIN_DM,
+        )
+        .note("the sketched web: largest distance (dm) of a base face-region vertex inside its outer ring from its surface"),
     ]
 }

@@ -30,6 +30,7 @@ pub mod check;
 pub mod expression;
 pub mod extract;
 pub mod fit;
+pub mod sketched;
 pub mod template;
 
 pub use expression::{facs_units, unit_target, FacsUnit};

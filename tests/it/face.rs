@@ -215,3 +215,39 @@ fn cli_face_on_a_held_out_morphed_mesh_is_measured_against_that_mesh() {
     );
     assert!(measured <= HELD_OUT_FACTOR * BASE_MVE_DM, "{measured}");
 }
+
+#[test]
+fn the_sketched_web_has_a_fan_of_three_sided_patches_at_the_nose_and_moves_with_an_expression() {
+    use pdesculpt::face::sketched::{polar_network, skin_distance, RINGS, SPOKES};
+    use pdesculpt::face::BASE_WINDOW;
+    use pdesculpt::ode6::network::Network;
+    let (base, body) = extract::base().expect("base");
+    let doc = polar_network(base, body, &BASE_WINDOW, RINGS, SPOKES).expect("web");
+    assert_eq!(doc.patches.len(), RINGS * SPOKES);
+    let three = doc.patches.iter().filter(|p| p.curves.len() == 3).count();
+    assert_eq!(three, SPOKES);
+    // the apex is the frontmost skin point: no web node is in front of it
+    let tip = doc.nodes[0];
+    assert!(doc.nodes.iter().all(|n| n[2] <= tip[2]));
+    let net = Network::build(doc.clone()).expect("solve");
+    let d = skin_distance(base, body, &BASE_WINDOW, &doc, &net.mesh(10)).expect("distance");
+    assert!(d.samples > 1000, "{d:?}");
+    assert!(d.max <= pdesculpt::face::check::SKETCHED_SKIN_DM, "{d:?}");
+    // an expression moves the web's curves (they are lifted onto the skin)
+    let mut moved = base.clone();
+    expression::apply(
+        &mut moved.positions,
+        &expression::expression("AU12", 1.0).expect("unit"),
+    )
+    .expect("apply");
+    let doc2 = polar_network(&moved, body, &BASE_WINDOW, RINGS, SPOKES).expect("web");
+    assert_ne!(doc2.curves, doc.curves);
+    // too few strokes are refused by name
+    for (r, s) in [(0, SPOKES), (RINGS, 2)] {
+        let e = polar_network(base, body, &BASE_WINDOW, r, s).expect_err("refused");
+        assert!(
+            matches!(e, FaceError::Template(ref t) if t.contains("spokes")),
+            "{e}"
+        );
+    }
+}

@@ -6,6 +6,7 @@ use super::annotate;
 use crate::common::Ctx;
 use pdesculpt::face::expression;
 use pdesculpt::face::extract::{self, FaceOptions, DEFAULT_PATCHES};
+use pdesculpt::face::{sketched, BASE_WINDOW};
 use pdesculpt::mesh::Mesh;
 use pdesculpt::ode6::network::{samples, Network};
 use pdesculpt::render::{render_with_camera, Camera, Image, Overlay, RenderOptions, View};
@@ -215,29 +216,75 @@ pub fn fig11_12(ctx: &Ctx) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Fig 8: the surface of the face network alone, one colour per patch.
+/// Fig 8: the surface of the face network alone, one colour per patch:
+/// the column network extracted from the base, and a web sketched in the
+/// front view around the tip of the nose (3-sided patches at the tip).
 pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     let f = face_scene()?;
     let nm = f.net.mesh(10);
-    let o = RenderOptions {
+    let opts = |net: &Network| RenderOptions {
         width: 420,
         height: 420,
         view: FRONT_3Q,
-        overlays: curve_overlays(&f.net, [200, 30, 30, 255]),
+        overlays: curve_overlays(net, [200, 30, 30, 255]),
         ..Default::default()
     };
     let (nlo, nhi) = nm.bbox();
+    let (base, body) = extract::base()?;
+    let doc = sketched::polar_network(base, body, &BASE_WINDOW, sketched::RINGS, sketched::SPOKES)?;
+    let web = Network::build(doc.clone())?;
+    let wm = web.mesh(10);
+    let wr = web.report(8);
+    let skin = sketched::skin_distance(base, body, &BASE_WINDOW, &doc, &wm)?;
+    let (dmax, drms) = (skin.max, skin.rms);
+    let front = |net: &Network| RenderOptions {
+        view: View::Front,
+        ..opts(net)
+    };
+    let (wlo, whi) = wm.bbox();
+    let panels = [
+        render_box(&nm, nlo, nhi, &opts(&f.net)),
+        render_box(&wm, wlo, whi, &front(&web)),
+        render_box(&wm, wlo, whi, &opts(&web)),
+    ];
+    let worst = |r: &pdesculpt::ode6::network::report::NetworkReport| {
+        r.max_relative_u_edges
+            .iter()
+            .chain(&r.max_relative_v_edges)
+            .fold(0.0f64, |a, b| a.max(*b))
+    };
+    let web_caption = format!(
+        "sketched web: {} patches ({} 3-sided)\nlargest relative jump {:.0e}\nfrom the skin: max {dmax:.3} dm, RMS {drms:.3} dm",
+        wr.patches,
+        wr.three_sided,
+        worst(&wr)
+    );
     annotate(
-        &render_box(&nm, nlo, nhi, &o),
-        "Paper 004 Fig 8: a face from its curve network alone",
-        &[format!(
-            "{} C2 ODE patches, one colour each",
-            f.net.patches.len()
-        )],
+        &Image::hstack(&panels, [255, 255, 255, 255]),
+        "Paper 004 Fig 8: a face from its curve network alone (one colour per patch, curves red)",
+        &[
+            format!(
+                "extracted column network:\n{} C2 ODE patches",
+                f.net.patches.len()
+            ),
+            web_caption.clone(),
+            "the sketched web, three-quarter view".to_string(),
+        ],
         FRONT_3Q,
         false,
     )?
     .save_png(&ctx.path("004-fig8.png"))?;
+    ctx.write_json(
+        "004-fig8.json",
+        &json!({
+            "extracted": {"patches": f.net.patches.len()},
+            "sketched": {"patches": wr.patches, "three_sided": wr.three_sided, "rings": sketched::RINGS,
+                "spokes": sketched::SPOKES, "max_relative_u_edges": wr.max_relative_u_edges,
+                "max_relative_v_edges": wr.max_relative_v_edges, "apex_interpolation": wr.apex_interpolation,
+                "max_side_relative": wr.max_side_relative, "skin_distance_max_dm": dmax, "skin_distance_rms_dm": drms, "skin_vertices": skin.samples},
+            "note": "the sketched web: pdesculpt::face::sketched::polar_network on the base (spokes and rings drawn in the front view around the tip of the nose, lifted onto the skin); skin distance: from every face-region vertex inside the web's outer ring to the network's mesh (dm)"
+        }),
+    )?;
     Ok(())
 }
 
