@@ -27,6 +27,7 @@
 //! the head height (highest body vertex to lowest face vertex).
 
 pub mod check;
+pub mod ear;
 pub mod expression;
 pub mod extract;
 pub mod fit;
