@@ -82,9 +82,14 @@ fi
 rm -rf "$scratch/src" && mkdir -p "$scratch/src"
 tar -C "$root" --exclude=./target --exclude=./mutants.out --exclude=./.git -cf - . | tar -C "$scratch/src" -xf -
 if [ ! -e "$scratch/target/debug/deps" ] && [ -d "$root/target/debug/deps" ]; then
-  for d in deps build .fingerprint; do
+  # deps/ and build/ as hard links (rustc replaces an output by a new
+  # file, which breaks the link); .fingerprint/ as a copy: cargo rewrites
+  # its files in place, and shared ones made this checkout's cargo take the
+  # scratch copy's builds for its own
+  for d in deps build; do
     cp -al "$root/target/debug/$d" "$scratch/target/debug/$d"
   done
+  cp -a "$root/target/debug/.fingerprint" "$scratch/target/debug/.fingerprint"
 fi
 
 export PDESCULPT_MUTANTS_FAMILY="$family"
