@@ -254,3 +254,60 @@ impl Surface for Patch {
         self.grid_local(us, vs)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! Input validation, here so that the mutation oracle (the library's
+    //! unit tests plus `verify`) sees it (`scripts/mutants.sh`).
+    use super::*;
+
+    fn circle(harmonics: usize) -> Fourier3 {
+        Fourier3 {
+            c0: [0.0; 3],
+            cos: vec![[1.0, 0.0, 0.0]; harmonics],
+            sin: vec![[0.0, 1.0, 0.0]; harmonics],
+        }
+    }
+
+    #[test]
+    fn curves_with_different_harmonic_counts_are_refused_by_index() {
+        let (a, b) = (circle(2), circle(3));
+        assert!(matches!(validate_curves(&[&a, &a]), Ok(2)));
+        // equal cos and sin lengths, a different count: refused
+        let e = validate_curves(&[&a, &b]);
+        assert!(
+            matches!(
+                e,
+                Err(Pde6Error::DifferentHarmonics {
+                    index: 1,
+                    expected: 2,
+                    found: 3
+                })
+            ),
+            "{e:?}"
+        );
+        // the same count, cos and sin of different lengths: refused
+        let mut c = circle(2);
+        c.sin.pop();
+        let e = validate_curves(&[&a, &c]);
+        assert!(
+            matches!(e, Err(Pde6Error::DifferentHarmonics { index: 1, .. })),
+            "{e:?}"
+        );
+    }
+
+    #[test]
+    fn a_non_increasing_node_is_named_by_its_index() {
+        assert!(check_nodes(&[0.0, 0.5, 1.0]).is_ok());
+        let e = check_nodes(&[0.0, 0.5, 0.5, 1.0]);
+        assert!(
+            matches!(e, Err(Pde6Error::NonIncreasing { index: 2, .. })),
+            "{e:?}"
+        );
+        let e = check_nodes(&[0.0, f64::NAN]);
+        assert!(
+            matches!(e, Err(Pde6Error::NonIncreasing { index: 1, .. })),
+            "{e:?}"
+        );
+    }
+}
