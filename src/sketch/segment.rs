@@ -329,11 +329,15 @@ pub fn regions(
             side: SidePick::Whole,
         },
     ];
-    let _ = big;
-    // the arms are traced along their own axis (`super::limb`)
+    // the arms are traced along their own axis (`super::limb`). A leg is
+    // the widest slice on its side of the crotch: bounding it by the
+    // armpit's x (as before) cut a leg drawn in a wide stance where its
+    // centre passed under the armpit (a stub closed at the knee, and a hips
+    // transition metres long); an arm hanging beside it is narrower, and
+    // `connected_run` keeps the leg's own tube
     for (name, lo, hi, top, shoulder) in [
-        ("leg_l", lm.armpit_l[0], lm.crotch[0], lm.crotch[1], None),
-        ("leg_r", lm.crotch[0], lm.armpit_r[0], lm.crotch[1], None),
+        ("leg_l", -big, lm.crotch[0], lm.crotch[1], None),
+        ("leg_r", lm.crotch[0], big, lm.crotch[1], None),
     ] {
         let pick = Pick::CentreIn(lo, hi);
         let y1 = cuts.limb(name).unwrap_or(top - g);
