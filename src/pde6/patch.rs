@@ -297,6 +297,17 @@ mod tests {
     }
 
     #[test]
+    fn the_data_size_counts_six_coefficients_per_coordinate_and_term() {
+        // a patch of N harmonics stores 6 coefficients per coordinate for
+        // n = 0 and for each of cos and sin of n = 1..N
+        let sections = crate::pde6::samples::synthetic_sections(12, 3);
+        let chain = crate::pde6::Chain::method2(-0.5, &sections, 0).expect("chain");
+        let patch = &chain.pieces[0].patch;
+        assert_eq!(patch.harmonics(), 3);
+        assert_eq!(patch.coefficient_count(), 6 * 3 * (1 + 2 * 3));
+    }
+
+    #[test]
     fn a_non_increasing_node_is_named_by_its_index() {
         assert!(check_nodes(&[0.0, 0.5, 1.0]).is_ok());
         let e = check_nodes(&[0.0, 0.5, 0.5, 1.0]);
