@@ -13,10 +13,10 @@ pub const BASE_MVE_DM: f64 = 0.05;
 
 /// Bound on the distance (dm) of the base's face-region vertices inside
 /// the sketched web's outer ring from the web's surface
-/// ([`super::sketched`], default strokes): measured 0.0576 (the skin
-/// between the nostril and the cheek, where a 3-sided fan meets the
+/// ([`super::sketched`], default strokes): measured 0.0475 (the skin
+/// between the nostril and the cheek, where the 3-sided fan meets the
 /// first ring); 5 % above it.
-pub const SKETCHED_SKIN_DM: f64 = 0.06;
+pub const SKETCHED_SKIN_DM: f64 = 0.05;
 
 /// Bound on the ear's MVE (dm) rebuilt from its four column curves
 /// ([`super::ear`]) on the base: measured 0.113 (25 % of the ear's

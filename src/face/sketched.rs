@@ -8,9 +8,10 @@
 //! following the face window ([`super::Window`]: forehead line, cheeks,
 //! jaw and chin) at [`OUTER`] of the way from the tip to it. Each stroke
 //! point is lifted onto the face along the view direction (the frontmost
-//! skin over it, [`super::template::Front`]); over the eye openings, which
-//! have no skin, a point takes the mean depth of the skin around the
-//! opening. The patches touching the tip are **3-sided** (a fan, the tip
+//! skin of the face region over it, [`super::template::face_region`],
+//! [`super::template::Front`]); over the eye openings and the mouth slit,
+//! which have no face skin, a point takes the mean depth of the skin
+//! around the opening. The patches touching the tip are **3-sided** (a fan, the tip
 //! their apex), the others 4-sided; the web is closed around the tip, so
 //! every edge is a u-edge (between rings) or a v-edge (along a spoke) and
 //! the network is C2 across all of them
@@ -108,17 +109,21 @@ pub fn polar_network(
             "a polar face network needs at least 1 ring and 3 spokes (got {rings} and {spokes})"
         )));
     }
-    let margin = 2.0 * STEP;
+    // the skin is the face region (`face_region`: frontmost, facing the
+    // viewer, connected to the nose tip) over a slightly larger window, so
+    // a stroke over the mouth slit or an eye opening finds no skin there
+    // (and takes the depth around it) instead of the throat or the back of
+    // the eye socket behind it
+    let d = super::template::MARGIN;
+    let wide = Window {
+        a: win.a + d,
+        y_hi: win.y_hi + d,
+        y_chin: win.y_chin - d,
+        y_jaw: win.y_jaw - d,
+    };
+    let region = super::template::face_region(m, body, &wide)?;
     let tris: Vec<u32> = (0..m.triangles.len() as u32)
-        .filter(|&t| {
-            body[t as usize]
-                && m.triangles[t as usize].iter().all(|&i| {
-                    let p = m.positions[i as usize];
-                    p[1] > win.y_chin - margin
-                        && p[1] < win.y_hi + margin
-                        && p[0].abs() < win.a + margin
-                })
-        })
+        .filter(|&t| m.triangles[t as usize].iter().all(|&i| region[i as usize]))
         .collect();
     let front = Front::new(m, tris, 2.0 * STEP);
     let t = tip(&front, win).ok_or(FaceError::Template("no skin in the face window".into()))?;
