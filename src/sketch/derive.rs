@@ -12,7 +12,7 @@ use crate::character::doc::{
 };
 
 pub use super::section_place::SECTIONS_PER_PART;
-use super::section_place::{place, samples, Sample};
+use super::section_place::{centre_slope, direction, place, samples, Sample};
 /// Tilt of an arm's top section (degrees from horizontal, see `tilt_top`).
 pub const SHOULDER_TILT_DEG: f64 = 60.0;
 /// Sections of an arm's top that are tilted (by linearly less).
@@ -60,44 +60,6 @@ fn side_depth(side: &[[f64; 2]], map: [f64; 2], y: f64, pick: SidePick) -> Optio
     Some((0.5 * (lo + hi), 0.5 * (hi - lo)))
 }
 
-/// Slope `dc/dy` of the part's centre line at sample `i`: the
-/// least-squares line through the samples within the slice's half width
-/// of it (at least two on each side, at most a quarter of the part's
-/// length: a short, wide part keeps more than one direction). A section of half width `w` tilted
-/// by an angle sweeps `w sin(angle)` up and down: centre-line wiggles
-/// shorter than `w` cannot be followed by the section planes without
-/// neighbouring sections crossing (a fold), so the planes follow the
-/// centre line as seen at the section's own scale. (Two samples on each
-/// side, as before, let a slice-to-slice jitter of the centre tilt a
-/// torso section by up to 70 degrees: corpus random_0 and random_8.)
-fn centre_slope(s: &[Sample], i: usize) -> f64 {
-    let span = (s[s.len() - 1].y - s[0].y).abs();
-    let reach = s[i].w.min(0.25 * span);
-    let (mut a, mut b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
-    while a > 0 && (s[i].y - s[a - 1].y).abs() <= reach {
-        a -= 1;
-    }
-    while b + 1 < s.len() && (s[b + 1].y - s[i].y).abs() <= reach {
-        b += 1;
-    }
-    let win = &s[a..=b];
-    let n = win.len() as f64;
-    let (my, mc) = (
-        win.iter().map(|q| q.y).sum::<f64>() / n,
-        win.iter().map(|q| q.c).sum::<f64>() / n,
-    );
-    let (mut syy, mut syc) = (0.0, 0.0);
-    for q in win {
-        syy += (q.y - my) * (q.y - my);
-        syc += (q.y - my) * (q.c - mc);
-    }
-    if syy > 0.0 {
-        syc / syy
-    } else {
-        0.0
-    }
-}
-
 pub(super) fn part_from_region(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
@@ -133,9 +95,7 @@ pub(super) fn part_from_region(
     let mut u = 0.0;
     let mut prev: Option<[f64; 3]> = None;
     for (j, &i) in idx.iter().enumerate() {
-        // the samples' direction along y (a part's samples run one way)
-        let (a, b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
-        let dir = (s[b].y - s[a].y).signum();
+        let dir = direction(&s, i);
         let t = if r.horizontal {
             [0.0, dir, 0.0]
         } else {

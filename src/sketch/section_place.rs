@@ -126,3 +126,48 @@ fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
     s.drain(..lo);
     s
 }
+
+/// Slope `dc/dy` of the part's centre line at sample `i`: the
+/// least-squares line through the samples within the slice's half width
+/// of it (at least two on each side, at most a quarter of the part's
+/// length: a short, wide part keeps more than one direction). A section of half width `w` tilted
+/// by an angle sweeps `w sin(angle)` up and down: centre-line wiggles
+/// shorter than `w` cannot be followed by the section planes without
+/// neighbouring sections crossing (a fold), so the planes follow the
+/// centre line as seen at the section's own scale. (Two samples on each
+/// side, as before, let a slice-to-slice jitter of the centre tilt a
+/// torso section by up to 70 degrees: corpus random_0 and random_8.)
+pub(super) fn centre_slope(s: &[Sample], i: usize) -> f64 {
+    let span = (s[s.len() - 1].y - s[0].y).abs();
+    let reach = s[i].w.min(0.25 * span);
+    let (mut a, mut b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
+    while a > 0 && (s[i].y - s[a - 1].y).abs() <= reach {
+        a -= 1;
+    }
+    while b + 1 < s.len() && (s[b + 1].y - s[i].y).abs() <= reach {
+        b += 1;
+    }
+    let win = &s[a..=b];
+    let n = win.len() as f64;
+    let (my, mc) = (
+        win.iter().map(|q| q.y).sum::<f64>() / n,
+        win.iter().map(|q| q.c).sum::<f64>() / n,
+    );
+    let (mut syy, mut syc) = (0.0, 0.0);
+    for q in win {
+        syy += (q.y - my) * (q.y - my);
+        syc += (q.y - my) * (q.c - mc);
+    }
+    if syy > 0.0 {
+        syc / syy
+    } else {
+        0.0
+    }
+}
+
+/// The samples' direction along y at sample `i` (a part's samples run one
+/// way: +1 up, -1 down).
+pub(super) fn direction(s: &[Sample], i: usize) -> f64 {
+    let (a, b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
+    (s[b].y - s[a].y).signum()
+}

@@ -292,6 +292,12 @@ pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
 /// The six regions of a standing humanoid; a limb starts at its cut when
 /// `cuts` gives one ([`super::cuts`]), else a join band below its armpit or
 /// the crotch.
+///
+/// A leg is the widest slice on its side of the crotch: bounding it by
+/// the armpit's x (as before) cut a leg drawn in a wide stance where its
+/// centre passed under the armpit (a stub closed at the knee, and a hips
+/// transition metres long); an arm hanging beside it is narrower, and
+/// `section_place::connected_run` keeps the leg's own tube.
 pub fn regions(
     front: &[[f64; 2]],
     lm: &Landmarks,
@@ -329,12 +335,7 @@ pub fn regions(
             side: SidePick::Whole,
         },
     ];
-    // the arms are traced along their own axis (`super::limb`). A leg is
-    // the widest slice on its side of the crotch: bounding it by the
-    // armpit's x (as before) cut a leg drawn in a wide stance where its
-    // centre passed under the armpit (a stub closed at the knee, and a hips
-    // transition metres long); an arm hanging beside it is narrower, and
-    // `connected_run` keeps the leg's own tube
+    // arms: traced along their own axis (`super::limb`); legs: see the doc
     for (name, lo, hi, top, shoulder) in [
         ("leg_l", -big, lm.crotch[0], lm.crotch[1], None),
         ("leg_r", lm.crotch[0], big, lm.crotch[1], None),
