@@ -308,6 +308,27 @@ mod tests {
     }
 
     #[test]
+    fn the_patch_grid_equals_its_pointwise_evaluation() {
+        // the Surface trait's grid (tessellation, meshes) takes the fast
+        // path grid_local: it must be the patch, point for point
+        let sections = crate::pde6::samples::synthetic_sections(12, 3);
+        let chain = crate::pde6::Chain::method2(-0.5, &sections, 0).expect("chain");
+        let patch = &chain.pieces[0].patch;
+        let us = [0.0, 0.3, 0.75, 1.0];
+        let vs = [0.0, 1.0, 2.5, 6.0];
+        let g = Surface::grid(patch, &us, &vs);
+        assert_eq!(g.len(), us.len() * vs.len());
+        let size =
+            crate::check::tol::SOLVE * g.iter().map(|p| crate::vec3::norm(*p)).fold(1.0, f64::max);
+        for (i, &u) in us.iter().enumerate() {
+            for (j, &v) in vs.iter().enumerate() {
+                let d = crate::vec3::dist(g[i * vs.len() + j], patch.point(u, v));
+                assert!(d <= size, "({u}, {v}): {d}");
+            }
+        }
+    }
+
+    #[test]
     fn a_non_increasing_node_is_named_by_its_index() {
         assert!(check_nodes(&[0.0, 0.5, 1.0]).is_ok());
         let e = check_nodes(&[0.0, 0.5, 0.5, 1.0]);
