@@ -283,3 +283,50 @@ pub fn harmonic_disk(
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    //! The mapping against hand-computed values, here so that the mutation
+    //! oracle (the library's unit tests plus `verify`) sees them.
+    use super::*;
+
+    const TOL: f64 = 1e-12;
+
+    fn square() -> DiskMapping {
+        // side 2, so that an edge parameter and an arc length differ
+        let poly = vec![[1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]];
+        DiskMapping::new(poly, [0.0, 0.0]).expect("square")
+    }
+
+    #[test]
+    fn eq16_sends_a_point_along_its_ray_by_arc_length() {
+        let mut m = square();
+        // the ray from C through B = (0.5, 0.2) leaves at D = (1, 0.4),
+        // 1.4 along the first edge of a boundary 8 long: angle 2 pi 1.4/8;
+        // |CB|/|CD| = 1/2
+        let p = m.map_point([0.5, 0.2], None);
+        let th = std::f64::consts::TAU * 1.4 / 8.0;
+        assert!((p.rho - 0.5).abs() <= TOL, "{p:?}");
+        assert!((p.u - 0.5 * th.cos()).abs() <= TOL, "{p:?}");
+        assert!((p.v - 0.5 * th.sin()).abs() <= TOL, "{p:?}");
+        // boundary vertex 2 is half way round
+        let q = m.map_point([-1.0, 1.0], Some(2));
+        assert!((q.u + 1.0).abs() <= TOL && q.v.abs() <= TOL, "{q:?}");
+    }
+
+    #[test]
+    fn the_harmonic_disk_puts_the_boundary_by_arc_length_and_the_centre_at_the_mean() {
+        // a unit square away from the origin, fanned around its centre
+        let points = [[1.0, 1.0], [2.0, 1.0], [2.0, 2.0], [1.0, 2.0], [1.5, 1.5]];
+        let tris = [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]];
+        let d = harmonic_disk(5, &tris, &[0, 1, 2, 3], &points).expect("disk");
+        for (k, p) in d.iter().take(4).enumerate() {
+            let th = std::f64::consts::FRAC_PI_2 * k as f64;
+            assert!(
+                (p.u - th.cos()).abs() <= TOL && (p.v - th.sin()).abs() <= TOL,
+                "{k}: {p:?}"
+            );
+        }
+        assert!(d[4].u.abs() <= TOL && d[4].v.abs() <= TOL, "{:?}", d[4]);
+    }
+}

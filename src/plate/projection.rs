@@ -120,3 +120,16 @@ impl LocalFrame {
         [out[0], out[1], out[2]]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_view_plane_needs_a_normal_and_a_finite_point() {
+        assert!(ViewPlane::through([0.0; 3], [0.0, 0.0, 1.0]).is_ok());
+        assert!(ViewPlane::through([0.0; 3], [0.0; 3]).is_err());
+        assert!(ViewPlane::through([f64::NAN, 0.0, 0.0], [0.0, 0.0, 1.0]).is_err());
+        assert!(ViewPlane::through([0.0; 3], [f64::INFINITY, 0.0, 0.0]).is_err());
+    }
+}
