@@ -258,4 +258,69 @@ mod tests {
         assert!(back_distance(&[[f64::NAN, 0.0]], &[[0.0, 0.0], [1.0, 0.0]]).is_nan());
         assert!(back_distance(&[[1.0, 0.0]], &[[0.0, f64::NAN], [1.0, 0.0]]).is_nan());
     }
+    /// A circle of radius `r` about the origin as a one-term GEC.
+    fn circle(r: f64) -> Gec {
+        Gec {
+            frame: super::super::Frame {
+                origin: [0.0; 3],
+                e1: [1.0, 0.0, 0.0],
+                e2: [0.0, 1.0, 0.0],
+            },
+            centre: [0.0, 0.0],
+            x: vec![[r, 0.0]],
+            y: vec![[r, 0.0]],
+        }
+    }
+
+    #[test]
+    fn point_segment_against_hand_computed_distances() {
+        let (a, b) = ([0.0, 0.0], [2.0, 0.0]);
+        assert_eq!(point_segment([1.0, 1.0], a, b), 1.0);
+        assert_eq!(point_segment([0.5, -3.0], a, b), 3.0);
+        // beyond the end: the distance to the end point
+        assert!(
+            (point_segment([3.0, 1.0], a, b) - 2f64.sqrt()).abs() <= crate::check::tol::ROUNDING
+        );
+        assert_eq!(point_segment([1.0, 1.0], a, a), 2f64.sqrt());
+    }
+
+    #[test]
+    fn fit_errors_of_a_circle_against_a_concentric_polygon_are_the_radius_gap() {
+        // every vertex of a 7-gon of radius 1.25 is 0.25 from the GEC
+        // circle of radius 1 (closest: the refined, not the sampled, point)
+        let poly: Vec<[f64; 2]> = (0..7)
+            .map(|i| {
+                let t = 2.0 * PI * (i as f64 + 0.3) / 7.0;
+                [1.25 * t.cos(), 1.25 * t.sin()]
+            })
+            .collect();
+        let g = circle(1.0);
+        let s = Sampled::new(&g);
+        for p in &poly {
+            let (d, t) = s.closest(*p);
+            assert!(
+                (d - 0.25).abs() <= crate::check::tol::ROUNDING,
+                "{p:?}: {d}"
+            );
+            let c = g.eval_plane(t);
+            assert!((c[0].hypot(c[1]) - 1.0).abs() <= crate::check::tol::ROUNDING);
+        }
+        let e = errors(&g, &poly);
+        assert!((e.erm - 0.25).abs() <= crate::check::tol::ROUNDING, "{e:?}");
+        assert!((e.era - 0.25).abs() <= crate::check::tol::ROUNDING, "{e:?}");
+        // relative to the polygon's bounding-box diagonal
+        let ext = |k: usize| {
+            let v = poly.iter().map(|p| p[k]);
+            v.clone().fold(f64::NEG_INFINITY, f64::max) - v.fold(f64::INFINITY, f64::min)
+        };
+        let diag = ext(0).hypot(ext(1));
+        assert!(
+            (e.erm_rel - 0.25 / diag).abs() <= crate::check::tol::ROUNDING,
+            "{e:?}"
+        );
+        assert!(
+            (e.era_rel - 0.25 / diag).abs() <= crate::check::tol::ROUNDING,
+            "{e:?}"
+        );
+    }
 }
