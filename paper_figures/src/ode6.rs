@@ -49,7 +49,7 @@ const RED: [u8; 4] = [200, 30, 30, 255];
 
 /// Renders meshes side by side with one camera, overlays on each.
 /// The figures build patches along z; the renderer has y up: (x, y, z) -> (x, z, -y).
-fn y_up(p: [f64; 3]) -> [f64; 3] {
+pub(crate) fn y_up(p: [f64; 3]) -> [f64; 3] {
     [p[0], p[2], -p[1]]
 }
 

@@ -33,11 +33,7 @@ fn sketched_web() -> (f64, f64, f64) {
         let doc = polar_network(base, body, &super::BASE_WINDOW, RINGS, SPOKES).ok()?;
         let net = crate::ode6::network::Network::build(doc.clone()).ok()?;
         let r = net.report(4);
-        let jump = r
-            .max_relative_u_edges
-            .iter()
-            .chain(&r.max_relative_v_edges)
-            .fold(0.0f64, |a, b| crate::ode6::network::report::nan_max(a, *b));
+        let jump = r.max_relative_jump();
         let d = skin_distance(base, body, &super::BASE_WINDOW, &doc, &net.mesh(10)).ok()?;
         Some((jump, r.apex_interpolation, d.max))
     };

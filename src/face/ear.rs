@@ -15,13 +15,12 @@
 //! it folds over itself, nor the step from the ear's rim down to the
 //! scalp inside the window: the worst vertices are there.
 
-use super::extract::face_network;
+use super::extract::{errors, face_network};
 use super::template::FaceTemplate;
 use super::{FaceError, Window};
 use crate::mesh::Mesh;
 use crate::ode6::network::doc::DEFAULT_PARAMS;
 use crate::ode6::network::Network;
-use crate::surface::Surface;
 
 /// The ear's window in the side view (decimetres, the view frame's `x` is
 /// `EAR_CENTRE_Z - z`). Chosen from the base's side view: the ear spans
@@ -90,29 +89,22 @@ pub fn rebuild_ear(
         &view.positions,
         &[DEFAULT_PARAMS; EAR_COLUMNS],
     ))?;
-    let mut out = mesh.positions.clone();
-    let (mut max, mut sum, mut worst) = (0.0f64, 0.0, 0u32);
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for p in &t.vertices {
-        let s = from_view(net.patches[p.column * t.nv + p.row].point(p.u, p.v));
-        let orig = mesh.positions[p.vertex as usize];
-        let e = crate::vec3::dist(s, orig);
-        if e > max || e.is_nan() {
-            max = e;
-            worst = p.vertex;
-        }
-        sum += e * e;
-        lo = lo.min(orig[1]);
-        hi = hi.max(orig[1]);
-        out[p.vertex as usize] = s;
-    }
     let n = t.vertices.len();
     if n == 0 {
         return Err(FaceError::Template(
             "no ear region in the ear window".into(),
         ));
     }
-    let rms = (sum / n as f64).sqrt();
+    // distances are the same in the view frame (a rotation and a shift)
+    let (max, rms, worst, regenerated) = errors(&t, &net, &view.positions);
+    let mut out = mesh.positions.clone();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (p, s) in t.vertices.iter().zip(regenerated) {
+        let y = mesh.positions[p.vertex as usize][1];
+        lo = lo.min(y);
+        hi = hi.max(y);
+        out[p.vertex as usize] = from_view(s);
+    }
     let height = hi - lo;
     let curve_points = t.columns.iter().map(Vec::len).sum();
     let report = EarReport {

@@ -248,7 +248,7 @@ pub fn columns_for(patches: usize) -> Result<usize, FaceError> {
 }
 
 /// Errors `(max, rms, worst vertex)` of the regenerated region.
-fn errors(
+pub(super) fn errors(
     t: &FaceTemplate,
     net: &Network,
     positions: &[[f64; 3]],

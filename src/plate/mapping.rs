@@ -290,7 +290,7 @@ mod tests {
     //! oracle (the library's unit tests plus `verify`) sees them.
     use super::*;
 
-    const TOL: f64 = 1e-12;
+    const TOL: f64 = crate::check::tol::ROUNDING;
 
     fn square() -> DiskMapping {
         // side 2, so that an edge parameter and an arc length differ

@@ -129,8 +129,7 @@ fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
 
 /// Slope `dc/dy` of the part's centre line at sample `i`: the
 /// least-squares line through the samples within the slice's half width
-/// of it (at least two on each side, at most a quarter of the part's
-/// length: a short, wide part keeps more than one direction). A section of half width `w` tilted
+/// of it (at least two on each side). A section of half width `w` tilted
 /// by an angle sweeps `w sin(angle)` up and down: centre-line wiggles
 /// shorter than `w` cannot be followed by the section planes without
 /// neighbouring sections crossing (a fold), so the planes follow the
@@ -138,8 +137,7 @@ fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
 /// side, as before, let a slice-to-slice jitter of the centre tilt a
 /// torso section by up to 70 degrees: corpus random_0 and random_8.)
 pub(super) fn centre_slope(s: &[Sample], i: usize) -> f64 {
-    let span = (s[s.len() - 1].y - s[0].y).abs();
-    let reach = s[i].w.min(0.25 * span);
+    let reach = s[i].w;
     let (mut a, mut b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
     while a > 0 && (s[i].y - s[a - 1].y).abs() <= reach {
         a -= 1;

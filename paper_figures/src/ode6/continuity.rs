@@ -5,7 +5,7 @@
 //! `|S_uu|` (a C1 join leaves a step in it at the join; a C2 join does not)
 //! and by `|S_uu|` along the strip.
 
-use super::{annotate, plot_profiles, Profile};
+use super::{annotate, plot_profiles, y_up, Profile};
 use crate::common::Ctx;
 use pdesculpt::mesh::Mesh;
 use pdesculpt::ode6::network::{samples, Network};
@@ -29,11 +29,6 @@ const C1_PARAMS: Params = Params {
     eta: 1.0,
     lambda: 0.0,
 };
-
-/// The wavy test surface renders with z up; the renderer has y up.
-fn y_up(p: [f64; 3]) -> [f64; 3] {
-    [p[0], p[2], -p[1]]
-}
 
 fn curves(net: &Network) -> Vec<Overlay> {
     net.doc

@@ -53,11 +53,7 @@ pub fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
             ..Default::default()
         };
         imgs.push(render_box(&m, lo, hi, &o));
-        let worst = r
-            .max_relative_u_edges
-            .iter()
-            .chain(&r.max_relative_v_edges)
-            .fold(0.0f64, |a, b| a.max(*b));
+        let worst = r.max_relative_jump();
         captions.push(format!(
             "{name}: {} patches ({} 3-sided)\nlargest relative jump {worst:.0e}\ndata {:.0} % of the mesh's numbers",
             r.patches,
@@ -247,17 +243,11 @@ pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
         render_box(&wm, wlo, whi, &front(&web)),
         render_box(&wm, wlo, whi, &opts(&web)),
     ];
-    let worst = |r: &pdesculpt::ode6::network::report::NetworkReport| {
-        r.max_relative_u_edges
-            .iter()
-            .chain(&r.max_relative_v_edges)
-            .fold(0.0f64, |a, b| a.max(*b))
-    };
     let web_caption = format!(
         "sketched web: {} patches ({} 3-sided)\nlargest relative jump {:.0e}\nfrom the skin: max {dmax:.3} dm, RMS {drms:.3} dm",
         wr.patches,
         wr.three_sided,
-        worst(&wr)
+        wr.max_relative_jump()
     );
     annotate(
         &Image::hstack(&panels, [255, 255, 255, 255]),

@@ -102,6 +102,17 @@ fn jets(s: &impl Surface, u: f64, v: f64) -> [[f64; 3]; 6] {
     [d(0, 0), d(1, 0), d(2, 0), d(0, 1), d(0, 2), d(1, 1)]
 }
 
+impl NetworkReport {
+    /// The largest relative `[C0, C1, C2]` jump over all u- and v-edges
+    /// (NaN when any is NaN).
+    pub fn max_relative_jump(&self) -> f64 {
+        self.max_relative_u_edges
+            .iter()
+            .chain(&self.max_relative_v_edges)
+            .fold(0.0, |a, b| nan_max(a, *b))
+    }
+}
+
 impl Network {
     /// The report of the network meshed with `n x n` cells per patch.
     pub fn report(&self, n: usize) -> NetworkReport {
