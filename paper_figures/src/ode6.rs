@@ -236,7 +236,7 @@ pub(crate) fn loft(curves: &[&Curve], knots: &[f64], nu: usize, nv: usize) -> an
     Ok(tessellate_grid(pts, us.len(), nvp, d))
 }
 
-fn tess<S: Surface>(s: &S) -> Mesh {
+fn tess<S: Surface + Send + Sync>(s: &S) -> Mesh {
     tessellate(s, Tessellation { nu: NU, nv: NV })
 }
 

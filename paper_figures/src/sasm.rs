@@ -36,7 +36,6 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
     use pdesculpt::edit::field_of;
     use pdesculpt::pipeline::build_document;
     use pdesculpt::sketch::check::bundled;
-    use pdesculpt::surface::Surface;
     use std::f64::consts::PI;
     let doc = bundled("female", Level::Final).ok_or_else(|| anyhow::anyhow!("bundled female"))?;
     let base = build_document(&doc, std::path::Path::new("."), Resolution::default(), true)?;
@@ -48,7 +47,7 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
     let um = 0.5 * (surf.u0 + surf.u1);
     let front = (0..360)
         .map(|k| 2.0 * PI * k as f64 / 360.0)
-        .max_by(|a, b| surf.chain.point(um, *a)[2].total_cmp(&surf.chain.point(um, *b)[2]))
+        .max_by(|a, b| surf.point(um, *a)[2].total_cmp(&surf.point(um, *b)[2]))
         .unwrap_or(0.0);
     let unit = sample_force_stroke(&spec, front, [0.0, 0.0, 1.0]);
     let (_, field) = field_of(&unit).ok_or_else(|| anyhow::anyhow!("a force"))??;
@@ -75,10 +74,7 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
     Ok(StrokeRow {
         before: base.model.mesh.clone(),
         after: after.model.mesh.clone(),
-        stroke: stroke
-            .iter()
-            .map(|q| surf.chain.point(q[0], q[1]))
-            .collect(),
+        stroke: stroke.iter().map(|q| surf.point(q[0], q[1])).collect(),
         edit,
         measures,
         peak: 0.03 * base.report.height,

@@ -154,7 +154,7 @@ fn tubes(p: &PartSpec, h: f64) -> Result<Vec<(&'static str, Mesh)>, BodyError> {
     let curves: Vec<Fourier3> = us.iter().map(|&u| part.section(u, 0)).collect();
     let (u0, u1) = (us[0], us[us.len() - 1]);
     let nu = (((u1 - u0) / h * STUDY_RINGS_PER_HEIGHT).ceil() as usize).max(us.len());
-    let pde6 = tessellate(&part.chain, Tessellation { nu, nv: STUDY_NV });
+    let pde6 = tessellate(&*part.surface, Tessellation { nu, nv: STUDY_NV });
     // ode6: finite-difference derivative curves in the patch parameter
     let n = curves.len();
     let sections: Vec<[Curve; 3]> = (0..n)

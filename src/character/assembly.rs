@@ -200,7 +200,7 @@ fn tube(
             Some(e) if r >= switch.max(1) => e,
             _ => thetas,
         };
-        let sec = p.chain.pieces[p.chain.piece_at(u)].global_section(u, 0);
+        let sec = p.section(u, 0);
         let pole = (r == 0 && p.closed_start) || (r == rows && p.closed_end);
         let row: Vec<u32> = if pole {
             vec![push(m, sec.c0)]

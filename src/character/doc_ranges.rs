@@ -209,15 +209,11 @@ fn names(doc: &Fields) -> Result<(), DocError> {
 }
 
 fn part(f: &str, p: &PartSpec) -> Result<(), DocError> {
-    let super::spec::SurfaceSpec::Pde6C2 { a } = p.surface;
-    if !(a.is_finite() && a.abs() <= crate::pde6::A_MAX) {
+    if let Some((name, value, expected)) = p.surface.out_of_range() {
         return Err(range_err(
-            format!("{f}.surface.a"),
-            Num(a).to_string(),
-            format!(
-                "|a| <= {} (the pde6 family's documented range)",
-                crate::pde6::A_MAX
-            ),
+            format!("{f}.surface.{name}"),
+            Num(value).to_string(),
+            expected,
         ));
     }
     count(&format!("{f}.sections"), p.sections.len(), PART_SECTIONS)?;

@@ -5,7 +5,7 @@ use super::part::PartSurface;
 use super::ring::{RING_VERTICES, SEAM_VERTICES};
 use super::transition::{eval as teval, loop_eval, Built, ChildTransition, Run};
 use crate::mesh::{dist, norm, scale, sub, Mesh};
-use crate::surface::{cross, Surface};
+use crate::surface::cross;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -76,12 +76,9 @@ pub(super) fn measure(
             let x0 = teval(ct, parent, child, &b.seams, s, tau, 0);
             let x1 = teval(ct, parent, child, &b.seams, s, tau, 1);
             let x2 = teval(ct, parent, child, &b.seams, s, tau, 2);
-            let p0 = surf.chain.point(u, v.rem_euclid(2.0 * PI));
-            let p1 = scale(surf.chain.derivative(u, v.rem_euclid(2.0 * PI), 1, 0), scl);
-            let p2 = scale(
-                surf.chain.derivative(u, v.rem_euclid(2.0 * PI), 2, 0),
-                scl * scl,
-            );
+            let p0 = surf.point(u, v.rem_euclid(2.0 * PI));
+            let p1 = scale(surf.derivative(u, v.rem_euclid(2.0 * PI), 1, 0), scl);
+            let p2 = scale(surf.derivative(u, v.rem_euclid(2.0 * PI), 2, 0), scl * scl);
             c0 = c0.max(dist(x0, p0));
             c1 = c1.max(dist(x1, p1));
             c2 = c2.max(dist(x2, p2));

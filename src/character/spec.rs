@@ -41,6 +41,51 @@ pub enum SurfaceSpec {
     /// The globally solved C2 sixth-order PDE chain (`pde6::Chain::c2_global`)
     /// with PDE parameter `a`.
     Pde6C2 { a: f64 },
+    /// Sixth-order ODE patches between consecutive sections, C2 at each
+    /// (paper 004 eqs 19, 23-25), with shape parameters rho, eta, lambda
+    /// (`ode6::Params`).
+    Ode6C2 { rho: f64, eta: f64, lambda: f64 },
+}
+
+impl SurfaceSpec {
+    /// One line for reports and the TUI.
+    pub fn describe(&self) -> String {
+        match self {
+            SurfaceSpec::Pde6C2 { a } => format!("pde6 C2 chain (a = {a})"),
+            SurfaceSpec::Ode6C2 { rho, eta, lambda } => {
+                format!("ode6 C2 chain (rho = {rho}, eta = {eta}, lambda = {lambda})")
+            }
+        }
+    }
+
+    /// The first parameter out of its family's range: `(name, value,
+    /// expected)`.
+    pub fn out_of_range(&self) -> Option<(&'static str, f64, String)> {
+        match *self {
+            SurfaceSpec::Pde6C2 { a } => {
+                (!(a.is_finite() && a.abs() <= crate::pde6::A_MAX)).then(|| {
+                    let m = crate::pde6::A_MAX;
+                    (
+                        "a",
+                        a,
+                        format!("|a| <= {m} (the pde6 family's documented range)"),
+                    )
+                })
+            }
+            SurfaceSpec::Ode6C2 { rho, eta, lambda } => {
+                let finite = "a finite number".to_string();
+                if !(rho.is_finite() && rho != 0.0) {
+                    Some(("rho", rho, "finite and not 0 (rho = 0 makes eq 2 of fourth order, which cannot meet eq 1's six constraints)".into()))
+                } else if !eta.is_finite() {
+                    Some(("eta", eta, finite))
+                } else if !lambda.is_finite() {
+                    Some(("lambda", lambda, finite))
+                } else {
+                    None
+                }
+            }
+        }
+    }
 }
 
 /// One part: a C2 tube through its key sections.

@@ -58,10 +58,21 @@ pub fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditError> {
     let known = parts.to_vec();
     let p = find(parts, name).map_err(|_| unknown_part(&known, name))?;
     match e {
-        Edit::ShapeParameter { a, .. } => {
-            p.surface = SurfaceSpec::Pde6C2 { a: *a };
-            Ok(())
-        }
+        Edit::ShapeParameter { a, .. } => match p.surface {
+            SurfaceSpec::Pde6C2 { .. } => {
+                p.surface = SurfaceSpec::Pde6C2 { a: *a };
+                Ok(())
+            }
+            // the shape parameter a is the pde6 family's (000 sec 5.1)
+            ref other => Err(EditError::Invalid {
+                op: e.op(),
+                part: name.to_string(),
+                message: format!(
+                    "the shape parameter a belongs to pde6 surfaces; this part is an {}",
+                    other.describe()
+                ),
+            }),
+        },
         Edit::GecTransform {
             section, transform, ..
         } => {
@@ -302,4 +313,34 @@ fn transform_section(
         };
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shape_parameter_edit_is_refused_on_an_ode6_part() {
+        let mut parts = vec![PartSpec {
+            name: "arm".into(),
+            surface: SurfaceSpec::Ode6C2 {
+                rho: 1.0,
+                eta: 3.0,
+                lambda: 1.0,
+            },
+            sections: vec![],
+            closed_start: false,
+            closed_end: false,
+        }];
+        let e = Edit::ShapeParameter {
+            part: "arm".into(),
+            a: 0.5,
+        };
+        let err = apply_one(&mut parts, &e).unwrap_err().to_string();
+        assert!(err.contains("belongs to pde6 surfaces"), "{err}");
+        assert!(matches!(parts[0].surface, SurfaceSpec::Ode6C2 { .. }));
+        parts[0].surface = SurfaceSpec::Pde6C2 { a: 0.0 };
+        apply_one(&mut parts, &e).unwrap();
+        assert_eq!(parts[0].surface, SurfaceSpec::Pde6C2 { a: 0.5 });
+    }
 }

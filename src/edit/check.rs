@@ -108,8 +108,8 @@ fn grid_error(
         let c0 = b.section(u, 0).c0;
         for j in 0..GRID {
             let t = 2.0 * PI * j as f64 / GRID as f64;
-            let want = map(b.chain.point(u, t), c0);
-            worst = worst.worst(dist(a.chain.point(u, t), want) / h);
+            let want = map(b.point(u, t), c0);
+            worst = worst.worst(dist(a.point(u, t), want) / h);
         }
     }
     worst
@@ -357,7 +357,7 @@ fn boundary_checks(parts: &[PartSpec], out: &mut Vec<Check>) {
             let mut ring = 0.0f64;
             for j in 0..GRID {
                 let th = 2.0 * PI * j as f64 / GRID as f64;
-                ring = ring.worst(dist(a.chain.point(b.u1, th), b.chain.point(b.u1, th)) / h);
+                ring = ring.worst(dist(a.point(b.u1, th), b.point(b.u1, th)) / h);
             }
             (dist(dt, t) / norm(t), ring)
         })

@@ -6,7 +6,6 @@ use crate::character::log::{Edit, EditError};
 use crate::character::part::PartSurface;
 use crate::mesh::{dist, Mesh};
 use crate::plate::deformer::{BoundaryMethod, MappingMethod, PlateDeformer, RegionOptions};
-use crate::surface::Surface;
 use std::f64::consts::PI;
 use std::sync::Arc;
 
@@ -38,7 +37,7 @@ pub fn distance_to_part(p: &PartSurface, c: [f64; 3]) -> f64 {
         let u = p.u0 + (p.u1 - p.u0) * i as f64 / n as f64;
         for j in 0..n {
             let th = 2.0 * PI * j as f64 / n as f64;
-            best = best.min(dist(p.chain.point(u, th), c));
+            best = best.min(dist(p.point(u, th), c));
         }
     }
     best

@@ -26,7 +26,7 @@ use crate::character::part::PartSurface;
 use crate::check::Worst;
 use crate::mesh::topology::report as topology;
 use crate::mesh::{dist, Mesh};
-use crate::surface::{cross, Surface};
+use crate::surface::cross;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -72,7 +72,7 @@ pub struct SasmReport {
 }
 
 fn edited(s: &PartSurface, f: &Feature, u: f64, t: f64) -> [f64; 3] {
-    let mut p = s.chain.point(u, t);
+    let mut p = s.point(u, t);
     p[depth_axis(f.view)] += f.height(f.view.project(p));
     p
 }
@@ -81,7 +81,7 @@ fn normal_fd(s: &PartSurface, f: Option<&Feature>, h: Hit) -> [f64; 3] {
     let (eu, et) = (1e-6 * (s.u1 - s.u0), 1e-6);
     let e = |u: f64, t: f64| match f {
         Some(f) => edited(s, f, u, t),
-        None => s.chain.point(u, t),
+        None => s.point(u, t),
     };
     let d = |a: [f64; 3], b: [f64; 3], k: f64| {
         [(a[0] - b[0]) / k, (a[1] - b[1]) / k, (a[2] - b[2]) / k]

@@ -10,9 +10,7 @@
 
 use super::{depth_axis, SasmError};
 use crate::character::part::PartSurface;
-use crate::jet::Jet;
 use crate::profile::View;
-use crate::surface::Surface;
 use std::f64::consts::PI;
 
 /// Grid cells along u and around theta.
@@ -58,7 +56,7 @@ impl<'a> Projector<'a> {
         let ths: Vec<f64> = (0..=GRID_THETA)
             .map(|j| 2.0 * PI * j as f64 / GRID_THETA as f64)
             .collect();
-        let pts = part.chain.grid(&us, &ths);
+        let pts = part.surface.grid(&us, &ths);
         let q: Vec<[f64; 2]> = pts.iter().map(|&p| proj(view, p)).collect();
         let mut lo = [f64::INFINITY; 2];
         let mut hi = [f64::NEG_INFINITY; 2];
@@ -174,10 +172,9 @@ impl<'a> Projector<'a> {
     /// Newton on `P(S(u, theta)) = q` from `(u, theta)`.
     pub fn newton(&self, q: [f64; 2], mut u: f64, mut t: f64) -> Option<Hit> {
         let (ha, va) = self.view.axes();
-        let s = &self.part.chain;
+        let s = &self.part.surface;
         for _ in 0..NEWTON_MAX {
-            let j = s.eval(Jet::<2, 2>::var_u(u), Jet::<2, 2>::var_v(t));
-            let p = [j[0].c[0][0], j[1].c[0][0], j[2].c[0][0]];
+            let p = s.point(u, t);
             let r = [p[ha] - q[0], p[va] - q[1]];
             if r[0].hypot(r[1]) <= self.tol {
                 return Some(Hit {
@@ -186,8 +183,8 @@ impl<'a> Projector<'a> {
                     point: p,
                 });
             }
-            let su = [j[0].c[1][0], j[1].c[1][0], j[2].c[1][0]];
-            let st = [j[0].c[0][1], j[1].c[0][1], j[2].c[0][1]];
+            let su = s.derivative(u, t, 1, 0);
+            let st = s.derivative(u, t, 0, 1);
             let (a, b, c, d) = (su[ha], st[ha], su[va], st[va]);
             let det = a * d - b * c;
             if det == 0.0 || !det.is_finite() {

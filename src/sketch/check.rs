@@ -270,6 +270,7 @@ pub fn checks() -> Vec<Check> {
         ).loose_because(crate::check::JOIN_REQUIREMENT_REASON));
         if name == "female" {
             out.push(c2_option_check(&b));
+            out.extend(super::check_ode6::checks(&b, C1_JUMP, PROFILE_FRONT));
         }
         let seam = b
             .model

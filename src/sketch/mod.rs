@@ -47,6 +47,7 @@
 
 pub mod align;
 pub mod check;
+pub mod check_ode6;
 pub mod corpus;
 pub mod cuts;
 pub mod derive;

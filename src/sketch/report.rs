@@ -134,11 +134,7 @@ pub fn report(
         .iter()
         .map(|p| PartReport {
             name: p.name.clone(),
-            surface: match p.surface {
-                crate::character::doc::SurfaceSpec::Pde6C2 { a } => {
-                    format!("pde6 C2 chain (a = {a})")
-                }
-            },
+            surface: p.surface.describe(),
             sections: p
                 .sections
                 .iter()

@@ -1,6 +1,6 @@
 //! Grid tessellation of any surface into a triangle mesh.
 
-use super::{Domain, Surface};
+use super::{Domain, DynSurface};
 use crate::mesh::Mesh;
 
 /// Sampling density of a tessellation.
@@ -24,7 +24,7 @@ fn samples(range: (f64, f64), n: usize, closed: bool) -> Vec<f64> {
 /// Tessellates `s` on a regular parameter grid: two triangles per cell,
 /// oriented so that the triangle normal follows `S_u x S_v`. Closed
 /// directions share their seam vertices.
-pub fn tessellate<S: Surface + ?Sized>(s: &S, t: Tessellation) -> Mesh {
+pub fn tessellate<S: DynSurface + ?Sized>(s: &S, t: Tessellation) -> Mesh {
     let d = s.domain();
     let us = samples(d.u, t.nu.max(1), d.closed_u);
     let vs = samples(d.v, t.nv.max(1), d.closed_v);

@@ -91,23 +91,26 @@ fn shape_text(s: &SectionShape) -> String {
 /// Rows for a part (`part` as edited: the stored part with the active edits
 /// applied), transforms acting on `section` (None: all sections).
 pub fn part_rows(part: &PartSpec, section: Option<usize>) -> Vec<Row> {
-    let SurfaceSpec::Pde6C2 { a } = part.surface;
-    let mut rows = vec![
-        info("surface", "pde6 C2 chain (paper 002)"),
-        Row {
-            label: "a".into(),
-            value: format!("{a}"),
-            kind: RowKind::ShapeA,
-        },
-        info(
-            "ends",
-            format!(
-                "start {}, end {}",
-                if part.closed_start { "closed" } else { "open" },
-                if part.closed_end { "closed" } else { "open" }
-            ),
+    let mut rows = match part.surface {
+        SurfaceSpec::Pde6C2 { a } => vec![
+            info("surface", "pde6 C2 chain (paper 002)"),
+            Row {
+                label: "a".into(),
+                value: format!("{a}"),
+                kind: RowKind::ShapeA,
+            },
+        ],
+        // families without an editable row: their parameters, read only
+        ref other => vec![info("surface", other.describe())],
+    };
+    rows.push(info(
+        "ends",
+        format!(
+            "start {}, end {}",
+            if part.closed_start { "closed" } else { "open" },
+            if part.closed_end { "closed" } else { "open" }
         ),
-    ];
+    ));
     for (i, s) in part.sections.iter().enumerate() {
         let mark = if section == Some(i) { "▸" } else { " " };
         rows.push(info(

@@ -304,18 +304,17 @@ fn drawn_front(
     d: &pdesculpt::character::doc::CharacterDoc,
 ) -> (pdesculpt::sasm::Stroke, Vec<[f64; 2]>) {
     use pdesculpt::profile::View;
-    use pdesculpt::surface::Surface;
     let spec = &d.parts[0];
     let surf = pdesculpt::character::part::build_part(spec).expect("builds");
     let um = 0.5 * (surf.u0 + surf.u1);
     let front = (0..360)
         .map(|k| 2.0 * PI * k as f64 / 360.0)
-        .max_by(|a, b| surf.chain.point(um, *a)[2].total_cmp(&surf.chain.point(um, *b)[2]))
+        .max_by(|a, b| surf.point(um, *a)[2].total_cmp(&surf.point(um, *b)[2]))
         .unwrap();
     let stroke = sample_stroke(spec, front);
     let points = stroke
         .iter()
-        .map(|q| View::Front.project(surf.chain.point(q[0], q[1])))
+        .map(|q| View::Front.project(surf.point(q[0], q[1])))
         .collect();
     (
         pdesculpt::sasm::Stroke {
