@@ -150,6 +150,10 @@ fn outline_validation() {
         Outline::new(L.to_vec()).map(|o| o.given_orientation()),
         Ok(Orientation::CounterClockwise)
     );
+    // equal as polygons, however they were given
+    let again = Outline::new(o.points().to_vec()).expect("valid");
+    assert_eq!(again.given_orientation(), Orientation::CounterClockwise);
+    assert_eq!(again, o);
     assert_eq!(orientation(o.points()), Some(Orientation::CounterClockwise));
     // repeats and a closing copy dropped
     let mut p = SQUARE.to_vec();
