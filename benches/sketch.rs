@@ -18,7 +18,7 @@ use pdesculpt::mesh::Mesh;
 use pdesculpt::pipeline::build_document;
 use pdesculpt::profile::{parse_svg, View};
 use pdesculpt::sketch::derive::{derive, Derived};
-use pdesculpt::sketch::input::{read_profile, ViewKind};
+use pdesculpt::sketch::input::read_profile;
 use std::f64::consts::PI;
 use std::hint::black_box;
 use std::path::Path;
@@ -32,15 +32,15 @@ const RING: usize = 48;
 fn derived() -> (Derived, f64) {
     let svg = parse_svg(FRONT, View::Front, TOL).expect("bundled SVG");
     let pts = ProfileInput::Points(svg.outline.points().to_vec());
-    let front = read_profile(&pts, Path::new("."), ViewKind::Front, Some(TOL)).expect("front");
+    let front = read_profile(&pts, Path::new("."), View::Front, Some(TOL)).expect("front");
     let (lo, hi) = front
-        .points
+        .points()
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), p| {
             (l.min(p[1]), h.max(p[1]))
         });
     let d = derive(
-        &front.points,
+        front.points(),
         None,
         &[],
         &front.cuts,

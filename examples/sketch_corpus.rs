@@ -364,7 +364,7 @@ fn contact(
     };
     match built {
         Ok(b) => {
-            let drawn = drawing_tile(&b.front.points, o.width, o.height);
+            let drawn = drawing_tile(b.front.points(), o.width, o.height);
             let model =
                 pdesculpt::render::render_views(&b.model.mesh, &[View::Front, View::Side], &o);
             pdesculpt::render::Image::hstack(&[drawn, model], [255, 255, 255, 255])
@@ -414,23 +414,24 @@ fn drawing_tile(p: &[[f64; 2]], w: usize, h: usize) -> pdesculpt::render::Image 
 /// Prints a front drawing's landmarks and traced arms (a diagnostic).
 fn landmarks(front: &Path) -> Result<(), String> {
     use pdesculpt::character::doc::ProfileInput;
-    use pdesculpt::sketch::input::{read_profile, ViewKind};
+    use pdesculpt::profile::View;
+    use pdesculpt::sketch::input::read_profile;
     let o = read_profile(
         &ProfileInput::Path(front.display().to_string()),
         Path::new("."),
-        ViewKind::Front,
+        View::Front,
         None,
     )
     .map_err(|e| e.to_string())?;
     let p = pdesculpt::sketch::place::place(&o, None, None, Default::default())
         .map_err(|e| e.to_string())?;
-    let lm = pdesculpt::sketch::segment::landmarks(&p.front.points).map_err(|e| e.to_string())?;
+    let lm = pdesculpt::sketch::segment::landmarks(p.front.points()).map_err(|e| e.to_string())?;
     println!("{lm:?}");
-    let neck = pdesculpt::sketch::segment::neck_interval(&p.front.points, &lm);
+    let neck = pdesculpt::sketch::segment::neck_interval(p.front.points(), &lm);
     println!("neck {neck:?}");
     for (a, side) in [(lm.armpit_l, -1.0), (lm.armpit_r, 1.0)] {
         let nx = neck.map_or(0.0, |n| if side < 0.0 { n[0] } else { n[1] });
-        match pdesculpt::sketch::limb::trace_arm(&p.front.points, a, side, nx, "arm") {
+        match pdesculpt::sketch::limb::trace_arm(p.front.points(), a, side, nx, "arm") {
             Ok(t) => println!(
                 "armpit {:?} shoulder {:?} tip {:?}",
                 t.armpit, t.shoulder, t.tip

@@ -84,7 +84,7 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
     let cam = Camera::fit_box(lo, hi, View::Front, W, H, 0.04);
     let grey = [150, 150, 150, 255];
     let black = [0, 0, 0, 255];
-    let outline = |c| outline_overlay(&b.front.points, View::Front).with_colour(c);
+    let outline = |c| outline_overlay(b.front.points(), View::Front).with_colour(c);
     let empty = Mesh::default();
     let draw = |m: &Mesh, overlays: Vec<Overlay>| {
         let o = RenderOptions {
@@ -128,7 +128,7 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
     let n_sections: usize = b.doc.parts.iter().map(|p| p.sections.len()).sum();
     let front = r.profile_error.first();
     let captions = vec![
-        format!("a outline ({} points)", b.front.points.len()),
+        format!("a outline ({} points)", b.front.points().len()),
         format!(
             "b {} parts: central curves\nand join boundaries",
             b.doc.parts.len()
@@ -230,8 +230,8 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
             .iter()
             .map(|(v, cam)| {
                 let pts = match v {
-                    View::Side => &side.points,
-                    _ => &b.front.points,
+                    View::Side => side.points(),
+                    _ => b.front.points(),
                 };
                 let o = RenderOptions {
                     width: W,

@@ -21,7 +21,8 @@
 //! two toes touch, the loops between them nest: 2 vertices per foot).
 
 use crate::mesh::Mesh;
-use crate::profile::{boundary_distance, contains_point};
+use crate::polygon::point_in_polygon;
+use crate::profile::boundary_distance;
 
 /// Cavity vertices of a skin and how they were found.
 #[derive(Clone, Debug, Default, serde::Serialize)]
@@ -190,7 +191,7 @@ impl Level {
             .iter()
             .enumerate()
             .filter(|&(i, _)| i != own)
-            .any(|(_, m)| 2 * votes.iter().filter(|&&q| contains_point(m, q)).count() > k)
+            .any(|(_, m)| 2 * votes.iter().filter(|&&q| point_in_polygon(m, q)).count() > k)
     }
 }
 

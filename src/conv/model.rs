@@ -24,24 +24,18 @@ use super::sketch::{ConvOptions, Sketch};
 use super::ConvError;
 use serde::{Deserialize, Serialize};
 
-/// View plane of a stroke.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum View {
-    #[default]
-    Front,
-    Side,
-    Top,
-}
+/// The view plane of a stroke: the one drawing [`View`] (`"front"`,
+/// `"side"`, `"top"`; front when not given).
+pub use crate::polygon::View;
 
-impl View {
-    /// (screen x axis, screen y axis, normal) in world coordinates.
-    pub fn frame(self) -> [[f64; 3]; 3] {
-        match self {
-            View::Front => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-            View::Side => [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
-            View::Top => [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
-        }
+/// A stroke's screen frame in `view` (screen x axis, screen y axis,
+/// normal) in world coordinates: a right-handed camera frame, so the side
+/// view's screen x is -z (`View::axes` gives the profile's (z, y) instead).
+pub fn frame(view: View) -> [[f64; 3]; 3] {
+    match view {
+        View::Front => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+        View::Side => [[0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+        View::Top => [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
     }
 }
 
@@ -269,7 +263,7 @@ impl Model {
             let sk = cache
                 .sketch(&src.stroke, &self.options)
                 .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
-            let frame = src.view.frame();
+            let frame = frame(src.view);
             let copied_depth = c
                 .copy_of
                 .as_ref()

@@ -8,8 +8,9 @@
 //! (bounding-box diagonal); the pixel size (also reported) bounds the
 //! resolution of the measurement.
 
-use super::stroke::{dist2, distance_to_polygon, inside_polygon};
+use super::stroke::{dist2, distance_to_polygon};
 use crate::mesh::Mesh;
+use crate::polygon::point_in_polygon;
 
 /// Silhouette-following error.
 #[derive(Clone, Copy, Debug, Default, serde::Serialize)]
@@ -144,7 +145,7 @@ pub fn silhouette_error_union(
             let covered = strokes
                 .iter()
                 .enumerate()
-                .any(|(j, o)| j != i && inside_polygon(s, o));
+                .any(|(j, o)| j != i && point_in_polygon(o, s));
             if covered {
                 continue;
             }

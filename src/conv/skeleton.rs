@@ -24,8 +24,9 @@
 //!    centre inside that circle is pruned too (our addition: ears of nearly
 //!    collinear stroke points).
 
-use super::stroke::{distance_to_polygon, inside_polygon};
+use super::stroke::distance_to_polygon;
 use super::ConvError;
+use crate::polygon::point_in_polygon;
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 use std::collections::HashMap;
 
@@ -140,7 +141,7 @@ fn area_inside(centre: [f64; 2], r: f64, poly: &[[f64; 2]], n: usize) -> f64 {
         for j in 0..nt {
             let th = std::f64::consts::TAU * (j as f64 + 0.5) / nt as f64;
             let p = [centre[0] + rho * th.cos(), centre[1] + rho * th.sin()];
-            if inside_polygon(p, poly) {
+            if point_in_polygon(poly, p) {
                 a += cell;
             }
         }
@@ -221,7 +222,7 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
                 let (ct, rt) = edge_tangent_circle(e0, e1, opp);
                 let ac = area_inside(cc, rc, poly, opts.area_samples);
                 let at = area_inside(ct, rt, poly, opts.area_samples);
-                if ac >= at && inside_polygon(cc, poly) {
+                if ac >= at && point_in_polygon(poly, cc) {
                     (TriangleKind::Sleeve, CircleKind::Circumcircle, cc, rc)
                 } else {
                     (TriangleKind::Sleeve, CircleKind::EdgeTangent, ct, rt)
@@ -275,7 +276,7 @@ fn inside_triangles(all: &[[usize; 3]], poly: &[[f64; 2]]) -> Vec<[usize; 3]> {
                 continue;
             };
             let (p, q) = (poly[i], poly[j]);
-            let o = (q[0] - p[0]) * (third[1] - p[1]) - (q[1] - p[1]) * (third[0] - p[0]);
+            let o = crate::polygon::orient(p, q, third);
             state[t] = Some(o > 0.0);
         }
     }
@@ -303,7 +304,7 @@ fn inside_triangles(all: &[[usize; 3]], poly: &[[f64; 2]]) -> Vec<[usize; 3]> {
                     (poly[v[0]][0] + poly[v[1]][0] + poly[v[2]][0]) / 3.0,
                     (poly[v[0]][1] + poly[v[1]][1] + poly[v[2]][1]) / 3.0,
                 ];
-                inside_polygon(c, poly)
+                point_in_polygon(poly, c)
             })
         })
         .map(|(_, v)| *v)

@@ -8,6 +8,7 @@
 //! normalised to counter-clockwise.
 
 use super::ConvError;
+use crate::polygon::{self_intersection, signed_area};
 
 /// Options of the stroke filter.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -39,18 +40,6 @@ pub const MIN_SIZE: f64 = 1e-6;
 /// Points closer than this fraction of the diagonal are merged.
 const DUPLICATE_FRACTION: f64 = 1e-9;
 
-/// Twice the signed area (positive for counter-clockwise).
-pub fn signed_area2(pts: &[[f64; 2]]) -> f64 {
-    let n = pts.len();
-    (0..n)
-        .map(|i| {
-            let a = pts[i];
-            let b = pts[(i + 1) % n];
-            a[0] * b[1] - a[1] * b[0]
-        })
-        .sum()
-}
-
 /// Perimeter of the closed polygon.
 pub fn perimeter(pts: &[[f64; 2]]) -> f64 {
     let n = pts.len();
@@ -81,24 +70,6 @@ pub fn distance_to_polygon(p: [f64; 2], poly: &[[f64; 2]]) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// Even-odd point-in-polygon test.
-pub fn inside_polygon(p: [f64; 2], poly: &[[f64; 2]]) -> bool {
-    let n = poly.len();
-    let mut inside = false;
-    let mut j = n - 1;
-    for i in 0..n {
-        let (a, b) = (poly[i], poly[j]);
-        if (a[1] > p[1]) != (b[1] > p[1]) {
-            let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-            if p[0] < x {
-                inside = !inside;
-            }
-        }
-        j = i;
-    }
-    inside
-}
-
 fn douglas_peucker(pts: &[[f64; 2]], eps: f64, keep: &mut [bool], i0: usize, i1: usize) {
     if i1 <= i0 + 1 {
         return;
@@ -116,45 +87,6 @@ fn douglas_peucker(pts: &[[f64; 2]], eps: f64, keep: &mut [bool], i0: usize, i1:
         douglas_peucker(pts, eps, keep, i0, bi);
         douglas_peucker(pts, eps, keep, bi, i1);
     }
-}
-
-fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
-    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-}
-
-fn segments_intersect(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
-    let (o1, o2) = (orient(a, b, c), orient(a, b, d));
-    let (o3, o4) = (orient(c, d, a), orient(c, d, b));
-    if ((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0))
-        && ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0))
-    {
-        return true;
-    }
-    let on = |p: [f64; 2], q: [f64; 2], r: [f64; 2], o: f64| {
-        o == 0.0
-            && r[0] >= p[0].min(q[0])
-            && r[0] <= p[0].max(q[0])
-            && r[1] >= p[1].min(q[1])
-            && r[1] <= p[1].max(q[1])
-    };
-    on(a, b, c, o1) || on(a, b, d, o2) || on(c, d, a, o3) || on(c, d, b, o4)
-}
-
-/// The first pair of non-adjacent edges `(i, j)` of the closed polygon that
-/// intersect, if any.
-pub fn self_intersection(pts: &[[f64; 2]]) -> Option<(usize, usize)> {
-    let n = pts.len();
-    for i in 0..n {
-        for j in i + 1..n {
-            if j == i + 1 || (i == 0 && j == n - 1) {
-                continue;
-            }
-            if segments_intersect(pts[i], pts[(i + 1) % n], pts[j], pts[(j + 1) % n]) {
-                return Some((i, j));
-            }
-        }
-    }
-    None
 }
 
 /// Filters a sampled closed stroke: validation, Douglas-Peucker,
@@ -185,19 +117,8 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
             });
         }
     }
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for p in raw {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
     // hypot: the squares of a tiny stroke's extent underflow
-    let diag = if raw.is_empty() {
-        0.0
-    } else {
-        (hi[0] - lo[0]).hypot(hi[1] - lo[1])
-    };
+    let diag = crate::polygon::diagonal(raw);
     if diag > 0.0 && diag < MIN_SIZE {
         return Err(ConvError::TooSmall {
             size: diag,
@@ -223,7 +144,7 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
             needed: MIN_POINTS,
         });
     }
-    let area = signed_area2(&pts).abs() * 0.5;
+    let area = signed_area(&pts).abs();
     if area <= 1e-6 * diag * diag {
         return Err(ConvError::ZeroArea { area });
     }
@@ -261,13 +182,13 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
             needed: MIN_POINTS,
         });
     }
-    if let Some((i, j)) = self_intersection(&out) {
+    if let Some((i, j, _)) = self_intersection(&out) {
         return Err(ConvError::SelfIntersecting {
             edge_a: i,
             edge_b: j,
         });
     }
-    if signed_area2(&out) < 0.0 {
+    if signed_area(&out) < 0.0 {
         out.reverse();
     }
     Ok(out)

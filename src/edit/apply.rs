@@ -169,7 +169,8 @@ fn boundary(
         let mut s = p.sections[ie].clone();
         s.shape = c.clone();
         let g = section_gec(&s).map_err(invalid)?;
-        if let Some((a, b)) = crate::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES)) {
+        if let Some((a, b, _)) = crate::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
+        {
             return Err(EditError::SelfIntersecting {
                 op: e.op(),
                 part: p.name.clone(),
@@ -291,7 +292,7 @@ fn transform_section(
     }
     if !point {
         let pts = out.sample_plane(SECTION_SAMPLES);
-        if let Some((a, b)) = crate::polygon::self_intersection(&pts) {
+        if let Some((a, b, _)) = crate::polygon::self_intersection(&pts) {
             return Err(EditError::SelfIntersecting {
                 op: e.op(),
                 part: p.name.clone(),

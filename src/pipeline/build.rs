@@ -179,12 +179,12 @@ pub fn build(
         .map(|r| crate::sketch::removed::removed_part(r, base, tol, &placement))
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
-    let (yr, _) = crate::sketch::poly::bounds(&front.points);
+    let yr = crate::polygon::span(front.points(), 1);
     let height = yr[1] - yr[0];
     if opts.rederive || doc.parts.is_empty() {
         let d = derive(
-            &front.points,
-            side.as_ref().map(|s| s.points.as_slice()),
+            front.points(),
+            side.as_ref().map(|s| s.points()),
             &crate::sketch::place::placed_sections(&doc.inputs.sections, &placement),
             &front.cuts,
             doc.level,

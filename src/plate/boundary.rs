@@ -12,6 +12,7 @@
 //! counter-clockwise, is the boundary curve $A_1 \dots A_M$.
 
 use super::PlateError;
+use crate::polygon::signed_area;
 use spade::{DelaunayTriangulation, HasPosition, Point2, Triangulation};
 use std::collections::HashMap;
 
@@ -46,18 +47,6 @@ pub struct Boundary {
     pub triangles: Vec<[usize; 3]>,
 }
 
-/// Signed area of a closed polygon.
-pub fn signed_area(pts: &[[f64; 2]]) -> f64 {
-    let n = pts.len();
-    (0..n)
-        .map(|i| {
-            let (a, b) = (pts[i], pts[(i + 1) % n]);
-            a[0] * b[1] - b[0] * a[1]
-        })
-        .sum::<f64>()
-        * 0.5
-}
-
 /// The boundary of the region's own mesh triangles (an alternative to the
 /// alpha shape that does not depend on uniform vertex spacing):
 /// `triangles` index `points`; each is oriented counter-clockwise in the
@@ -69,7 +58,7 @@ pub fn mesh_edge_boundary(
     let mut tris = Vec::new();
     for t in triangles {
         let (a, b, c) = (points[t[0]], points[t[1]], points[t[2]]);
-        let s = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+        let s = crate::polygon::orient(a, b, c);
         if s > 0.0 {
             tris.push(*t);
         } else if s < 0.0 {

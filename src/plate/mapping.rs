@@ -12,8 +12,8 @@
 //! $0/0$ when $B_j$ is straight above or beside $C$. [`DiskMapping::map_point`] uses the
 //! radial ratio; [`eq16_paper_literal`] keeps the printed form.
 
-use super::boundary::signed_area;
 use super::PlateError;
+use crate::polygon::{point_in_polygon as inside, signed_area};
 
 /// Relative snapping of a ray's edge parameter at polygon vertices.
 const VERTEX_SNAP: f64 = 1e-9;
@@ -39,23 +39,6 @@ pub struct DiskMapping {
     /// Number of mapped points whose ray from C crossed the boundary more
     /// than once (region not star-shaped about C: eq 16 is not one-to-one).
     pub non_star_rays: usize,
-}
-
-/// Winding test: is `p` inside the closed polygon?
-pub fn inside(poly: &[[f64; 2]], p: [f64; 2]) -> bool {
-    let n = poly.len();
-    let mut c = false;
-    let mut j = n - 1;
-    for i in 0..n {
-        let (a, b) = (poly[i], poly[j]);
-        if (a[1] > p[1]) != (b[1] > p[1])
-            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
-        {
-            c = !c;
-        }
-        j = i;
-    }
-    c
 }
 
 impl DiskMapping {

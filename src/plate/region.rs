@@ -2,10 +2,10 @@
 //! text), or the vertices inside a lasso drawn in the view (paper 001 sec 5:
 //! the user circles the part to deform).
 
-use super::mapping::inside;
 use super::projection::LocalFrame;
 use super::PlateError;
 use crate::mesh::Mesh;
+use crate::polygon::point_in_polygon as inside;
 
 /// Region from a lasso polygon drawn in the view: the vertices facing the
 /// view (`view` towards the viewer) whose projection in the frame

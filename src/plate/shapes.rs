@@ -10,10 +10,10 @@
 use super::baselines::{delta_mush, laplacian_deform, DeltaMushParams, LaplacianParams};
 use super::deformer::{Direction, MappingMethod, PlateDeformer, RegionOptions};
 pub use super::delaunay::delaunay;
-use super::mapping::inside;
 use super::reference::solve_clamped;
 use super::PlateError;
 use crate::mesh::Mesh;
+use crate::polygon::point_in_polygon as inside;
 
 /// Region shapes of the comparisons.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

@@ -1,7 +1,7 @@
 //! A uniform grid over line segments: each cell lists the segments that pass
-//! through it (a conservative superset). Used for the self-intersection test
-//! (only segments sharing a cell are compared) and for nearest-segment
-//! queries, so both stay near-linear in the number of segments.
+//! through it (a conservative superset). Used for nearest-segment queries,
+//! so they stay near-linear in the number of segments (the self-intersection
+//! test is `crate::polygon::self_intersection`'s sweep).
 
 /// Segment `[p, q]`.
 pub(crate) type Segment = [[f64; 2]; 2];
@@ -85,11 +85,6 @@ impl SegmentGrid {
         }
         g.items = items;
         g
-    }
-
-    /// Number of cells.
-    pub fn cells(&self) -> usize {
-        self.nx * self.ny
     }
 
     /// Segment indices listed in cell `c`.
@@ -190,12 +185,6 @@ pub(crate) fn len(p: [f64; 2], q: [f64; 2]) -> f64 {
     (q[0] - p[0]).hypot(q[1] - p[1])
 }
 
-/// Twice the signed area of triangle (a, b, c): positive when
-/// counter-clockwise.
-pub(crate) fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
-    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-}
-
 /// Distance from `p` to segment `[a, b]` and the parameter of the nearest
 /// point.
 pub(crate) fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> (f64, f64) {
@@ -208,87 +197,4 @@ pub(crate) fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> (f64, f64)
     };
     let x = [a[0] + t * d[0], a[1] + t * d[1]];
     (len(p, x), t)
-}
-
-/// Whether closed segments `[p1, p2]` and `[q1, q2]` share a point; returns
-/// one such point.
-pub(crate) fn segments_meet(
-    p1: [f64; 2],
-    p2: [f64; 2],
-    q1: [f64; 2],
-    q2: [f64; 2],
-) -> Option<[f64; 2]> {
-    let d1 = orient(q1, q2, p1);
-    let d2 = orient(q1, q2, p2);
-    let d3 = orient(p1, p2, q1);
-    let d4 = orient(p1, p2, q2);
-    let opposite = |a: f64, b: f64| (a > 0.0 && b < 0.0) || (a < 0.0 && b > 0.0);
-    if opposite(d1, d2) && opposite(d3, d4) {
-        let t = d1 / (d1 - d2);
-        return Some([p1[0] + t * (p2[0] - p1[0]), p1[1] + t * (p2[1] - p1[1])]);
-    }
-    let within = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
-        c[0] >= a[0].min(b[0])
-            && c[0] <= a[0].max(b[0])
-            && c[1] >= a[1].min(b[1])
-            && c[1] <= a[1].max(b[1])
-    };
-    if d1 == 0.0 && within(q1, q2, p1) {
-        return Some(p1);
-    }
-    if d2 == 0.0 && within(q1, q2, p2) {
-        return Some(p2);
-    }
-    if d3 == 0.0 && within(p1, p2, q1) {
-        return Some(q1);
-    }
-    if d4 == 0.0 && within(p1, p2, q2) {
-        return Some(q2);
-    }
-    None
-}
-
-/// The first pair of non-adjacent edges of the closed polygon `pts` that
-/// meet (or adjacent edges that fold back onto each other), with a point
-/// where they meet. Edge `i` joins point `i` to point `i + 1` (mod n).
-pub(crate) fn first_self_intersection(pts: &[[f64; 2]]) -> Option<(usize, usize, [f64; 2])> {
-    let n = pts.len();
-    if n < 3 {
-        return None;
-    }
-    let segs: Vec<Segment> = (0..n).map(|i| [pts[i], pts[(i + 1) % n]]).collect();
-    // Adjacent edges: they share a vertex; they only overlap when they are
-    // collinear and fold back.
-    for i in 0..n {
-        let (u, v, w) = (pts[i], pts[(i + 1) % n], pts[(i + 2) % n]);
-        let back = (u[0] - v[0]) * (w[0] - v[0]) + (u[1] - v[1]) * (w[1] - v[1]);
-        if orient(u, v, w) == 0.0 && back > 0.0 {
-            let (a, b) = (i.min((i + 1) % n), i.max((i + 1) % n));
-            return Some((a, b, v));
-        }
-    }
-    let grid = SegmentGrid::new(segs);
-    let mut found: Option<(usize, usize, [f64; 2])> = None;
-    for c in 0..grid.cells() {
-        let items = grid.cell_items(c);
-        for (k, &a) in items.iter().enumerate() {
-            for &b in &items[k + 1..] {
-                let (a, b) = (a.min(b) as usize, a.max(b) as usize);
-                if b == a + 1 || (a == 0 && b == n - 1) || a == b {
-                    continue;
-                }
-                let (sa, sb) = (&grid.segs[a], &grid.segs[b]);
-                if let Some(at) = segments_meet(sa[0], sa[1], sb[0], sb[1]) {
-                    let better = found.is_none_or(|(fa, fb, _)| (a, b) < (fa, fb));
-                    if better {
-                        found = Some((a, b, at));
-                    }
-                }
-            }
-        }
-        if found.is_some() {
-            return found;
-        }
-    }
-    found
 }

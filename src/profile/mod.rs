@@ -74,81 +74,14 @@ pub mod units;
 pub use distance::{profile_distance, ProfileDistance, ProfileIndex};
 pub use json::{parse_json, read_json, to_json};
 pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
-pub use polygon::{boundary_distance, contains_point, Profile};
+pub use polygon::{boundary_distance, Profile};
 pub use svg::{parse_svg, parse_svg_with, read_svg, read_svg_with, Cut, Flatness, SvgSketch};
 pub use svg_guard::estimate_points;
 pub use svg_write::{to_svg, to_svg_physical, write_svg};
 pub use units::{document_units, DocumentUnits};
 
-use serde::{Deserialize, Serialize};
-use std::fmt;
-use std::str::FromStr;
+pub use crate::polygon::View;
 use thiserror::Error;
-
-/// A view direction: which two model axes a profile is drawn in.
-#[derive(Serialize, Deserialize, Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[serde(rename_all = "lowercase")]
-pub enum View {
-    /// Looking along -z at the character's front: (x, y).
-    Front,
-    /// Looking along -x at its side: (z, y).
-    Side,
-    /// Looking down along -y: (x, z).
-    Top,
-}
-
-impl View {
-    /// Every view.
-    pub const ALL: [View; 3] = [View::Front, View::Side, View::Top];
-
-    /// Indices of the model axes giving (horizontal, vertical).
-    pub fn axes(self) -> (usize, usize) {
-        match self {
-            View::Front => (0, 1),
-            View::Side => (2, 1),
-            View::Top => (0, 2),
-        }
-    }
-
-    /// Orthographic projection of a model point to profile coordinates.
-    pub fn project(self, p: [f64; 3]) -> [f64; 2] {
-        let (h, v) = self.axes();
-        [p[h], p[v]]
-    }
-
-    /// The lowercase name (`"front"`, `"side"`, `"top"`).
-    pub fn name(self) -> &'static str {
-        match self {
-            View::Front => "front",
-            View::Side => "side",
-            View::Top => "top",
-        }
-    }
-
-    /// Whether SVG y is minus the profile's vertical coordinate (front, side)
-    /// rather than equal to it (top).
-    pub fn svg_y_flipped(self) -> bool {
-        !matches!(self, View::Top)
-    }
-}
-
-impl fmt::Display for View {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-impl FromStr for View {
-    type Err = ProfileError;
-    fn from_str(s: &str) -> Result<View, ProfileError> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "front" => Ok(View::Front),
-            "side" => Ok(View::Side),
-            "top" => Ok(View::Top),
-            _ => Err(ProfileError::UnknownView { name: s.into() }),
-        }
-    }
-}
 
 /// Errors of profile construction, input and output.
 #[derive(Debug, Error)]
@@ -179,8 +112,6 @@ pub enum ProfileError {
         value: String,
         reason: String,
     },
-    #[error("unknown view {name:?} (expected front, side or top)")]
-    UnknownView { name: String },
     #[error("expected a {expected} profile, got a {found} one")]
     WrongView { expected: View, found: View },
     #[error("invalid parameter: {message}")]

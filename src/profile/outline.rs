@@ -52,6 +52,7 @@
 use super::coverage::{inside_runs, line_intervals, outer_part, Lines, Runs};
 use super::{Profile, ProfileError, View};
 use crate::mesh::{Mesh, MeshError};
+use crate::polygon::signed_area;
 use std::collections::HashMap;
 
 /// Largest accepted [`OutlineOptions::resolution`] (a grid of up to
@@ -297,10 +298,6 @@ fn boundary_between(iv: &[(f64, f64)], a: f64, b: f64, a_inside: bool) -> f64 {
         return iv[k].0;
     }
     0.5 * (a + b)
-}
-
-fn signed_area(p: &[[f64; 2]]) -> f64 {
-    super::polygon::signed_area(p)
 }
 
 /// Douglas-Peucker on a closed polygon: split at vertex 0 and the vertex

@@ -433,10 +433,16 @@ impl SvgSketch {
         let [sx, sy] = self.units.metres_per_unit;
         let (h, v) = (sx, sy);
         let scale = |p: &[f64; 2]| [h * p[0], v * p[1]];
-        let outline = super::Profile::new(
-            self.outline.view(),
-            self.outline.points().iter().map(scale).collect(),
-        )?;
+        // a uniform positive scale keeps the outline valid: not validated
+        // again; another scale makes a new polygon, validated
+        let uniform = (h == v).then(|| self.outline.outline().scaled(h)).flatten();
+        let outline = match uniform {
+            Some(o) => super::Profile::of(self.outline.view(), o),
+            None => super::Profile::new(
+                self.outline.view(),
+                self.outline.points().iter().map(scale).collect(),
+            )?,
+        };
         let cuts = self
             .cuts
             .into_iter()

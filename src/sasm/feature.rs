@@ -35,20 +35,6 @@ pub struct Feature {
     pub factors: Vec<super::silhouette::Factor>,
 }
 
-fn inside(poly: &[[f64; 2]], q: [f64; 2]) -> bool {
-    let mut c = false;
-    let n = poly.len();
-    for i in 0..n {
-        let (a, b) = (poly[i], poly[(i + n - 1) % n]);
-        if (a[1] > q[1]) != (b[1] > q[1])
-            && q[0] < (b[0] - a[0]) * (q[1] - a[1]) / (b[1] - a[1]) + a[0]
-        {
-            c = !c;
-        }
-    }
-    c
-}
-
 impl Feature {
     /// Builds a feature on `part` from a closed region polygon (already
     /// validated) in `view` and one or two profiles. `axis`: a fixed
@@ -108,7 +94,7 @@ impl Feature {
             for k in 1..PEAK_SAMPLES - 1 {
                 let mut q = c_start;
                 q[ri] = lo[ri] + (hi[ri] - lo[ri]) * k as f64 / (PEAK_SAMPLES - 1) as f64;
-                if !inside(poly, q) {
+                if !crate::polygon::point_in_polygon(poly, q) {
                     continue;
                 }
                 if let (Some(zp), Some(zh)) = (pc.depth_at(q[ri]), depth(q)) {

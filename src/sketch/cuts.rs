@@ -18,7 +18,6 @@
 //! for one join) is an error naming the cut. Without cuts every join is
 //! placed from the outline's concave corners ([`super::segment`]).
 
-use super::poly::bounds;
 use super::segment::{Landmarks, GAP_FRACTION};
 use super::SketchError;
 
@@ -84,7 +83,7 @@ pub fn join_heights(
 ) -> Result<JoinHeights, SketchError> {
     let mut j = JoinHeights::default();
     let g = GAP_FRACTION * lm.height();
-    let (_, xr) = bounds(front);
+    let xr = crate::polygon::span(front, 0);
     for (id, pts) in cuts {
         let bad = |m: String| SketchError::Cut {
             id: id.clone(),

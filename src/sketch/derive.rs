@@ -68,8 +68,8 @@ pub(super) fn part_from_region(
     // side heights mapped onto the front's (the two agree within 5 %)
     let map = match side {
         Some(sd) => {
-            let (fy, _) = super::poly::bounds(front);
-            let (sy, _) = super::poly::bounds(sd);
+            let fy = crate::polygon::span(front, 1);
+            let sy = crate::polygon::span(sd, 1);
             let k = (sy[1] - sy[0]) / (fy[1] - fy[0]);
             [sy[0] - k * fy[0], k]
         }
@@ -227,8 +227,8 @@ pub(super) fn check_side_position(
     side: Option<&[[f64; 2]]>,
 ) -> Result<(), SketchError> {
     let Some(sd) = side else { return Ok(()) };
-    let (fy, _) = super::poly::bounds(front);
-    let (ys, _) = super::poly::bounds(sd);
+    let fy = crate::polygon::span(front, 1);
+    let ys = crate::polygon::span(sd, 1);
     let shift = (ys[0] - fy[0]).abs() / (fy[1] - fy[0]);
     if shift > HEIGHT_MISMATCH {
         return Err(SketchError::Mismatch(format!(
@@ -251,7 +251,7 @@ pub(super) fn check_side_height(
     side: Option<&[[f64; 2]]>,
 ) -> Result<(), SketchError> {
     if let Some(sd) = side {
-        let (ys, _) = super::poly::bounds(sd);
+        let ys = crate::polygon::span(sd, 1);
         let hs = ys[1] - ys[0];
         let rel = (hs - front_height).abs() / front_height;
         if rel > HEIGHT_MISMATCH {

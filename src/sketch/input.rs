@@ -7,10 +7,18 @@
 //! metres. Scaling to `--height` and placing each view by its own outline
 //! follow in [`super::place`].
 
-use super::poly::segments_intersect;
 use super::SketchError;
 use crate::character::doc::ProfileInput;
+use crate::polygon::segments_intersect;
+use crate::profile::{Profile, View};
 use std::path::Path;
+
+impl Outline {
+    /// The outline's points, counter-clockwise.
+    pub fn points(&self) -> &[[f64; 2]] {
+        self.profile.points()
+    }
+}
 
 /// Largest SVG flattening tolerance relative to the drawing's height.
 pub const MAX_RELATIVE_TOLERANCE: f64 = 0.01;
@@ -20,19 +28,11 @@ pub const MAX_RELATIVE_TOLERANCE: f64 = 0.01;
 /// whatever the drawing's size or unit.
 pub const DEFAULT_FLATNESS: f64 = 1e-3;
 
-/// Which view a profile is drawn in.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ViewKind {
-    /// Model (x, y).
-    Front,
-    /// Model (z, y).
-    Side,
-}
-
-/// A profile: validated counter-clockwise outline and its cuts, in metres.
+/// A profile: its outline, validated once where it was read (a
+/// [`Profile`]: simple, counter-clockwise), and its cuts, in metres.
 #[derive(Clone, Debug)]
 pub struct Outline {
-    pub points: Vec<[f64; 2]>,
+    pub profile: Profile,
     pub cuts: Vec<(String, Vec<[f64; 2]>)>,
     /// The SVG document's size of a user unit (None for JSON or inline
     /// points, which are metres).
@@ -61,12 +61,13 @@ fn json_points(path: &Path, text: &str) -> Result<Vec<[f64; 2]>, SketchError> {
 pub fn read_profile(
     input: &ProfileInput,
     base: &Path,
-    view: ViewKind,
+    view: View,
     tol: Option<f64>,
 ) -> Result<Outline, SketchError> {
     let what = match view {
-        ViewKind::Front => "front profile",
-        ViewKind::Side => "side profile",
+        View::Front => "front profile",
+        View::Side => "side profile",
+        View::Top => "top profile",
     };
     if let Some(tol) = tol {
         crate::limits::check_real(
@@ -76,8 +77,14 @@ pub fn read_profile(
         )?;
     }
     let mut units = None;
-    let (raw, cuts) = match input {
-        ProfileInput::Points(p) => (p.clone(), Vec::new()),
+    let invalid = |e: crate::profile::ProfileError| SketchError::Outline {
+        what: what.into(),
+        message: e.to_string(),
+    };
+    // each input validated once: an SVG's outline by the SVG reader, points
+    // here
+    let (profile, cuts) = match input {
+        ProfileInput::Points(p) => (Profile::new(view, p.clone()).map_err(invalid)?, Vec::new()),
         ProfileInput::Path(p) => {
             let path = if Path::new(p).is_absolute() {
                 Path::new(p).to_path_buf()
@@ -90,9 +97,9 @@ pub fn read_profile(
                 .unwrap_or("")
                 .to_ascii_lowercase();
             if ext == "svg" {
-                let (raw, cuts, u) = read_svg(&path, view, tol)?;
+                let (profile, cuts, u) = read_svg(&path, view, tol)?;
                 units = Some(u);
-                (raw, cuts)
+                (profile, cuts)
             } else {
                 let text =
                     crate::mesh::io::read_input_text(&path, "JSON profile").map_err(|e| {
@@ -105,18 +112,13 @@ pub fn read_profile(
                             message,
                         }
                     })?;
-                (json_points(&path, &text)?, Vec::new())
+                let raw = json_points(&path, &text)?;
+                (Profile::new(view, raw).map_err(invalid)?, Vec::new())
             }
         }
     };
-    let profile = crate::profile::Profile::new(view.profile_view(), raw).map_err(|e| {
-        SketchError::Outline {
-            what: what.into(),
-            message: e.to_string(),
-        }
-    })?;
-    let points = profile.points().to_vec();
-    check_drawing_size(what, &points)?;
+    let points = profile.points();
+    check_drawing_size(what, points)?;
     let height = profile.height();
     let tol = tol.unwrap_or(DEFAULT_FLATNESS * height);
     if tol > MAX_RELATIVE_TOLERANCE * height {
@@ -129,10 +131,10 @@ pub fn read_profile(
         });
     }
     for (id, c) in &cuts {
-        validate_cut(id, c, &points)?;
+        validate_cut(id, c, points)?;
     }
     Ok(Outline {
-        points,
+        profile,
         cuts,
         units,
     })
@@ -145,7 +147,10 @@ pub fn read_profile(
 /// condition number later.
 fn check_drawing_size(what: &str, points: &[[f64; 2]]) -> Result<(), SketchError> {
     let r = crate::limits::DRAWING_SIZE;
-    let (ys, xs) = super::poly::bounds(points);
+    let (ys, xs) = (
+        crate::polygon::span(points, 1),
+        crate::polygon::span(points, 0),
+    );
     let size = (xs[1] - xs[0]).max(ys[1] - ys[0]);
     let reach = points.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     if size >= r.min && size <= r.max && reach <= r.max {
@@ -195,11 +200,11 @@ pub fn validate_cut(id: &str, cut: &[[f64; 2]], outline: &[[f64; 2]]) -> Result<
 #[allow(clippy::type_complexity)]
 fn read_svg(
     path: &Path,
-    view: ViewKind,
+    view: View,
     tol: Option<f64>,
 ) -> Result<
     (
-        Vec<[f64; 2]>,
+        Profile,
         Vec<(String, Vec<[f64; 2]>)>,
         crate::profile::DocumentUnits,
     ),
@@ -209,8 +214,7 @@ fn read_svg(
         Some(t) => crate::profile::Flatness::Metres(t),
         None => crate::profile::Flatness::OfHeight(DEFAULT_FLATNESS),
     };
-    let read = crate::profile::read_svg_with(path, view.profile_view(), flat)
-        .and_then(|s| s.into_metres());
+    let read = crate::profile::read_svg_with(path, view, flat).and_then(|s| s.into_metres());
     let sk = read.map_err(|e| {
         // the I/O variant already names the path: keep only its cause
         let message = match e {
@@ -228,7 +232,7 @@ fn read_svg(
         }
     })?;
     Ok((
-        sk.outline.points().to_vec(),
+        sk.outline,
         sk.cuts.into_iter().map(|c| (c.id, c.points)).collect(),
         sk.units,
     ))
@@ -241,15 +245,5 @@ fn without_path(path: &Path, message: String) -> String {
     match message.strip_prefix(&prefix) {
         Some(rest) => rest.to_string(),
         None => message,
-    }
-}
-
-impl ViewKind {
-    /// The profile module's view.
-    pub fn profile_view(self) -> crate::profile::View {
-        match self {
-            ViewKind::Front => crate::profile::View::Front,
-            ViewKind::Side => crate::profile::View::Side,
-        }
     }
 }

@@ -66,15 +66,11 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
             2 * GEC_TERMS + 2
         )));
     }
-    super::poly::validate_outline("key section", &pts)?;
-    let mut lo = [f64::INFINITY; 2];
-    let mut hi = [f64::NEG_INFINITY; 2];
-    for p in &pts {
-        for d in 0..2 {
-            lo[d] = lo[d].min(p[d]);
-            hi[d] = hi[d].max(p[d]);
-        }
-    }
+    crate::polygon::validate(&pts).map_err(|e| SketchError::Outline {
+        what: "key section".into(),
+        message: e.to_string(),
+    })?;
+    let (lo, hi) = crate::polygon::bbox(&pts);
     let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
     let half = [0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])];
     let mut thetas: Vec<f64> = pts
@@ -82,7 +78,7 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
         .map(|p| ((p[1] - mid[1]) / half[1]).atan2((p[0] - mid[0]) / half[0]))
         .collect();
     // unwrap to a monotone sequence in the direction of travel
-    let dir = if super::poly::signed_area2(&pts) > 0.0 {
+    let dir = if crate::polygon::signed_area(&pts) > 0.0 {
         1.0
     } else {
         -1.0

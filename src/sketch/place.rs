@@ -28,7 +28,7 @@
 //! scale and translations as the front and side views ([`Placement`]).
 
 use super::input::Outline;
-use super::poly::{bounds, slice};
+use super::poly::slice;
 use super::SketchError;
 use crate::character::doc::{BodyPlan, CharacterDoc, KeySection};
 use serde::Serialize;
@@ -83,17 +83,38 @@ impl Placement {
         [k * p[0] + self.side_shift[0], k * p[1] + self.side_shift[1]]
     }
 
-    /// An outline (and its cuts) moved by `f`.
-    pub fn apply(o: &Outline, f: impl Fn([f64; 2]) -> [f64; 2]) -> Outline {
-        Outline {
-            points: o.points.iter().map(|p| f(*p)).collect(),
+    /// A front-view outline (and its cuts) in the model frame.
+    pub fn front_outline(&self, o: &Outline) -> Result<Outline, SketchError> {
+        Placement::apply(o, self.scale, self.front_shift, "front profile")
+    }
+
+    /// A side-view outline (and its cuts) in the model frame.
+    pub fn side_outline(&self, o: &Outline) -> Result<Outline, SketchError> {
+        let k = self.scale * self.side_scale;
+        Placement::apply(o, k, self.side_shift, "side profile")
+    }
+
+    /// An outline (and its cuts) scaled by `k` and shifted: a positive
+    /// similarity, so the validated outline stays valid and is not
+    /// validated again ([`crate::profile::Profile::placed`]).
+    fn apply(o: &Outline, k: f64, shift: [f64; 2], what: &str) -> Result<Outline, SketchError> {
+        let f = |p: &[f64; 2]| [k * p[0] + shift[0], k * p[1] + shift[1]];
+        let profile = o
+            .profile
+            .placed(k, shift)
+            .ok_or_else(|| SketchError::Outline {
+                what: what.into(),
+                message: format!("placing it (scale {k:e}) gives non-finite points"),
+            })?;
+        Ok(Outline {
+            profile,
             cuts: o
                 .cuts
                 .iter()
-                .map(|(id, c)| (id.clone(), c.iter().map(|p| f(*p)).collect()))
+                .map(|(id, c)| (id.clone(), c.iter().map(f).collect()))
                 .collect(),
             units: o.units.clone(),
-        }
+        })
     }
 }
 
@@ -146,7 +167,7 @@ pub fn model_scale(drawn: f64, height: Option<f64>) -> Result<f64, SketchError> 
 }
 
 fn height(o: &[[f64; 2]]) -> f64 {
-    let (yr, _) = bounds(o);
+    let yr = crate::polygon::span(o, 1);
     yr[1] - yr[0]
 }
 
@@ -205,7 +226,7 @@ pub fn place(
     let mut warnings = Vec::new();
     let mut placement = Placement {
         scale,
-        front_shift: [0.0, -scale * bounds(&front.points).0[0]],
+        front_shift: [0.0, -scale * crate::polygon::span(front.points(), 1)[0]],
         side_scale: 1.0,
         side_shift: [0.0; 2],
     };
@@ -231,28 +252,28 @@ pub fn place(
             ));
         }
         let k = scale * placement.side_scale;
-        placement.side_shift[1] = -k * bounds(&sd.points).0[0];
+        placement.side_shift[1] = -k * crate::polygon::span(sd.points(), 1)[0];
     }
     // the front at its size, feet at y = 0: find the torso there
-    let f0 = Placement::apply(front, |p| placement.front(p));
-    let plan = super::quadruped::resolve_plan(plan, &f0.points);
+    let f0 = placement.front_outline(front)?;
+    let plan = super::quadruped::resolve_plan(plan, f0.points());
     let torso = match plan {
         BodyPlan::Quadruped => None,
-        _ => torso_axis(&f0.points),
+        _ => torso_axis(f0.points()),
     };
     placement.front_shift[0] = -match torso {
         Some((_, _, x)) => x,
-        None => super::align::axes(&f0.points).centroid[0],
+        None => super::align::axes(f0.points()).centroid[0],
     };
     if let Some(sd) = side {
-        let s0 = Placement::apply(sd, |p| placement.side(p));
+        let s0 = placement.side_outline(sd)?;
         let z = torso
-            .and_then(|(y0, y1, _)| mean_centre(&s0.points, y0, y1, CENTRE_SLICES))
-            .unwrap_or_else(|| super::align::axes(&s0.points).centroid[0]);
+            .and_then(|(y0, y1, _)| mean_centre(s0.points(), y0, y1, CENTRE_SLICES))
+            .unwrap_or_else(|| super::align::axes(s0.points()).centroid[0]);
         placement.side_shift[0] = -z;
     }
-    let front_placed = Placement::apply(front, |p| placement.front(p));
-    let side_placed = side.map(|s| Placement::apply(s, |p| placement.side(p)));
+    let front_placed = placement.front_outline(front)?;
+    let side_placed = side.map(|s| placement.side_outline(s)).transpose()?;
     let (document_unit, document_rule) = match &front.units {
         Some(u) => (u.unit.clone(), u.rule.clone()),
         None => ("m".into(), "JSON or inline points: metres".into()),
@@ -273,7 +294,7 @@ pub fn place(
 }
 
 fn height_of(o: &Outline) -> f64 {
-    height(&o.points)
+    height(o.points())
 }
 
 /// Reads the document's front and side profiles at their physical size;
@@ -286,17 +307,13 @@ pub fn read_views(
     base: &Path,
 ) -> Result<(Outline, Option<Outline>, Option<f64>), SketchError> {
     let read = |tol: Option<f64>| -> Result<(Outline, Option<Outline>), SketchError> {
-        let front = super::input::read_profile(
-            &doc.inputs.front,
-            base,
-            super::input::ViewKind::Front,
-            tol,
-        )?;
+        let front =
+            super::input::read_profile(&doc.inputs.front, base, crate::profile::View::Front, tol)?;
         let side = match &doc.inputs.side {
             Some(s) => Some(super::input::read_profile(
                 s,
                 base,
-                super::input::ViewKind::Side,
+                crate::profile::View::Side,
                 tol,
             )?),
             None => None,
@@ -306,7 +323,7 @@ pub fn read_views(
     match (doc.inputs.tolerance, doc.inputs.height) {
         (Some(t), Some(h)) => {
             let (f, _) = read(None)?;
-            let (yr, _) = super::poly::bounds(&f.points);
+            let yr = crate::polygon::span(f.points(), 1);
             let k = model_scale(yr[1] - yr[0], Some(h))?;
             let (f, s) = read(Some(t / k))?;
             Ok((f, s, Some(t / k)))

@@ -47,7 +47,7 @@
 //! say where "up" is).
 
 use super::derive::{check_side_height, part_from_region, Derived};
-use super::poly::{bounds, gap_tops};
+use super::poly::gap_tops;
 use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION, LANDMARK_SLICES};
 use super::SketchError;
 use crate::character::doc::{
@@ -109,7 +109,7 @@ pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
 
 /// Finds the leg gaps and top corners.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
-    let (yr, _) = bounds(front);
+    let yr = crate::polygon::span(front, 1);
     let mid = 0.5 * (yr[0] + yr[1]);
     let by_x = |v: &mut Vec<[f64; 2]>| v.sort_by(|a, b| a[0].total_cmp(&b[0]));
     let mut legs: Vec<[f64; 2]> = gap_tops(front, LANDMARK_SLICES)
@@ -266,7 +266,7 @@ pub fn regions(
     xs.push(big);
     let n = xs.len() - 1;
     let zc = side.map_or(0.0, |s| {
-        let (_, zr) = bounds(s);
+        let zr = crate::polygon::span(s, 0);
         0.5 * (zr[0] + zr[1])
     });
     for (i, name) in leg_names(n, lm.facing).into_iter().enumerate() {

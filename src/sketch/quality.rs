@@ -176,16 +176,10 @@ impl VertexGrid {
 /// distance outside the drawn outline or 0), as [`view_samples`] returns them.
 type Sample = (u32, f64, f64);
 
-fn view_samples(
-    mesh: &Mesh,
-    groups: &[u32],
-    view: View,
-    drawn: &[[f64; 2]],
-) -> Option<Vec<Sample>> {
-    let sketch = Profile::new(view, drawn.to_vec()).ok()?;
+fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Option<Vec<Sample>> {
     let model = outline_of_mesh(mesh, view, &OutlineOptions::default()).ok()?;
     let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
-    let (isk, imo) = (ProfileIndex::new(&sketch), ProfileIndex::new(&model));
+    let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(&model));
     let ms = model.resample_arclength(SAMPLES);
     let part_of = |q: [f64; 2]| grid.nearest(q).map_or(u32::MAX, |i| groups[i]);
     let mut out = Vec::with_capacity(2 * SAMPLES);
@@ -256,11 +250,12 @@ fn summarise(view: View, s: &[(u32, f64, f64)], height: f64) -> ViewQuality {
 }
 
 /// Measures `mesh` (the body, without removed parts or props) against the
-/// drawn outlines; `parts`: the group names reported one by one.
+/// drawn outlines (validated where they were read); `parts`: the group
+/// names reported one by one.
 pub fn measure(
     mesh: &Mesh,
-    front: &[[f64; 2]],
-    side: Option<&[[f64; 2]]>,
+    front: &Profile,
+    side: Option<&Profile>,
     height: f64,
     parts: &[String],
 ) -> Quality {

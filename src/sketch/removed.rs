@@ -20,11 +20,12 @@
 
 use super::align::{axes, Alignment, ROTATION_EPS_DEG};
 use super::derive::part_from_region;
-use super::input::{read_profile, Outline, ViewKind};
+use super::input::{read_profile, Outline};
 use super::place::Placement;
 use super::segment::{Pick, Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{PartSpec, RemovedPart, SectionShape};
+use crate::profile::View;
 use std::path::Path;
 
 /// A removed part built into a part spec, with its outlines.
@@ -48,17 +49,18 @@ pub fn removed_part(
         part: rp.name.clone(),
         message: m,
     };
-    let front =
-        read_profile(&rp.front, base, ViewKind::Front, tol).map_err(|e| bad(e.to_string()))?;
-    let front = Placement::apply(&front, |p| placement.front(p));
+    let front = read_profile(&rp.front, base, View::Front, tol).map_err(|e| bad(e.to_string()))?;
+    let front = placement
+        .front_outline(&front)
+        .map_err(|e| bad(e.to_string()))?;
     let side = match &rp.side {
         Some(s) => {
-            let o = read_profile(s, base, ViewKind::Side, tol).map_err(|e| bad(e.to_string()))?;
-            Some(Placement::apply(&o, |p| placement.side(p)))
+            let o = read_profile(s, base, View::Side, tol).map_err(|e| bad(e.to_string()))?;
+            Some(placement.side_outline(&o).map_err(|e| bad(e.to_string()))?)
         }
         None => None,
     };
-    let ax = axes(&front.points);
+    let ax = axes(front.points());
     // turn the major axis vertical: angle into (-90, 90] degrees
     let half = std::f64::consts::FRAC_PI_2;
     let mut turn = half - ax.major;
@@ -69,14 +71,14 @@ pub fn removed_part(
         pivot: ax.centroid,
         angle: -turn,
     };
-    let up: Vec<[f64; 2]> = front.points.iter().map(|p| al.to_upright(*p)).collect();
+    let up: Vec<[f64; 2]> = front.points().iter().map(|p| al.to_upright(*p)).collect();
     let upright = turn.abs().to_degrees() < ROTATION_EPS_DEG;
     let side_pts = if upright {
-        side.as_ref().map(|s| s.points.as_slice())
+        side.as_ref().map(|s| s.points())
     } else {
         None
     };
-    let (yr, _) = super::poly::bounds(&up);
+    let yr = crate::polygon::span(&up, 1);
     let big = 1e3 * (yr[1] - yr[0]).max(f64::MIN_POSITIVE);
     let region = Region {
         name: rp.name.clone(),

@@ -9,7 +9,7 @@ use crate::character::doc::{CharacterDoc, Level, PartSpec, SectionShape};
 use crate::character::props::PropReport;
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::Mesh;
-use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, Profile, View};
+use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, View};
 use serde::Serialize;
 
 /// One section in the report.
@@ -202,8 +202,8 @@ pub fn report(
         .collect();
     let quality = super::quality::measure(
         &body,
-        &front.points,
-        side.map(|s| s.points.as_slice()),
+        &front.profile,
+        side.map(|s| &s.profile),
         height,
         &part_names,
     );
@@ -251,11 +251,8 @@ pub fn profile_errors(
     let views = [(View::Front, Some(front)), (View::Side, side)];
     for (view, o) in views {
         let Some(o) = o else { continue };
-        let d = Profile::new(view, o.points.clone())
-            .and_then(|sketch| {
-                let model = outline_of_mesh(mesh, view, &OutlineOptions::default())?;
-                Ok(profile_distance(&model, &sketch))
-            })
+        let d = outline_of_mesh(mesh, view, &OutlineOptions::default())
+            .map(|model| profile_distance(&model, &o.profile))
             .map(|d| (d.max / height, d.rms / height))
             .unwrap_or((f64::NAN, f64::NAN));
         out.push(ProfileErrorReport {

@@ -149,7 +149,7 @@ fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> bool {
 /// up from the crotch, meets its arm ([`armpit`]): for arms hanging apart
 /// the gap top between arm and torso, for a T-pose the arm's underside.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
-    let (yr, _) = super::poly::bounds(front);
+    let yr = crate::polygon::span(front, 1);
     let h = yr[1] - yr[0];
     let mut tops: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
     tops.sort_by(|a, b| b.y.total_cmp(&a.y));

@@ -38,7 +38,7 @@ pub fn hand_features(p: &[[f64; 2]], drop: f64) -> Vec<(usize, Feature)> {
     if n < 3 {
         return Vec::new();
     }
-    let ccw = super::polygon::signed_area2(p) > 0.0;
+    let ccw = super::polygon::signed_area(p) > 0.0;
     let mut out = Vec::new();
     for i in 0..n {
         for up in [true, false] {

@@ -20,7 +20,7 @@
 //! with an error naming it. Between consecutive landmarks points correspond
 //! by arc-length fraction.
 
-use super::polygon::{cumulative, point_at, signed_area2};
+use super::polygon::{cumulative, point_at};
 use super::TemplateError;
 
 /// Which landmarks to look for.
@@ -114,13 +114,19 @@ impl Similarity {
 /// "up" measured from +y.
 pub fn upright_frame(p: &[[f64; 2]]) -> ([f64; 2], f64) {
     let n = p.len();
-    let a2 = signed_area2(p);
+    // the centroid's own cross terms (their sum is twice the area)
+    let w: Vec<f64> = (0..n)
+        .map(|i| {
+            let (a, b) = (p[i], p[(i + 1) % n]);
+            a[0] * b[1] - a[1] * b[0]
+        })
+        .collect();
+    let a2: f64 = w.iter().sum();
     let mut c = [0.0; 2];
     for i in 0..n {
         let (a, b) = (p[i], p[(i + 1) % n]);
-        let w = a[0] * b[1] - a[1] * b[0];
-        c[0] += (a[0] + b[0]) * w / (3.0 * a2);
-        c[1] += (a[1] + b[1]) * w / (3.0 * a2);
+        c[0] += (a[0] + b[0]) * w[i] / (3.0 * a2);
+        c[1] += (a[1] + b[1]) * w[i] / (3.0 * a2);
     }
     // second moments of area about the centroid
     let (mut sxx, mut syy, mut sxy) = (0.0, 0.0, 0.0);

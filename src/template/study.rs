@@ -143,9 +143,9 @@ pub fn torso_section(m: &Mesh, y: f64) -> Option<Vec<[f64; 2]>> {
                 .collect::<Vec<[f64; 2]>>()
         })
         .max_by(|a, b| {
-            super::polygon::signed_area2(a)
+            super::polygon::signed_area(a)
                 .abs()
-                .total_cmp(&super::polygon::signed_area2(b).abs())
+                .total_cmp(&super::polygon::signed_area(b).abs())
         })
 }
 

@@ -56,12 +56,14 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 }
 
 fn centroid(p: &[[f64; 2]]) -> [f64; 2] {
-    let a2 = super::polygon::signed_area2(p);
     let n = p.len();
+    // twice the area, summed from the centroid's own cross terms
+    let mut a2 = 0.0;
     let mut c = [0.0; 2];
     for i in 0..n {
         let (a, b) = (p[i], p[(i + 1) % n]);
         let w = a[0] * b[1] - b[0] * a[1];
+        a2 += w;
         c[0] += (a[0] + b[0]) * w;
         c[1] += (a[1] + b[1]) * w;
     }

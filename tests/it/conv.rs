@@ -146,8 +146,8 @@ fn orientation_is_normalised_to_counter_clockwise() {
     cw.reverse();
     for raw in [ccw, cw] {
         let p = stroke::filter_stroke(&raw, &o).expect("filter");
-        assert!(stroke::signed_area2(&p) > 0.0);
-        assert!(stroke::self_intersection(&p).is_none());
+        assert!(pdesculpt::polygon::signed_area(&p) > 0.0);
+        assert!(pdesculpt::polygon::is_simple(&p));
     }
 }
 
@@ -231,7 +231,7 @@ fn assert_circle_rules(poly: &[[f64; 2]]) {
             }
             (TriangleKind::Sleeve, CircleKind::Circumcircle) => {
                 assert!(is_circum);
-                assert!(stroke::inside_polygon(c, poly));
+                assert!(pdesculpt::polygon::point_in_polygon(poly, c));
             }
             (TriangleKind::Sleeve, CircleKind::EdgeTangent) => {
                 let k = ext_edges[0];
@@ -960,8 +960,8 @@ proptest! {
         let o = stroke::StrokeOptions { dp_tolerance: dp, spacing };
         let p = stroke::filter_stroke(&raw, &o).expect("filter");
         prop_assert!(p.iter().all(|q| q[0].is_finite() && q[1].is_finite()));
-        prop_assert!(stroke::signed_area2(&p) > 0.0);
-        prop_assert!(stroke::self_intersection(&p).is_none());
+        prop_assert!(pdesculpt::polygon::signed_area(&p) > 0.0);
+        prop_assert!(pdesculpt::polygon::is_simple(&p));
         let diag = {
             let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
             for q in &raw { for k in 0..2 { lo[k] = lo[k].min(q[k]); hi[k] = hi[k].max(q[k]); } }

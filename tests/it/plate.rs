@@ -403,7 +403,7 @@ fn plate_region_files_vertex_list_and_lasso() {
     let mut b: Vec<u32> = (0..mesh.positions.len() as u32)
         .filter(|&i| {
             let l = frame.to_local(mesh.positions[i as usize]);
-            pdesculpt::plate::mapping::inside(&sq, [l[0], l[1]])
+            pdesculpt::polygon::point_in_polygon(&sq, [l[0], l[1]])
         })
         .collect();
     a.sort_unstable();

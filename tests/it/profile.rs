@@ -45,7 +45,7 @@ fn views_project_to_their_axes() {
     assert_eq!("Front".parse::<View>().ok(), Some(View::Front));
     assert!(matches!(
         "back".parse::<View>(),
-        Err(ProfileError::UnknownView { .. })
+        Err(pdesculpt::polygon::UnknownView { .. })
     ));
     assert_eq!(
         serde_json::to_string(&View::Top).ok().as_deref(),

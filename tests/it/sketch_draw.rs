@@ -87,8 +87,8 @@ fn every_document_style_gives_the_drawn_size_and_the_same_placed_model() {
         // the same placed drawings wherever and however they were written
         let side = b.side.as_ref().expect("side");
         let (f, sd) = (
-            pdesculpt::vec3::bounds(&b.front.points).expect("front"),
-            pdesculpt::vec3::bounds(&side.points).expect("side"),
+            pdesculpt::vec3::bounds(b.front.points()).expect("front"),
+            pdesculpt::vec3::bounds(side.points()).expect("side"),
         );
         let bb = ([f.0[0], f.0[1], sd.0[0]], [f.1[0], f.1[1], sd.1[0]]);
         match &first {

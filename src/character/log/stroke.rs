@@ -190,16 +190,16 @@ impl StrokeMap {
         if poly.len() < STROKE_POINTS_MIN {
             return Err(StrokeError::TooFewPoints { count: poly.len() });
         }
-        if let Some((a, b)) = polygon::self_intersection(&poly) {
+        if let Some((a, b, _)) = polygon::self_intersection(&poly) {
             return Err(StrokeError::SelfIntersecting {
                 first: a,
                 second: b,
             });
         }
-        let a2 = polygon::signed_area2(&poly);
-        if a2.abs() * 0.5 < FILL_MIN {
+        let signed = polygon::signed_area(&poly);
+        if signed.abs() < FILL_MIN {
             return Err(StrokeError::Degenerate {
-                area: a2.abs() * 0.5 * ext[0] * ext[1],
+                area: signed.abs() * ext[0] * ext[1],
                 bbox: ext[0] * ext[1],
             });
         }
@@ -220,7 +220,7 @@ impl StrokeMap {
             }
             None => None,
         };
-        if a2 < 0.0 {
+        if signed < 0.0 {
             poly.reverse();
             // the first corner stays first; the others now come in the
             // reverse order
@@ -279,22 +279,11 @@ impl StrokeMap {
         (t - self.theta[0]) / (self.theta[1] - self.theta[0])
     }
 
-    /// Whether box point `x` is strictly inside the polygon (crossing
-    /// number).
+    /// Whether box point `x` is inside the polygon
+    /// ([`polygon::point_in_polygon`]: even-odd; on the boundary, the
+    /// left and bottom sides in, the right and top out).
     pub fn contains(&self, x: [f64; 2]) -> bool {
-        let p = &self.poly;
-        let n = p.len();
-        let mut inside = false;
-        for i in 0..n {
-            let (a, b) = (p[i], p[(i + 1) % n]);
-            if (a[1] > x[1]) != (b[1] > x[1]) {
-                let t = (x[1] - a[1]) / (b[1] - a[1]);
-                if x[0] < a[0] + t * (b[0] - a[0]) {
-                    inside = !inside;
-                }
-            }
-        }
-        inside
+        polygon::point_in_polygon(&self.poly, x)
     }
 
     /// The mean value map of box point `x` (inside or on the polygon).

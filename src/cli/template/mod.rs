@@ -104,7 +104,7 @@ fn profile(path: &Path, view: View) -> anyhow::Result<pdesculpt::sketch::input::
     {
         let p = read_json(path)?;
         return Ok(pdesculpt::sketch::input::Outline {
-            points: p.points().to_vec(),
+            profile: p,
             cuts: Vec::new(),
             units: None,
         });
@@ -112,7 +112,7 @@ fn profile(path: &Path, view: View) -> anyhow::Result<pdesculpt::sketch::input::
     let flat = Flatness::OfHeight(pdesculpt::sketch::input::DEFAULT_FLATNESS);
     let s = read_svg_with(path, view, flat)?.into_metres()?;
     Ok(pdesculpt::sketch::input::Outline {
-        points: s.outline.points().to_vec(),
+        profile: s.outline,
         cuts: Vec::new(),
         units: Some(s.units),
     })
@@ -164,7 +164,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         1.0
     };
     let to_template = |o: &pdesculpt::sketch::input::Outline| -> Vec<[f64; 2]> {
-        o.points.iter().map(|p| [k * p[0], k * p[1]]).collect()
+        o.points().iter().map(|p| [k * p[0], k * p[1]]).collect()
     };
     let mut sketch = Sketch {
         front: to_template(&placed.front),

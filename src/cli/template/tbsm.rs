@@ -206,7 +206,7 @@ pub fn run(cmd: TbsmCommand, json: bool) -> anyhow::Result<i32> {
             };
             let k = 1.0 / source.metres();
             let pts: Vec<[f64; 2]> = profile
-                .points
+                .points()
                 .iter()
                 .map(|p| [k * p[0], k * p[1]])
                 .collect();

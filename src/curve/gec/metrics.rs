@@ -175,8 +175,7 @@ pub fn point_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// Bounding-box diagonal of in-plane points.
 pub fn diagonal(points: &[[f64; 2]]) -> f64 {
-    let (lo, hi) =
-        crate::vec3::bounds(points).unwrap_or(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]));
+    let (lo, hi) = crate::polygon::bbox(points);
     (hi[0] - lo[0]).hypot(hi[1] - lo[1])
 }
 

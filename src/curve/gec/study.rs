@@ -290,8 +290,7 @@ pub fn standard_ellipse(g1: &Gec) -> Gec {
 /// in the section's frame, centred on the in-plane bounding box, semi-axes
 /// half its width and depth.
 pub fn silhouette_ellipse(frame: Frame, plane_points: &[[f64; 2]]) -> Gec {
-    let (lo, hi) =
-        crate::vec3::bounds(plane_points).unwrap_or(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]));
+    let (lo, hi) = crate::polygon::bbox(plane_points);
     Gec::ellipse(
         frame,
         [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])],

@@ -41,7 +41,7 @@ pub(super) fn projection_checks(out: &mut Vec<Check>, c: &Eq13) {
             let poly: Vec<[f64; 2]> = b.loop_indices.iter().map(|&i| grid[i]).collect();
             let side = 0.1 * (k - 1) as f64;
             (b.loop_indices.len() as f64 - 4.0 * (k - 1) as f64).abs()
-                + (crate::plate::boundary::signed_area(&poly) - side * side).abs() / (side * side)
+                + (crate::polygon::signed_area(&poly) - side * side).abs() / (side * side)
         })
         .unwrap_or(f64::NAN);
     out.push(Check::new(F, P, "eq 15", "plate.eq15.alpha_shape_grid", Kind::Reference, e15, tol::ROUNDING)
