@@ -164,13 +164,13 @@ pub fn build(
     let placement = placed.report.placement;
     let (front, side) = (placed.front, placed.side);
     let level = |needs| BuildError::Level {
-        level: doc.level.name(),
+        level: doc.level().name(),
         needs,
     };
-    if doc.level != Level::Initial && side.is_none() {
+    if doc.level() != Level::Initial && side.is_none() {
         return Err(level("a side profile"));
     }
-    if doc.level == Level::Final && doc.inputs.sections.is_empty() {
+    if doc.level() == Level::Final && doc.inputs.sections.is_empty() {
         return Err(level("key cross-section sketches"));
     }
     let removed = doc
@@ -187,7 +187,7 @@ pub fn build(
             side.as_ref().map(|s| s.points.as_slice()),
             &crate::sketch::place::placed_sections(&doc.inputs.sections, &placement),
             &front.cuts,
-            doc.level,
+            doc.level(),
             doc.inputs.body_plan,
         )?;
         out.parts = d.parts;

@@ -71,8 +71,8 @@ pub fn push_checked(
     let mut next = doc.clone();
     next.append_edit(e);
     check_order(&next.transitions, next.active_edits())?;
-    let index = next.cursor - 1;
-    let what = format!("edit {index} ({})", next.edits[index].summary());
+    let (index, pushed) = next.last_active().expect("an edit was just appended");
+    let what = format!("edit {index} ({})", pushed.summary());
     let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
         BuildError::Edit(EditError::Replay {
             index: i, source, ..
@@ -95,8 +95,8 @@ pub fn redo_checked(
     let mut next = doc.clone();
     next.redo()
         .map_err(|err| BuildError::Sketch(SketchError::Document(err.to_string())))?;
-    let i = next.cursor - 1;
-    let what = format!("redo of edit {i} ({})", next.edits[i].summary());
+    let (i, redone) = next.last_active().expect("an edit was just redone");
+    let what = format!("redo of edit {i} ({})", redone.summary());
     let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
         BuildError::Cancelled => BuildError::Cancelled,
         other => BuildError::Sketch(SketchError::Document(format!(

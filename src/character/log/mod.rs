@@ -5,8 +5,8 @@
 //! surfaces, forces, plates) and `crate::sasm` (features), and replaying
 //! the log is `crate::pipeline`.
 //!
-//! A character is its inputs plus an ordered edit log: `doc.edits`, of which
-//! the first `doc.cursor` are active. `CharacterDoc::push_edit` (`crate::pipeline`) validates
+//! A character is its inputs plus an ordered edit log: `doc.edits()`, of which
+//! the first `doc.cursor()` are active. `CharacterDoc::push_edit` (`crate::pipeline`) validates
 //! an edit against the document's current state (the stored parts with the
 //! active edits applied) *before* changing anything, drops the redo tail and
 //! appends; [`CharacterDoc::undo`] / [`CharacterDoc::redo`] move the cursor.
