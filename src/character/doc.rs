@@ -123,10 +123,11 @@ impl CharacterDoc {
     /// Parses and validates a document's text (`path` names it in errors).
     pub fn parse(text: &str, path: &Path) -> Result<CharacterDoc, DocError> {
         let text = crate::mesh::io::strip_bom(text);
-        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| DocError::Parse {
-            path: path.into(),
-            message: e.to_string(),
-        })?;
+        let v: serde_json::Value =
+            serde_json::from_str(text).map_err(|source| DocError::Parse {
+                path: path.into(),
+                source,
+            })?;
         if let Some(found) = v.get("version").and_then(|x| x.as_u64()) {
             if found != VERSION as u64 {
                 return Err(DocError::Version {
@@ -135,9 +136,9 @@ impl CharacterDoc {
                 });
             }
         }
-        let doc: CharacterDoc = serde_json::from_value(v).map_err(|e| DocError::Parse {
+        let doc: CharacterDoc = serde_json::from_value(v).map_err(|source| DocError::Parse {
             path: path.into(),
-            message: e.to_string(),
+            source,
         })?;
         doc.validate()?;
         Ok(doc)
@@ -167,8 +168,7 @@ impl CharacterDoc {
     /// that writes it together with other files).
     pub fn to_bytes(&self) -> Result<Vec<u8>, DocError> {
         self.validate()?;
-        serde_json::to_vec_pretty(self)
-            .map_err(|e| DocError::Invalid(format!("cannot serialise: {e}")))
+        serde_json::to_vec_pretty(self).map_err(DocError::Serialise)
     }
 
     /// Structural checks that do not need the geometry, and every value's
@@ -196,8 +196,10 @@ impl CharacterDoc {
             )));
         }
         for (i, e) in self.edits.iter().enumerate() {
-            crate::character::log::validate_params(e)
-                .map_err(|err| DocError::Invalid(format!("edit {i}: {err}")))?;
+            crate::character::log::validate_params(e).map_err(|e| DocError::Edit {
+                index: i,
+                source: Box::new(e),
+            })?;
         }
         for (name, v) in [
             ("inputs.tolerance", self.inputs.tolerance),
@@ -220,7 +222,7 @@ impl CharacterDoc {
             )));
         }
         for p in &self.props {
-            p.validate().map_err(|e| DocError::Invalid(e.to_string()))?;
+            p.validate()?;
         }
         let mut sorted = names.clone();
         sorted.sort_unstable();

@@ -69,6 +69,16 @@ pub enum ConvError {
     Numerical(String),
     #[error("model file: {0}")]
     Model(String),
+    /// A model file is not the JSON of a model.
+    #[error("model file: {0}")]
+    ModelJson(#[source] serde_json::Error),
+    /// A model's component failed to build.
+    #[error("model file: component {name:?}: {source}")]
+    Component {
+        name: String,
+        #[source]
+        source: Box<ConvError>,
+    },
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
 }

@@ -155,7 +155,7 @@ pub fn components_field(comps: &[&BuiltComponent], r: [f64; 3]) -> f64 {
 impl Model {
     /// Parses and validates a model file.
     pub fn from_json(text: &str) -> Result<Model, ConvError> {
-        let m: Model = serde_json::from_str(text).map_err(|e| ConvError::Model(e.to_string()))?;
+        let m: Model = serde_json::from_str(text).map_err(ConvError::ModelJson)?;
         m.options.validate()?;
         if m.components.is_empty() {
             return Err(ConvError::Model("no components".into()));
@@ -266,9 +266,13 @@ impl Model {
                 }
                 None => c,
             };
-            let sk = cache
-                .sketch(&src.stroke, &self.options)
-                .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
+            let sk =
+                cache
+                    .sketch(&src.stroke, &self.options)
+                    .map_err(|e| ConvError::Component {
+                        name: c.name.clone(),
+                        source: Box::new(e),
+                    })?;
             let frame = src.view.frame();
             let copied_depth = c
                 .copy_of

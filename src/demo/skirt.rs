@@ -94,6 +94,9 @@ pub struct SkirtReport {
 pub enum SkirtError {
     #[error("skirt: {0}")]
     Options(String),
+    /// The tessellated skirt is not a valid mesh.
+    #[error("skirt: tessellation: {0}")]
+    Tessellation(#[source] crate::mesh::MeshError),
     #[error("skirt: the body has no cross section at y = {0} within reach of the axis")]
     NoSection(f64),
     #[error("skirt: {0}")]
@@ -272,7 +275,6 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
         waist_ring_error: ring_error(0, 0),
         hem_ring_error: ring_error(NU, 5),
     };
-    mesh.validate()
-        .map_err(|e| SkirtError::Options(format!("tessellation: {e}")))?;
+    mesh.validate().map_err(SkirtError::Tessellation)?;
     Ok((mesh, report))
 }

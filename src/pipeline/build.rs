@@ -62,6 +62,28 @@ pub enum BuildError {
     /// The built mesh has a vertex that is not finite.
     #[error("document: the built mesh has a non-finite vertex {index} ({position:?})")]
     NonFinite { index: usize, position: [f64; 3] },
+    /// A redone edit was refused: the document it gives does not build
+    /// (`source` says why).
+    #[error("document: {what} refused: the document it gives does not build: {source}")]
+    RedoRefused {
+        what: String,
+        #[source]
+        source: Box<BuildError>,
+    },
+    /// A change would carry the model more than
+    /// [`super::effect::GROWTH`] model sizes (its bounding box diagonal,
+    /// `diagonal`, before the change) outside its extent.
+    #[error(
+        "document: {what}: the model would reach {} model sizes outside its extent before the change (limit {}; its size, the bounding box diagonal, is {}): the values are too large",
+        crate::limits::Num(*reach),
+        super::effect::GROWTH,
+        crate::limits::Num(*diagonal)
+    )]
+    Growth {
+        what: String,
+        reach: f64,
+        diagonal: f64,
+    },
     /// The cancel hook asked the build to stop.
     #[error("cancelled")]
     Cancelled,

@@ -74,14 +74,14 @@ pub struct History {
 }
 
 /// Why a step could not be undone or redone.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum HistoryError {
     #[error("nothing to undo")]
     NothingToUndo,
     #[error("nothing to redo")]
     NothingToRedo,
     #[error("the edit log no longer matches the history: {0}")]
-    Log(String),
+    Log(#[from] crate::character::log::EditError),
 }
 
 impl History {
@@ -133,7 +133,7 @@ impl History {
                     .last_active()
                     .map(|(_, e)| e.summary())
                     .unwrap_or_default();
-                doc.undo().map_err(|e| HistoryError::Log(e.to_string()))?;
+                doc.undo()?;
                 summary
             }
             Step::Inputs { what, before, .. } => {
@@ -150,7 +150,7 @@ impl History {
         let step = self.next().ok_or(HistoryError::NothingToRedo)?.clone();
         let what = match step {
             Step::Edit => {
-                doc.redo().map_err(|e| HistoryError::Log(e.to_string()))?;
+                doc.redo()?;
                 doc.last_active()
                     .map(|(_, e)| e.summary())
                     .unwrap_or_default()
