@@ -82,3 +82,13 @@ pub enum ConvError {
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
 }
+
+impl ConvError {
+    /// This error as the failure of a model's component `name`.
+    pub fn in_component(self, name: &str) -> ConvError {
+        ConvError::Component {
+            name: name.into(),
+            source: Box::new(self),
+        }
+    }
+}

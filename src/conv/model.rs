@@ -266,13 +266,9 @@ impl Model {
                 }
                 None => c,
             };
-            let sk =
-                cache
-                    .sketch(&src.stroke, &self.options)
-                    .map_err(|e| ConvError::Component {
-                        name: c.name.clone(),
-                        source: Box::new(e),
-                    })?;
+            let sk = cache
+                .sketch(&src.stroke, &self.options)
+                .map_err(|e| e.in_component(&c.name))?;
             let frame = src.view.frame();
             let copied_depth = c
                 .copy_of

@@ -104,9 +104,8 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
         )));
     }
     let (gc, gx, gy) = crate::curve::gec::fit::solve(&pts, &thetas, GEC_TERMS, Default::default())
-        .map_err(|e| SketchError::SectionFit {
-            section: format!("section of '{}' at y = {}", k.part, k.y),
-            source: Box::new(e),
+        .map_err(|e| {
+            SketchError::section_fit(format!("section of '{}' at y = {}", k.part, k.y), e)
         })?;
     let _ = frame;
     let rep = (gc, gx, gy);

@@ -115,3 +115,13 @@ pub enum SketchError {
     #[error(transparent)]
     Doc(#[from] crate::character::doc::DocError),
 }
+
+impl SketchError {
+    /// A key section (`section` names it) whose curve cannot be fitted.
+    pub fn section_fit(section: String, e: crate::curve::gec::GecError) -> SketchError {
+        SketchError::SectionFit {
+            section,
+            source: Box::new(e),
+        }
+    }
+}
