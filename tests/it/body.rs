@@ -130,12 +130,10 @@ fn known_crossings_name_checked_bodies_only() {
 
 /// A coarse, fast resolution for the property test.
 fn coarse() -> ClosedOptions {
-    ClosedOptions {
-        terms: 6,
-        rings_per_height: 40.0,
-        transition_rows: 4,
-        ..ClosedOptions::default()
-    }
+    ClosedOptions::default()
+        .with_terms(6)
+        .with_rings_per_height(40.0)
+        .with_transition_rows(4)
 }
 
 proptest! {
