@@ -61,10 +61,7 @@ const RES: usize = 64;
 fn single(name: &str, stroke: Vec<[f64; 2]>, solver: Solver) -> anyhow::Result<(BuiltModel, Mesh)> {
     let m = Model {
         name: name.into(),
-        options: sketch::ConvOptions {
-            solver,
-            ..Default::default()
-        },
+        options: sketch::ConvOptions::default().with_solver(solver),
         components: vec![Component {
             name: name.into(),
             stroke,
