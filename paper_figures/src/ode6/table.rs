@@ -131,10 +131,7 @@ fn longest(loops: &[Polyline]) -> Option<Polyline> {
 fn gec_section(l: &Polyline, m: usize, j: usize, y: f64) -> anyhow::Result<Curve> {
     use pdesculpt::curve::gec::{fit, FitOptions, Frame, FrameChoice};
     let frame = Frame::new([0.0, y, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])?;
-    let opts = FitOptions {
-        frame: FrameChoice::Given(frame),
-        ..FitOptions::new(j)
-    };
+    let opts = FitOptions::new(j).with_frame(FrameChoice::Given(frame));
     let rep = fit(&resample(l, m), &opts)?;
     Ok(Curve::from_gec(&rep.gec)?)
 }
