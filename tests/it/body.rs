@@ -425,12 +425,10 @@ fn diagnose_self_crossings() {
         },
         View::Top,
     ];
-    let o = RenderOptions {
-        width: 600,
-        height: 600,
-        group_colours: Some(vec![[200, 200, 200], [230, 30, 30]]),
-        ..RenderOptions::default()
-    };
+    let o = RenderOptions::default()
+        .with_width(600)
+        .with_height(600)
+        .with_group_colours(Some(vec![[200, 200, 200], [230, 30, 30]]));
     let png = std::env::temp_dir().join("xing_arm_l.png");
     render_views(&sub, &views, &o).save_png(&png).unwrap();
     println!("wrote {}", png.display());

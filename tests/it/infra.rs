@@ -237,12 +237,10 @@ fn render_draws_the_mesh_inside_the_frame() {
     ] {
         let img = render(
             &m,
-            &RenderOptions {
-                width: 64,
-                height: 64,
-                view,
-                ..Default::default()
-            },
+            &RenderOptions::default()
+                .with_width(64)
+                .with_height(64)
+                .with_view(view),
         );
         let painted = (0..64 * 64)
             .filter(|&i| img.rgba[4 * i..4 * i + 3] != [255, 255, 255])

@@ -259,15 +259,13 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             if k == 12 && gec_terms.is_none() {
                 let img = pdesculpt::render::render(
                     &rec,
-                    &pdesculpt::render::RenderOptions {
-                        width: 360,
-                        height: 480,
-                        view: pdesculpt::render::View::Perspective {
+                    &pdesculpt::render::RenderOptions::default()
+                        .with_width(360)
+                        .with_height(480)
+                        .with_view(pdesculpt::render::View::Perspective {
                             yaw: 30.0,
                             pitch: 10.0,
-                        },
-                        ..Default::default()
-                    },
+                        }),
                 );
                 let tag = match r.name.split_whitespace().next() {
                     Some("left") => "leg",

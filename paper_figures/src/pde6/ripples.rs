@@ -47,12 +47,10 @@ pub fn body_ripples(ctx: &Ctx) -> anyhow::Result<()> {
     let mut camera = None;
     for (label, opts) in &variants {
         let (_, mesh, report) = reconstruct(&body.mesh, &specs, opts)?;
-        let o = RenderOptions {
-            view,
-            width: 360,
-            height: 560,
-            ..RenderOptions::default()
-        };
+        let o = RenderOptions::default()
+            .with_view(view)
+            .with_width(360)
+            .with_height(560);
         let cam: &Camera = camera.get_or_insert_with(|| {
             let (lo, hi) = mesh.bbox();
             Camera::fit_box(lo, hi, view, o.width, o.height, o.margin)
