@@ -25,16 +25,10 @@ pub fn body_ripples(ctx: &Ctx) -> anyhow::Result<()> {
             "legacy: a = -0.5, chord from first vertex",
             legacy_options(),
         ),
-        (
-            "anchored parameter only (a = -0.5)",
-            BodyOptions { a: -0.5, ..new },
-        ),
+        ("anchored parameter only (a = -0.5)", new.with_a(-0.5)),
         (
             "a = -0.01 only (chord from first vertex)",
-            BodyOptions {
-                sampling: Sampling::Gec(Param::ChordLength),
-                ..new
-            },
+            new.with_sampling(Sampling::Gec(Param::ChordLength)),
         ),
         ("default: anchored, a = -0.01", new),
     ];
