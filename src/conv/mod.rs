@@ -63,6 +63,13 @@ pub enum ConvError {
     SelfIntersecting { edge_a: usize, edge_b: usize },
     #[error("triangulation failed: {0}")]
     Triangulation(String),
+    /// The constrained Delaunay triangulation refused a stroke vertex.
+    #[error("triangulation failed: vertex {vertex}: {source:?}")]
+    Insertion {
+        vertex: usize,
+        #[source]
+        source: spade::InsertionError,
+    },
     #[error("invalid parameter: {0}")]
     Parameter(String),
     #[error("numerical failure: {0}")]
@@ -84,6 +91,11 @@ pub enum ConvError {
 }
 
 impl ConvError {
+    /// The triangulation's refusal of stroke vertex `vertex`.
+    pub fn insertion(vertex: usize, source: spade::InsertionError) -> ConvError {
+        ConvError::Insertion { vertex, source }
+    }
+
     /// This error as the failure of a model's component `name`.
     pub fn in_component(self, name: &str) -> ConvError {
         ConvError::Component {
