@@ -14,10 +14,7 @@ fn bench(c: &mut Criterion) {
     let mesh = sheet(330);
     let poly = [[-1.2, -1.2], [1.2, -1.2], [1.2, 1.2], [-1.2, 1.2]];
     let region = region_in_polygon(&mesh, &poly);
-    let opts = RegionOptions {
-        view: Some([0.0, 0.0, 1.0]),
-        ..RegionOptions::default()
-    };
+    let opts = RegionOptions::default().with_view(Some([0.0, 0.0, 1.0]));
     let t = std::time::Instant::now();
     let plate = PlateDeformer::new(&mesh, &region, &opts).expect("region prepares");
     eprintln!(

@@ -128,12 +128,11 @@ fn setup() -> Setup {
 
 /// The low level with `centres` front centres: one solve, no passes.
 fn options(centres: usize) -> FitOptions {
-    let mut o = FitOptions::default();
-    o.condition = false;
-    o.passes = 0;
-    o.on_miss = OnMiss::Report;
-    o.front_centres = centres;
-    o
+    FitOptions::default()
+        .with_condition(false)
+        .with_passes(0)
+        .with_on_miss(OnMiss::Report)
+        .with_front_centres(centres)
 }
 
 fn run(s: &Setup, o: &FitOptions) -> pdesculpt::template::FitResult {

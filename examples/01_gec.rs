@@ -47,13 +47,11 @@ fn main() -> anyhow::Result<()> {
     // the section seen from above; no mesh, only the curves
     let (lo, hi) =
         pdesculpt::vec3::bounds(&chest.points).ok_or_else(|| anyhow::anyhow!("empty cut"))?;
-    let options = RenderOptions {
-        width: 360,
-        height: 260,
-        view: View::Top,
-        overlays,
-        ..Default::default()
-    };
+    let options = RenderOptions::default()
+        .with_width(360)
+        .with_height(260)
+        .with_view(View::Top)
+        .with_overlays(overlays);
     let camera = Camera::fit_box(lo, hi, View::Top, 360, 260, 0.08);
     let image = render::render_with_camera(&Mesh::default(), &options, &camera);
     std::fs::create_dir_all("out/tutorial")?;

@@ -84,11 +84,7 @@ fn main() -> anyhow::Result<()> {
     println!("largest distance from S(0, v) to the ring: {gap:.2e}");
 
     let mesh = tessellate(&patch, Tessellation { nu: 48, nv: 96 });
-    let options = RenderOptions {
-        width: 240,
-        height: 240,
-        ..Default::default()
-    };
+    let options = RenderOptions::default().with_width(240).with_height(240);
     let views = [View::Front, View::Side];
     let image = render::render_views(&mesh, &views, &options);
     std::fs::create_dir_all("out/tutorial")?;

@@ -66,15 +66,13 @@ fn main() -> anyhow::Result<()> {
         slope(0.45, 0.55)
     );
 
-    let options = RenderOptions {
-        width: 360,
-        height: 200,
-        view: View::Perspective {
+    let options = RenderOptions::default()
+        .with_width(360)
+        .with_height(200)
+        .with_view(View::Perspective {
             yaw: 30.0,
             pitch: 30.0,
-        },
-        ..Default::default()
-    };
+        });
     // shown lying down (the displacement up, y) and exaggerated to a peak of 0.5
     let mut shown = bent.clone();
     for p in &mut shown.positions {

@@ -75,11 +75,7 @@ fn main() -> anyhow::Result<()> {
         3 * mesh.positions.len(),
         chain.coefficient_count()
     );
-    let options = RenderOptions {
-        width: 220,
-        height: 300,
-        ..Default::default()
-    };
+    let options = RenderOptions::default().with_width(220).with_height(300);
     let image = render::render_views(
         &mesh,
         &[

@@ -63,12 +63,10 @@ fn main() -> anyhow::Result<()> {
         let mid = patch.point(0.5, 0.0);
         println!("rho {rho}, eta {eta}, lambda {lambda}: radius at u = 0.5: {:.3}; constraint error {bc:.1e}, ODE residual {ode:.1e}", mid[0]);
         let mesh = tessellate(&patch, Tessellation { nu: 40, nv: 64 });
-        let options = RenderOptions {
-            width: 160,
-            height: 200,
-            view: View::Front,
-            ..Default::default()
-        };
+        let options = RenderOptions::default()
+            .with_width(160)
+            .with_height(200)
+            .with_view(View::Front);
         images.push(render::render(&mesh, &options));
     }
     std::fs::create_dir_all("out/tutorial")?;

@@ -60,11 +60,7 @@ fn main() -> anyhow::Result<()> {
     }
 
     let mesh = fitted.ok_or_else(|| anyhow::anyhow!("no mesh"))?;
-    let options = RenderOptions {
-        width: 240,
-        height: 240,
-        ..Default::default()
-    };
+    let options = RenderOptions::default().with_width(240).with_height(240);
     let image = render::render_views(
         &mesh,
         &[

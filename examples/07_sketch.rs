@@ -62,11 +62,7 @@ fn main() -> anyhow::Result<()> {
     }
 
     let built = last.ok_or_else(|| anyhow::anyhow!("nothing built"))?;
-    let options = RenderOptions {
-        width: 180,
-        height: 300,
-        ..Default::default()
-    };
+    let options = RenderOptions::default().with_width(180).with_height(300);
     let image = render::render_views(&built.model.mesh, &[View::Front, View::Side], &options);
     std::fs::create_dir_all("out/tutorial")?;
     image.save_png(Path::new("out/tutorial/07_sketch.png"))?;

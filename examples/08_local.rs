@@ -73,11 +73,7 @@ fn main() -> anyhow::Result<()> {
         again.model.mesh == before.model.mesh
     );
 
-    let options = RenderOptions {
-        width: 150,
-        height: 280,
-        ..Default::default()
-    };
+    let options = RenderOptions::default().with_width(150).with_height(280);
     let views = |m| render::render_views(m, &[View::Front, View::Side], &options);
     let image = Image::hstack(
         &[views(&before.model.mesh), views(&after.model.mesh)],

@@ -82,11 +82,7 @@ fn main() {
             pitch: 10.0,
         },
     ];
-    let o = RenderOptions {
-        width: 360,
-        height: 360,
-        ..Default::default()
-    };
+    let o = RenderOptions::default().with_width(360).with_height(360);
     let a = render_views(&r, &views, &o);
     let c = render_views(&s, &views, &o);
     let img = Image::new(a.width, a.height + c.height, [255, 255, 255, 255]);

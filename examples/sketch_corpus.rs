@@ -357,11 +357,9 @@ fn contact(
     built: &Result<pdesculpt::pipeline::Built, pdesculpt::pipeline::BuildError>,
 ) -> pdesculpt::render::Image {
     use pdesculpt::render::View;
-    let o = pdesculpt::render::RenderOptions {
-        width: 160,
-        height: 240,
-        ..Default::default()
-    };
+    let o = pdesculpt::render::RenderOptions::default()
+        .with_width(160)
+        .with_height(240);
     match built {
         Ok(b) => {
             let drawn = drawing_tile(b.front.points(), o.width, o.height);

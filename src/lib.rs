@@ -32,6 +32,26 @@
 //! | [`profile`] | 000 | closed outlines of a view: sketches (SVG, JSON), mesh outlines, distances |
 //! | `harness` | - | (feature `harness`) proptest strategies and surface properties for any solver |
 
+/// `with_*` setters of an options struct: `setters!(Options { with_x: x: Ty })`
+/// gives `Options::with_x(self, x: Ty) -> Options`, so that a caller
+/// outside the crate (the struct is `#[non_exhaustive]`) writes
+/// `Options::default().with_x(..)`. Each setter's doc links its field,
+/// which documents the value and its default.
+macro_rules! setters {
+    ($t:ident { $($name:ident: $field:ident: $ty:ty),* $(,)? }) => {
+        impl $t {
+            $(
+                #[doc = concat!("Sets [`", stringify!($field), "`](", stringify!($t), "::", stringify!($field), ").")]
+                #[must_use]
+                pub fn $name(mut self, $field: $ty) -> $t {
+                    self.$field = $field;
+                    self
+                }
+            )*
+        }
+    };
+}
+
 pub mod body;
 pub mod character;
 pub mod check;

@@ -61,10 +61,7 @@ const RES: usize = 64;
 fn single(name: &str, stroke: Vec<[f64; 2]>, solver: Solver) -> anyhow::Result<(BuiltModel, Mesh)> {
     let m = Model {
         name: name.into(),
-        options: sketch::ConvOptions {
-            solver,
-            ..Default::default()
-        },
+        options: sketch::ConvOptions::default().with_solver(solver),
         components: vec![Component {
             name: name.into(),
             stroke,
@@ -99,23 +96,17 @@ fn overlay(poly: &[[f64; 2]]) -> Overlay {
 }
 
 fn views(mesh: &Mesh, poly: Option<&[[f64; 2]]>, size: usize) -> Image {
-    let mut front = RenderOptions {
-        width: size,
-        height: size,
-        ..Default::default()
-    };
+    let mut front = RenderOptions::default().with_width(size).with_height(size);
     if let Some(p) = poly {
         front.overlays.push(overlay(p));
     }
-    let persp = RenderOptions {
-        width: size,
-        height: size,
-        view: View::Perspective {
+    let persp = RenderOptions::default()
+        .with_width(size)
+        .with_height(size)
+        .with_view(View::Perspective {
             yaw: 35.0,
             pitch: 20.0,
-        },
-        ..Default::default()
-    };
+        });
     Image::hstack(&[render(mesh, &front), render(mesh, &persp)], [255; 4])
 }
 
@@ -462,21 +453,17 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
         let (b, mesh) = single(name, raw.clone(), Solver::HildrethDEsopo)?;
         let sk = &b.components[0].sketch;
         let e = front_error(&b, &mesh, 0);
-        let persp = RenderOptions {
-            width: 300,
-            height: 300,
-            view: View::Perspective {
+        let persp = RenderOptions::default()
+            .with_width(300)
+            .with_height(300)
+            .with_view(View::Perspective {
                 yaw: 30.0,
                 pitch: 25.0,
-            },
-            ..Default::default()
-        };
-        let front = RenderOptions {
-            width: 300,
-            height: 300,
-            overlays: vec![overlay(&sk.polygon)],
-            ..Default::default()
-        };
+            });
+        let front = RenderOptions::default()
+            .with_width(300)
+            .with_height(300)
+            .with_overlays(vec![overlay(&sk.polygon)]);
         imgs.push(Image::hstack(
             &[render(&mesh, &front), render(&mesh, &persp)],
             [255; 4],

@@ -90,12 +90,10 @@ fn panels(
     let mut caps = Vec::new();
     let mut rows = Vec::new();
     for (name, b) in &cases {
-        let o = RenderOptions {
-            width: w,
-            height: h,
-            view: VIEW,
-            ..Default::default()
-        };
+        let o = RenderOptions::default()
+            .with_width(w)
+            .with_height(h)
+            .with_view(VIEW);
         imgs.push(render_with_camera(&b.model.mesh, &o, &cam));
         let t = &b.report.topology;
         let moved = if b.model.mesh.positions.len() == base.positions.len() {

@@ -78,13 +78,11 @@ fn panels(meshes: &[Mesh], overlays: &[Overlay], view: View) -> Image {
         .collect();
     let (lo, hi) =
         pdesculpt::vec3::bounds(&corners).unwrap_or(([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]));
-    let o = RenderOptions {
-        width: 360,
-        height: 360,
-        view,
-        overlays,
-        ..Default::default()
-    };
+    let o = RenderOptions::default()
+        .with_width(360)
+        .with_height(360)
+        .with_view(view)
+        .with_overlays(overlays);
     let cam = Camera::fit_box(lo, hi, view, o.width, o.height, o.margin);
     let imgs: Vec<Image> = meshes
         .iter()

@@ -73,15 +73,13 @@ pub fn figures() -> Vec<Figure> {
 const WHITE: [u8; 4] = [255, 255, 255, 255];
 
 fn view() -> RenderOptions {
-    RenderOptions {
-        width: 320,
-        height: 400,
-        view: View::Perspective {
+    RenderOptions::default()
+        .with_width(320)
+        .with_height(400)
+        .with_view(View::Perspective {
             yaw: 35.0,
             pitch: 15.0,
-        },
-        ..Default::default()
-    }
+        })
 }
 
 fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
@@ -209,21 +207,19 @@ fn body() -> anyhow::Result<Mesh> {
 
 /// The chest panels' camera: three-quarter view with `curve` drawn in red.
 fn chest_view(curve: &[[f64; 3]]) -> RenderOptions {
-    RenderOptions {
-        width: 360,
-        height: 480,
-        view: View::Perspective {
+    RenderOptions::default()
+        .with_width(360)
+        .with_height(480)
+        .with_view(View::Perspective {
             yaw: 25.0,
             pitch: 5.0,
-        },
-        overlays: vec![Overlay {
+        })
+        .with_overlays(vec![Overlay {
             points: curve.to_vec(),
             closed: true,
             colour: [220, 30, 30, 255],
             depth_test: false,
-        }],
-        ..Default::default()
-    }
+        }])
 }
 
 /// The demo's chest outline (right side), drawn irregular.
@@ -362,15 +358,13 @@ fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
         data.push(serde_json::json!({"panel": name, "shape_parameter": a, "boundary_err": bnd, "residual_rel": res, "point_u0.5_v0.25": top}));
         panels.push(render(
             &tessellate(&s, Tessellation { nu: 64, nv: 64 }),
-            &RenderOptions {
-                width: 300,
-                height: 360,
-                view: View::Perspective {
+            &RenderOptions::default()
+                .with_width(300)
+                .with_height(360)
+                .with_view(View::Perspective {
                     yaw: 20.0,
                     pitch: 20.0,
-                },
-                ..Default::default()
-            },
+                }),
         ));
     }
     Image::hstack(&panels, WHITE).save_png(&ctx.path("000-fig8-patch.png"))?;

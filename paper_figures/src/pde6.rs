@@ -87,25 +87,23 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
             yaw: 30.0,
             pitch: 15.0,
         };
-        let empty = RenderOptions {
-            view,
-            width: 300,
-            height: 420,
-            overlays: section_overlays(one, BLUE, false)
-                .into_iter()
-                .chain(section_overlays(one, RED, true))
-                .collect(),
-            ..RenderOptions::default()
-        };
+        let empty = RenderOptions::default()
+            .with_view(view)
+            .with_width(300)
+            .with_height(420)
+            .with_overlays(
+                section_overlays(one, BLUE, false)
+                    .into_iter()
+                    .chain(section_overlays(one, RED, true))
+                    .collect(),
+            );
         panels.push(render(&p.mesh, &empty));
         panels.push(render(
             &p.mesh,
-            &RenderOptions {
-                view,
-                width: 300,
-                height: 420,
-                ..RenderOptions::default()
-            },
+            &RenderOptions::default()
+                .with_view(view)
+                .with_width(300)
+                .with_height(420),
         ));
     }
     let img = Image::hstack(&panels, [255, 255, 255, 255]);
@@ -120,22 +118,18 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
         reconstruct(&body.mesh, &makehuman_parts(), &BodyOptions::default())?;
     let mut panels = Vec::new();
     for view in [View::Front, View::Side] {
-        let o = RenderOptions {
-            view,
-            width: 360,
-            height: 640,
-            overlays: section_overlays(&parts, RED, true),
-            ..RenderOptions::default()
-        };
+        let o = RenderOptions::default()
+            .with_view(view)
+            .with_width(360)
+            .with_height(640)
+            .with_overlays(section_overlays(&parts, RED, true));
         panels.push(render(&body.mesh, &o));
         panels.push(render(
             &mesh,
-            &RenderOptions {
-                view,
-                width: 360,
-                height: 640,
-                ..RenderOptions::default()
-            },
+            &RenderOptions::default()
+                .with_view(view)
+                .with_width(360)
+                .with_height(640),
         ));
     }
     let img = Image::hstack(&panels, [255, 255, 255, 255]);
@@ -235,19 +229,11 @@ fn fig7a(ctx: &Ctx) -> anyhow::Result<()> {
     };
     let a_img = render(
         &mesh,
-        &RenderOptions {
-            view,
-            overlays,
-            ..RenderOptions::default()
-        },
+        &RenderOptions::default()
+            .with_view(view)
+            .with_overlays(overlays),
     );
-    let b_img = render(
-        &mesh,
-        &RenderOptions {
-            view,
-            ..RenderOptions::default()
-        },
-    );
+    let b_img = render(&mesh, &RenderOptions::default().with_view(view));
     ctx.write_bytes(
         "002-fig7a.png",
         &Image::hstack(&[a_img, b_img], [255, 255, 255, 255]).encode_png(),

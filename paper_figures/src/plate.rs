@@ -85,13 +85,11 @@ pub(crate) fn render_row(meshes: &[(&Mesh, Vec<[f64; 3]>)], view: View, size: us
                     depth_test: false,
                 }]
             };
-            let o = RenderOptions {
-                width: size,
-                height: size,
-                view,
-                overlays,
-                ..Default::default()
-            };
+            let o = RenderOptions::default()
+                .with_width(size)
+                .with_height(size)
+                .with_view(view)
+                .with_overlays(overlays);
             render_with_camera(m, &o, &cam)
         })
         .collect();
@@ -102,11 +100,9 @@ pub(crate) fn render_row(meshes: &[(&Mesh, Vec<[f64; 3]>)], view: View, size: us
 pub(crate) fn render_one(m: &Mesh, view: View, size: usize) -> Image {
     render(
         &yup(m),
-        &RenderOptions {
-            width: size,
-            height: size,
-            view,
-            ..Default::default()
-        },
+        &RenderOptions::default()
+            .with_width(size)
+            .with_height(size)
+            .with_view(view),
     )
 }

@@ -123,13 +123,11 @@ fn overlay(s: &Stroke, at: f64, colour: [u8; 4], closed: bool) -> Overlay {
 
 fn panel(m: &Mesh, lo: [f64; 3], hi: [f64; 3], view: View, overlays: Vec<Overlay>) -> Image {
     let cam = Camera::fit_box(lo, hi, view, W, H, 0.04);
-    let o = RenderOptions {
-        width: W,
-        height: H,
-        view,
-        overlays,
-        ..Default::default()
-    };
+    let o = RenderOptions::default()
+        .with_width(W)
+        .with_height(H)
+        .with_view(view)
+        .with_overlays(overlays);
     render_with_camera(m, &o, &cam)
 }
 

@@ -87,13 +87,11 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
     let outline = |c| outline_overlay(b.front.points(), View::Front).with_colour(c);
     let empty = Mesh::default();
     let draw = |m: &Mesh, overlays: Vec<Overlay>| {
-        let o = RenderOptions {
-            width: W,
-            height: H,
-            view: View::Front,
-            overlays,
-            ..Default::default()
-        };
+        let o = RenderOptions::default()
+            .with_width(W)
+            .with_height(H)
+            .with_view(View::Front)
+            .with_overlays(overlays);
         render_with_camera(m, &o, &cam)
     };
     // (b) parts: each part's end sections (its boundaries) and its central
@@ -233,13 +231,11 @@ fn fig6(ctx: &Ctx) -> anyhow::Result<()> {
                     View::Side => side.points(),
                     _ => b.front.points(),
                 };
-                let o = RenderOptions {
-                    width: W,
-                    height: H,
-                    view: *v,
-                    overlays: vec![outline_overlay(pts, *v)],
-                    ..Default::default()
-                };
+                let o = RenderOptions::default()
+                    .with_width(W)
+                    .with_height(H)
+                    .with_view(*v)
+                    .with_overlays(vec![outline_overlay(pts, *v)]);
                 render_with_camera(&b.model.mesh, &o, cam)
             })
             .collect();

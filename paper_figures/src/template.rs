@@ -98,13 +98,11 @@ fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
                     } else {
                         &sketch.front
                     };
-                    let o = RenderOptions {
-                        width: W,
-                        height: H,
-                        view: *v,
-                        overlays: vec![outline_overlay(pts, *v)],
-                        ..Default::default()
-                    };
+                    let o = RenderOptions::default()
+                        .with_width(W)
+                        .with_height(H)
+                        .with_view(*v)
+                        .with_overlays(vec![outline_overlay(pts, *v)]);
                     render_with_camera(m, &o, cam)
                 })
                 .collect();

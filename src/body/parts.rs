@@ -91,24 +91,38 @@ pub const DEFAULT_ANCHORS: usize = 16;
 pub const DEFAULT_SAMPLES: usize = 256;
 pub const DEFAULT_PULL: f64 = 0.75;
 
-/// Options of the reconstruction.
+/// Options of the reconstruction. Outside the crate, start from
+/// [`BodyOptions::default`] and change fields with the `with_*` setters
+/// (or by assignment).
 #[derive(Clone, Copy, Debug, serde::Serialize)]
+#[non_exhaustive]
 pub struct BodyOptions {
-    /// GEC terms J per section.
+    /// GEC terms J per section (default 10).
     pub terms: usize,
-    /// PDE parameter a.
+    /// PDE parameter a (default [`BODY_A`]).
     pub a: f64,
-    /// Tessellation intervals per piece in u, and around v.
+    /// Tessellation intervals per piece in u (default 12).
     pub nu_per_piece: usize,
+    /// Tessellation intervals around v (default 72).
     pub nv: usize,
-    /// How the chain is built.
+    /// How the chain is built (default [`crate::pde6::Method::GlobalC2`]).
     pub method: crate::pde6::Method,
     /// How the slice points get their angle (phase alignment across
     /// sections matters: the chain interpolates harmonic by harmonic; see
-    /// [`crate::pde6::sampling`]).
+    /// [`crate::pde6::sampling`]). Default: anchored, with
+    /// [`DEFAULT_ANCHORS`], [`DEFAULT_SAMPLES`] and [`DEFAULT_PULL`].
     #[serde(skip)]
     pub sampling: Sampling,
 }
+
+setters!(BodyOptions {
+    with_terms: terms: usize,
+    with_a: a: f64,
+    with_nu_per_piece: nu_per_piece: usize,
+    with_nv: nv: usize,
+    with_method: method: crate::pde6::Method,
+    with_sampling: sampling: Sampling,
+});
 
 impl Default for BodyOptions {
     fn default() -> Self {

@@ -10,21 +10,30 @@ use crate::curve::gec::Gec;
 use crate::mesh::{add, dot, norm, scale, sub, Mesh};
 use crate::pde6::sampling::fit_anchored;
 
-/// Options of the closed reconstruction.
+/// Options of the closed reconstruction. Outside the crate, start from
+/// [`ClosedOptions::default`] and change fields with the `with_*` setters
+/// (or by assignment).
 #[derive(Clone, Copy, Debug, serde::Serialize)]
+#[non_exhaustive]
 pub struct ClosedOptions {
-    /// GEC terms J per section.
+    /// GEC terms J per section (default 10).
     pub terms: usize,
-    /// PDE parameter a of every part.
+    /// PDE parameter a of every part (default [`super::parts::BODY_A`]).
     pub a: f64,
-    /// Sections per tube (7 + 3k, counting the collapsed tip where there is one).
+    /// Sections of the torso tube (7 + 3k, counting the collapsed tip
+    /// where there is one; default 13).
     pub torso_sections: usize,
+    /// Sections of each leg (7 + 3k; default 19).
     pub leg_sections: usize,
+    /// Sections of each arm (7 + 3k; default 10).
     pub arm_sections: usize,
+    /// Sections of the neck and head (7 + 3k; default 16).
     pub head_sections: usize,
-    /// Sections of each hand's palm-and-fingers mitten and of each thumb
-    /// (7 + 3k, counting the collapsed tip).
+    /// Sections of each hand's palm-and-fingers mitten (7 + 3k, counting
+    /// the collapsed tip; default 7).
     pub hand_sections: usize,
+    /// Sections of each thumb (7 + 3k, counting the collapsed tip;
+    /// default 7).
     pub thumb_sections: usize,
     /// Build each hand as a mitten and a thumb joined at the wrist (default
     /// true). Off, or where an arm's trace finds no thumb separating from the
@@ -32,14 +41,36 @@ pub struct ClosedOptions {
     /// a mitten of convex hulls, thumb merged (the arm is then named in
     /// [`super::report::ClosedReport::thumbless`] with the reason).
     pub thumbs: bool,
-    /// Anchored sampling (see [`crate::pde6::sampling`]).
+    /// Anchors of the anchored sampling (see [`crate::pde6::sampling`];
+    /// default [`super::parts::DEFAULT_ANCHORS`]).
     pub anchors: usize,
+    /// Samples of the anchored sampling (default
+    /// [`super::parts::DEFAULT_SAMPLES`]).
     pub samples: usize,
+    /// Pull of the anchored sampling (default [`super::parts::DEFAULT_PULL`]).
     pub pull: f64,
-    /// Mesh rings per body height along the parts, rows across a transition.
+    /// Mesh rings per body height along the parts (default 160).
     pub rings_per_height: f64,
+    /// Mesh rows across a transition (default 10).
     pub transition_rows: usize,
 }
+
+setters!(ClosedOptions {
+    with_terms: terms: usize,
+    with_a: a: f64,
+    with_torso_sections: torso_sections: usize,
+    with_leg_sections: leg_sections: usize,
+    with_arm_sections: arm_sections: usize,
+    with_head_sections: head_sections: usize,
+    with_hand_sections: hand_sections: usize,
+    with_thumb_sections: thumb_sections: usize,
+    with_thumbs: thumbs: bool,
+    with_anchors: anchors: usize,
+    with_samples: samples: usize,
+    with_pull: pull: f64,
+    with_rings_per_height: rings_per_height: f64,
+    with_transition_rows: transition_rows: usize,
+});
 
 impl ClosedOptions {
     /// The mesh resolution of the assembled body.

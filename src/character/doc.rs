@@ -58,12 +58,23 @@ use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
 /// The character document.
+///
+/// The schema version, the level and the edit log are private: the version
+/// and level are fixed when the document is made ([`CharacterDoc::from_inputs`]
+/// or a load), and the log changes only through its API
+/// ([`CharacterDoc::push_edit`], [`CharacterDoc::append_edit`],
+/// [`CharacterDoc::undo`], [`CharacterDoc::redo`],
+/// [`CharacterDoc::drop_inactive_edits`]), so the cursor never points past
+/// the log's end. The inputs and the derived parts, transitions, removed
+/// parts and props stay public fields: the editor, the sketch deriver and
+/// template fitting change them in place, and [`CharacterDoc::validate`]
+/// (run by every save and build) checks them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CharacterDoc {
-    pub version: u32,
+    version: u32,
     #[serde(default)]
-    pub level: Level,
+    level: Level,
     pub inputs: Inputs,
     #[serde(default)]
     pub parts: Vec<PartSpec>,
@@ -73,9 +84,10 @@ pub struct CharacterDoc {
     pub removed_parts: Vec<RemovedPart>,
     /// The edit log (see [`crate::character::log`]).
     #[serde(default)]
-    pub edits: Vec<crate::character::log::Edit>,
+    edits: Vec<crate::character::log::Edit>,
+    /// How many of `edits` are active (at most `edits.len()`).
     #[serde(default)]
-    pub cursor: usize,
+    cursor: usize,
     /// Props: conv models composed as separate components
     /// ([`crate::character::props`]); absent in older documents.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -98,13 +110,24 @@ impl CharacterDoc {
         }
     }
 
+    /// The schema version ([`VERSION`] for every valid document).
+    pub fn version(&self) -> u32 {
+        self.version
+    }
+
+    /// The level the parts are derived at.
+    pub fn level(&self) -> Level {
+        self.level
+    }
+
     /// Parses and validates a document's text (`path` names it in errors).
     pub fn parse(text: &str, path: &Path) -> Result<CharacterDoc, DocError> {
         let text = crate::mesh::io::strip_bom(text);
-        let v: serde_json::Value = serde_json::from_str(text).map_err(|e| DocError::Parse {
-            path: path.into(),
-            message: e.to_string(),
-        })?;
+        let v: serde_json::Value =
+            serde_json::from_str(text).map_err(|source| DocError::Parse {
+                path: path.into(),
+                source,
+            })?;
         if let Some(found) = v.get("version").and_then(|x| x.as_u64()) {
             if found != VERSION as u64 {
                 return Err(DocError::Version {
@@ -113,9 +136,9 @@ impl CharacterDoc {
                 });
             }
         }
-        let doc: CharacterDoc = serde_json::from_value(v).map_err(|e| DocError::Parse {
+        let doc: CharacterDoc = serde_json::from_value(v).map_err(|source| DocError::Parse {
             path: path.into(),
-            message: e.to_string(),
+            source,
         })?;
         doc.validate()?;
         Ok(doc)
@@ -145,8 +168,7 @@ impl CharacterDoc {
     /// that writes it together with other files).
     pub fn to_bytes(&self) -> Result<Vec<u8>, DocError> {
         self.validate()?;
-        serde_json::to_vec_pretty(self)
-            .map_err(|e| DocError::Invalid(format!("cannot serialise: {e}")))
+        serde_json::to_vec_pretty(self).map_err(DocError::Serialise)
     }
 
     /// Structural checks that do not need the geometry, and every value's
@@ -174,8 +196,10 @@ impl CharacterDoc {
             )));
         }
         for (i, e) in self.edits.iter().enumerate() {
-            crate::character::log::validate_params(e)
-                .map_err(|err| DocError::Invalid(format!("edit {i}: {err}")))?;
+            crate::character::log::validate_params(e).map_err(|e| DocError::Edit {
+                index: i,
+                source: Box::new(e),
+            })?;
         }
         for (name, v) in [
             ("inputs.tolerance", self.inputs.tolerance),
@@ -198,7 +222,7 @@ impl CharacterDoc {
             )));
         }
         for p in &self.props {
-            p.validate().map_err(|e| DocError::Invalid(e.to_string()))?;
+            p.validate()?;
         }
         let mut sorted = names.clone();
         sorted.sort_unstable();
@@ -240,9 +264,33 @@ impl CharacterDoc {
 /// edit, which validates it against the built parts, is
 /// `crate::pipeline`'s `CharacterDoc::push_edit`).
 impl CharacterDoc {
-    /// The active edits (`edits[..cursor]`).
+    /// The whole edit log: the active edits, then the undone ones (the
+    /// redo tail).
+    pub fn edits(&self) -> &[crate::character::log::Edit] {
+        &self.edits
+    }
+
+    /// How many edits are active (the first `cursor()` of [`Self::edits`]).
+    pub fn cursor(&self) -> usize {
+        self.cursor
+    }
+
+    /// The active edits (`edits()[..cursor()]`).
     pub fn active_edits(&self) -> &[crate::character::log::Edit] {
         &self.edits[..self.cursor.min(self.edits.len())]
+    }
+
+    /// The most recently applied edit (the one `undo` would undo) and its
+    /// index in the log.
+    pub fn last_active(&self) -> Option<(usize, &crate::character::log::Edit)> {
+        let i = self.cursor.checked_sub(1)?;
+        self.edits.get(i).map(|e| (i, e))
+    }
+
+    /// Drops the undone edits (the redo tail), as a change that is not an
+    /// edit (an input command) does.
+    pub fn drop_inactive_edits(&mut self) {
+        self.edits.truncate(self.cursor);
     }
 
     /// Drops the redo tail, appends `e` and moves the cursor to the end,

@@ -17,14 +17,31 @@ pub enum DocError {
         path: PathBuf,
         source: std::io::Error,
     },
-    #[error("{path}: not a character document: {message}")]
-    Parse { path: PathBuf, message: String },
+    #[error("{path}: not a character document: {source}")]
+    Parse {
+        path: PathBuf,
+        #[source]
+        source: serde_json::Error,
+    },
     #[error(
         "{path}: document version {found} is not supported (this build reads version {VERSION})"
     )]
     Version { path: PathBuf, found: u32 },
     #[error("document: {0}")]
     Invalid(String),
+    /// An edit of the log has a parameter out of its range.
+    #[error("document: edit {index}: {source}")]
+    Edit {
+        index: usize,
+        #[source]
+        source: Box<super::log::EditError>,
+    },
+    /// A prop fails its own checks.
+    #[error("document: {0}")]
+    Prop(#[from] super::props::PropError),
+    /// The document cannot be written as JSON.
+    #[error("document: cannot serialise: {0}")]
+    Serialise(#[source] serde_json::Error),
     #[error("document field {field} = {value} is out of range: {expected}")]
     Range {
         field: String,

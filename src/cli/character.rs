@@ -94,21 +94,21 @@ fn doc_inputs(d: &CharacterDoc, doc: &Path) -> Vec<PathBuf> {
 fn print_log(d: &CharacterDoc, json: bool) -> anyhow::Result<()> {
     if json {
         let v = serde_json::json!({
-            "cursor": d.cursor,
-            "edits": d.edits.iter().enumerate().map(|(i, e)| serde_json::json!({
+            "cursor": d.cursor(),
+            "edits": d.edits().iter().enumerate().map(|(i, e)| serde_json::json!({
                 "index": i,
-                "active": i < d.cursor,
+                "active": i < d.cursor(),
                 "summary": e.summary(),
                 "edit": e,
             })).collect::<Vec<_>>(),
         });
         super::print_json(&v)?;
     } else {
-        for (i, e) in d.edits.iter().enumerate() {
-            let mark = if i < d.cursor { '*' } else { ' ' };
+        for (i, e) in d.edits().iter().enumerate() {
+            let mark = if i < d.cursor() { '*' } else { ' ' };
             println!("{mark} {i:3} {}", e.summary());
         }
-        println!("{} edits, {} active", d.edits.len(), d.cursor);
+        println!("{} edits, {} active", d.edits().len(), d.cursor());
     }
     Ok(())
 }
@@ -177,7 +177,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             // the document with the edit built once; that document is saved
             push_checked(&mut d, e, &BuildOptions::new(&base), None)?;
             outputs::save_locked(&d, &doc, &lock)?;
-            eprintln!("edit {}: {summary}", d.cursor - 1);
+            eprintln!("edit {}: {summary}", d.cursor() - 1);
             if json {
                 print_log(&d, true)?;
             }
@@ -206,8 +206,8 @@ fn step(doc: &Path, json: bool, undo: bool) -> anyhow::Result<i32> {
     eprintln!(
         "{} edit {}: {} edits active",
         if undo { "undid" } else { "redid" },
-        if undo { d.cursor } else { d.cursor - 1 },
-        d.cursor
+        if undo { d.cursor() } else { d.cursor() - 1 },
+        d.cursor()
     );
     if json {
         print_log(&d, true)?;

@@ -62,11 +62,7 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
         render_views(
             m,
             &[View::Front, View::Side],
-            &RenderOptions {
-                width: 400,
-                height: 800,
-                ..Default::default()
-            },
+            &RenderOptions::default().with_width(400).with_height(800),
         )
     };
     let files = [

@@ -179,23 +179,19 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             pdesculpt::mesh::io::Format::from_path(&output)?;
             let sampling = sampling_from_name(&sampling, anchors, pull)?;
             if !open_parts {
-                let opts = ClosedOptions {
-                    terms,
-                    a,
-                    anchors,
-                    pull,
-                    ..ClosedOptions::default()
-                };
+                let opts = ClosedOptions::default()
+                    .with_terms(terms)
+                    .with_a(a)
+                    .with_anchors(anchors)
+                    .with_pull(pull);
                 return body_closed(mesh, &morph, &opts, &output, units, json);
             }
             eprintln!("pde6 body: slicing, fitting and solving the open parts");
-            let opts = BodyOptions {
-                terms,
-                a,
-                method: method.method(),
-                sampling,
-                ..BodyOptions::default()
-            };
+            let opts = BodyOptions::default()
+                .with_terms(terms)
+                .with_a(a)
+                .with_method(method.method())
+                .with_sampling(sampling);
             let progress = pdesculpt::progress::Progress::spinner("pde6 body", json);
             let (mesh, report) = reconstruct_base_parts(&opts)?;
             progress.finish();

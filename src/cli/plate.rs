@@ -121,25 +121,24 @@ fn deform(a: DeformArgs, json: bool) -> anyhow::Result<i32> {
     let text = io::read_input_text(&a.region, "region file")
         .with_context(|| format!("reading region file {}", a.region.display()))?;
     let region = parse_region(&text, &mesh)?;
-    let opts = RegionOptions {
-        material: Material {
+    let opts = RegionOptions::default()
+        .with_material(Material {
             young: a.young,
             poisson: a.poisson,
             thickness: a.thickness,
-        },
-        alpha0: a.alpha0,
-        view,
-        boundary: if a.mesh_boundary {
+        })
+        .with_alpha0(a.alpha0)
+        .with_view(view)
+        .with_boundary(if a.mesh_boundary {
             BoundaryMethod::MeshEdges
         } else {
             BoundaryMethod::AlphaShape
-        },
-        mapping: if a.harmonic {
+        })
+        .with_mapping(if a.harmonic {
             MappingMethod::Harmonic
         } else {
             MappingMethod::LengthBased
-        },
-    };
+        });
     let progress = pdesculpt::progress::Progress::spinner("plate: precomputing", json);
     let plate = PlateDeformer::new(&mesh, &region, &opts)?;
     progress.finish();

@@ -55,11 +55,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let img = render_views(
         &m,
         &views,
-        &RenderOptions {
-            width: args.size,
-            height: args.size,
-            ..Default::default()
-        },
+        &RenderOptions::default()
+            .with_width(args.size)
+            .with_height(args.size),
     );
     img.save_png(&args.output)?;
     eprintln!("wrote {}", args.output.display());

@@ -63,12 +63,44 @@ pub enum ConvError {
     SelfIntersecting { edge_a: usize, edge_b: usize },
     #[error("triangulation failed: {0}")]
     Triangulation(String),
+    /// The constrained Delaunay triangulation refused a stroke vertex.
+    #[error("triangulation failed: vertex {vertex}: {source:?}")]
+    Insertion {
+        vertex: usize,
+        #[source]
+        source: spade::InsertionError,
+    },
     #[error("invalid parameter: {0}")]
     Parameter(String),
     #[error("numerical failure: {0}")]
     Numerical(String),
     #[error("model file: {0}")]
     Model(String),
+    /// A model file is not the JSON of a model.
+    #[error("model file: {0}")]
+    ModelJson(#[source] serde_json::Error),
+    /// A model's component failed to build.
+    #[error("model file: component {name:?}: {source}")]
+    Component {
+        name: String,
+        #[source]
+        source: Box<ConvError>,
+    },
     #[error(transparent)]
     Mesh(#[from] crate::mesh::MeshError),
+}
+
+impl ConvError {
+    /// The triangulation's refusal of stroke vertex `vertex`.
+    pub fn insertion(vertex: usize, source: spade::InsertionError) -> ConvError {
+        ConvError::Insertion { vertex, source }
+    }
+
+    /// This error as the failure of a model's component `name`.
+    pub fn in_component(self, name: &str) -> ConvError {
+        ConvError::Component {
+            name: name.into(),
+            source: Box::new(self),
+        }
+    }
 }

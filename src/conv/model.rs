@@ -149,7 +149,7 @@ pub fn components_field(comps: &[&BuiltComponent], r: [f64; 3]) -> f64 {
 impl Model {
     /// Parses and validates a model file.
     pub fn from_json(text: &str) -> Result<Model, ConvError> {
-        let m: Model = serde_json::from_str(text).map_err(|e| ConvError::Model(e.to_string()))?;
+        let m: Model = serde_json::from_str(text).map_err(ConvError::ModelJson)?;
         m.options.validate()?;
         if m.components.is_empty() {
             return Err(ConvError::Model("no components".into()));
@@ -262,7 +262,7 @@ impl Model {
             };
             let sk = cache
                 .sketch(&src.stroke, &self.options)
-                .map_err(|e| ConvError::Model(format!("component {:?}: {e}", c.name)))?;
+                .map_err(|e| e.in_component(&c.name))?;
             let frame = frame(src.view);
             let copied_depth = c
                 .copy_of

@@ -59,18 +59,29 @@ pub struct SkeletonTriangle {
     pub neighbours: Vec<usize>,
 }
 
-/// Options of the skeleton extraction.
+/// Options of the skeleton extraction. Outside the crate, start from
+/// [`SkeletonOptions::default`] and change fields with the `with_*`
+/// setters (or by assignment).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
+#[non_exhaustive]
 pub struct SkeletonOptions {
-    /// $\beta$ of the pruning criterion; 0 disables pruning.
+    /// $\beta$ of the pruning criterion; 0 disables pruning (default 0.5).
     pub overlap: f64,
     /// A terminal circle smaller than `tiny` times the next circle is pruned
-    /// too (ears of three nearly collinear stroke points; our addition).
+    /// too (ears of three nearly collinear stroke points; our addition;
+    /// default 0.2).
     pub tiny: f64,
-    /// Sample count per circle for the intersection area of sleeve circles.
+    /// Sample count per circle for the intersection area of sleeve circles
+    /// (default 12).
     pub area_samples: usize,
 }
+
+setters!(SkeletonOptions {
+    with_overlap: overlap: f64,
+    with_tiny: tiny: f64,
+    with_area_samples: area_samples: usize,
+});
 
 impl Default for SkeletonOptions {
     fn default() -> Self {
@@ -164,7 +175,7 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
     for (i, p) in poly.iter().enumerate() {
         let h = cdt
             .insert(Point2::new(p[0], p[1]))
-            .map_err(|e| ConvError::Triangulation(format!("vertex {i}: {e:?}")))?;
+            .map_err(|e| ConvError::insertion(i, e))?;
         index_of.insert(h.index(), i);
         handles.push(h);
     }

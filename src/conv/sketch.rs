@@ -10,24 +10,46 @@ use super::skeleton::{self, Skeleton, SkeletonOptions};
 use super::stroke::{self, StrokeOptions};
 use super::ConvError;
 
-/// All options of the reconstruction (paper defaults).
+/// All options of the reconstruction (paper defaults). Outside the crate,
+/// start from [`ConvOptions::default`] and change fields with the `with_*`
+/// setters (or by assignment).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
+#[non_exhaustive]
 pub struct ConvOptions {
+    /// Stroke filtering (default [`StrokeOptions::default`]).
     pub stroke: StrokeOptions,
+    /// Skeleton extraction (default [`SkeletonOptions::default`]).
     pub skeleton: SkeletonOptions,
-    /// Implicit surface threshold $T$.
+    /// Implicit surface threshold $T$ (default 1).
     pub threshold: f64,
-    /// Kernel width $s$; `None`: `s_scale` / mean skeleton radius.
+    /// Kernel width $s$; `None` (the default): `s_scale` / mean skeleton
+    /// radius.
     pub s: Option<f64>,
+    /// Scale of the kernel width when `s` is `None` (default 1).
     pub s_scale: f64,
-    /// Factor on the circle radii (paper: 0.8).
+    /// Factor on the circle radii (default 0.8, the paper's).
     pub radius_factor: f64,
+    /// How the segment weights are fitted (default [`WeightMode::Paper`]).
     pub weights: WeightMode,
-    /// Divide endpoint weights by the number of segments meeting there.
+    /// Divide endpoint weights by the number of segments meeting there
+    /// (default true).
     pub divide_at_joints: bool,
+    /// The weight solver (default [`Solver::HildrethDEsopo`]).
     pub solver: Solver,
 }
+
+setters!(ConvOptions {
+    with_stroke: stroke: StrokeOptions,
+    with_skeleton: skeleton: SkeletonOptions,
+    with_threshold: threshold: f64,
+    with_s: s: Option<f64>,
+    with_s_scale: s_scale: f64,
+    with_radius_factor: radius_factor: f64,
+    with_weights: weights: WeightMode,
+    with_divide_at_joints: divide_at_joints: bool,
+    with_solver: solver: Solver,
+});
 
 impl Default for ConvOptions {
     fn default() -> Self {

@@ -28,25 +28,44 @@ use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Where and how the skirt is made (decimetres, the body's units).
+/// Outside the crate, start from [`SkirtOptions::default`] and change
+/// fields with the `with_*` setters (or by assignment).
 #[derive(Clone, Copy, Debug, Serialize)]
+#[non_exhaustive]
 pub struct SkirtOptions {
-    /// Height of the waistband ring.
+    /// Height of the waistband ring (default 0.4).
     pub waist_y: f64,
-    /// Height of the hem ring.
+    /// Height of the hem ring (default -3.2).
     pub hem_y: f64,
-    /// Ease at the waistband and added ease at the hem: e(u) = ease + flare u^2.
+    /// Ease at the waistband (default 0.06); the ease along the skirt is
+    /// e(u) = ease + flare u^2.
     pub ease: f64,
+    /// Ease added at the hem (default 0.5).
     pub flare: f64,
-    /// Shape parameters of the ODE.
+    /// Shape parameter rho of the ODE (default 1).
     pub rho: f64,
+    /// Shape parameter eta of the ODE (default 3).
     pub eta: f64,
+    /// Shape parameter lambda of the ODE (default 1).
     pub lambda: f64,
-    /// Samples per ring.
+    /// Samples per ring (default 64).
     pub ring_samples: usize,
     /// Cross sections farther than this from the axis (arms, hands) are
-    /// ignored.
+    /// ignored (default 3).
     pub max_reach: f64,
 }
+
+setters!(SkirtOptions {
+    with_waist_y: waist_y: f64,
+    with_hem_y: hem_y: f64,
+    with_ease: ease: f64,
+    with_flare: flare: f64,
+    with_rho: rho: f64,
+    with_eta: eta: f64,
+    with_lambda: lambda: f64,
+    with_ring_samples: ring_samples: usize,
+    with_max_reach: max_reach: f64,
+});
 
 impl Default for SkirtOptions {
     fn default() -> Self {
@@ -94,6 +113,9 @@ pub struct SkirtReport {
 pub enum SkirtError {
     #[error("skirt: {0}")]
     Options(String),
+    /// The tessellated skirt is not a valid mesh.
+    #[error("skirt: tessellation: {0}")]
+    Tessellation(#[source] crate::mesh::MeshError),
     #[error("skirt: the body has no cross section at y = {0} within reach of the axis")]
     NoSection(f64),
     #[error("skirt: {0}")]
@@ -272,7 +294,6 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
         waist_ring_error: ring_error(0, 0),
         hem_ring_error: ring_error(NU, 5),
     };
-    mesh.validate()
-        .map_err(|e| SkirtError::Options(format!("tessellation: {e}")))?;
+    mesh.validate().map_err(SkirtError::Tessellation)?;
     Ok((mesh, report))
 }

@@ -206,7 +206,7 @@ fn boundary(
         crate::character::part::build_part(q).map_err(|err| EditError::Build {
             op: e.op(),
             part: q.name.clone(),
-            message: err.to_string(),
+            source: err,
         })
     };
     let before = build(p)?.section(ue, 1).c0;

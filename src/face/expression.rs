@@ -278,8 +278,11 @@ pub fn unit_target(name: &str) -> Option<Result<Target, FaceError>> {
     let mut s = String::new();
     let read = flate2::read::GzDecoder::new(*bytes).read_to_string(&mut s);
     Some(
-        read.map_err(|e| FaceError::Template(format!("expression {name}: {e}")))
-            .and_then(|_| parse_target(name, &s).map_err(FaceError::from)),
+        read.map_err(|source| FaceError::Expression {
+            name: name.into(),
+            source,
+        })
+        .and_then(|_| parse_target(name, &s).map_err(FaceError::from)),
     )
 }
 

@@ -56,6 +56,13 @@ pub enum FaceError {
     Weight { name: String, weight: f64 },
     #[error("face template: {0}")]
     Template(String),
+    /// An embedded expression unit could not be decompressed.
+    #[error("face template: expression {name}: {source}")]
+    Expression {
+        name: String,
+        #[source]
+        source: std::io::Error,
+    },
     #[error("--patches {patches}: the face network has {rows} rows, so patches must be a multiple of {rows} between {min} and {max}")]
     Patches {
         patches: usize,

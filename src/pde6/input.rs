@@ -24,31 +24,40 @@ struct SectionEntry {
 /// Reads a sections JSON: `{"sections": [{"u": .., "gec"|"fourier": ..}, ..]}`.
 pub fn read_sections(path: &Path) -> Result<Vec<Section>, Pde6Error> {
     let what = path.display().to_string();
-    let text = crate::mesh::io::read_input_text(path, "sections file")
-        .map_err(|e| Pde6Error::Input(format!("reading {what}: {e}")))?;
-    let f: SectionFile = serde_json::from_str(&text)
-        .map_err(|e| Pde6Error::Input(format!("parsing {what}: {e}")))?;
+    let text = crate::mesh::io::read_input_text(path, "sections file").map_err(|source| {
+        Pde6Error::Read {
+            what: what.clone(),
+            source,
+        }
+    })?;
+    let f: SectionFile = serde_json::from_str(&text).map_err(|source| Pde6Error::Parse {
+        what: what.clone(),
+        source,
+    })?;
     f.sections
         .into_iter()
         .enumerate()
         .map(|(i, s)| {
-            let bad =
-                |e: &dyn std::fmt::Display| Pde6Error::Input(format!("{what}: section {i}: {e}"));
+            let bad = |e: Pde6Error| e.in_section(format!("{what}: section {i}"));
             let curve = match (s.gec, s.fourier) {
                 (Some(g), None) => {
-                    let g = Gec::new(g.frame, g.centre, g.x, g.y).map_err(|e| bad(&e))?;
-                    crate::curve::gec::input::check_magnitudes(&g).map_err(|e| bad(&e))?;
+                    let g = Gec::new(g.frame, g.centre, g.x, g.y).map_err(|e| bad(e.into()))?;
+                    crate::curve::gec::input::check_magnitudes(&g).map_err(|e| bad(e.into()))?;
                     g.to_fourier3()
                 }
                 (None, Some(f)) => f,
-                _ => return Err(bad(&"give exactly one of \"gec\" or \"fourier\"")),
+                _ => {
+                    return Err(bad(Pde6Error::Input(
+                        "give exactly one of \"gec\" or \"fourier\"".into(),
+                    )))
+                }
             };
             limits::check(
                 "harmonics",
                 curve.cos.len().max(curve.sin.len()),
                 limits::CURVE_HARMONICS,
             )
-            .map_err(|e| bad(&e))?;
+            .map_err(|e| bad(e.into()))?;
             Ok(Section { u: s.u, curve })
         })
         .collect()
@@ -89,8 +98,7 @@ pub fn mode_at(
             "--at {at}: must lie in [0, 1] (the six values sit at u = 0, 0.2, ..., 1)"
         )));
     }
-    limits::check("--n", n, limits::CURVE_HARMONICS)
-        .map_err(|e| Pde6Error::Input(e.to_string()))?;
+    limits::check("--n", n, limits::CURVE_HARMONICS)?;
     let v: [f64; 6] = std::array::from_fn(|i| values[i]);
     let m = Mode::interpolate(a, n, v)?;
     let j = m.eval(Jet::<3, 1>::var_u(at));

@@ -88,6 +88,25 @@ pub enum Pde6Error {
     IllConditioned { q: f64, condition: f64 },
     #[error("{0}")]
     Input(String),
+    /// An input file could not be read.
+    #[error("reading {what}: {source}")]
+    Read {
+        what: String,
+        #[source]
+        source: crate::mesh::MeshError,
+    },
+    /// An input file is not the JSON it should be.
+    #[error("parsing {what}: {source}")]
+    Parse {
+        what: String,
+        #[source]
+        source: serde_json::Error,
+    },
+    #[error(transparent)]
+    Limit(#[from] crate::limits::LimitError),
+    /// A curve given as numbers whose magnitudes are out of range.
+    #[error(transparent)]
+    GecInput(#[from] crate::curve::gec::input::InputError),
     #[error("{section}: {cause}")]
     SectionFit {
         section: String,

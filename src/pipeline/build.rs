@@ -62,6 +62,28 @@ pub enum BuildError {
     /// The built mesh has a vertex that is not finite.
     #[error("document: the built mesh has a non-finite vertex {index} ({position:?})")]
     NonFinite { index: usize, position: [f64; 3] },
+    /// A redone edit was refused: the document it gives does not build
+    /// (`source` says why).
+    #[error("document: {what} refused: the document it gives does not build: {source}")]
+    RedoRefused {
+        what: String,
+        #[source]
+        source: Box<BuildError>,
+    },
+    /// A change would carry the model more than
+    /// [`super::effect::GROWTH`] model sizes (its bounding box diagonal,
+    /// `diagonal`, before the change) outside its extent.
+    #[error(
+        "document: {what}: the model would reach {} model sizes outside its extent before the change (limit {}; its size, the bounding box diagonal, is {}): the values are too large",
+        crate::limits::Num(*reach),
+        super::effect::GROWTH,
+        crate::limits::Num(*diagonal)
+    )]
+    Growth {
+        what: String,
+        reach: f64,
+        diagonal: f64,
+    },
     /// The cancel hook asked the build to stop.
     #[error("cancelled")]
     Cancelled,
@@ -164,13 +186,13 @@ pub fn build(
     let placement = placed.report.placement;
     let (front, side) = (placed.front, placed.side);
     let level = |needs| BuildError::Level {
-        level: doc.level.name(),
+        level: doc.level().name(),
         needs,
     };
-    if doc.level != Level::Initial && side.is_none() {
+    if doc.level() != Level::Initial && side.is_none() {
         return Err(level("a side profile"));
     }
-    if doc.level == Level::Final && doc.inputs.sections.is_empty() {
+    if doc.level() == Level::Final && doc.inputs.sections.is_empty() {
         return Err(level("key cross-section sketches"));
     }
     let removed = doc
@@ -187,7 +209,7 @@ pub fn build(
             side.as_ref().map(|s| s.points()),
             &crate::sketch::place::placed_sections(&doc.inputs.sections, &placement),
             &front.cuts,
-            doc.level,
+            doc.level(),
             doc.inputs.body_plan,
         )?;
         out.parts = d.parts;

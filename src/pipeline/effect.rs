@@ -125,16 +125,17 @@ pub fn finite_result(mesh: &Mesh, report: &SketchReport) -> Result<(), SketchErr
             .and_then(|t| mesh.tri_group.get(t))
             .and_then(|&g| mesh.groups.get(g as usize))
             .map_or("?".to_string(), |g| format!("'{g}'"));
-        return Err(SketchError::Document(format!(
-            "the built mesh has a non-finite vertex {i} {:?} in part {group}: a value of the document or an edit is too large for the part's surface",
-            mesh.positions[i]
-        )));
+        return Err(SketchError::NonFiniteVertex {
+            index: i,
+            position: mesh.positions[i],
+            group,
+        });
     }
     if let Some(nf) = crate::limits::first_non_finite(report) {
-        return Err(SketchError::Document(format!(
-            "the build's report holds a non-finite number ({} = {}): the model is degenerate there (a collapsed or overflowing section?)",
-            nf.path, nf.value
-        )));
+        return Err(SketchError::NonFiniteReport {
+            path: nf.path,
+            value: nf.value,
+        });
     }
     Ok(())
 }

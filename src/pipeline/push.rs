@@ -40,7 +40,7 @@ fn check_builds(parts: &[PartSpec], e: &Edit) -> Result<(), EditError> {
     let built = crate::character::part::build_part(p).map_err(|err| EditError::Build {
         op: e.op(),
         part: name.into(),
-        message: err.to_string(),
+        source: err,
     })?;
     match e {
         Edit::Force { .. } | Edit::ForceRegion { .. } | Edit::ForceStroke { .. } => {

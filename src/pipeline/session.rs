@@ -8,7 +8,6 @@ use crate::character::assembly::PartCache;
 use crate::character::doc::CharacterDoc;
 use crate::character::log::{check_order, validate_params, Edit, EditError};
 use crate::character::{Model, Resolution};
-use crate::sketch::SketchError;
 use std::path::PathBuf;
 
 /// An editing session: the document, where its profiles live, the mesh
@@ -71,8 +70,8 @@ pub fn push_checked(
     let mut next = doc.clone();
     next.append_edit(e);
     check_order(&next.transitions, next.active_edits())?;
-    let index = next.cursor - 1;
-    let what = format!("edit {index} ({})", next.edits[index].summary());
+    let (index, pushed) = next.last_active().expect("an edit was just appended");
+    let what = format!("edit {index} ({})", pushed.summary());
     let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
         BuildError::Edit(EditError::Replay {
             index: i, source, ..
@@ -93,15 +92,15 @@ pub fn redo_checked(
     cache: Option<&mut PartCache>,
 ) -> Result<Built, BuildError> {
     let mut next = doc.clone();
-    next.redo()
-        .map_err(|err| BuildError::Sketch(SketchError::Document(err.to_string())))?;
-    let i = next.cursor - 1;
-    let what = format!("redo of edit {i} ({})", next.edits[i].summary());
+    next.redo()?;
+    let (i, redone) = next.last_active().expect("an edit was just redone");
+    let what = format!("redo of edit {i} ({})", redone.summary());
     let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
         BuildError::Cancelled => BuildError::Cancelled,
-        other => BuildError::Sketch(SketchError::Document(format!(
-            "{what} refused: the document it gives does not build: {other}"
-        ))),
+        other => BuildError::RedoRefused {
+            what: what.clone(),
+            source: Box::new(other),
+        },
     })?;
     *doc = next;
     Ok(built)
@@ -126,12 +125,11 @@ pub fn validate_by_build(
         let after = Extent::of_groups(&built.model.mesh, &props);
         let reach = b.overreach(&after);
         if reach.is_nan() || reach > GROWTH {
-            return Err(SketchError::Document(format!(
-                "{what}: the model would reach {} model sizes outside its extent before the change (limit {GROWTH}; its size, the bounding box diagonal, is {}): the values are too large",
-                crate::limits::Num(reach),
-                crate::limits::Num(b.diagonal())
-            ))
-            .into());
+            return Err(BuildError::Growth {
+                what: what.into(),
+                reach,
+                diagonal: b.diagonal(),
+            });
         }
     }
     Ok(built)

@@ -182,10 +182,10 @@ impl LaplacianSystem {
             handle_cols.push(c);
         }
         let a = SparseColMat::<usize, f64>::try_new_from_triplets(m, m, &trip)
-            .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+            .map_err(PlateError::Matrix)?;
         let llt = a
             .sp_cholesky(Side::Lower)
-            .map_err(|e| PlateError::Solve(format!("Laplacian normal equations: {e:?}")))?;
+            .map_err(|e| PlateError::cholesky("Laplacian normal equations", e))?;
         Ok(LaplacianSystem {
             llt,
             cols,

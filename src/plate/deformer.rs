@@ -20,13 +20,18 @@ pub enum Direction {
     Normal,
 }
 
-/// Options of the region preparation.
+/// Options of the region preparation. Outside the crate, start from
+/// [`RegionOptions::default`] and change fields with the `with_*` setters
+/// (or by assignment).
 #[derive(Clone, Copy, Debug)]
+#[non_exhaustive]
 pub struct RegionOptions {
+    /// The plate's material (default [`Material::default`], the paper's).
     pub material: Material,
-    /// $\alpha_0$ of eq 15.
+    /// $\alpha_0$ of eq 15 (default [`ALPHA0_DEFAULT`]).
     pub alpha0: f64,
-    /// View-plane normal; `None` uses the region's area-weighted normal.
+    /// View-plane normal; `None` (the default) uses the region's
+    /// area-weighted normal.
     pub view: Option<[f64; 3]>,
     /// Boundary extraction: the paper's alpha shape (default) or the
     /// region's own mesh edges.
@@ -35,6 +40,14 @@ pub struct RegionOptions {
     /// harmonic (Tutte) mapping.
     pub mapping: MappingMethod,
 }
+
+setters!(RegionOptions {
+    with_material: material: Material,
+    with_alpha0: alpha0: f64,
+    with_view: view: Option<[f64; 3]>,
+    with_boundary: boundary: BoundaryMethod,
+    with_mapping: mapping: MappingMethod,
+});
 
 /// How region vertices are mapped onto the unit disk.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -19,9 +19,7 @@ pub fn delaunay(points: &[[f64; 2]]) -> Result<Vec<[usize; 3]>, PlateError> {
     let mut dt = DelaunayTriangulation::<Site>::new();
     let mut handle_to_index = Vec::new();
     for (i, &p) in points.iter().enumerate() {
-        let h = dt
-            .insert(Site(p))
-            .map_err(|e| PlateError::DegenerateProjection(format!("{e:?}")))?;
+        let h = dt.insert(Site(p)).map_err(PlateError::Insertion)?;
         if h.index() != handle_to_index.len() {
             return Err(PlateError::DegenerateProjection(format!(
                 "duplicate point {i}"

@@ -251,10 +251,10 @@ pub fn harmonic_disk(
         }
     }
     let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip)
-        .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+        .map_err(PlateError::Matrix)?;
     let llt = a
         .sp_cholesky(faer::Side::Lower)
-        .map_err(|e| PlateError::Solve(format!("harmonic mapping: {e:?}")))?;
+        .map_err(|e| PlateError::cholesky("harmonic mapping", e))?;
     llt.solve_in_place(rhs.as_mut());
     for (r, &v) in unknown.iter().enumerate() {
         let (u, w) = (rhs[(r, 0)], rhs[(r, 1)]);

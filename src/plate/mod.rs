@@ -56,7 +56,7 @@ pub use deformer::{BoundaryMethod, Direction, MappingMethod, PlateDeformer, Regi
 pub use region::{parse_region, region_from_lasso};
 
 /// Errors of the plate family.
-#[derive(Debug, thiserror::Error, Clone, PartialEq)]
+#[derive(Debug, thiserror::Error)]
 pub enum PlateError {
     #[error("parameter {name} = {value} is out of range ({range})")]
     Parameter {
@@ -72,6 +72,9 @@ pub enum PlateError {
     NonFinite(usize),
     #[error("degenerate projection: {0}")]
     DegenerateProjection(String),
+    /// The Delaunay triangulation of the projection refused a point.
+    #[error("degenerate projection: {0:?}")]
+    Insertion(#[source] spade::InsertionError),
     #[error(
         "the alpha shape (alpha_0 = {alpha0}) does not close into one boundary loop: {reason}"
     )]
@@ -82,8 +85,22 @@ pub enum PlateError {
     CentroidOutside,
     #[error("linear solve failed: {0}")]
     Solve(String),
+    /// A sparse system's matrix could not be assembled.
+    #[error("linear solve failed: {0:?}")]
+    Matrix(#[source] faer::sparse::CreationError),
+    /// A sparse system's Cholesky factorisation failed (`what` names the
+    /// system).
+    #[error("linear solve failed: {what}: {source:?}")]
+    Cholesky {
+        what: &'static str,
+        #[source]
+        source: faer::sparse::linalg::LltError,
+    },
     #[error("malformed region file: {0}")]
     RegionFile(String),
+    /// A JSON region file that does not parse.
+    #[error("malformed region file: {0}")]
+    RegionJson(#[source] serde_json::Error),
     #[error("cursor motion {d:?} with sensitivity {sensitivity} is not finite")]
     NonFiniteForce { d: [f64; 3], sensitivity: f64 },
     #[error("cursor motion {d:?} times sensitivity {sensitivity} {what}; reduce the motion")]
@@ -92,6 +109,13 @@ pub enum PlateError {
         sensitivity: f64,
         what: &'static str,
     },
+}
+
+impl PlateError {
+    /// The failed Cholesky factorisation of the system `what`.
+    pub fn cholesky(what: &'static str, source: faer::sparse::linalg::LltError) -> PlateError {
+        PlateError::Cholesky { what, source }
+    }
 }
 
 /// The cursor-to-force sensitivity $s$ of the CLI and the demo ($q = s d$).

@@ -195,10 +195,10 @@ pub fn solve_clamped(
         return Ok(PlateSolution { w, unknowns });
     }
     let k = SparseColMat::<usize, f64>::try_new_from_triplets(unknowns, unknowns, &trip)
-        .map_err(|e| PlateError::Solve(format!("{e:?}")))?;
+        .map_err(PlateError::Matrix)?;
     let llt = k
         .sp_cholesky(Side::Lower)
-        .map_err(|e| PlateError::Solve(format!("Cholesky: {e:?}")))?;
+        .map_err(|e| PlateError::cholesky("Cholesky", e))?;
     let mut x = faer::Mat::<f64>::from_fn(unknowns, 1, |i, _| rhs[i]);
     llt.solve_in_place(x.as_mut());
     for v in 0..nv {

@@ -60,8 +60,7 @@ struct LassoJson {
 pub fn parse_region(text: &str, mesh: &Mesh) -> Result<Vec<u32>, PlateError> {
     let t = text.trim_start();
     if t.starts_with('{') {
-        let r: RegionJson =
-            serde_json::from_str(t).map_err(|e| PlateError::RegionFile(e.to_string()))?;
+        let r: RegionJson = serde_json::from_str(t).map_err(PlateError::RegionJson)?;
         return match (r.vertices, r.lasso) {
             (Some(ids), None) => Ok(ids),
             (None, Some(l)) => region_from_lasso(mesh, l.view, &l.polygon),

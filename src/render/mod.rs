@@ -98,8 +98,11 @@ pub struct Overlay {
     pub depth_test: bool,
 }
 
-/// Rendering options.
+/// Rendering options. Outside the crate, start from
+/// [`RenderOptions::default`] and change fields with the `with_*` setters
+/// (or by assignment).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct RenderOptions {
     /// Image width in pixels (default 512).
     pub width: usize,
@@ -111,11 +114,21 @@ pub struct RenderOptions {
     pub background: [u8; 4],
     /// One colour per group (default: the GLB palette).
     pub group_colours: Option<Vec<[u8; 3]>>,
-    /// Polylines to draw over the mesh.
+    /// Polylines to draw over the mesh (default none).
     pub overlays: Vec<Overlay>,
     /// Fraction of the image left as margin (default 0.05).
     pub margin: f64,
 }
+
+setters!(RenderOptions {
+    with_width: width: usize,
+    with_height: height: usize,
+    with_view: view: View,
+    with_background: background: [u8; 4],
+    with_group_colours: group_colours: Option<Vec<[u8; 3]>>,
+    with_overlays: overlays: Vec<Overlay>,
+    with_margin: margin: f64,
+});
 
 impl Default for RenderOptions {
     fn default() -> Self {

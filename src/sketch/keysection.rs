@@ -52,7 +52,7 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
     // sections, so the chain does not twist between them)
     let centre = [sec.centre[0], k.y, 0.0];
     let frame = Frame::new(centre, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0])
-        .map_err(|e| SketchError::Section(e.to_string()))?;
+        .map_err(|e| SketchError::SectionFrame(Box::new(e)))?;
     let mut pts: Vec<[f64; 2]> = k.points.iter().map(|p| [p[0] - cx, p[1]]).collect();
     if pts.len() > 1 && pts.first() == pts.last() {
         pts.pop();
@@ -101,7 +101,7 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
     }
     let (gc, gx, gy) = crate::curve::gec::fit::solve(&pts, &thetas, GEC_TERMS, Default::default())
         .map_err(|e| {
-            SketchError::Section(format!("section of '{}' at y = {}: {e}", k.part, k.y))
+            SketchError::section_fit(format!("section of '{}' at y = {}", k.part, k.y), e)
         })?;
     let _ = frame;
     let rep = (gc, gx, gy);

@@ -83,10 +83,29 @@ pub enum SketchError {
     Cut { id: String, message: String },
     #[error("key section: {0}")]
     Section(String),
+    /// A key section's curve cannot be fitted (`section` names it).
+    #[error("key section: {section}: {source}")]
+    SectionFit {
+        section: String,
+        #[source]
+        source: Box<crate::curve::gec::GecError>,
+    },
+    /// A key section's plane has no valid frame.
+    #[error("key section: {0}")]
+    SectionFrame(#[source] Box<crate::curve::gec::GecError>),
     #[error("part '{part}': {message}")]
     Part { part: String, message: String },
-    #[error("document: {0}")]
-    Document(String),
+    /// A built mesh's vertex is not finite (`group`: its part, quoted, or
+    /// `?`).
+    #[error("document: the built mesh has a non-finite vertex {index} {position:?} in part {group}: a value of the document or an edit is too large for the part's surface")]
+    NonFiniteVertex {
+        index: usize,
+        position: [f64; 3],
+        group: String,
+    },
+    /// A build's report holds a non-finite number (`path` names its field).
+    #[error("document: the build's report holds a non-finite number ({path} = {value}): the model is degenerate there (a collapsed or overflowing section?)")]
+    NonFiniteReport { path: String, value: f64 },
     #[error(transparent)]
     Limit(#[from] crate::limits::LimitError),
     /// Assembling the parts into one model failed.
@@ -96,4 +115,14 @@ pub enum SketchError {
     /// "document: ...").
     #[error(transparent)]
     Doc(#[from] crate::character::doc::DocError),
+}
+
+impl SketchError {
+    /// A key section (`section` names it) whose curve cannot be fitted.
+    pub fn section_fit(section: String, e: crate::curve::gec::GecError) -> SketchError {
+        SketchError::SectionFit {
+            section,
+            source: Box::new(e),
+        }
+    }
 }

@@ -212,7 +212,7 @@ pub fn report(
         &super::quality::Bounds::ISSUE,
     ));
     SketchReport {
-        level: out.level,
+        level: out.level(),
         unit: "m",
         height_m: height,
         height,

@@ -79,7 +79,9 @@ pub struct Sketch {
     pub sections: Vec<SectionSketch>,
 }
 
-/// Options of [`fit`].
+/// Options of [`fit`]. Outside the crate, start from
+/// [`FitOptions::default`] and change fields with the `with_*` setters (or
+/// by assignment).
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct FitOptions {
@@ -169,6 +171,34 @@ pub struct FitOptions {
     /// level then measures the front view again.
     pub side_landmarks: bool,
 }
+
+setters!(FitOptions {
+    with_front_centres: front_centres: usize,
+    with_side_centres: side_centres: usize,
+    with_section_points: section_points: usize,
+    with_anchors: anchors: usize,
+    with_gec_terms: gec_terms: usize,
+    with_front_scheme: front_scheme: Scheme,
+    with_side_scheme: side_scheme: Scheme,
+    with_condition: condition: bool,
+    with_tolerance: tolerance: f64,
+    with_passes: passes: usize,
+    with_on_miss: on_miss: OnMiss,
+    with_section_match: section_match: SectionMatch,
+    with_side_partner: side_partner: SidePartner,
+    with_depth_map: depth_map: DepthMap,
+    with_depth_falloff: depth_falloff: i32,
+    with_side_trunk: side_trunk: bool,
+    with_band_anchors: band_anchors: usize,
+    with_envelope_passes: envelope_passes: usize,
+    with_envelope_arms: envelope_arms: bool,
+    with_envelope_arm_back: envelope_arm_back: bool,
+    with_envelope_falloff: envelope_falloff: i32,
+    with_envelope_pairs: envelope_pairs: bool,
+    with_envelope_features: envelope_features: bool,
+    with_envelope_shelves: envelope_shelves: bool,
+    with_side_landmarks: side_landmarks: bool,
+});
 
 impl Default for FitOptions {
     fn default() -> Self {

@@ -191,7 +191,7 @@ impl App {
     fn refresh_edited(&mut self) {
         self.edited = apply_to_parts(&self.doc.parts, self.doc.active_edits())
             .unwrap_or_else(|_| self.doc.parts.clone());
-        self.log_sel = self.log_sel.min(self.doc.edits.len());
+        self.log_sel = self.log_sel.min(self.doc.edits().len());
     }
 
     /// The part tree.

@@ -379,7 +379,7 @@ impl App {
         // as judged there (no second replay here)
         self.doc.append_edit(edit);
         self.history.record_edit();
-        self.log_sel = self.doc.cursor;
+        self.log_sel = self.doc.cursor();
         self.edited = r.edited.clone();
         // autosave; the build with the edit is at hand (no second rebuild)
         let _ = self.changed_without_replay();

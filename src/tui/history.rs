@@ -74,14 +74,14 @@ pub struct History {
 }
 
 /// Why a step could not be undone or redone.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum HistoryError {
     #[error("nothing to undo")]
     NothingToUndo,
     #[error("nothing to redo")]
     NothingToRedo,
     #[error("the edit log no longer matches the history: {0}")]
-    Log(String),
+    Log(#[from] crate::character::log::EditError),
 }
 
 impl History {
@@ -89,8 +89,8 @@ impl History {
     /// before the position, the inactive ones after).
     pub fn of(doc: &CharacterDoc) -> History {
         History {
-            steps: vec![Step::Edit; doc.edits.len()],
-            pos: doc.cursor.min(doc.edits.len()),
+            steps: vec![Step::Edit; doc.edits().len()],
+            pos: doc.cursor(),
         }
     }
 
@@ -104,7 +104,7 @@ impl History {
     /// Records an input command that turned `before` into `doc` (whose
     /// inactive edits are dropped: they were the redo tail).
     pub fn record_inputs(&mut self, what: String, before: &CharacterDoc, doc: &mut CharacterDoc) {
-        doc.edits.truncate(doc.cursor);
+        doc.drop_inactive_edits();
         self.steps.truncate(self.pos);
         self.steps.push(Step::Inputs {
             what,
@@ -130,12 +130,10 @@ impl History {
         let what = match step {
             Step::Edit => {
                 let summary = doc
-                    .cursor
-                    .checked_sub(1)
-                    .and_then(|i| doc.edits.get(i))
-                    .map(|e| e.summary())
+                    .last_active()
+                    .map(|(_, e)| e.summary())
                     .unwrap_or_default();
-                doc.undo().map_err(|e| HistoryError::Log(e.to_string()))?;
+                doc.undo()?;
                 summary
             }
             Step::Inputs { what, before, .. } => {
@@ -152,11 +150,9 @@ impl History {
         let step = self.next().ok_or(HistoryError::NothingToRedo)?.clone();
         let what = match step {
             Step::Edit => {
-                doc.redo().map_err(|e| HistoryError::Log(e.to_string()))?;
-                doc.cursor
-                    .checked_sub(1)
-                    .and_then(|i| doc.edits.get(i))
-                    .map(|e| e.summary())
+                doc.redo()?;
+                doc.last_active()
+                    .map(|(_, e)| e.summary())
                     .unwrap_or_default()
             }
             Step::Inputs { what, after, .. } => {

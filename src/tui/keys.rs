@@ -70,9 +70,9 @@ impl App {
         };
         match r {
             Ok(what) => {
-                self.log_sel = self.doc.cursor;
+                self.log_sel = self.doc.cursor();
                 self.say(
-                    format!("{word}: {what} (log cursor {})", self.doc.cursor),
+                    format!("{word}: {what} (log cursor {})", self.doc.cursor()),
                     false,
                 );
                 self.changed()
@@ -120,7 +120,7 @@ impl App {
                     }
                 }
             }
-            Focus::Log => self.log_sel = step(self.log_sel, self.doc.edits.len() + 1),
+            Focus::Log => self.log_sel = step(self.log_sel, self.doc.edits().len() + 1),
         }
     }
 
@@ -128,33 +128,33 @@ impl App {
     /// stops at an input command (only `u`/`r` step over those).
     fn seek(&mut self, target: usize) -> Vec<super::app::Effect> {
         use super::history::Step;
-        let target = target.min(self.doc.edits.len());
+        let target = target.min(self.doc.edits().len());
         let mut moved = false;
-        while self.doc.cursor > target
+        while self.doc.cursor() > target
             && self.history.last() == Some(&Step::Edit)
             && self.history.undo(&mut self.doc).is_ok()
         {
             moved = true;
         }
-        while self.doc.cursor < target
+        while self.doc.cursor() < target
             && self.history.next() == Some(&Step::Edit)
             && self.history.redo(&mut self.doc).is_ok()
         {
             moved = true;
         }
-        let blocked = self.doc.cursor != target;
+        let blocked = self.doc.cursor() != target;
         if blocked {
             self.say(
                 format!(
                     "log cursor at {}: an input command (add part, key section, prop) lies between; step over it with u/r",
-                    self.doc.cursor
+                    self.doc.cursor()
                 ),
                 true,
             );
         } else if moved {
-            self.say(format!("log cursor at {}", self.doc.cursor), false);
+            self.say(format!("log cursor at {}", self.doc.cursor()), false);
         }
-        self.log_sel = self.doc.cursor;
+        self.log_sel = self.doc.cursor();
         if moved {
             self.changed()
         } else {

@@ -168,7 +168,7 @@ fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
         .join(", ");
     let w = area.width.saturating_sub(2) as usize;
     let lines = vec![
-        Line::from(format!("level    {}", d.level.name())),
+        Line::from(format!("level    {}", d.level().name())),
         Line::from(profile_text("front    ", &d.inputs.front, w)),
         Line::from(
             d.inputs
@@ -319,13 +319,13 @@ fn draw_log(f: &mut Frame, app: &App, area: Rect) {
     let mut items = vec![ListItem::new(Line::from(Span::styled(
         format!(
             "{} (document as derived)",
-            if d.cursor == 0 { "▶" } else { " " }
+            if d.cursor() == 0 { "▶" } else { " " }
         ),
         Style::default().fg(Color::DarkGray),
     )))];
-    for (i, e) in d.edits.iter().enumerate() {
-        let active = i < d.cursor;
-        let mark = if i + 1 == d.cursor { "▶" } else { " " };
+    for (i, e) in d.edits().iter().enumerate() {
+        let active = i < d.cursor();
+        let mark = if i + 1 == d.cursor() { "▶" } else { " " };
         let style = if active {
             Style::default().fg(Color::White)
         } else {
@@ -338,7 +338,7 @@ fn draw_log(f: &mut Frame, app: &App, area: Rect) {
             style,
         ))));
     }
-    let title = format!("Edit log ({} of {} active)", d.cursor, d.edits.len());
+    let title = format!("Edit log ({} of {} active)", d.cursor(), d.edits().len());
     let list = List::new(items)
         .block(block(&title, app.focus == Focus::Log))
         .highlight_style(SELECTED);

@@ -130,12 +130,10 @@ fn known_crossings_name_checked_bodies_only() {
 
 /// A coarse, fast resolution for the property test.
 fn coarse() -> ClosedOptions {
-    ClosedOptions {
-        terms: 6,
-        rings_per_height: 40.0,
-        transition_rows: 4,
-        ..ClosedOptions::default()
-    }
+    ClosedOptions::default()
+        .with_terms(6)
+        .with_rings_per_height(40.0)
+        .with_transition_rows(4)
 }
 
 proptest! {
@@ -427,12 +425,10 @@ fn diagnose_self_crossings() {
         },
         View::Top,
     ];
-    let o = RenderOptions {
-        width: 600,
-        height: 600,
-        group_colours: Some(vec![[200, 200, 200], [230, 30, 30]]),
-        ..RenderOptions::default()
-    };
+    let o = RenderOptions::default()
+        .with_width(600)
+        .with_height(600)
+        .with_group_colours(Some(vec![[200, 200, 200], [230, 30, 30]]));
     let png = std::env::temp_dir().join("xing_arm_l.png");
     render_views(&sub, &views, &o).save_png(&png).unwrap();
     println!("wrote {}", png.display());

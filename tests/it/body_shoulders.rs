@@ -383,11 +383,7 @@ fn shoulder_png(m: &pdesculpt::mesh::Mesh, y0: f64, y1: f64, png: &std::path::Pa
             pitch: 10.0,
         },
     ];
-    let o = RenderOptions {
-        width: 600,
-        height: 600,
-        ..RenderOptions::default()
-    };
+    let o = RenderOptions::default().with_width(600).with_height(600);
     render_views(&sub, &views, &o).save_png(png).unwrap();
 }
 

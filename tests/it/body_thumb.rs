@@ -72,10 +72,7 @@ fn a_convex_hull_mitten_fills_the_web() {
 #[test]
 fn without_thumbs_each_arm_ends_in_a_mitten_and_the_report_says_so() {
     let skin = load_body(None, &[]).unwrap();
-    let o = ClosedOptions {
-        thumbs: false,
-        ..ClosedOptions::default()
-    };
+    let o = ClosedOptions::default().with_thumbs(false);
     let b = reconstruct_closed(&skin, &o).unwrap();
     let r = &b.report;
     let t = &r.topology;

@@ -303,10 +303,7 @@ fn weight_options_have_the_paper_defaults_and_divide_at_joints() {
         }
     }
     // the radius factor scales the skeleton radii into the weights
-    let o = sketch::ConvOptions {
-        radius_factor: 1.0,
-        ..Default::default()
-    };
+    let o = sketch::ConvOptions::default().with_radius_factor(1.0);
     let st = shapes::ellipse(2.0, 1.0, 200);
     let a = sketch::build(&st, &Default::default()).expect("0.8");
     let b = sketch::build(&st, &o).expect("1.0");
@@ -750,17 +747,11 @@ fn option_out_of_range_is_printed_short() {
     use pdesculpt::conv::sketch::ConvOptions;
     for (o, needle) in [
         (
-            ConvOptions {
-                radius_factor: 1e300,
-                ..ConvOptions::default()
-            },
+            ConvOptions::default().with_radius_factor(1e300),
             "radius_factor must lie in (0, 2], got 1e300",
         ),
         (
-            ConvOptions {
-                threshold: -1.0,
-                ..ConvOptions::default()
-            },
+            ConvOptions::default().with_threshold(-1.0),
             "threshold must be positive and finite, got -1.0",
         ),
     ] {
@@ -987,12 +978,11 @@ proptest! {
     ) {
         use pdesculpt::conv::fit::{Solver, WeightMode};
         let st = if star { shapes::star(arms, 0.5 * a.min(b), a.max(b) + 0.5, 300) } else { shapes::ellipse(a, b, 200) };
-        let mut o = sketch::ConvOptions {
-            threshold, s_scale, radius_factor, divide_at_joints: divide,
-            weights: if exact { WeightMode::Exact } else { WeightMode::Paper },
-            solver: [Solver::HildrethDEsopo, Solver::LawsonHanson, Solver::ProjectedLm][solver],
-            ..Default::default()
-        };
+        let mut o = sketch::ConvOptions::default()
+            .with_threshold(threshold).with_s_scale(s_scale).with_radius_factor(radius_factor)
+            .with_divide_at_joints(divide)
+            .with_weights(if exact { WeightMode::Exact } else { WeightMode::Paper })
+            .with_solver([Solver::HildrethDEsopo, Solver::LawsonHanson, Solver::ProjectedLm][solver]);
         o.skeleton.overlap = overlap;
         let sk = match sketch::build(&st, &o) {
             Ok(sk) => sk,

@@ -56,13 +56,13 @@ fn push_undo_redo_move_the_cursor_and_drop_the_redo_tail() {
     assert!(matches!(d.redo(), Err(EditError::NothingToRedo { len: 2 })));
     d.undo().expect("undo");
     assert_eq!(d.active_edits().len(), 1);
-    assert_eq!(d.edits.len(), 2);
+    assert_eq!(d.edits().len(), 2);
     d.redo().expect("redo");
     d.undo().expect("undo");
     d.push_edit(shape("head", 1.0)).expect("valid");
-    assert_eq!(d.edits.len(), 2, "the redo tail is dropped");
-    assert_eq!(d.edits[1], shape("head", 1.0));
-    assert_eq!(d.cursor, 2);
+    assert_eq!(d.edits().len(), 2, "the redo tail is dropped");
+    assert_eq!(d.edits()[1], shape("head", 1.0));
+    assert_eq!(d.cursor(), 2);
 }
 
 #[test]
@@ -538,9 +538,7 @@ fn the_log_order_is_the_application_order_or_the_edit_is_refused() {
         .expect("the head's mesh is its own");
     // a hand-written log in an order that cannot be honoured is refused
     // at build
-    let mut bad = d0.clone();
-    bad.edits = vec![plate, shape("torso", 0.3)];
-    bad.cursor = 2;
+    let bad = crate::harden_doc::with_hand_written_log(&d0, vec![plate, shape("torso", 0.3)], 2);
     let err = build_document(&bad, Path::new("."), low(), false).expect_err("order");
     assert!(err.to_string().contains("cannot follow"), "{err}");
 }

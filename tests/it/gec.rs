@@ -51,21 +51,17 @@ fn refit_reproduces_coefficients_qr_normal_fft() {
     let g = sample_gec();
     let pts = g.sample(64);
     for solver in [Solver::Qr, Solver::NormalEquations] {
-        let opts = FitOptions {
-            param: Param::Uniform,
-            theta0: Some(0.0),
-            solver,
-            ..FitOptions::new(3)
-        };
+        let opts = FitOptions::new(3)
+            .with_param(Param::Uniform)
+            .with_theta0(Some(0.0))
+            .with_solver(solver);
         let r = fit(&pts, &opts).unwrap();
         assert!(coeff_diff(&g, &r.gec) < tol::SOLVE, "{solver:?}");
         assert!(r.errors.erm < tol::SOLVE);
     }
-    let opts = FitOptions {
-        param: Param::Uniform,
-        theta0: Some(0.0),
-        ..FitOptions::new(3)
-    };
+    let opts = FitOptions::new(3)
+        .with_param(Param::Uniform)
+        .with_theta0(Some(0.0));
     let r = fit_fft(&pts, &opts, 64).unwrap();
     assert!(coeff_diff(&g, &r.gec) < tol::SOLVE);
 }
@@ -170,12 +166,10 @@ fn given_frame_z_plane() {
     )
     .unwrap();
     let pts = g.sample(40);
-    let opts = FitOptions {
-        frame: FrameChoice::Given(Frame::z_plane(1.5)),
-        param: Param::Uniform,
-        theta0: Some(0.0),
-        ..FitOptions::new(2)
-    };
+    let opts = FitOptions::new(2)
+        .with_frame(FrameChoice::Given(Frame::z_plane(1.5)))
+        .with_param(Param::Uniform)
+        .with_theta0(Some(0.0));
     let r = fit(&pts, &opts).unwrap();
     assert!(coeff_diff(&g, &r.gec) < tol::SOLVE);
     assert_eq!(r.gec.frame, Frame::z_plane(1.5));
@@ -185,10 +179,7 @@ fn given_frame_z_plane() {
 fn auto_terms_reaches_tolerance() {
     let g = sample_gec();
     let pts = g.sample(80);
-    let opts = FitOptions {
-        param: Param::Uniform,
-        ..FitOptions::new(1)
-    };
+    let opts = FitOptions::new(1).with_param(Param::Uniform);
     let r = fit_auto(&pts, AUTO_TARGET, 10, &opts).unwrap();
     assert!(r.errors.erm_rel <= AUTO_TARGET);
     assert!(r.gec.terms() <= 3);
@@ -206,7 +197,7 @@ proptest! {
         let g = Gec::new(frame, [0.0, 0.0], vec![[a, 0.0], [w * a, 0.0], [0.0, w * b]],
             vec![[b, 0.0], [0.0, w * b], [w * a, 0.0]]).unwrap();
         let pts = g.sample(n);
-        let opts = FitOptions { param: Param::ALL[p], ..FitOptions::new(j) };
+        let opts = FitOptions::new(j).with_param(Param::ALL[p]);
         match fit(&pts, &opts) {
             Ok(r) => {
                 prop_assert!(r.gec.is_finite());
@@ -348,14 +339,9 @@ proptest! {
         let pts = g.sample(m);
         // the least squares at the rule's angles (no parameter correction:
         // this compares solvers at the same angles)
-        let opts = FitOptions {
-            param: Param::Uniform,
-            theta0: Some(0.0),
-            correction: Correction::None,
-            ..FitOptions::new(j)
-        };
+        let opts = FitOptions::new(j).with_param(Param::Uniform).with_theta0(Some(0.0)).with_correction(Correction::None);
         let qr = fit(&pts, &opts).unwrap();
-        let ne = fit(&pts, &FitOptions { solver: Solver::NormalEquations, ..opts }).unwrap();
+        let ne = fit(&pts, &opts.with_solver(Solver::NormalEquations)).unwrap();
         let ff = fit_fft(&pts, &opts, m).unwrap();
         prop_assert!(rel_coeff_diff(&g, &ff.gec).is_finite());
         prop_assert!(coeff_diff(&qr.gec, &ff.gec) / g.scale() < tol::SOLVE,
@@ -363,7 +349,7 @@ proptest! {
         prop_assert!(coeff_diff(&qr.gec, &ne.gec) / g.scale() < NORMAL_EQUATIONS,
             "normal equations vs qr {:e}", coeff_diff(&qr.gec, &ne.gec) / g.scale());
         // other parameterisations resample first: still a valid, close fit
-        let opts = FitOptions { param: Param::ALL[p], ..FitOptions::new(j) };
+        let opts = FitOptions::new(j).with_param(Param::ALL[p]);
         let r = gec::fit_fft(&pts, &opts, 4 * m).unwrap();
         prop_assert!(r.gec.is_finite() && r.errors.erm.is_finite());
     }
@@ -372,12 +358,7 @@ proptest! {
     fn refit_reproduces_coefficients(g in gec_strategy(12), extra in 1usize..100, solver in 0usize..2) {
         let j = g.terms();
         let pts = g.sample(2 * j + extra);
-        let opts = FitOptions {
-            param: Param::Uniform,
-            theta0: Some(0.0),
-            solver: [Solver::Qr, Solver::NormalEquations][solver],
-            ..FitOptions::new(j)
-        };
+        let opts = FitOptions::new(j).with_param(Param::Uniform).with_theta0(Some(0.0)).with_solver([Solver::Qr, Solver::NormalEquations][solver]);
         let r = fit(&pts, &opts).unwrap();
         let d = rel_coeff_diff(&g, &r.gec);
         prop_assert!(d < EXACT_RECOVERY, "relative coefficient error {d:e}");
@@ -404,10 +385,10 @@ proptest! {
             let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
             [size * radii[k] * t.cos(), z, size * radii[k] * t.sin()]
         }).collect();
-        let opts = FitOptions { param: Param::ALL[p], ..FitOptions::new(j) };
+        let opts = FitOptions::new(j).with_param(Param::ALL[p]);
         let r = match s {
             0 => fit(&pts, &opts),
-            1 => fit(&pts, &FitOptions { solver: Solver::NormalEquations, ..opts }),
+            1 => fit(&pts, &opts.with_solver(Solver::NormalEquations)),
             _ => fit_fft(&pts, &opts, n.max(4 * j + 2)),
         };
         match r {
@@ -443,11 +424,11 @@ proptest! {
         ]), 0..40),
         j in 0usize..8, p in 0usize..4, s in 0usize..3, tol_e in prop_oneof![Just(-1.0), Just(0.0), Just(1e-3), Just(f64::NAN)],
     ) {
-        let opts = FitOptions { param: Param::ALL[p], ..FitOptions::new(j) };
+        let opts = FitOptions::new(j).with_param(Param::ALL[p]);
         let results = [
             match s {
                 0 => fit(&pts, &opts),
-                1 => fit(&pts, &FitOptions { solver: Solver::NormalEquations, ..opts }),
+                1 => fit(&pts, &opts.with_solver(Solver::NormalEquations)),
                 _ => fit_fft(&pts, &opts, pts.len()),
             },
             fit_auto(&pts, tol_e, j, &opts),
@@ -620,12 +601,10 @@ mod cli {
         // same result from the library
         let lib = fit(
             &pts,
-            &FitOptions {
-                param: Param::Uniform,
-                theta0: Some(0.0),
-                frame: gec::FrameChoice::Given(Frame::z_plane(0.5)),
-                ..FitOptions::new(3)
-            },
+            &FitOptions::new(3)
+                .with_param(Param::Uniform)
+                .with_theta0(Some(0.0))
+                .with_frame(gec::FrameChoice::Given(Frame::z_plane(0.5))),
         )
         .unwrap();
         assert!(coeff_diff(&lib.gec, &fitted) < tol::ROUNDING);

@@ -35,11 +35,9 @@ fn correction_recovers_the_angles_of_an_uneven_sample() {
     let erm = |correction| {
         fit(
             &pts,
-            &FitOptions {
-                param: Param::ChordLength,
-                correction,
-                ..FitOptions::new(3)
-            },
+            &FitOptions::new(3)
+                .with_param(Param::ChordLength)
+                .with_correction(correction),
         )
         .unwrap()
     };
@@ -80,8 +78,8 @@ proptest! {
             let t = 2.0 * PI * k as f64 / n as f64;
             [radii[k] * t.cos(), 0.5, 0.7 * radii[k] * t.sin()]
         }).collect();
-        let opts = FitOptions { param: Param::ALL[p], ..FitOptions::new(j) };
-        let run = |correction| fit(&pts, &FitOptions { correction, ..opts });
+        let opts = FitOptions::new(j).with_param(Param::ALL[p]);
+        let run = |correction| fit(&pts, &opts.with_correction(correction));
         match (run(Correction::None), run(Correction::Project), run(Correction::Best)) {
             (Ok(none), Ok(project), Ok(best)) => {
                 prop_assert!(project.errors.erm <= none.errors.erm + tol::ROUNDING);

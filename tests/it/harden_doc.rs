@@ -237,25 +237,35 @@ fn edits_are_validated_by_their_effect() {
                 || s.contains("does not build"),
             "{e}: {s}"
         );
-        assert!(d.edits.is_empty());
+        assert!(d.edits().is_empty());
     }
     // an ordinary edit passes and its build is returned
     let mut d = stored();
     let ok = json!({"op": "shape_parameter", "part": "torso", "a": 0.3});
     push_checked(&mut d, edit(ok), &BuildOptions::new(Path::new(".")), None)
         .expect("an ordinary edit");
-    assert_eq!(d.cursor, 1);
+    assert_eq!(d.cursor(), 1);
+}
+
+/// `doc` with its edit log replaced by `edits` of which the first `cursor`
+/// are active, as a document written by hand and loaded would have it
+/// (the JSON goes through `CharacterDoc::parse`, the load's own checks;
+/// nothing judges the edits against the parts): the library changes a log
+/// only through its API.
+pub fn with_hand_written_log(doc: &CharacterDoc, edits: Vec<Edit>, cursor: usize) -> CharacterDoc {
+    let mut v = serde_json::to_value(doc).expect("a document serialises");
+    v["edits"] = serde_json::to_value(edits).expect("edits serialise");
+    v["cursor"] = cursor.into();
+    CharacterDoc::parse(&v.to_string(), Path::new("hand-written.json"))
+        .expect("the hand-written log loads")
 }
 
 #[test]
 fn redo_validates_the_edit_it_re_applies() {
-    let mut d = stored();
     // an unbuildable edit written into the log by hand, undone
-    d.edits = vec![edit(
-        json!({"op": "force", "part": "arm_l", "u": [0.1, 0.4],
-        "force": {"type": "uniform", "p": [1e30, 0, 0]}}),
-    )];
-    d.cursor = 0;
+    let unbuildable = edit(json!({"op": "force", "part": "arm_l", "u": [0.1, 0.4],
+        "force": {"type": "uniform", "p": [1e30, 0, 0]}}));
+    let mut d = with_hand_written_log(&stored(), vec![unbuildable], 0);
     let before = d.clone();
     let err = error_of(
         redo_checked(&mut d, &BuildOptions::new(Path::new(".")), None),

@@ -68,8 +68,8 @@ fn concurrent_character_edits_lose_no_edit() {
             assert!(k.wait().expect("wait").success(), "trial {trial}");
         }
         let after = CharacterDoc::load(&doc).expect("doc");
-        assert_eq!(after.edits.len(), 2, "trial {trial}: both edits kept");
-        assert_eq!(after.cursor, 2);
+        assert_eq!(after.edits().len(), 2, "trial {trial}: both edits kept");
+        assert_eq!(after.cursor(), 2);
     }
     let _ = std::fs::remove_dir_all(&d);
 }
@@ -99,7 +99,7 @@ fn an_edit_through_a_symlink_edits_the_target_and_keeps_its_mode() {
         .expect("link")
         .file_type()
         .is_symlink());
-    assert_eq!(CharacterDoc::load(&real).expect("target").edits.len(), 1);
+    assert_eq!(CharacterDoc::load(&real).expect("target").edits().len(), 1);
     let mode = std::fs::metadata(&real).expect("meta").permissions().mode() & 0o777;
     assert_eq!(mode, 0o600);
     let _ = std::fs::remove_dir_all(&d);

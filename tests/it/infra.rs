@@ -237,12 +237,10 @@ fn render_draws_the_mesh_inside_the_frame() {
     ] {
         let img = render(
             &m,
-            &RenderOptions {
-                width: 64,
-                height: 64,
-                view,
-                ..Default::default()
-            },
+            &RenderOptions::default()
+                .with_width(64)
+                .with_height(64)
+                .with_view(view),
         );
         let painted = (0..64 * 64)
             .filter(|&i| img.rgba[4 * i..4 * i + 3] != [255, 255, 255])
@@ -260,31 +258,16 @@ fn skirt_rejects_bad_options() {
     use pdesculpt::demo::skirt::{skirt, SkirtOptions};
     let body = pdesculpt::makehuman::base_body().unwrap().mesh;
     for o in [
-        SkirtOptions {
-            hem_y: 1.0,
-            ..Default::default()
-        },
-        SkirtOptions {
-            ease: f64::NAN,
-            ..Default::default()
-        },
-        SkirtOptions {
-            ring_samples: 2,
-            ..Default::default()
-        },
+        SkirtOptions::default().with_hem_y(1.0),
+        SkirtOptions::default().with_ease(f64::NAN),
+        SkirtOptions::default().with_ring_samples(2),
         // above the head: no cross section
-        SkirtOptions {
-            waist_y: 20.0,
-            hem_y: 19.0,
-            ..Default::default()
-        },
+        SkirtOptions::default().with_waist_y(20.0).with_hem_y(19.0),
         // a = rho = eta = lambda = 0
-        SkirtOptions {
-            rho: 0.0,
-            eta: 0.0,
-            lambda: 0.0,
-            ..Default::default()
-        },
+        SkirtOptions::default()
+            .with_rho(0.0)
+            .with_eta(0.0)
+            .with_lambda(0.0),
     ] {
         let e = skirt(&body, &o).expect_err("bad options are refused");
         assert!(e.to_string().starts_with("skirt"), "{e}");

@@ -138,7 +138,7 @@ fn a_checked_push_builds_once_and_keeps_the_edit() {
     let built = push_checked(&mut d, e.clone(), &opts, None).expect("a valid edit");
     let questions = asked.load(std::sync::atomic::Ordering::SeqCst);
     assert_eq!(questions, doc.parts.len() + doc.props.len() + 2);
-    assert_eq!(d.edits.len(), doc.edits.len() + 1);
+    assert_eq!(d.edits().len(), doc.edits().len() + 1);
     assert_eq!(built.doc, d, "the build's document is the one kept");
     // refused: the document is unchanged and the edit's own error named
     let mut d2 = doc.clone();

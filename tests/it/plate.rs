@@ -23,10 +23,7 @@ const BODY_PEAK_FRACTION: f64 = 0.5;
 const FORCE_FLOOR: f64 = 1e-12;
 
 fn top() -> RegionOptions {
-    RegionOptions {
-        view: Some([0.0, 0.0, 1.0]),
-        ..RegionOptions::default()
-    }
+    RegionOptions::default().with_view(Some([0.0, 0.0, 1.0]))
 }
 
 fn ellipse_poly(a: f64, b: f64, rot: f64) -> Vec<[f64; 2]> {
@@ -170,10 +167,7 @@ fn plate_stated_limits_and_bad_input_are_clear_errors() {
         Err(PlateError::NonFinite(_))
     ));
     // edge-on view: degenerate projection
-    let side = RegionOptions {
-        view: Some([1.0, 0.0, 0.0]),
-        ..RegionOptions::default()
-    };
+    let side = RegionOptions::default().with_view(Some([1.0, 0.0, 0.0]));
     assert!(matches!(
         PlateDeformer::new(&mesh, &all, &side),
         Err(PlateError::DegenerateProjection(_))
@@ -213,10 +207,7 @@ fn plate_stated_limits_and_bad_input_are_clear_errors() {
         Err(PlateError::CentroidOutside)
     ));
     // ... which the harmonic mapping handles
-    let harmonic = RegionOptions {
-        mapping: MappingMethod::Harmonic,
-        ..top()
-    };
+    let harmonic = top().with_mapping(MappingMethod::Harmonic);
     let p = PlateDeformer::new(&mesh, &c_shape, &harmonic).unwrap();
     assert!(p.weights().iter().all(|w| w.is_finite() && *w >= 0.0));
     assert!(p.weights().iter().any(|w| *w > 0.0));
@@ -242,10 +233,7 @@ fn plate_stated_limits_and_bad_input_are_clear_errors() {
         Err(PlateError::BoundaryNotClosed { .. })
     ));
     // ... the mesh-edge boundary does not
-    let mesh_edges = RegionOptions {
-        boundary: BoundaryMethod::MeshEdges,
-        ..RegionOptions::default()
-    };
+    let mesh_edges = RegionOptions::default().with_boundary(BoundaryMethod::MeshEdges);
     let p = PlateDeformer::new(&s, &cap, &mesh_edges).unwrap();
     let m = p
         .deform(&s, [0.0, 0.0, 1.0], 70.0, Direction::Normal)
@@ -268,13 +256,7 @@ proptest! {
     ) {
         let mesh = sheet(24);
         let region = region_in_polygon(&mesh, &ellipse_poly(a, b, rot));
-        let opts = RegionOptions {
-            material: Material { young, poisson: mu, thickness: h },
-            alpha0,
-            view: Some([0.0, 0.0, 1.0]),
-            mapping: if harmonic { MappingMethod::Harmonic } else { MappingMethod::LengthBased },
-            ..RegionOptions::default()
-        };
+        let opts = RegionOptions::default().with_material(Material { young, poisson: mu, thickness: h }).with_alpha0(alpha0).with_view(Some([0.0, 0.0, 1.0])).with_mapping(if harmonic { MappingMethod::Harmonic } else { MappingMethod::LengthBased });
         let p = PlateDeformer::new(&mesh, &region, &opts).unwrap();
         let dir = if normal { Direction::Normal } else { Direction::Cursor };
         let m = p.deform(&mesh, [dx, dy, dz], s, dir).unwrap();
@@ -356,11 +338,9 @@ fn plate_on_the_makehuman_belly() {
         .map(|i| i as u32)
         .collect();
     assert!(region.len() > 20, "{} region vertices", region.len());
-    let opts = RegionOptions {
-        view: Some([0.0, 0.0, 1.0]),
-        boundary: BoundaryMethod::MeshEdges,
-        ..RegionOptions::default()
-    };
+    let opts = RegionOptions::default()
+        .with_view(Some([0.0, 0.0, 1.0]))
+        .with_boundary(BoundaryMethod::MeshEdges);
     let p = PlateDeformer::new(&body, &region, &opts).unwrap();
     let s = 70.0;
     let d = [0.0, 0.0, 1.0];

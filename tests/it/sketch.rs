@@ -59,7 +59,7 @@ fn document_round_trips_and_rejects_unknown_fields() {
     let back = CharacterDoc::load(&p).expect("loads");
     let names = |d: &CharacterDoc| d.parts.iter().map(|p| p.name.clone()).collect::<Vec<_>>();
     assert_eq!(names(&back), names(&b.doc));
-    assert_eq!(back.level, b.doc.level);
+    assert_eq!(back.level(), b.doc.level());
     // rebuilding the stored parts gives the same mesh (to JSON float rounding)
     let again = build_document(&back, &dir, Resolution::default(), false).expect("rebuilds");
     assert_eq!(again.model.mesh.triangles, b.model.mesh.triangles);

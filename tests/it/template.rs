@@ -156,9 +156,7 @@ fn similarity_of_the_sketch_gives_the_similar_result() {
 /// Options for the property tests: the default levels without the
 /// condition number (an eigen-decomposition per case).
 fn fast_options() -> FitOptions {
-    let mut o = FitOptions::default();
-    o.condition = false;
-    o
+    FitOptions::default().with_condition(false)
 }
 
 /// Height of the reference figure (the scale of every tolerance below).

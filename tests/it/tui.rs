@@ -183,7 +183,7 @@ fn tui_edit_undo_redo_through_the_log() {
     assert!(screen(&app).contains("✓ Enter applies"));
     key(&mut app, KeyCode::Enter);
     assert_eq!(
-        (app.doc.edits.len(), app.doc.cursor),
+        (app.doc.edits().len(), app.doc.cursor()),
         (1, 1),
         "{:?}",
         app.message
@@ -194,19 +194,19 @@ fn tui_edit_undo_redo_through_the_log() {
     // the sidecar holds the edit
     // (parts go through JSON, whose float parsing may round: compare the log)
     let side = CharacterDoc::load(&autosave::sidecar(&app.path)).expect("autosave");
-    assert_eq!((&side.edits, side.cursor), (&app.doc.edits, 1));
+    assert_eq!((&side.edits(), side.cursor()), (&app.doc.edits(), 1));
     assert_eq!(side.parts.len(), app.doc.parts.len());
     key(&mut app, KeyCode::Char('u'));
-    assert_eq!(app.doc.cursor, 0);
+    assert_eq!(app.doc.cursor(), 0);
     assert!(screen(&app).contains("Edit log (0 of 1 active)"));
     let e = app.on_key(KeyEvent::new(KeyCode::Char('y'), KeyModifiers::CONTROL));
     settle(&mut app, e);
-    assert_eq!(app.doc.cursor, 1);
+    assert_eq!(app.doc.cursor(), 1);
     let e = app.on_key(KeyEvent::new(KeyCode::Char('z'), KeyModifiers::CONTROL));
     settle(&mut app, e);
-    assert_eq!(app.doc.cursor, 0);
+    assert_eq!(app.doc.cursor(), 0);
     key(&mut app, KeyCode::Char('r'));
-    assert_eq!(app.doc.cursor, 1);
+    assert_eq!(app.doc.cursor(), 1);
     // quitting with unsaved changes asks; saving removes the sidecar
     key(&mut app, KeyCode::Char('q'));
     assert_eq!(app.mode, Mode::ConfirmQuit);
@@ -216,7 +216,7 @@ fn tui_edit_undo_redo_through_the_log() {
     assert!(!app.dirty());
     assert!(!autosave::sidecar(&app.path).exists());
     let saved = CharacterDoc::load(&app.path).expect("saved");
-    assert_eq!((&saved.edits, saved.cursor), (&app.doc.edits, 1));
+    assert_eq!((&saved.edits(), saved.cursor()), (&app.doc.edits(), 1));
     assert_eq!(
         app.on_key(KeyEvent::new(KeyCode::Char('q'), KeyModifiers::NONE)),
         vec![Effect::Quit]
@@ -238,7 +238,7 @@ fn tui_panicking_rebuild_leaves_the_document_as_before_the_edit() {
         matches!(effects.as_slice(), [Effect::Check(_)]),
         "{effects:?}"
     );
-    assert_eq!(app.doc.edits.len(), 0);
+    assert_eq!(app.doc.edits().len(), 0);
     let w = Worker::with_build(Box::new(|_| panic!("injected failure")));
     let j = job(&mut app);
     assert!(w.send(j));
@@ -268,7 +268,7 @@ fn tui_recovery_is_offered_for_a_newer_sidecar() {
     key(&mut app, KeyCode::Enter);
     typed(&mut app, "0.5");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.doc.edits.len(), 1, "{:?}", app.message);
+    assert_eq!(app.doc.edits().len(), 1, "{:?}", app.message);
     let edited = app.doc.clone();
     // a new session at the same path: the document does not exist, the
     // sidecar does
@@ -279,10 +279,12 @@ fn tui_recovery_is_offered_for_a_newer_sidecar() {
     };
     let mut again = open(&o).expect("opens");
     // (the parts go through JSON: compare the log)
-    assert!(matches!(&again.mode, Mode::Recovery(d) if d.edits == edited.edits && d.cursor == 1));
+    assert!(
+        matches!(&again.mode, Mode::Recovery(d) if d.edits() == edited.edits() && d.cursor() == 1)
+    );
     assert!(screen(&again).contains("Recover?"));
     key(&mut again, KeyCode::Char('y'));
-    assert_eq!(again.doc.edits, edited.edits);
+    assert_eq!(again.doc.edits(), edited.edits());
     assert!(again.dirty());
     // after a save nothing is offered
     key(&mut again, KeyCode::Char('s'));

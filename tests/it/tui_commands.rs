@@ -390,17 +390,17 @@ fn tui_force_boundary_plate_forms_check_numbers_and_refuse_bad_edits() {
         "force",
         &format!("{} {} 0 0 0.5", 0.2 * len, 0.8 * len),
     );
-    assert_eq!(app.doc.edits.len(), 1, "{:?}", app.message);
+    assert_eq!(app.doc.edits().len(), 1, "{:?}", app.message);
     form(&mut app, "boundary", "start 0 0 0.05");
-    assert_eq!(app.doc.edits.len(), 2, "{:?}", app.message);
+    assert_eq!(app.doc.edits().len(), 2, "{:?}", app.message);
     let c = torso.sections[torso.sections.len() / 2].centre;
     form(
         &mut app,
         "plate",
         &format!("{} {} {} 0.12 0 0 0.01", c[0], c[1], c[2] + 0.1),
     );
-    assert_eq!(app.doc.edits.len(), 3, "{:?}", app.message);
-    let ops: Vec<&str> = app.doc.edits.iter().map(|e| e.op()).collect();
+    assert_eq!(app.doc.edits().len(), 3, "{:?}", app.message);
+    let ops: Vec<&str> = app.doc.edits().iter().map(|e| e.op()).collect();
     assert_eq!(ops, ["force", "boundary", "plate"]);
     assert!(!app.stale);
     let t = &app.shown.as_ref().expect("built").report.topology;

@@ -224,7 +224,7 @@ fn tui_e2e_edit_undo_redo_export_save_in_tmux() {
     // export: the prompt is pre-filled with DIR/char.glb
     export_save_quit(&s);
     let saved = CharacterDoc::load(&doc).expect("the document was saved");
-    assert_eq!((saved.edits.len(), saved.cursor), (1, 1));
+    assert_eq!((saved.edits().len(), saved.cursor()), (1, 1));
     assert_export_equals_build(&dir, &doc);
 }
 
@@ -263,8 +263,8 @@ fn tui_e2e_sigkill_then_recovery_keeps_every_completed_edit() {
     s.keys(&["s"]);
     s.wait_for("saved", None);
     let saved = CharacterDoc::load(&doc).expect("saved");
-    assert_eq!((saved.edits.len(), saved.cursor), (2, 2));
-    let summaries: Vec<String> = saved.edits.iter().map(|e| e.summary()).collect();
+    assert_eq!((saved.edits().len(), saved.cursor()), (2, 2));
+    let summaries: Vec<String> = saved.edits().iter().map(|e| e.summary()).collect();
     assert!(summaries[0].contains("1.1"), "{summaries:?}");
     assert!(summaries[1].contains("0.95"), "{summaries:?}");
 }

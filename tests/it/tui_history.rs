@@ -52,7 +52,7 @@ fn tui_undo_redo_steps_over_add_part_key_section_and_prop() {
     key(&mut app, KeyCode::Enter);
     typed(&mut app, "1.1");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.doc.cursor, 1, "{:?}", app.message);
+    assert_eq!(app.doc.cursor(), 1, "{:?}", app.message);
     let edited = app.doc.clone();
     let edited_mesh = mesh(&app);
     app.focus = Focus::Tree;
@@ -89,8 +89,12 @@ fn tui_undo_redo_steps_over_add_part_key_section_and_prop() {
     );
     assert!(mesh(&app) == edited_mesh, "undo x3 gives back the preview");
     key(&mut app, KeyCode::Char('u'));
-    assert_eq!(app.doc.cursor, 0);
-    assert_eq!(app.doc.edits, edited.edits, "undo keeps the log for redo");
+    assert_eq!(app.doc.cursor(), 0);
+    assert_eq!(
+        app.doc.edits(),
+        edited.edits(),
+        "undo keeps the log for redo"
+    );
     assert!(
         mesh(&app) == original_mesh,
         "undo x4 gives back the preview"
@@ -140,9 +144,9 @@ fn tui_undo_redo_steps_over_add_part_key_section_and_prop() {
     key(&mut app, KeyCode::Char('u'));
     key(&mut app, KeyCode::Char('u'));
     // the original with the undone edit still in the log (redo-able)
-    assert_eq!((app.doc.cursor, app.doc.edits.len()), (0, 1));
+    assert_eq!((app.doc.cursor(), app.doc.edits().len()), (0, 1));
     let mut d = app.doc.clone();
-    d.edits.clear();
+    d.drop_inactive_edits();
     assert!(d == original, "undo to the start gives back the original");
 }
 
@@ -154,12 +158,12 @@ fn tui_command_after_an_undone_edit_drops_the_inactive_edits() {
     typed(&mut app, "1.1");
     key(&mut app, KeyCode::Enter);
     key(&mut app, KeyCode::Char('u'));
-    assert_eq!((app.doc.edits.len(), app.doc.cursor), (1, 0));
+    assert_eq!((app.doc.edits().len(), app.doc.cursor()), (1, 0));
     app.focus = Focus::Tree;
     let sections = app.doc.inputs.sections.clone();
     command(&mut app, 'x', "1.0 0.12 0.09");
     ok(&app);
-    assert_eq!((app.doc.edits.len(), app.doc.cursor), (0, 0));
+    assert_eq!((app.doc.edits().len(), app.doc.cursor()), (0, 0));
     autosaved(&app);
     key(&mut app, KeyCode::Char('u'));
     assert_eq!(
@@ -167,7 +171,7 @@ fn tui_command_after_an_undone_edit_drops_the_inactive_edits() {
         "the key section is undone"
     );
     assert!(
-        app.doc.edits.is_empty(),
+        app.doc.edits().is_empty(),
         "the dropped edit does not come back"
     );
     key(&mut app, KeyCode::Char('u'));

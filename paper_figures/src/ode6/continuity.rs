@@ -47,14 +47,12 @@ fn render(m: &Mesh, overlays: Vec<Overlay>, colours: Option<Vec<[u8; 3]>>) -> Im
     let mut m = m.clone();
     m.map_positions(y_up);
     let (lo, hi) = m.bbox();
-    let o = RenderOptions {
-        width: 380,
-        height: 320,
-        view: VIEW,
-        overlays,
-        group_colours: colours,
-        ..Default::default()
-    };
+    let o = RenderOptions::default()
+        .with_width(380)
+        .with_height(320)
+        .with_view(VIEW)
+        .with_overlays(overlays)
+        .with_group_colours(colours);
     let cam = Camera::fit_box(lo, hi, o.view, o.width, o.height, o.margin);
     render_with_camera(&m, &o, &cam)
 }

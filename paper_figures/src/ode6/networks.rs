@@ -45,13 +45,11 @@ pub fn fig7(ctx: &Ctx) -> anyhow::Result<()> {
         let r = net.report(8);
         let m = net.mesh(12);
         let (lo, hi) = m.bbox();
-        let o = RenderOptions {
-            width: 360,
-            height: 360,
-            view: FRONT_3Q,
-            overlays: curve_overlays(&net, [20, 20, 20, 255]),
-            ..Default::default()
-        };
+        let o = RenderOptions::default()
+            .with_width(360)
+            .with_height(360)
+            .with_view(FRONT_3Q)
+            .with_overlays(curve_overlays(&net, [20, 20, 20, 255]));
         imgs.push(render_box(&m, lo, hi, &o));
         let worst = r.max_relative_jump();
         captions.push(format!(
@@ -173,14 +171,12 @@ fn colours(n: usize, face: Option<u32>) -> Vec<[u8; 3]> {
 }
 
 fn face_opts(view: View, overlays: Vec<Overlay>, colours: Vec<[u8; 3]>) -> RenderOptions {
-    RenderOptions {
-        width: 420,
-        height: 420,
-        view,
-        overlays,
-        group_colours: Some(colours),
-        ..Default::default()
-    }
+    RenderOptions::default()
+        .with_width(420)
+        .with_height(420)
+        .with_view(view)
+        .with_overlays(overlays)
+        .with_group_colours(Some(colours))
 }
 
 /// Figs 11-12: the face network on the original (front, side).
@@ -218,12 +214,12 @@ pub fn fig11_12(ctx: &Ctx) -> anyhow::Result<()> {
 pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     let f = face_scene()?;
     let nm = f.net.mesh(10);
-    let opts = |net: &Network| RenderOptions {
-        width: 420,
-        height: 420,
-        view: FRONT_3Q,
-        overlays: curve_overlays(net, [200, 30, 30, 255]),
-        ..Default::default()
+    let opts = |net: &Network| {
+        RenderOptions::default()
+            .with_width(420)
+            .with_height(420)
+            .with_view(FRONT_3Q)
+            .with_overlays(curve_overlays(net, [200, 30, 30, 255]))
     };
     let (nlo, nhi) = nm.bbox();
     let (base, body) = extract::base()?;
@@ -233,10 +229,7 @@ pub fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     let wr = web.report(8);
     let skin = sketched::skin_distance(base, body, &BASE_WINDOW, &doc, &wm)?;
     let (dmax, drms) = (skin.max, skin.rms);
-    let front = |net: &Network| RenderOptions {
-        view: View::Front,
-        ..opts(net)
-    };
+    let front = |net: &Network| opts(net).with_view(View::Front);
     let (wlo, whi) = wm.bbox();
     let panels = [
         render_box(&nm, nlo, nhi, &opts(&f.net)),
@@ -464,14 +457,12 @@ pub fn fig13(ctx: &Ctx) -> anyhow::Result<()> {
                 depth_test: true,
             })
             .collect();
-        let o = RenderOptions {
-            width: 300,
-            height: 300,
-            view: View::Front,
-            overlays: points,
-            group_colours: Some(vec![[190, 190, 196]; head.groups.len()]),
-            ..Default::default()
-        };
+        let o = RenderOptions::default()
+            .with_width(300)
+            .with_height(300)
+            .with_view(View::Front)
+            .with_overlays(points)
+            .with_group_colours(Some(vec![[190, 190, 196]; head.groups.len()]));
         top.push(render_box(&head, lo, hi, &o));
         // error map: triangles grouped by their largest vertex error
         let err: Vec<f64> = pos
@@ -490,13 +481,11 @@ pub fn fig13(ctx: &Ctx) -> anyhow::Result<()> {
                 ERROR_BINS.iter().filter(|b| e > **b).count() as u32
             })
             .collect();
-        let o = RenderOptions {
-            width: 300,
-            height: 300,
-            view: View::Front,
-            group_colours: Some((0..=ERROR_BINS.len()).map(ramp).collect()),
-            ..Default::default()
-        };
+        let o = RenderOptions::default()
+            .with_width(300)
+            .with_height(300)
+            .with_view(View::Front)
+            .with_group_colours(Some((0..=ERROR_BINS.len()).map(ramp).collect()));
         bottom.push(render_box(&map, lo, hi, &o));
         captions.push(format!(
             "{au}: MVE {:.4} dm\nRMS {:.4} dm",

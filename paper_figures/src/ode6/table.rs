@@ -131,10 +131,7 @@ fn longest(loops: &[Polyline]) -> Option<Polyline> {
 fn gec_section(l: &Polyline, m: usize, j: usize, y: f64) -> anyhow::Result<Curve> {
     use pdesculpt::curve::gec::{fit, FitOptions, Frame, FrameChoice};
     let frame = Frame::new([0.0, y, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])?;
-    let opts = FitOptions {
-        frame: FrameChoice::Given(frame),
-        ..FitOptions::new(j)
-    };
+    let opts = FitOptions::new(j).with_frame(FrameChoice::Given(frame));
     let rep = fit(&resample(l, m), &opts)?;
     Ok(Curve::from_gec(&rep.gec)?)
 }
@@ -262,15 +259,13 @@ pub fn table1(ctx: &Ctx) -> anyhow::Result<()> {
             if k == 12 && gec_terms.is_none() {
                 let img = pdesculpt::render::render(
                     &rec,
-                    &pdesculpt::render::RenderOptions {
-                        width: 360,
-                        height: 480,
-                        view: pdesculpt::render::View::Perspective {
+                    &pdesculpt::render::RenderOptions::default()
+                        .with_width(360)
+                        .with_height(480)
+                        .with_view(pdesculpt::render::View::Perspective {
                             yaw: 30.0,
                             pitch: 10.0,
-                        },
-                        ..Default::default()
-                    },
+                        }),
                 );
                 let tag = match r.name.split_whitespace().next() {
                     Some("left") => "leg",

@@ -25,16 +25,10 @@ pub fn body_ripples(ctx: &Ctx) -> anyhow::Result<()> {
             "legacy: a = -0.5, chord from first vertex",
             legacy_options(),
         ),
-        (
-            "anchored parameter only (a = -0.5)",
-            BodyOptions { a: -0.5, ..new },
-        ),
+        ("anchored parameter only (a = -0.5)", new.with_a(-0.5)),
         (
             "a = -0.01 only (chord from first vertex)",
-            BodyOptions {
-                sampling: Sampling::Gec(Param::ChordLength),
-                ..new
-            },
+            new.with_sampling(Sampling::Gec(Param::ChordLength)),
         ),
         ("default: anchored, a = -0.01", new),
     ];
@@ -47,12 +41,10 @@ pub fn body_ripples(ctx: &Ctx) -> anyhow::Result<()> {
     let mut camera = None;
     for (label, opts) in &variants {
         let (_, mesh, report) = reconstruct(&body.mesh, &specs, opts)?;
-        let o = RenderOptions {
-            view,
-            width: 360,
-            height: 560,
-            ..RenderOptions::default()
-        };
+        let o = RenderOptions::default()
+            .with_view(view)
+            .with_width(360)
+            .with_height(560);
         let cam: &Camera = camera.get_or_insert_with(|| {
             let (lo, hi) = mesh.bbox();
             Camera::fit_box(lo, hi, view, o.width, o.height, o.margin)

@@ -189,17 +189,11 @@ fn prepare_with(
     region: &[u32],
     mapping: MappingMethod,
 ) -> anyhow::Result<(PlateDeformer, &'static str)> {
-    let base = RegionOptions {
-        mapping,
-        ..RegionOptions::default()
-    };
+    let base = RegionOptions::default().with_mapping(mapping);
     match PlateDeformer::new(m, region, &base) {
         Ok(p) => Ok((p, "alpha_shape")),
         Err(_) => {
-            let o = RegionOptions {
-                boundary: BoundaryMethod::MeshEdges,
-                ..base
-            };
+            let o = base.with_boundary(BoundaryMethod::MeshEdges);
             Ok((PlateDeformer::new(m, region, &o)?, "mesh_edges"))
         }
     }
@@ -379,10 +373,7 @@ pub fn fig1(ctx: &Ctx) -> anyhow::Result<()> {
             .map(|q| [c[0] + scale * q[0], c[1] + scale * q[1]])
             .collect();
         let region = region_in_polygon(&rest, &poly);
-        let o = RegionOptions {
-            view: Some([0.0, 0.0, 1.0]),
-            ..RegionOptions::default()
-        };
+        let o = RegionOptions::default().with_view(Some([0.0, 0.0, 1.0]));
         let p = PlateDeformer::new(&m, &region, &o)?;
         let d = motion_for_peak(&p, 70.0, peak);
         m = p.deform(&m, [0.0, 0.0, d], 70.0, Direction::Cursor)?;

@@ -5,8 +5,8 @@
 //! surfaces, forces, plates) and `crate::sasm` (features), and replaying
 //! the log is `crate::pipeline`.
 //!
-//! A character is its inputs plus an ordered edit log: `doc.edits`, of which
-//! the first `doc.cursor` are active. `CharacterDoc::push_edit` (`crate::pipeline`) validates
+//! A character is its inputs plus an ordered edit log: `doc.edits()`, of which
+//! the first `doc.cursor()` are active. `CharacterDoc::push_edit` (`crate::pipeline`) validates
 //! an edit against the document's current state (the stored parts with the
 //! active edits applied) *before* changing anything, drops the redo tail and
 //! appends; [`CharacterDoc::undo`] / [`CharacterDoc::redo`] move the cursor.
@@ -263,11 +263,12 @@ pub enum EditError {
         part: String,
         message: String,
     },
-    #[error("{op} on part '{part}': the edited part does not build: {message}")]
+    #[error("{op} on part '{part}': the edited part does not build: {source}")]
     Build {
         op: &'static str,
         part: String,
-        message: String,
+        #[source]
+        source: crate::character::ModelError,
     },
     #[error("edit {index} ({summary}) changes the PDE surface of part '{part}' after edit {earlier} ({earlier_summary}) changed its built mesh: a PDE-level edit rebuilds the mesh of its part (and of the children of its transitions), so it cannot follow a mesh-level edit (plate, sasm) there; undo the mesh-level edit first")]
     Order {

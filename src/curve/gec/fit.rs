@@ -109,21 +109,40 @@ pub enum FrameChoice {
     Given(Frame),
 }
 
-/// Options of [`fit`].
+/// Options of [`fit`]. Outside the crate, start from
+/// [`FitOptions::new`] (the defaults with a number of terms) and change
+/// fields with the `with_*` setters (or by assignment).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct FitOptions {
+    /// The number of terms J (given to [`FitOptions::new`]).
     pub terms: usize,
+    /// How data points get their angle (default [`Param::ChordLength`]).
     pub param: Param,
+    /// The least-squares solver (default [`Solver::Qr`]).
     pub solver: Solver,
+    /// The plane the curve is placed in (default [`FrameChoice::Auto`]).
     pub frame: FrameChoice,
-    /// Largest allowed distance from the plane, relative to the diameter.
+    /// Largest allowed distance from the plane, relative to the diameter
+    /// (default [`PLANARITY_TOL`]).
     pub planarity_tol: f64,
-    /// Whether the angles of `param` are corrected (default: yes).
+    /// Whether the angles of `param` are corrected (default
+    /// [`Correction::Best`]).
     pub correction: Correction,
     /// Angle of the first point for the non-polar parameterisations
-    /// (`None`: its polar angle about the area centroid).
+    /// (default `None`: its polar angle about the area centroid).
     pub theta0: Option<f64>,
 }
+
+setters!(FitOptions {
+    with_terms: terms: usize,
+    with_param: param: Param,
+    with_solver: solver: Solver,
+    with_frame: frame: FrameChoice,
+    with_planarity_tol: planarity_tol: f64,
+    with_correction: correction: Correction,
+    with_theta0: theta0: Option<f64>,
+});
 
 impl FitOptions {
     /// Defaults with `terms` terms.

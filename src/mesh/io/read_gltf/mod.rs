@@ -37,15 +37,24 @@ use ::gltf::{Document, Node};
 use std::collections::HashMap;
 use std::path::Path;
 
-/// What to read from a glTF file.
+/// What to read from a glTF file. Outside the crate, start from
+/// [`GltfOptions::default`] and change fields with the `with_*` setters (or
+/// by assignment).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct GltfOptions {
-    /// Node names to keep with everything below them; empty: every node.
+    /// Node names to keep with everything below them; empty (the default):
+    /// every node.
     pub select: Vec<String>,
     /// Merge vertices with bit-identical coordinates within a model
     /// (default true).
     pub weld: bool,
 }
+
+setters!(GltfOptions {
+    with_select: select: Vec<String>,
+    with_weld: weld: bool,
+});
 
 impl Default for GltfOptions {
     fn default() -> Self {
