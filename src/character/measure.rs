@@ -9,8 +9,9 @@ use crate::surface::cross;
 use serde::Serialize;
 use std::f64::consts::PI;
 
-/// Jumps measured along one join (relative: C0 to the model height, C1 and
-/// C2 to the largest scaled part derivative along the join).
+/// Jumps measured along one join (relative: C0 to the model height, C1 to
+/// the largest scaled first part derivative along the join, C2 to the
+/// largest scaled first or second one).
 #[derive(Clone, Debug, Serialize)]
 pub struct JoinReport {
     pub transition: String,
@@ -94,7 +95,11 @@ pub(super) fn measure(
         samples,
         c0: c0 / height,
         c1: c1 / s1.max(f64::MIN_POSITIVE),
-        c2: c2 / s2.max(f64::MIN_POSITIVE),
+        // relative to the larger of the scaled first and second
+        // derivatives (both lengths): a part whose second derivative
+        // vanishes along the join (a straight tube, the natural end of an
+        // ode6 part) has no scale of its own to divide by
+        c2: c2 / s2.max(s1).max(f64::MIN_POSITIVE),
     }
 }
 

@@ -8,7 +8,8 @@
 //! space). The spline is C2, so the six constraints of a join are the same
 //! on both of its sides and the chain is C2 by construction, whatever rho,
 //! eta and lambda are. Between the sections the ODE, not the spline, shapes
-//! the part: the shape parameters act there as in 004's Fig 6.
+//! the part: the shape parameters act there as in 004's Fig 6. The
+//! spline is natural, so S_uu = 0 at the two end sections.
 
 use super::PartGeometry;
 use crate::curve::Fourier3;
