@@ -27,7 +27,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/body/closed.rs", "reconstruct_closed", 220),
     ("src/body/hand.rs", "find_hand", 132),
     ("src/body/layout.rs", "find_layout", 135),
-    ("src/character/assembly.rs", "build_model_with", 243),
     ("src/character/log/stroke.rs", "new", 157),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/model.rs", "build_cached", 160),
