@@ -36,8 +36,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/demo/skirt.rs", "skirt", 132),
     ("src/pde6/spline.rs", "c2_global", 131),
     ("src/plate/mapping.rs", "harmonic_disk", 103),
-    ("src/plate/reference.rs", "solve_clamped", 170),
-    ("src/plate/shapes.rs", "compare", 113),
     ("src/sasm/apply.rs", "apply_feature", 117),
     ("src/sasm/feature.rs", "new", 155),
     ("src/sketch/keysection.rs", "apply_key_section", 117),
