@@ -24,8 +24,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/sketch/figure_animal.rs", "figures", 122),
     ("src/sketch/report.rs", "report", 123),
     ("src/sketch/segment.rs", "regions", 102),
-    ("src/body/hand.rs", "find_hand", 132),
-    ("src/body/layout.rs", "find_layout", 135),
     ("src/character/log/stroke.rs", "new", 157),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/model.rs", "build_cached", 160),
