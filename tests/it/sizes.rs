@@ -32,7 +32,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/conv/skeleton.rs", "prune_and_link", 121),
     ("src/conv/stroke.rs", "filter_stroke", 112),
     ("src/demo/skirt.rs", "skirt", 132),
-    ("src/pde6/spline.rs", "c2_global", 131),
     ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/sasm/apply.rs", "apply_feature", 117),
     ("src/sasm/feature.rs", "new", 155),
