@@ -33,8 +33,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/conv/stroke.rs", "filter_stroke", 112),
     ("src/demo/skirt.rs", "skirt", 132),
     ("src/plate/mapping.rs", "harmonic_disk", 103),
-    ("src/sasm/apply.rs", "apply_feature", 117),
-    ("src/sasm/feature.rs", "new", 155),
     ("src/sketch/keysection.rs", "apply_key_section", 117),
     ("src/sketch/quadruped.rs", "regions", 126),
     ("src/template/envelope.rs", "envelope_pass", 279),
