@@ -35,9 +35,7 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/sketch/quadruped.rs", "regions", 126),
     ("src/template/envelope.rs", "envelope_pass", 279),
     ("src/template/fit.rs", "fit", 189),
-    ("src/template/rbf.rs", "fit", 134),
     ("src/template/sections.rs", "fit_sections", 102),
-    ("src/tui/params.rs", "parse", 133),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
