@@ -44,12 +44,12 @@
 //! breasts); then the smallest shift of the cuts toward the arms whose
 //! shoulders do not cross, within the max error target.
 
-use super::hand::find_hand;
+use super::hand::{find_hand, Hand};
 pub use super::joins::{
     shifted_shoulder_cuts, shoulder_cut_angles, SHOULDER_CUT_SHIFT_MAX, SHOULDER_TANGENT_SCALE,
 };
 use super::joins::{shoulder_cuts, transitions};
-use super::layout::{find_layout, trace, TraceOptions, TraceSample};
+use super::layout::{find_layout, trace, Layout, TraceOptions, TraceSample};
 use super::report::measure_with_crossings;
 pub use super::report::{load_body, ClosedReport, MORPH_WEIGHT_MAX};
 use super::sections::{arm_picks, check_count, part_from_picks, part_from_trace, phase_towards};
@@ -131,12 +131,52 @@ pub struct ClosedBody {
 
 /// Reconstructs the closed body of `skin` (a standing humanoid, Y up).
 pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, BodyError> {
+    check_counts(o)?;
+    check_watertight(skin)?;
+    let lay = find_layout(skin)?;
+    let h = lay.height();
+    let step = TRACE_STEP * h;
+    let t = Tracing { skin, h, step };
+    let torso = torso_spec(&t, &lay, o)?;
+    // the torso's start must be its bottom: u increases upwards, fine.
+    let mut specs = vec![torso];
+    leg_specs(&t, &lay, o, &mut specs)?;
+    // arms: from the arm loop under the armpit, following the arm, to the
+    // wrist; each hand a mitten and a thumb (super::hand)
+    let ya = lay.arm_left[1];
+    let mut arms = Arms::default();
+    for (side, start) in [("l", lay.arm_left), ("r", lay.arm_right)] {
+        arm_specs(&t, o, side, start, ya, &mut specs, &mut arms)?;
+    }
+    specs.push(head_spec(&t, &lay, o)?);
+    specs.extend(arms.hand_specs);
+    let mut transitions = transitions(skin, &lay, &specs)?;
+    transitions.extend(arms.wrists);
+    let (transitions, model, pairs) =
+        shoulder_cuts(skin, &specs, transitions, h, MAX_MAX_REL, o.resolution())?;
+    let mut report = measure_with_crossings(skin, &lay, &model, &specs, &arms.hands, &pairs);
+    report.thumbless = arms.thumbless;
+    Ok(ClosedBody {
+        model,
+        specs,
+        transitions,
+        report,
+    })
+}
+
+/// Refuses a section count of `o` out of range.
+fn check_counts(o: &ClosedOptions) -> Result<(), BodyError> {
     check_count("torso sections", o.torso_sections)?;
     check_count("leg sections", o.leg_sections)?;
     check_count("arm sections", o.arm_sections)?;
     check_count("head sections", o.head_sections)?;
     check_count("hand sections", o.hand_sections)?;
     check_count("thumb sections", o.thumb_sections)?;
+    Ok(())
+}
+
+/// Refuses a skin that is not one closed surface.
+fn check_watertight(skin: &Mesh) -> Result<(), BodyError> {
     let topo = topology(skin);
     if !topo.watertight {
         return Err(BodyError::LayoutNotFound {
@@ -147,12 +187,22 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             ),
         });
     }
-    let lay = find_layout(skin)?;
-    let h = lay.height();
-    let step = TRACE_STEP * h;
-    let centre_at = |y: f64, x_pick: f64| -> Result<([f64; 3], f64), BodyError> {
+    Ok(())
+}
+
+/// The skin the parts are traced on, its height and the trace step.
+struct Tracing<'a> {
+    skin: &'a Mesh,
+    h: f64,
+    step: f64,
+}
+
+impl Tracing<'_> {
+    /// The centre and radius of the loop nearest to `x = x_pick` in the
+    /// horizontal plane at `y`.
+    fn centre_at(&self, y: f64, x_pick: f64) -> Result<([f64; 3], f64), BodyError> {
         let f = crate::pde6::sampling::section_frame(y)?;
-        let ls = super::layout::loops_in_plane(skin, &f);
+        let ls = super::layout::loops_in_plane(self.skin, &f);
         let l = ls
             .iter()
             .min_by(|a, b| {
@@ -165,21 +215,30 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                 detail: format!("no loop at y = {y:.3}"),
             })?;
         Ok((f.place(l.centroid[0], l.centroid[1]), l.radius))
-    };
-    let straight = |max_len: f64, hull: bool| TraceOptions {
-        step,
-        max_len,
-        follow: false,
-        hull,
-        skip: 0.0,
-        jump: super::layout::JUMP,
-    };
-    // torso: crotch + gap up to armpit - gap
+    }
+
+    /// Options of a trace along a fixed direction, up to `max_len`, its
+    /// sections convex hulls when `hull`.
+    fn straight(&self, max_len: f64, hull: bool) -> TraceOptions {
+        TraceOptions {
+            step: self.step,
+            max_len,
+            follow: false,
+            hull,
+            skip: 0.0,
+            jump: super::layout::JUMP,
+        }
+    }
+}
+
+/// The torso: from the crotch plus a gap up to the armpit less a gap.
+fn torso_spec(t: &Tracing, lay: &Layout, o: &ClosedOptions) -> Result<PartSpec, BodyError> {
+    let (skin, h) = (t.skin, t.h);
     let y0 = lay.crotch + CROTCH_GAP * h;
     let y1 = lay.armpit - ARMPIT_GAP * h;
-    let (c, r) = centre_at(y0, 0.0)?;
-    let tt = trace(skin, c, [0.0, 1.0, 0.0], r, straight(y1 - y0, false))?;
-    let torso = part_from_trace(
+    let (c, r) = t.centre_at(y0, 0.0)?;
+    let tt = trace(skin, c, [0.0, 1.0, 0.0], r, t.straight(y1 - y0, false))?;
+    part_from_trace(
         skin,
         "torso",
         &tt,
@@ -188,10 +247,18 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
         false,
         o,
         TORSO_PHASE,
-    )?;
-    // the torso's start must be its bottom: u increases upwards, fine.
-    let mut specs = vec![torso];
-    // legs: down from crotch - gap
+    )
+}
+
+/// The legs, left then right, pushed to `specs`: down from the crotch less
+/// a gap, each from the largest loop on its side.
+fn leg_specs(
+    t: &Tracing,
+    lay: &Layout,
+    o: &ClosedOptions,
+    specs: &mut Vec<PartSpec>,
+) -> Result<(), BodyError> {
+    let (skin, h) = (t.skin, t.h);
     let yl = lay.crotch - CROTCH_GAP * h;
     for (name, x) in [("leg_l", -1.0), ("leg_r", 1.0)] {
         let f = crate::pde6::sampling::section_frame(yl)?;
@@ -205,7 +272,7 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
                 detail: format!("{name}: no loop at y = {yl:.3}"),
             })?;
         let c = f.place(l.centroid[0], l.centroid[1]);
-        let tr = trace(skin, c, [0.0, -1.0, 0.0], l.radius, straight(h, true))?;
+        let tr = trace(skin, c, [0.0, -1.0, 0.0], l.radius, t.straight(h, true))?;
         specs.push(part_from_trace(
             skin,
             name,
@@ -217,130 +284,153 @@ pub fn reconstruct_closed(skin: &Mesh, o: &ClosedOptions) -> Result<ClosedBody, 
             0.0,
         )?);
     }
-    // arms: from the arm loop under the armpit, following the arm, to the
-    // wrist; each hand a mitten and a thumb (super::hand)
-    let ya = lay.arm_left[1];
-    let mut hand_specs = Vec::new();
-    let mut wrists = Vec::new();
-    let mut hands = Vec::new();
-    let mut thumbless = Vec::new();
-    for (side, start) in [("l", lay.arm_left), ("r", lay.arm_right)] {
-        let name = format!("arm_{side}");
-        let (c0, r0) = centre_at(ya, start[0])?;
-        let (c1, _) = centre_at(ya - 0.04 * h, start[0] + 0.5 * start[0].signum() * 0.04 * h)?;
-        let d = sub(c1, c0);
-        let tr = trace(
-            skin,
-            c0,
-            d,
-            r0,
-            TraceOptions {
-                step,
-                max_len: h,
-                follow: true,
-                hull: true,
-                skip: 0.05 * h,
-                jump: super::layout::JUMP,
-            },
-        )?;
-        let found = if o.thumbs {
-            find_hand(skin, &tr, h, step)
-        } else {
-            Err(BodyError::LayoutNotFound {
-                what: "a thumb",
-                detail: "thumbs off (ClosedOptions::thumbs)".into(),
-            })
-        };
-        let hand = match found {
-            Ok(hand) => hand,
-            Err(e) => {
-                // no thumb: the whole arm one chain ending in a mitten
-                specs.push(part_from_trace(
-                    skin,
-                    &name,
-                    &tr,
-                    ARM_OFFSET * h,
-                    o.arm_sections,
-                    true,
-                    o,
-                    0.0,
-                )?);
-                thumbless.push(format!("{name}: {e}"));
-                continue;
-            }
-        };
-        let s_end = tr[hand.split].s - WRIST_GAP * h;
-        let arm: Vec<TraceSample> = tr.iter().take_while(|t| t.s <= s_end).cloned().collect();
-        let last = arm.last().ok_or_else(|| BodyError::LayoutNotFound {
-            what: "a wrist",
-            detail: format!("{name}: the thumb separates at the start of the arm's trace"),
-        })?;
-        let phase = phase_towards(last, hand.track[0].0, o)?;
-        let idx = arm_picks(&tr, arm.len(), ARM_OFFSET * h, o.arm_sections, &name)?;
-        specs.push(part_from_picks(skin, &name, &tr, &idx, false, o, phase)?);
-        let (palm, thumb) = (format!("hand_{side}"), format!("thumb_{side}"));
-        hand_specs.push(part_from_trace(
-            skin,
-            &palm,
-            &hand.palm,
-            PALM_GAP * h,
-            o.hand_sections,
-            true,
-            o,
-            0.0,
-        )?);
-        hand_specs.push(part_from_trace(
-            skin,
-            &thumb,
-            &hand.thumb,
-            0.0,
-            o.thumb_sections,
-            true,
-            o,
-            0.0,
-        )?);
-        wrists.push(TransitionSpec {
-            name: format!("wrist_{side}"),
-            parent: name,
-            parent_end: End::End,
-            children: vec![palm, thumb],
-            seam_apex: vec![hand.apex],
-            cut_angles: vec![(THUMB_ARC_SHARE * std::f64::consts::PI * hand.thumb_share)
-                .clamp(THUMB_ARC_MIN, THUMB_ARC_MAX)],
-            tangent_scale: WRIST_TANGENT_SCALE,
-            continuity: Default::default(),
-        });
-        hands.push((hand, wrists[wrists.len() - 1].cut_angles[0]));
-    }
-    // head: from the neck up to the crown
-    let yn = lay.neck + NECK_GAP * h;
-    let (c, r) = centre_at(yn, 0.0)?;
-    let head_trace = TraceOptions {
-        jump: f64::INFINITY,
-        ..straight(h, false)
+    Ok(())
+}
+
+/// What the arms add besides their own parts: the hands' parts, the wrist
+/// transitions, the hands found (with their thumb arcs) and why an arm has
+/// no thumb.
+#[derive(Default)]
+struct Arms {
+    hand_specs: Vec<PartSpec>,
+    wrists: Vec<TransitionSpec>,
+    hands: Vec<(Hand, f64)>,
+    thumbless: Vec<String>,
+}
+
+/// The trace of the arm starting at the arm loop `start` (at height `ya`),
+/// following the arm.
+fn arm_trace(t: &Tracing, ya: f64, start: [f64; 3]) -> Result<Vec<TraceSample>, BodyError> {
+    let h = t.h;
+    let (c0, r0) = t.centre_at(ya, start[0])?;
+    let (c1, _) = t.centre_at(ya - 0.04 * h, start[0] + 0.5 * start[0].signum() * 0.04 * h)?;
+    let d = sub(c1, c0);
+    trace(
+        t.skin,
+        c0,
+        d,
+        r0,
+        TraceOptions {
+            step: t.step,
+            max_len: h,
+            follow: true,
+            hull: true,
+            skip: 0.05 * h,
+            jump: super::layout::JUMP,
+        },
+    )
+}
+
+/// The arm of `side`: its part pushed to `specs`, and with a thumb found
+/// its hand, thumb and wrist in `arms` ([`hand_specs`]); without one the
+/// whole arm is one chain ending in a mitten.
+fn arm_specs(
+    t: &Tracing,
+    o: &ClosedOptions,
+    side: &str,
+    start: [f64; 3],
+    ya: f64,
+    specs: &mut Vec<PartSpec>,
+    arms: &mut Arms,
+) -> Result<(), BodyError> {
+    let (skin, h) = (t.skin, t.h);
+    let name = format!("arm_{side}");
+    let tr = arm_trace(t, ya, start)?;
+    let found = if o.thumbs {
+        find_hand(skin, &tr, h, t.step)
+    } else {
+        Err(BodyError::LayoutNotFound {
+            what: "a thumb",
+            detail: "thumbs off (ClosedOptions::thumbs)".into(),
+        })
     };
-    let tr = trace(skin, c, [0.0, 1.0, 0.0], r, head_trace)?;
-    specs.push(part_from_trace(
+    let hand = match found {
+        Ok(hand) => hand,
+        Err(e) => {
+            // no thumb: the whole arm one chain ending in a mitten
+            specs.push(part_from_trace(
+                skin,
+                &name,
+                &tr,
+                ARM_OFFSET * h,
+                o.arm_sections,
+                true,
+                o,
+                0.0,
+            )?);
+            arms.thumbless.push(format!("{name}: {e}"));
+            return Ok(());
+        }
+    };
+    let s_end = tr[hand.split].s - WRIST_GAP * h;
+    let arm: Vec<TraceSample> = tr.iter().take_while(|t| t.s <= s_end).cloned().collect();
+    let last = arm.last().ok_or_else(|| BodyError::LayoutNotFound {
+        what: "a wrist",
+        detail: format!("{name}: the thumb separates at the start of the arm's trace"),
+    })?;
+    let phase = phase_towards(last, hand.track[0].0, o)?;
+    let idx = arm_picks(&tr, arm.len(), ARM_OFFSET * h, o.arm_sections, &name)?;
+    specs.push(part_from_picks(skin, &name, &tr, &idx, false, o, phase)?);
+    hand_specs(t, o, side, name, hand, arms)
+}
+
+/// The hand (palm and fingers, a mitten) and the thumb of `side` past the
+/// arm `arm`'s wrist, and the wrist transition joining them to the arm.
+fn hand_specs(
+    t: &Tracing,
+    o: &ClosedOptions,
+    side: &str,
+    arm: String,
+    hand: Hand,
+    arms: &mut Arms,
+) -> Result<(), BodyError> {
+    let (skin, h) = (t.skin, t.h);
+    let (palm, thumb) = (format!("hand_{side}"), format!("thumb_{side}"));
+    arms.hand_specs.push(part_from_trace(
         skin,
-        "head",
-        &tr,
-        0.0,
-        o.head_sections,
+        &palm,
+        &hand.palm,
+        PALM_GAP * h,
+        o.hand_sections,
         true,
         o,
         0.0,
     )?);
-    specs.extend(hand_specs);
-    let mut transitions = transitions(skin, &lay, &specs)?;
-    transitions.extend(wrists);
-    let (transitions, model, pairs) =
-        shoulder_cuts(skin, &specs, transitions, h, MAX_MAX_REL, o.resolution())?;
-    let mut report = measure_with_crossings(skin, &lay, &model, &specs, &hands, &pairs);
-    report.thumbless = thumbless;
-    Ok(ClosedBody {
-        model,
-        specs,
-        transitions,
-        report,
-    })
+    arms.hand_specs.push(part_from_trace(
+        skin,
+        &thumb,
+        &hand.thumb,
+        0.0,
+        o.thumb_sections,
+        true,
+        o,
+        0.0,
+    )?);
+    arms.wrists.push(TransitionSpec {
+        name: format!("wrist_{side}"),
+        parent: arm,
+        parent_end: End::End,
+        children: vec![palm, thumb],
+        seam_apex: vec![hand.apex],
+        cut_angles: vec![(THUMB_ARC_SHARE * std::f64::consts::PI * hand.thumb_share)
+            .clamp(THUMB_ARC_MIN, THUMB_ARC_MAX)],
+        tangent_scale: WRIST_TANGENT_SCALE,
+        continuity: Default::default(),
+    });
+    arms.hands
+        .push((hand, arms.wrists[arms.wrists.len() - 1].cut_angles[0]));
+    Ok(())
+}
+
+/// The head: from the neck up to the crown.
+fn head_spec(t: &Tracing, lay: &Layout, o: &ClosedOptions) -> Result<PartSpec, BodyError> {
+    let (skin, h) = (t.skin, t.h);
+    let yn = lay.neck + NECK_GAP * h;
+    let (c, r) = t.centre_at(yn, 0.0)?;
+    let head_trace = TraceOptions {
+        jump: f64::INFINITY,
+        ..t.straight(h, false)
+    };
+    let tr = trace(skin, c, [0.0, 1.0, 0.0], r, head_trace)?;
+    part_from_trace(skin, "head", &tr, 0.0, o.head_sections, true, o, 0.0)
 }

@@ -101,40 +101,9 @@ fn not_found(detail: String) -> BodyError {
 /// Finds the hand at the end of an arm trace `arm` (mitten sections, step
 /// `step`, body height `h`).
 pub fn find_hand(m: &Mesh, arm: &[TraceSample], h: f64, step: f64) -> Result<Hand, BodyError> {
-    let s_last = arm.last().map_or(0.0, |t| t.s);
-    let captured = |t: &TraceSample| -> Vec<Loop2> {
-        loops_in_plane(m, &t.frame)
-            .into_iter()
-            .filter(|l| l.centroid[0].hypot(l.centroid[1]) <= CAPTURE * t.radius)
-            .filter(|l| l.area >= MIN_AREA * t.radius * t.radius)
-            .collect()
-    };
-    let mut found = None;
-    for (k, t) in arm.iter().enumerate() {
-        if t.s < 0.5 * s_last {
-            continue;
-        }
-        let ls = captured(t);
-        if ls.len() >= 2 {
-            found = Some((k, ls));
-            break;
-        }
-    }
-    let (split, ls) = found.ok_or_else(|| {
-        not_found(format!(
-            "no plane of the arm trace (length {s_last:.3}) past its middle cuts two loops"
-        ))
-    })?;
+    let (split, ls) = split_plane(m, arm)?;
     let f = &arm[split].frame;
-    let big = (0..ls.len())
-        .max_by(|&a, &b| ls[a].area.total_cmp(&ls[b].area))
-        .unwrap_or(0);
-    let cd =
-        |a: &Loop2, b: &Loop2| (a.centroid[0] - b.centroid[0]).hypot(a.centroid[1] - b.centroid[1]);
-    let ti = (0..ls.len())
-        .filter(|&i| i != big)
-        .max_by(|&a, &b| cd(&ls[a], &ls[big]).total_cmp(&cd(&ls[b], &ls[big])))
-        .ok_or_else(|| not_found("one loop at the split".into()))?;
+    let (ti, big) = thumb_and_palm(&ls)?;
     let (thumb0, palm0) = (&ls[ti], &ls[big]);
     let thumb_share = perimeter(thumb0) / (perimeter(thumb0) + perimeter(palm0));
     let (p, q, _) = closest_pair(thumb0, palm0);
@@ -143,60 +112,8 @@ pub fn find_hand(m: &Mesh, arm: &[TraceSample], h: f64, step: f64) -> Result<Han
         f.place(0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])),
         scale(arm_dir, 0.5 * step),
     );
-    // follow the thumb's loop through the arm planes, with the web points
-    let mut track = vec![(
-        f.place(thumb0.centroid[0], thumb0.centroid[1]),
-        thumb0.radius,
-    )];
-    let mut web = Vec::new();
-    for t in arm.iter().skip(split + 1) {
-        let (prev, r) = *track.last().unwrap_or(&([0.0; 3], 0.0));
-        let ls = loops_in_plane(m, &t.frame);
-        let place = |l: &Loop2| t.frame.place(l.centroid[0], l.centroid[1]);
-        let Some(i) = (0..ls.len())
-            .filter(|&i| dist(place(&ls[i]), prev) <= 2.0 * r)
-            .min_by(|&a, &b| dist(place(&ls[a]), prev).total_cmp(&dist(place(&ls[b]), prev)))
-        else {
-            break;
-        };
-        let other = (0..ls.len())
-            .filter(|&j| j != i && ls[j].area >= MIN_AREA * t.radius * t.radius)
-            .map(|j| closest_pair(&ls[i], &ls[j]))
-            .min_by(|a, b| a.2.total_cmp(&b.2));
-        if let Some((p, q, _)) = other {
-            web.push(t.frame.place(0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])));
-        }
-        track.push((place(&ls[i]), ls[i].radius));
-    }
-    let dir = if track.len() >= 2 {
-        unit(sub(track[track.len() - 1].0, track[0].0))
-    } else {
-        arm_dir
-    };
-    let (c0, r0) = track[0];
-    let thumb = super::layout::trace(
-        m,
-        c0,
-        dir,
-        r0,
-        TraceOptions {
-            step: THUMB_STEP * step,
-            max_len: 0.1 * h,
-            follow: true,
-            hull: false,
-            skip: 0.03 * h,
-            jump: JUMP,
-        },
-    )?;
-    if thumb.len() < 4 {
-        return Err(not_found(format!(
-            "the thumb's trace from ({:.3}, {:.3}, {:.3}) found {} sections",
-            c0[0],
-            c0[1],
-            c0[2],
-            thumb.len()
-        )));
-    }
+    let (track, web) = follow_thumb(m, arm, split, thumb0);
+    let thumb = thumb_trace(m, &track, arm_dir, h, step)?;
     let near_thumb = |p: [f64; 3]| {
         track
             .iter()
@@ -231,6 +148,134 @@ pub fn find_hand(m: &Mesh, arm: &[TraceSample], h: f64, step: f64) -> Result<Han
         web,
         thumb_share,
     })
+}
+
+/// The split: the first plane of `arm` past its middle cutting two
+/// captured loops (near the plane's centre, not tiny), its index and its
+/// captured loops.
+fn split_plane(m: &Mesh, arm: &[TraceSample]) -> Result<(usize, Vec<Loop2>), BodyError> {
+    let s_last = arm.last().map_or(0.0, |t| t.s);
+    let captured = |t: &TraceSample| -> Vec<Loop2> {
+        loops_in_plane(m, &t.frame)
+            .into_iter()
+            .filter(|l| l.centroid[0].hypot(l.centroid[1]) <= CAPTURE * t.radius)
+            .filter(|l| l.area >= MIN_AREA * t.radius * t.radius)
+            .collect()
+    };
+    let mut found = None;
+    for (k, t) in arm.iter().enumerate() {
+        if t.s < 0.5 * s_last {
+            continue;
+        }
+        let ls = captured(t);
+        if ls.len() >= 2 {
+            found = Some((k, ls));
+            break;
+        }
+    }
+    found.ok_or_else(|| {
+        not_found(format!(
+            "no plane of the arm trace (length {s_last:.3}) past its middle cuts two loops"
+        ))
+    })
+}
+
+/// The thumb's and the palm's loops among the split's `ls`: the palm's the
+/// largest, the thumb's the one farthest from it.
+fn thumb_and_palm(ls: &[Loop2]) -> Result<(usize, usize), BodyError> {
+    let big = (0..ls.len())
+        .max_by(|&a, &b| ls[a].area.total_cmp(&ls[b].area))
+        .unwrap_or(0);
+    let cd =
+        |a: &Loop2, b: &Loop2| (a.centroid[0] - b.centroid[0]).hypot(a.centroid[1] - b.centroid[1]);
+    let ti = (0..ls.len())
+        .filter(|&i| i != big)
+        .max_by(|&a, &b| cd(&ls[a], &ls[big]).total_cmp(&cd(&ls[b], &ls[big])))
+        .ok_or_else(|| not_found("one loop at the split".into()))?;
+    Ok((ti, big))
+}
+
+/// The thumb's loops in successive arm planes: centroid (model
+/// coordinates) and radius.
+type Track = Vec<([f64; 3], f64)>;
+
+/// The thumb's loop `thumb0` at the split followed through the next arm
+/// planes (nearest centroid within twice its radius): the track (centroid,
+/// radius) and the web points between it and its nearest other loop.
+fn follow_thumb(
+    m: &Mesh,
+    arm: &[TraceSample],
+    split: usize,
+    thumb0: &Loop2,
+) -> (Track, Vec<[f64; 3]>) {
+    let f = &arm[split].frame;
+    let mut track = vec![(
+        f.place(thumb0.centroid[0], thumb0.centroid[1]),
+        thumb0.radius,
+    )];
+    let mut web = Vec::new();
+    for t in arm.iter().skip(split + 1) {
+        let (prev, r) = *track.last().unwrap_or(&([0.0; 3], 0.0));
+        let ls = loops_in_plane(m, &t.frame);
+        let place = |l: &Loop2| t.frame.place(l.centroid[0], l.centroid[1]);
+        let Some(i) = (0..ls.len())
+            .filter(|&i| dist(place(&ls[i]), prev) <= 2.0 * r)
+            .min_by(|&a, &b| dist(place(&ls[a]), prev).total_cmp(&dist(place(&ls[b]), prev)))
+        else {
+            break;
+        };
+        let other = (0..ls.len())
+            .filter(|&j| j != i && ls[j].area >= MIN_AREA * t.radius * t.radius)
+            .map(|j| closest_pair(&ls[i], &ls[j]))
+            .min_by(|a, b| a.2.total_cmp(&b.2));
+        if let Some((p, q, _)) = other {
+            web.push(t.frame.place(0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])));
+        }
+        track.push((place(&ls[i]), ls[i].radius));
+    }
+    (track, web)
+}
+
+/// The thumb traced from the track's start along the track's direction
+/// (the arm's, `arm_dir`, for a track of one loop); refuses fewer than
+/// four sections.
+fn thumb_trace(
+    m: &Mesh,
+    track: &[([f64; 3], f64)],
+    arm_dir: [f64; 3],
+    h: f64,
+    step: f64,
+) -> Result<Vec<TraceSample>, BodyError> {
+    let dir = if track.len() >= 2 {
+        unit(sub(track[track.len() - 1].0, track[0].0))
+    } else {
+        arm_dir
+    };
+    let (c0, r0) = track[0];
+    let thumb = super::layout::trace(
+        m,
+        c0,
+        dir,
+        r0,
+        TraceOptions {
+            step: THUMB_STEP * step,
+            max_len: 0.1 * h,
+            follow: true,
+            hull: false,
+            skip: 0.03 * h,
+            jump: JUMP,
+        },
+    )?;
+    if thumb.len() < 4 {
+        return Err(not_found(format!(
+            "the thumb's trace from ({:.3}, {:.3}, {:.3}) found {} sections",
+            c0[0],
+            c0[1],
+            c0[2],
+            thumb.len()
+        )));
+    }
+    Ok(thumb)
 }
 
 /// The skin vertices of the thumb: near a section of the thumb's trace

@@ -149,6 +149,27 @@ fn central(loops: &[Loop2]) -> Option<&Loop2> {
 
 /// Finds the [`Layout`] of a standing humanoid mesh.
 pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
+    let (lo, hi, h) = standing_extent(m)?;
+    let step = SCAN_STEP * h;
+    let crotch = find_crotch(m, lo, h, step)?;
+    check_legs(m, crotch, h)?;
+    let armpit = find_armpit(m, crotch, hi, h, step)?;
+    let (arm_left, arm_right) = free_arms(m, armpit, h)?;
+    let neck = find_neck(m, armpit, hi, step)?;
+    Ok(Layout {
+        sole: lo[1],
+        crown: hi[1],
+        crotch,
+        armpit,
+        neck,
+        arm_left,
+        arm_right,
+    })
+}
+
+/// The bounding box of `m` and its height; refuses an empty mesh, one
+/// not finite and one whose y extent is not the largest.
+fn standing_extent(m: &Mesh) -> Result<([f64; 3], [f64; 3], f64), BodyError> {
     if m.positions.is_empty() || m.triangles.is_empty() {
         return Err(layout_err("a body", "the mesh is empty"));
     }
@@ -167,8 +188,12 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
             ),
         ));
     }
-    let step = SCAN_STEP * h;
-    // crotch
+    Ok((lo, hi, h))
+}
+
+/// The crotch: the first horizontal slice from a quarter of the height up
+/// whose central loop spans x = 0.
+fn find_crotch(m: &Mesh, lo: [f64; 3], h: f64, step: f64) -> Result<f64, BodyError> {
     let mut y = lo[1] + 0.25 * h;
     let mut crotch = None;
     while y < lo[1] + 0.75 * h {
@@ -181,12 +206,17 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
         }
         y += step;
     }
-    let crotch = crotch.ok_or_else(|| {
+    crotch.ok_or_else(|| {
         layout_err(
             "the crotch",
             "no horizontal slice between 25 % and 75 % of the height has a loop around x = 0 (legs do not merge, or the body is not centred on x = 0)",
         )
-    })?;
+    })
+}
+
+/// Refuses a body without a loop on each side of x = 0 just below the
+/// crotch.
+fn check_legs(m: &Mesh, crotch: f64, h: f64) -> Result<(), BodyError> {
     let below = horizontal(m, crotch - 0.02 * h)?;
     let legs = (
         below.iter().any(|l| l.x_range.1 < 0.0),
@@ -200,7 +230,12 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
             ),
         ));
     }
-    // armpit
+    Ok(())
+}
+
+/// The armpits: a step below the first slice above the crotch where the
+/// torso's loop widens suddenly ([`ARMPIT_WIDENING`]).
+fn find_armpit(m: &Mesh, crotch: f64, hi: [f64; 3], h: f64, step: f64) -> Result<f64, BodyError> {
     let mut y = crotch + 2.0 * step;
     let mut prev_w = f64::NAN;
     let mut armpit = None;
@@ -221,13 +256,17 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
         prev_w = w;
         y += step;
     }
-    let armpit = armpit.ok_or_else(|| {
+    armpit.ok_or_else(|| {
         layout_err(
             "the armpits",
             "the torso slice never widens suddenly above the crotch (arms against the body, or no arms)",
         )
-    })?;
-    // free arms just below the armpit
+    })
+}
+
+/// The centroids of the free arm loops just below the armpits (left,
+/// right): on each side the largest loop apart from the torso's.
+fn free_arms(m: &Mesh, armpit: f64, h: f64) -> Result<([f64; 3], [f64; 3]), BodyError> {
     let ya = armpit - 0.02 * h;
     let ls = horizontal(m, ya)?;
     let torso = central(&ls)
@@ -251,7 +290,12 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
             format!("below the armpits (y = {ya:.3}) there is no arm loop apart from the torso on each side (arms against the body?)"),
         ));
     };
-    // neck
+    Ok((arm_left, arm_right))
+}
+
+/// The neck: the first slice above the armpits whose central loop is
+/// narrower than [`NECK_NARROWING`] times the widest below it.
+fn find_neck(m: &Mesh, armpit: f64, hi: [f64; 3], step: f64) -> Result<f64, BodyError> {
     let mut y = armpit + step;
     let mut widest: f64 = 0.0;
     let mut neck = None;
@@ -267,20 +311,11 @@ pub fn find_layout(m: &Mesh) -> Result<Layout, BodyError> {
         }
         y += step;
     }
-    let neck = neck.ok_or_else(|| {
+    neck.ok_or_else(|| {
         layout_err(
             "the neck",
             "no slice above the armpits narrower than the shoulders",
         )
-    })?;
-    Ok(Layout {
-        sole: lo[1],
-        crown: hi[1],
-        crotch,
-        armpit,
-        neck,
-        arm_left,
-        arm_right,
     })
 }
 

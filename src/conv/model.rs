@@ -220,16 +220,24 @@ impl Model {
             .map(|c| c.stroke.as_slice())
             .collect();
         cache.prefetch(&strokes, &self.options);
+        let (mut parent, carving) = self.operation_sets()?;
+        let mut built: Vec<BuiltComponent> = Vec::with_capacity(self.components.len());
+        for (ci, c) in self.components.iter().enumerate() {
+            let b = self.build_component(c, carving[ci], cache, &built)?;
+            built.push(b);
+        }
+        let groups = merge_groups(&mut parent, &mut built);
+        Ok(BuiltModel {
+            components: built,
+            groups,
+        })
+    }
+
+    /// The union-find forest of the operations (each joins its two
+    /// components) and which components carve.
+    fn operation_sets(&self) -> Result<(Vec<usize>, Vec<bool>), ConvError> {
         let n = self.components.len();
         let mut parent: Vec<usize> = (0..n).collect();
-        fn find(p: &mut [usize], i: usize) -> usize {
-            let mut r = i;
-            while p[r] != r {
-                r = p[r];
-            }
-            p[i] = r;
-            r
-        }
         let mut carving = vec![false; n];
         for op in &self.operations {
             let (a, b) = match op {
@@ -240,137 +248,168 @@ impl Model {
                     (t, u)
                 }
             };
-            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+            let (ra, rb) = (find_root(&mut parent, a), find_root(&mut parent, b));
             if ra != rb {
                 parent[rb.max(ra)] = ra.min(rb);
             }
         }
-        let mut built: Vec<BuiltComponent> = Vec::with_capacity(n);
-        for (ci, c) in self.components.iter().enumerate() {
-            let src = match &c.copy_of {
-                Some(name) => {
-                    let i = self.index(name)?;
-                    if self.components[i].copy_of.is_some() {
-                        return Err(ConvError::Model(format!(
-                            "{:?} copies {name:?}, itself a copy",
-                            c.name
-                        )));
-                    }
-                    &self.components[i]
-                }
-                None => c,
-            };
-            let sk = cache
-                .sketch(&src.stroke, &self.options)
-                .map_err(|e| e.in_component(&c.name))?;
-            let frame = frame(src.view);
-            let copied_depth = c
-                .copy_of
-                .as_ref()
-                .and_then(|name| built.iter().find(|b| &b.name == name))
-                .map(|b| b.depth);
-            let depth = match copied_depth.or(src.depth) {
-                Some(d) if d.is_finite() => d,
-                Some(d) => {
+        Ok((parent, carving))
+    }
+
+    /// Component `c` built after `built`: its (or its original's) sketch
+    /// placed in the world at its depth, rotated, translated, its lambda
+    /// negated when `carves`.
+    fn build_component(
+        &self,
+        c: &Component,
+        carves: bool,
+        cache: &mut SketchCache,
+        built: &[BuiltComponent],
+    ) -> Result<BuiltComponent, ConvError> {
+        let src = match &c.copy_of {
+            Some(name) => {
+                let i = self.index(name)?;
+                if self.components[i].copy_of.is_some() {
                     return Err(ConvError::Model(format!(
-                        "component {:?}: depth {d} is not finite",
-                        c.name
-                    )))
-                }
-                None => {
-                    let prev: Vec<&BuiltComponent> = built.iter().collect();
-                    depth_from_surface(&prev, frame, sk.polygon[0], self.options.threshold)
-                }
-            };
-            let to_world = |p: [f64; 3]| {
-                [0, 1, 2]
-                    .map(|k| frame[0][k] * p[0] + frame[1][k] * p[1] + frame[2][k] * (p[2] + depth))
-            };
-            let mut segs: Vec<Segment> = sk
-                .segments
-                .iter()
-                .map(|s| Segment {
-                    p: to_world(s.p),
-                    q: to_world(s.q),
-                    ..*s
-                })
-                .collect();
-            if let Some(rot) = c.rotate {
-                // a finite length: an axis of norm overflowing to infinity
-                // made `rotate` scale the component by cos(angle) instead
-                let len = crate::mesh::norm(rot.axis);
-                if !(rot.degrees.is_finite() && len.is_finite() && len > 0.0) {
-                    return Err(ConvError::Model(format!(
-                        "component {:?}: bad rotation {rot:?}",
+                        "{:?} copies {name:?}, itself a copy",
                         c.name
                     )));
                 }
-                let m = segs.len() as f64;
-                let mut cen = [0.0; 3];
-                for s in &segs {
-                    for k in 0..3 {
-                        cen[k] += 0.5 * (s.p[k] + s.q[k]) / m;
-                    }
-                }
-                let rot_pt = |p: [f64; 3]| {
-                    let v = rotate(
-                        [p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]],
-                        rot.axis,
-                        rot.degrees,
-                    );
-                    [v[0] + cen[0], v[1] + cen[1], v[2] + cen[2]]
-                };
-                for s in &mut segs {
-                    s.p = rot_pt(s.p);
-                    s.q = rot_pt(s.q);
-                }
+                &self.components[i]
             }
-            if c.translate.iter().any(|v| !v.is_finite()) {
+            None => c,
+        };
+        let sk = cache
+            .sketch(&src.stroke, &self.options)
+            .map_err(|e| e.in_component(&c.name))?;
+        let frame = frame(src.view);
+        let copied_depth = c
+            .copy_of
+            .as_ref()
+            .and_then(|name| built.iter().find(|b| &b.name == name))
+            .map(|b| b.depth);
+        let depth = match copied_depth.or(src.depth) {
+            Some(d) if d.is_finite() => d,
+            Some(d) => {
                 return Err(ConvError::Model(format!(
-                    "component {:?}: translation is not finite",
+                    "component {:?}: depth {d} is not finite",
                     c.name
-                )));
+                )))
             }
-            for s in &mut segs {
-                for k in 0..3 {
-                    s.p[k] += c.translate[k];
-                    s.q[k] += c.translate[k];
-                }
-                if carving[ci] {
-                    s.lambda = -s.lambda;
-                }
+            None => {
+                let prev: Vec<&BuiltComponent> = built.iter().collect();
+                depth_from_surface(&prev, frame, sk.polygon[0], self.options.threshold)
             }
-            let max_radius = sk.skeleton.radii.iter().copied().fold(0.0, f64::max);
-            built.push(BuiltComponent {
-                name: c.name.clone(),
-                sketch: sk,
-                frame,
-                depth,
-                segments: segs,
-                group: 0,
-                max_radius,
-            });
+        };
+        let to_world = |p: [f64; 3]| {
+            [0, 1, 2]
+                .map(|k| frame[0][k] * p[0] + frame[1][k] * p[1] + frame[2][k] * (p[2] + depth))
+        };
+        let mut segs: Vec<Segment> = sk
+            .segments
+            .iter()
+            .map(|s| Segment {
+                p: to_world(s.p),
+                q: to_world(s.q),
+                ..*s
+            })
+            .collect();
+        if let Some(rot) = c.rotate {
+            rotate_segments(c, rot, &mut segs)?;
         }
-        let mut roots: Vec<usize> = Vec::new();
-        let mut groups: Vec<Vec<usize>> = Vec::new();
-        for i in 0..n {
-            let r = find(&mut parent, i);
-            let g = match roots.iter().position(|&x| x == r) {
-                Some(g) => g,
-                None => {
-                    roots.push(r);
-                    groups.push(Vec::new());
-                    roots.len() - 1
-                }
-            };
-            groups[g].push(i);
-            built[i].group = g;
+        if c.translate.iter().any(|v| !v.is_finite()) {
+            return Err(ConvError::Model(format!(
+                "component {:?}: translation is not finite",
+                c.name
+            )));
         }
-        Ok(BuiltModel {
-            components: built,
-            groups,
+        for s in &mut segs {
+            for k in 0..3 {
+                s.p[k] += c.translate[k];
+                s.q[k] += c.translate[k];
+            }
+            if carves {
+                s.lambda = -s.lambda;
+            }
+        }
+        let max_radius = sk.skeleton.radii.iter().copied().fold(0.0, f64::max);
+        Ok(BuiltComponent {
+            name: c.name.clone(),
+            sketch: sk,
+            frame,
+            depth,
+            segments: segs,
+            group: 0,
+            max_radius,
         })
     }
+}
+
+/// The root of `i`'s set in the union-find forest `p` (`i` then points at
+/// it).
+fn find_root(p: &mut [usize], i: usize) -> usize {
+    let mut r = i;
+    while p[r] != r {
+        r = p[r];
+    }
+    p[i] = r;
+    r
+}
+
+/// Rotates component `c`'s segments by `rot` about their centre (the mean
+/// of their midpoints); refuses a rotation not finite or about a zero axis.
+fn rotate_segments(c: &Component, rot: Rotation, segs: &mut [Segment]) -> Result<(), ConvError> {
+    // a finite length: an axis of norm overflowing to infinity
+    // made `rotate` scale the component by cos(angle) instead
+    let len = crate::mesh::norm(rot.axis);
+    if !(rot.degrees.is_finite() && len.is_finite() && len > 0.0) {
+        return Err(ConvError::Model(format!(
+            "component {:?}: bad rotation {rot:?}",
+            c.name
+        )));
+    }
+    let m = segs.len() as f64;
+    let mut cen = [0.0; 3];
+    for s in segs.iter() {
+        for k in 0..3 {
+            cen[k] += 0.5 * (s.p[k] + s.q[k]) / m;
+        }
+    }
+    let rot_pt = |p: [f64; 3]| {
+        let v = rotate(
+            [p[0] - cen[0], p[1] - cen[1], p[2] - cen[2]],
+            rot.axis,
+            rot.degrees,
+        );
+        [v[0] + cen[0], v[1] + cen[1], v[2] + cen[2]]
+    };
+    for s in segs.iter_mut() {
+        s.p = rot_pt(s.p);
+        s.q = rot_pt(s.q);
+    }
+    Ok(())
+}
+
+/// The merge groups (component indices, in order of their first
+/// component) of the union-find forest `parent`; each built component gets
+/// its group's index.
+fn merge_groups(parent: &mut [usize], built: &mut [BuiltComponent]) -> Vec<Vec<usize>> {
+    let mut roots: Vec<usize> = Vec::new();
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    for i in 0..built.len() {
+        let r = find_root(parent, i);
+        let g = match roots.iter().position(|&x| x == r) {
+            Some(g) => g,
+            None => {
+                roots.push(r);
+                groups.push(Vec::new());
+                roots.len() - 1
+            }
+        };
+        groups[g].push(i);
+        built[i].group = g;
+    }
+    groups
 }
 
 /// Depth of the first surface hit along the view normal through `pt`

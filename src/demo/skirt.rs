@@ -167,80 +167,11 @@ const NU: usize = 40;
 /// Builds the skirt around `body` (y up, the body facing +z). Returns the
 /// tessellated skirt (group `"skirt"`) and its report.
 pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), SkirtError> {
-    let finite = [
-        o.waist_y,
-        o.hem_y,
-        o.ease,
-        o.flare,
-        o.rho,
-        o.eta,
-        o.lambda,
-        o.max_reach,
-    ]
-    .iter()
-    .all(|x| x.is_finite());
-    if !finite || o.hem_y >= o.waist_y || o.ease < 0.0 || o.flare < 0.0 || o.max_reach <= 0.0 {
-        return Err(SkirtError::Options(format!(
-            "need finite options with hem_y < waist_y, ease >= 0, flare >= 0, max_reach > 0 (got {o:?})"
-        )));
-    }
-    if !(8..=1024).contains(&o.ring_samples) {
-        return Err(SkirtError::Options(format!(
-            "ring_samples {} outside 8..=1024",
-            o.ring_samples
-        )));
-    }
-    // the axis: centre of the waist section's points (within reach of the
-    // bounding box's vertical centre line)
-    let (lo, hi) = body.bbox();
-    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2])];
-    let waist = section_points(body, o.waist_y, mid, o.max_reach);
-    if waist.is_empty() {
-        return Err(SkirtError::NoSection(o.waist_y));
-    }
-    let n = waist.len() as f64;
-    let c = [0, 1].map(|k| mid[k] + waist.iter().map(|p| p[k]).sum::<f64>() / n);
+    check_options(o)?;
+    let c = skirt_axis(body, o)?;
     let control_u = [0.2, 0.4, 0.6, 0.8];
-    let us = [
-        0.0,
-        control_u[0],
-        control_u[1],
-        control_u[2],
-        control_u[3],
-        1.0,
-    ];
-    let mut rings = Vec::with_capacity(6);
-    for &u in &us {
-        let y = o.waist_y + (o.hem_y - o.waist_y) * u;
-        let pts = section_points(body, y, c, o.max_reach);
-        if pts.is_empty() {
-            return Err(SkirtError::NoSection(y));
-        }
-        rings.push(ring(
-            c,
-            y,
-            &support(&pts, o.ring_samples),
-            o.ease + o.flare * u * u,
-        ));
-    }
-    let curve = |k: usize| Curve::from_polyline(&rings[k], true);
-    // keys of approach 2: [c1, c̄2, c̄3, c̄5, c̄6, c4]; c̄5 is the control
-    // curve farther from the hem (u5 < u6)
-    let a2 = Approach2 {
-        u2: control_u[0],
-        u3: control_u[1],
-        u5: control_u[2],
-        u6: control_u[3],
-        formula: DiffFormula::ThreePoint,
-    };
-    let curves = BoundaryCurves::approach2(
-        curve(0)?,
-        [curve(1)?, curve(2)?, curve(3)?, curve(4)?],
-        curve(5)?,
-        &a2,
-    )?;
-    let basis = Basis::new(Params::new(o.rho, o.eta, o.lambda))?;
-    let surface = Ode6Surface::new(basis, curves);
+    let rings = skirt_rings(body, o, c, control_u)?;
+    let surface = skirt_surface(&rings, control_u, o)?;
     let ode_numbers = surface.scalars();
     let mut mesh = tessellate(
         &surface,
@@ -250,29 +181,8 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
         },
     );
     mesh.set_single_group("skirt");
-    // a skirt's outside faces away from the axis
-    let p0 = mesh.positions[mesh.triangles[0][0] as usize];
-    let nrm = mesh.face_normal_area(0);
-    if dot(nrm, [p0[0] - c[0], 0.0, p0[2] - c[1]]) < 0.0 {
-        for t in &mut mesh.triangles {
-            t.swap(1, 2);
-        }
-    }
-    // clearance against the body
-    let bvh = TriangleBvh::new(body);
-    let mut min_clearance = f64::INFINITY;
-    let mut inside = 0usize;
-    for p in &mesh.positions {
-        if let Some((q, d, t)) = bvh.closest(*p) {
-            let s = if dot(sub(*p, q), body.face_normal_area(t)) < 0.0 {
-                inside += 1;
-                -d
-            } else {
-                d
-            };
-            min_clearance = min_clearance.min(s);
-        }
-    }
+    orient_outwards(&mut mesh, c);
+    let (min_clearance, inside) = clearance(body, &mesh);
     // tessellation column 2j is ring sample j (nv = 2 ring_samples)
     let nv = 2 * o.ring_samples;
     let ring_error = |row: usize, k: usize| {
@@ -296,4 +206,140 @@ pub fn skirt(body: &Mesh, o: &SkirtOptions) -> Result<(Mesh, SkirtReport), Skirt
     };
     mesh.validate().map_err(SkirtError::Tessellation)?;
     Ok((mesh, report))
+}
+
+/// Refuses options not finite, a hem not below the waist, a negative ease
+/// or flare, a reach not positive, and ring samples outside 8..=1024.
+fn check_options(o: &SkirtOptions) -> Result<(), SkirtError> {
+    let finite = [
+        o.waist_y,
+        o.hem_y,
+        o.ease,
+        o.flare,
+        o.rho,
+        o.eta,
+        o.lambda,
+        o.max_reach,
+    ]
+    .iter()
+    .all(|x| x.is_finite());
+    if !finite || o.hem_y >= o.waist_y || o.ease < 0.0 || o.flare < 0.0 || o.max_reach <= 0.0 {
+        return Err(SkirtError::Options(format!(
+            "need finite options with hem_y < waist_y, ease >= 0, flare >= 0, max_reach > 0 (got {o:?})"
+        )));
+    }
+    if !(8..=1024).contains(&o.ring_samples) {
+        return Err(SkirtError::Options(format!(
+            "ring_samples {} outside 8..=1024",
+            o.ring_samples
+        )));
+    }
+    Ok(())
+}
+
+/// The skirt's axis (x, z): the centre of the waist section's points
+/// (within reach of the bounding box's vertical centre line).
+fn skirt_axis(body: &Mesh, o: &SkirtOptions) -> Result<[f64; 2], SkirtError> {
+    let (lo, hi) = body.bbox();
+    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[2] + hi[2])];
+    let waist = section_points(body, o.waist_y, mid, o.max_reach);
+    if waist.is_empty() {
+        return Err(SkirtError::NoSection(o.waist_y));
+    }
+    let n = waist.len() as f64;
+    Ok([0, 1].map(|k| mid[k] + waist.iter().map(|p| p[k]).sum::<f64>() / n))
+}
+
+/// The six rings around the body about axis `c`: at the waist, at the
+/// control parameters `control_u` and at the hem, each the body's support
+/// plus the ease and the flare at its height.
+fn skirt_rings(
+    body: &Mesh,
+    o: &SkirtOptions,
+    c: [f64; 2],
+    control_u: [f64; 4],
+) -> Result<Vec<Vec<[f64; 3]>>, SkirtError> {
+    let us = [
+        0.0,
+        control_u[0],
+        control_u[1],
+        control_u[2],
+        control_u[3],
+        1.0,
+    ];
+    let mut rings = Vec::with_capacity(6);
+    for &u in &us {
+        let y = o.waist_y + (o.hem_y - o.waist_y) * u;
+        let pts = section_points(body, y, c, o.max_reach);
+        if pts.is_empty() {
+            return Err(SkirtError::NoSection(y));
+        }
+        rings.push(ring(
+            c,
+            y,
+            &support(&pts, o.ring_samples),
+            o.ease + o.flare * u * u,
+        ));
+    }
+    Ok(rings)
+}
+
+/// The ODE6 surface through the rings: waist and hem the boundary curves,
+/// the four control rings the keys of approach 2.
+fn skirt_surface(
+    rings: &[Vec<[f64; 3]>],
+    control_u: [f64; 4],
+    o: &SkirtOptions,
+) -> Result<Ode6Surface, SkirtError> {
+    let curve = |k: usize| Curve::from_polyline(&rings[k], true);
+    // keys of approach 2: [c1, c̄2, c̄3, c̄5, c̄6, c4]; c̄5 is the control
+    // curve farther from the hem (u5 < u6)
+    let a2 = Approach2 {
+        u2: control_u[0],
+        u3: control_u[1],
+        u5: control_u[2],
+        u6: control_u[3],
+        formula: DiffFormula::ThreePoint,
+    };
+    let curves = BoundaryCurves::approach2(
+        curve(0)?,
+        [curve(1)?, curve(2)?, curve(3)?, curve(4)?],
+        curve(5)?,
+        &a2,
+    )?;
+    let basis = Basis::new(Params::new(o.rho, o.eta, o.lambda))?;
+    Ok(Ode6Surface::new(basis, curves))
+}
+
+/// Turns the triangles so the skirt's outside faces away from the axis
+/// `c` (judged at the first triangle).
+fn orient_outwards(mesh: &mut Mesh, c: [f64; 2]) {
+    let p0 = mesh.positions[mesh.triangles[0][0] as usize];
+    let nrm = mesh.face_normal_area(0);
+    if dot(nrm, [p0[0] - c[0], 0.0, p0[2] - c[1]]) < 0.0 {
+        for t in &mut mesh.triangles {
+            t.swap(1, 2);
+        }
+    }
+}
+
+/// The clearance against the body: the smallest signed distance of a
+/// skirt vertex from it (negative inside) and the number of vertices
+/// inside.
+fn clearance(body: &Mesh, mesh: &Mesh) -> (f64, usize) {
+    let bvh = TriangleBvh::new(body);
+    let mut min_clearance = f64::INFINITY;
+    let mut inside = 0usize;
+    for p in &mesh.positions {
+        if let Some((q, d, t)) = bvh.closest(*p) {
+            let s = if dot(sub(*p, q), body.face_normal_area(t)) < 0.0 {
+                inside += 1;
+                -d
+            } else {
+                d
+            };
+            min_clearance = min_clearance.min(s);
+        }
+    }
+    (min_clearance, inside)
 }

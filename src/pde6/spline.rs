@@ -42,6 +42,7 @@ impl Chain {
         let tail = Chain::method1_window(a, &sections[m - 6..])?;
         let k_start = head.global_section(sections[0].u, 2);
         let k_end = tail.global_section(sections[m - 1].u, 2);
+        let ends = [k_start, k_end];
         let geo: Vec<(f64, f64, [f64; 4])> = (0..p_count)
             .map(|p| {
                 let w = &sections[3 * p..3 * p + 4];
@@ -49,52 +50,12 @@ impl Chain {
                 (o, l, [0.0, (w[1].u - o) / l, (w[2].u - o) / l, 1.0])
             })
             .collect();
-        let size = 6 * p_count;
         let mut coefs: Vec<Vec<HarmonicCoef>> = vec![Vec::with_capacity(big_n + 1); p_count];
         let mut bases = Vec::with_capacity(big_n + 1);
         let mut worst_condition: f64 = 0.0;
         for n in 0..=big_n {
             let b = ModeBasis::new(a, n);
-            let row = |c: Condition| -> [f64; 6] {
-                let (u, d) = match c {
-                    Condition::Value(u) => (u, 0),
-                    Condition::Slope(u) => (u, 1),
-                    Condition::Curvature(u) => (u, 2),
-                };
-                b.jet2(u)[d]
-            };
-            let mut mat = DMatrix::<f64>::zeros(size, size);
-            let mut r = 0;
-            for (p, (_, _, nodes)) in geo.iter().enumerate() {
-                for &x in nodes {
-                    mat.view_mut((r, 6 * p), (1, 6))
-                        .copy_from_slice(&row(Condition::Value(x)));
-                    r += 1;
-                }
-            }
-            for p in 0..p_count - 1 {
-                let (l0, l1) = (geo[p].1, geo[p + 1].1);
-                for d in 1..=2 {
-                    let (ca, cb) = if d == 1 {
-                        (Condition::Slope(1.0), Condition::Slope(0.0))
-                    } else {
-                        (Condition::Curvature(1.0), Condition::Curvature(0.0))
-                    };
-                    let (ra, rb) = (row(ca), row(cb));
-                    for j in 0..6 {
-                        mat[(r, 6 * p + j)] = ra[j] / l0.powi(d);
-                        mat[(r, 6 * (p + 1) + j)] = -rb[j] / l1.powi(d);
-                    }
-                    r += 1;
-                }
-            }
-            let rs = row(Condition::Curvature(0.0));
-            let re = row(Condition::Curvature(1.0));
-            let (l_first, l_last) = (geo[0].1, geo[p_count - 1].1);
-            for j in 0..6 {
-                mat[(r, j)] = rs[j] / (l_first * l_first);
-                mat[(r + 1, 6 * (p_count - 1) + j)] = re[j] / (l_last * l_last);
-            }
+            let mat = global_matrix(&b, &geo);
             let lu = mat.clone().full_piv_lu();
             let inv = lu.try_inverse().ok_or(Pde6Error::Singular { q: b.q })?;
             let condition = norm1(&mat) * norm1(&inv);
@@ -102,41 +63,7 @@ impl Chain {
                 return Err(Pde6Error::IllConditioned { q: b.q, condition });
             }
             worst_condition = worst_condition.max(condition);
-            let mut hc: Vec<HarmonicCoef> = vec![[[[0.0; 6]; 2]; 3]; p_count];
-            for k in 0..3 {
-                for cs in 0..2 {
-                    if n == 0 && cs == 1 {
-                        continue;
-                    }
-                    let pick = |f: &Fourier3| -> f64 {
-                        let (x, y) = f.harmonic(n, k);
-                        if cs == 0 {
-                            x
-                        } else {
-                            y
-                        }
-                    };
-                    let mut rhs = DVector::<f64>::zeros(size);
-                    let mut r = 0;
-                    for p in 0..p_count {
-                        for i in 0..4 {
-                            rhs[r] = pick(&sections[3 * p + i].curve);
-                            r += 1;
-                        }
-                    }
-                    r += 2 * (p_count - 1);
-                    rhs[r] = pick(&k_start);
-                    rhs[r + 1] = pick(&k_end);
-                    let mut x = &inv * &rhs;
-                    let res = &rhs - &mat * &x;
-                    x += &inv * res;
-                    for (p, hp) in hc.iter_mut().enumerate() {
-                        for j in 0..6 {
-                            hp[k][cs][j] = x[6 * p + j];
-                        }
-                    }
-                }
-            }
+            let hc = harmonic_coefs(n, sections, &ends, &mat, &inv);
             for (p, hp) in hc.into_iter().enumerate() {
                 coefs[p].push(hp);
             }
@@ -163,6 +90,109 @@ impl Chain {
             pieces,
         })
     }
+}
+
+/// A piece's origin, length and its four sections' local parameters.
+type Geo = (f64, f64, [f64; 4]);
+
+/// The global system's matrix for mode basis `b`: the value at each
+/// piece's four sections, C1 and C2 at the interior joins, the curvature
+/// at both ends.
+fn global_matrix(b: &ModeBasis, geo: &[Geo]) -> DMatrix<f64> {
+    let p_count = geo.len();
+    let size = 6 * p_count;
+    let row = |c: Condition| -> [f64; 6] {
+        let (u, d) = match c {
+            Condition::Value(u) => (u, 0),
+            Condition::Slope(u) => (u, 1),
+            Condition::Curvature(u) => (u, 2),
+        };
+        b.jet2(u)[d]
+    };
+    let mut mat = DMatrix::<f64>::zeros(size, size);
+    let mut r = 0;
+    for (p, (_, _, nodes)) in geo.iter().enumerate() {
+        for &x in nodes {
+            mat.view_mut((r, 6 * p), (1, 6))
+                .copy_from_slice(&row(Condition::Value(x)));
+            r += 1;
+        }
+    }
+    for p in 0..p_count - 1 {
+        let (l0, l1) = (geo[p].1, geo[p + 1].1);
+        for d in 1..=2 {
+            let (ca, cb) = if d == 1 {
+                (Condition::Slope(1.0), Condition::Slope(0.0))
+            } else {
+                (Condition::Curvature(1.0), Condition::Curvature(0.0))
+            };
+            let (ra, rb) = (row(ca), row(cb));
+            for j in 0..6 {
+                mat[(r, 6 * p + j)] = ra[j] / l0.powi(d);
+                mat[(r, 6 * (p + 1) + j)] = -rb[j] / l1.powi(d);
+            }
+            r += 1;
+        }
+    }
+    let rs = row(Condition::Curvature(0.0));
+    let re = row(Condition::Curvature(1.0));
+    let (l_first, l_last) = (geo[0].1, geo[p_count - 1].1);
+    for j in 0..6 {
+        mat[(r, j)] = rs[j] / (l_first * l_first);
+        mat[(r + 1, 6 * (p_count - 1) + j)] = re[j] / (l_last * l_last);
+    }
+    mat
+}
+
+/// Every piece's coefficients of harmonic `n` (each coordinate, cosine and
+/// sine): the system `mat` (inverse `inv`) solved for the sections' and the
+/// end curvatures' (`ends`) coefficients, with one step of refinement.
+fn harmonic_coefs(
+    n: usize,
+    sections: &[Section],
+    ends: &[Fourier3; 2],
+    mat: &DMatrix<f64>,
+    inv: &DMatrix<f64>,
+) -> Vec<HarmonicCoef> {
+    let size = mat.nrows();
+    let p_count = size / 6;
+    let [k_start, k_end] = ends;
+    let mut hc: Vec<HarmonicCoef> = vec![[[[0.0; 6]; 2]; 3]; p_count];
+    for k in 0..3 {
+        for cs in 0..2 {
+            if n == 0 && cs == 1 {
+                continue;
+            }
+            let pick = |f: &Fourier3| -> f64 {
+                let (x, y) = f.harmonic(n, k);
+                if cs == 0 {
+                    x
+                } else {
+                    y
+                }
+            };
+            let mut rhs = DVector::<f64>::zeros(size);
+            let mut r = 0;
+            for p in 0..p_count {
+                for i in 0..4 {
+                    rhs[r] = pick(&sections[3 * p + i].curve);
+                    r += 1;
+                }
+            }
+            r += 2 * (p_count - 1);
+            rhs[r] = pick(k_start);
+            rhs[r + 1] = pick(k_end);
+            let mut x = inv * &rhs;
+            let res = &rhs - mat * &x;
+            x += inv * res;
+            for (p, hp) in hc.iter_mut().enumerate() {
+                for j in 0..6 {
+                    hp[k][cs][j] = x[6 * p + j];
+                }
+            }
+        }
+    }
+    hc
 }
 
 fn norm1(m: &DMatrix<f64>) -> f64 {

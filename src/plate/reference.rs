@@ -49,6 +49,45 @@ pub fn solve_clamped(
     load: &[f64],
     rigidity: f64,
 ) -> Result<PlateSolution, PlateError> {
+    check_inputs(points, triangles, load, rigidity)?;
+    let nv = points.len();
+    let edges = edge_table(triangles, nv)?;
+    let (map, unknowns) = dof_map(triangles, &edges, nv);
+    let mut trip: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity(triangles.len() * 36);
+    let mut rhs = vec![0.0; unknowns];
+    for t in triangles {
+        let e = morley_element(points, &edges, t)?;
+        let qbar = (load[t[0]] + load[t[1]] + load[t[2]]) / 3.0;
+        let area = e.area;
+        for i in 0..6 {
+            let gi = map[e.dofs[i]];
+            if gi == usize::MAX {
+                continue;
+            }
+            rhs[gi] += qbar * e.fe[i];
+            for j in 0..6 {
+                let gj = map[e.dofs[j]];
+                if gj == usize::MAX {
+                    continue;
+                }
+                let (hi, hj) = (e.hess[i], e.hess[j]);
+                let kij =
+                    rigidity * area.abs() * (hi[0] * hj[0] + 2.0 * hi[1] * hj[1] + hi[2] * hj[2]);
+                trip.push(Triplet::new(gi, gj, kij));
+            }
+        }
+    }
+    solve_system(&trip, &rhs, &map, nv, unknowns)
+}
+
+/// Refuses a rigidity not finite and positive, no triangles, and a load
+/// not one finite value per point.
+fn check_inputs(
+    points: &[[f64; 2]],
+    triangles: &[[usize; 3]],
+    load: &[f64],
+    rigidity: f64,
+) -> Result<(), PlateError> {
     if !(rigidity.is_finite() && rigidity > 0.0) {
         return Err(PlateError::Parameter {
             name: "D",
@@ -66,9 +105,17 @@ pub fn solve_clamped(
             load.len()
         )));
     }
-    let nv = points.len();
+    Ok(())
+}
+
+/// Edges (low, high vertex index) -> (id, in order of first use; number
+/// of triangles using the edge).
+type Edges = HashMap<(usize, usize), (usize, usize)>;
+
+/// The [`Edges`] of `triangles`; refuses a vertex index out of `0..nv`.
+fn edge_table(triangles: &[[usize; 3]], nv: usize) -> Result<Edges, PlateError> {
     // edges, their use counts and global orientation (low -> high index)
-    let mut edges: HashMap<(usize, usize), (usize, usize)> = HashMap::new(); // key -> (id, count)
+    let mut edges: Edges = HashMap::new(); // key -> (id, count)
     for t in triangles {
         for k in 0..3 {
             if t[k] >= nv {
@@ -79,6 +126,13 @@ pub fn solve_clamped(
             e.1 += 1;
         }
     }
+    Ok(edges)
+}
+
+/// The unknown of each degree of freedom (vertex values, then edge slopes
+/// by edge id; `usize::MAX` where clamped: boundary vertices and edges and
+/// vertices in no triangle) and the number of unknowns.
+fn dof_map(triangles: &[[usize; 3]], edges: &Edges, nv: usize) -> (Vec<usize>, usize) {
     let ne = edges.len();
     // vertices in no triangle carry no stiffness: fix them (w = 0)
     let mut fixed = vec![true; nv];
@@ -88,7 +142,7 @@ pub fn solve_clamped(
         }
     }
     fixed.resize(nv + ne, false);
-    for (&(a, b), &(id, count)) in &edges {
+    for (&(a, b), &(id, count)) in edges {
         if count == 1 {
             fixed[a] = true;
             fixed[b] = true;
@@ -103,98 +157,116 @@ pub fn solve_clamped(
             unknowns += 1;
         }
     }
-    let mut trip: Vec<Triplet<usize, usize, f64>> = Vec::with_capacity(triangles.len() * 36);
-    let mut rhs = vec![0.0; unknowns];
-    for t in triangles {
-        let p = [points[t[0]], points[t[1]], points[t[2]]];
-        let c = [
-            (p[0][0] + p[1][0] + p[2][0]) / 3.0,
-            (p[0][1] + p[1][1] + p[2][1]) / 3.0,
+    (map, unknowns)
+}
+
+/// One Morley element.
+struct Morley {
+    /// Signed area.
+    area: f64,
+    /// Degrees of freedom: the three vertices, then `nv +` the three edges'
+    /// ids.
+    dofs: [usize; 6],
+    /// Hessian (xx, xy, yy) of each basis function.
+    hess: Vec<[f64; 3]>,
+    /// Integral of each basis function (edge-midpoint rule).
+    fe: Vector6<f64>,
+}
+
+/// The Morley element of triangle `t`: its basis in monomials centred on
+/// the centroid, their Hessians and integrals.
+fn morley_element(
+    points: &[[f64; 2]],
+    edges: &Edges,
+    t: &[usize; 3],
+) -> Result<Morley, PlateError> {
+    let nv = points.len();
+    let p = [points[t[0]], points[t[1]], points[t[2]]];
+    let c = [
+        (p[0][0] + p[1][0] + p[2][0]) / 3.0,
+        (p[0][1] + p[1][1] + p[2][1]) / 3.0,
+    ];
+    let q = p.map(|v| [v[0] - c[0], v[1] - c[1]]);
+    let area = 0.5
+        * ((q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]));
+    if area == 0.0 || !area.is_finite() {
+        return Err(PlateError::DegenerateProjection(format!(
+            "triangle {t:?} has zero area"
+        )));
+    }
+    let mono = |x: f64, y: f64| [1.0, x, y, x * x, x * y, y * y];
+    let grad = |x: f64, y: f64| {
+        [
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [0.0, 1.0],
+            [2.0 * x, 0.0],
+            [y, x],
+            [0.0, 2.0 * y],
+        ]
+    };
+    let mut a = Matrix6::<f64>::zeros();
+    let mut dofs = [0usize; 6];
+    let mut mids = [[0.0; 2]; 3];
+    for k in 0..3 {
+        let m = mono(q[k][0], q[k][1]);
+        for j in 0..6 {
+            a[(k, j)] = m[j];
+        }
+        dofs[k] = t[k];
+        let (ia, ib) = (t[k], t[(k + 1) % 3]);
+        let (lo, hi) = key(ia, ib);
+        let (pl, ph) = (points[lo], points[hi]);
+        let (dx, dy) = (ph[0] - pl[0], ph[1] - pl[1]);
+        let len = dx.hypot(dy);
+        let nrm = [dy / len, -dx / len];
+        let mid = [
+            (q[k][0] + q[(k + 1) % 3][0]) * 0.5,
+            (q[k][1] + q[(k + 1) % 3][1]) * 0.5,
         ];
-        let q = p.map(|v| [v[0] - c[0], v[1] - c[1]]);
-        let area = 0.5
-            * ((q[1][0] - q[0][0]) * (q[2][1] - q[0][1])
-                - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]));
-        if area == 0.0 || !area.is_finite() {
-            return Err(PlateError::DegenerateProjection(format!(
-                "triangle {t:?} has zero area"
-            )));
+        mids[k] = mid;
+        let g = grad(mid[0], mid[1]);
+        for j in 0..6 {
+            a[(3 + k, j)] = g[j][0] * nrm[0] + g[j][1] * nrm[1];
         }
-        let mono = |x: f64, y: f64| [1.0, x, y, x * x, x * y, y * y];
-        let grad = |x: f64, y: f64| {
-            [
-                [0.0, 0.0],
-                [1.0, 0.0],
-                [0.0, 1.0],
-                [2.0 * x, 0.0],
-                [y, x],
-                [0.0, 2.0 * y],
-            ]
-        };
-        let mut a = Matrix6::<f64>::zeros();
-        let mut dofs = [0usize; 6];
-        let mut mids = [[0.0; 2]; 3];
-        for k in 0..3 {
-            let m = mono(q[k][0], q[k][1]);
-            for j in 0..6 {
-                a[(k, j)] = m[j];
-            }
-            dofs[k] = t[k];
-            let (ia, ib) = (t[k], t[(k + 1) % 3]);
-            let (lo, hi) = key(ia, ib);
-            let (pl, ph) = (points[lo], points[hi]);
-            let (dx, dy) = (ph[0] - pl[0], ph[1] - pl[1]);
-            let len = dx.hypot(dy);
-            let nrm = [dy / len, -dx / len];
-            let mid = [
-                (q[k][0] + q[(k + 1) % 3][0]) * 0.5,
-                (q[k][1] + q[(k + 1) % 3][1]) * 0.5,
-            ];
-            mids[k] = mid;
-            let g = grad(mid[0], mid[1]);
-            for j in 0..6 {
-                a[(3 + k, j)] = g[j][0] * nrm[0] + g[j][1] * nrm[1];
-            }
-            dofs[3 + k] = nv + edges[&(lo, hi)].0;
-        }
-        let cinv = a
-            .try_inverse()
-            .ok_or_else(|| PlateError::Solve(format!("singular Morley element {t:?}")))?;
-        // basis j = sum_k cinv[(k, j)] mono_k ; Hessian entries
-        let hess: Vec<[f64; 3]> = (0..6)
-            .map(|j| [2.0 * cinv[(3, j)], cinv[(4, j)], 2.0 * cinv[(5, j)]])
-            .collect();
-        let qbar = (load[t[0]] + load[t[1]] + load[t[2]]) / 3.0;
-        let mut fe = Vector6::<f64>::zeros();
-        for m in &mids {
-            let mv = mono(m[0], m[1]);
-            for j in 0..6 {
-                fe[j] += (0..6).map(|k| cinv[(k, j)] * mv[k]).sum::<f64>() * area.abs() / 3.0;
-            }
-        }
-        for i in 0..6 {
-            let gi = map[dofs[i]];
-            if gi == usize::MAX {
-                continue;
-            }
-            rhs[gi] += qbar * fe[i];
-            for j in 0..6 {
-                let gj = map[dofs[j]];
-                if gj == usize::MAX {
-                    continue;
-                }
-                let (hi, hj) = (hess[i], hess[j]);
-                let kij =
-                    rigidity * area.abs() * (hi[0] * hj[0] + 2.0 * hi[1] * hj[1] + hi[2] * hj[2]);
-                trip.push(Triplet::new(gi, gj, kij));
-            }
+        dofs[3 + k] = nv + edges[&(lo, hi)].0;
+    }
+    let cinv = a
+        .try_inverse()
+        .ok_or_else(|| PlateError::Solve(format!("singular Morley element {t:?}")))?;
+    // basis j = sum_k cinv[(k, j)] mono_k ; Hessian entries
+    let hess: Vec<[f64; 3]> = (0..6)
+        .map(|j| [2.0 * cinv[(3, j)], cinv[(4, j)], 2.0 * cinv[(5, j)]])
+        .collect();
+    let mut fe = Vector6::<f64>::zeros();
+    for m in &mids {
+        let mv = mono(m[0], m[1]);
+        for j in 0..6 {
+            fe[j] += (0..6).map(|k| cinv[(k, j)] * mv[k]).sum::<f64>() * area.abs() / 3.0;
         }
     }
+    Ok(Morley {
+        area,
+        dofs,
+        hess,
+        fe,
+    })
+}
+
+/// Solves the assembled system (sparse Cholesky) and spreads the solution
+/// to the vertices (zero where clamped); refuses a non-finite deflection.
+fn solve_system(
+    trip: &[Triplet<usize, usize, f64>],
+    rhs: &[f64],
+    map: &[usize],
+    nv: usize,
+    unknowns: usize,
+) -> Result<PlateSolution, PlateError> {
     let mut w = vec![0.0; nv];
     if unknowns == 0 {
         return Ok(PlateSolution { w, unknowns });
     }
-    let k = SparseColMat::<usize, f64>::try_new_from_triplets(unknowns, unknowns, &trip)
+    let k = SparseColMat::<usize, f64>::try_new_from_triplets(unknowns, unknowns, trip)
         .map_err(PlateError::Matrix)?;
     let llt = k
         .sp_cholesky(Side::Lower)

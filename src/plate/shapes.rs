@@ -180,26 +180,7 @@ pub fn compare(
     let d = [0.0, 0.0, 1.0];
     let ours_mesh = plate.deform(&mesh, d, 1.0, Direction::Normal)?;
     // ground truth on the region's triangles, same q = 1 and D
-    let mut local = vec![usize::MAX; mesh.positions.len()];
-    for (k, &v) in plate.region().iter().enumerate() {
-        local[v as usize] = k;
-    }
-    let xy: Vec<[f64; 2]> = plate
-        .region()
-        .iter()
-        .map(|&v| {
-            let p = mesh.positions[v as usize];
-            [p[0], p[1]]
-        })
-        .collect();
-    let tris: Vec<[usize; 3]> = mesh
-        .triangles
-        .iter()
-        .filter_map(|t| {
-            let l = t.map(|v| local[v as usize]);
-            l.iter().all(|&x| x != usize::MAX).then_some(l)
-        })
-        .collect();
+    let (xy, tris) = region_triangles(&mesh, plate.region());
     let gt = solve_clamped(&xy, &tris, &vec![1.0; xy.len()], plate.rigidity())?;
     let z = |m: &Mesh| -> Vec<f64> {
         plate
@@ -211,23 +192,7 @@ pub fn compare(
     let ours_raw = z(&ours_mesh);
     let gt_peak = gt.w.iter().fold(0.0f64, |m, x| m.max(*x));
     let ours_peak = ours_raw.iter().fold(0.0f64, |m, x| m.max(*x));
-    // handle: region vertices within 1.5 d_P of the centroid
-    let c = plate.boundary().d_p;
-    let centre = {
-        let n = xy.len() as f64;
-        xy.iter()
-            .fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n])
-    };
-    let mut handle: Vec<u32> = plate
-        .region()
-        .iter()
-        .zip(&xy)
-        .filter(|(_, p)| (p[0] - centre[0]).hypot(p[1] - centre[1]) <= 1.5 * c)
-        .map(|(&v, _)| v)
-        .collect();
-    if handle.is_empty() {
-        handle.push(plate.region()[0]);
-    }
+    let handle = centre_handle(plate.region(), &xy, plate.boundary().d_p);
     let harm = PlateDeformer::new(
         &mesh,
         &region,
@@ -269,4 +234,50 @@ pub fn compare(
         delta_mush_params: *dm,
         laplacian_params: *lap,
     })
+}
+
+/// The region's planar mesh: its vertices' (x, y) in region order and the
+/// triangles of `mesh` inside it, indexed in that order.
+fn region_triangles(mesh: &Mesh, region: &[u32]) -> (Vec<[f64; 2]>, Vec<[usize; 3]>) {
+    let mut local = vec![usize::MAX; mesh.positions.len()];
+    for (k, &v) in region.iter().enumerate() {
+        local[v as usize] = k;
+    }
+    let xy: Vec<[f64; 2]> = region
+        .iter()
+        .map(|&v| {
+            let p = mesh.positions[v as usize];
+            [p[0], p[1]]
+        })
+        .collect();
+    let tris: Vec<[usize; 3]> = mesh
+        .triangles
+        .iter()
+        .filter_map(|t| {
+            let l = t.map(|v| local[v as usize]);
+            l.iter().all(|&x| x != usize::MAX).then_some(l)
+        })
+        .collect();
+    (xy, tris)
+}
+
+/// The baselines' handle: the region vertices (planar positions `xy`)
+/// within 1.5 `d_p` of their centroid, or the region's first vertex.
+fn centre_handle(region: &[u32], xy: &[[f64; 2]], d_p: f64) -> Vec<u32> {
+    let c = d_p;
+    let centre = {
+        let n = xy.len() as f64;
+        xy.iter()
+            .fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n])
+    };
+    let mut handle: Vec<u32> = region
+        .iter()
+        .zip(xy)
+        .filter(|(_, p)| (p[0] - centre[0]).hypot(p[1] - centre[1]) <= 1.5 * c)
+        .map(|(&v, _)| v)
+        .collect();
+    if handle.is_empty() {
+        handle.push(region[0]);
+    }
+    handle
 }

@@ -133,20 +133,49 @@ pub fn apply_feature(
     if part.name != f.part {
         return Err(SasmError::UnknownPart(part.name.clone()));
     }
-    let pr = Projector::new(part, f.view);
-    let d = depth_axis(f.view);
-    let sheet = 0.25 * f.region.a0;
-    let target = 2.0 * f.region.max_radius() / EDGE_PER_DIAMETER;
+    let host = Host {
+        f,
+        pr: Projector::new(part, f.view),
+        d: depth_axis(f.view),
+        sheet: 0.25 * f.region.a0,
+        g,
+    };
     let mut rep = ApplyReport {
         part: f.part.clone(),
         triangles_before: m.triangles.len(),
         ..Default::default()
     };
+    let n0 = m.positions.len();
+    let mut parents: Vec<(u32, u32)> = Vec::new();
+    rep.refine_levels = refine_zone(m, &host, &mut parents);
+    let offset = new_vertex_offsets(m, &host, &parents, n0);
+    displace(m, &host, &offset, n0, &mut rep);
+    rep.triangles_after = m.triangles.len();
+    Ok(rep)
+}
+
+/// A feature on its host part: the projector onto the part, the depth
+/// axis, the sheet depth (how far behind the surface a vertex still
+/// belongs to the front) and the part's triangle group.
+struct Host<'a> {
+    f: &'a Feature,
+    pr: Projector<'a>,
+    d: usize,
+    sheet: f64,
+    g: u32,
+}
+
+/// Refines the host part's triangles longer than the target edge with a
+/// vertex in the zone (within [`ZONE`] of the curve, on the front sheet),
+/// up to [`MAX_LEVELS`] times; the new vertices' edge ends go to
+/// `parents`. Returns the number of levels.
+fn refine_zone(m: &mut Mesh, host: &Host, parents: &mut Vec<(u32, u32)>) -> usize {
+    let (f, pr, d, sheet, g) = (host.f, &host.pr, host.d, host.sheet, host.g);
+    let target = 2.0 * f.region.max_radius() / EDGE_PER_DIAMETER;
+    let mut levels = 0;
     // zone membership per vertex (positions of existing vertices never
     // change during refinement)
     let mut zone: Vec<Option<bool>> = Vec::new();
-    let n0 = m.positions.len();
-    let mut parents: Vec<(u32, u32)> = Vec::new();
     let in_zone = |m: &Mesh, v: u32, zone: &mut Vec<Option<bool>>| -> bool {
         zone.resize(m.positions.len(), None);
         if let Some(z) = zone[v as usize] {
@@ -177,11 +206,17 @@ pub fn apply_feature(
         if !any {
             break;
         }
-        refine(m, &marked, &mut parents);
-        rep.refine_levels += 1;
+        refine(m, &marked, parents);
+        levels += 1;
     }
-    // depth offset of the mesh from the analytic surface: measured at the
-    // vertices the mesh had, interpolated along edges for the new ones
+    levels
+}
+
+/// The depth offset of the mesh from the analytic surface at each vertex
+/// the refinement added (in order): measured at the vertices the mesh had
+/// (the first `n0`), interpolated along edges for the new ones.
+fn new_vertex_offsets(m: &Mesh, host: &Host, parents: &[(u32, u32)], n0: usize) -> Vec<f64> {
+    let (f, pr, d, sheet) = (host.f, &host.pr, host.d, host.sheet);
     let mut measured: HashMap<u32, f64> = HashMap::new();
     let mut at = |v: u32, m: &Mesh| -> f64 {
         *measured.entry(v).or_insert_with(|| {
@@ -193,7 +228,7 @@ pub fn apply_feature(
         })
     };
     let mut offset: Vec<f64> = Vec::with_capacity(parents.len());
-    for &(a, b) in &parents {
+    for &(a, b) in parents {
         let side = |x: u32, offset: &[f64], at: &mut dyn FnMut(u32, &Mesh) -> f64| {
             if (x as usize) < n0 {
                 at(x, m)
@@ -204,16 +239,25 @@ pub fn apply_feature(
         let o = 0.5 * (side(a, &offset, &mut at) + side(b, &offset, &mut at));
         offset.push(o);
     }
-    let mut host = vec![false; m.positions.len()];
+    offset
+}
+
+/// Moves the host part's vertices inside the region and on the front
+/// sheet by the feature's height along the depth axis (a new vertex from
+/// the analytic surface plus its `offset`); counts them, the misses and
+/// the largest move in `rep`.
+fn displace(m: &mut Mesh, host: &Host, offset: &[f64], n0: usize, rep: &mut ApplyReport) {
+    let (f, pr, d, sheet, g) = (host.f, &host.pr, host.d, host.sheet, host.g);
+    let mut on_host = vec![false; m.positions.len()];
     for (t, tr) in m.triangles.iter().enumerate() {
         if m.tri_group[t] == g {
             for &v in tr {
-                host[v as usize] = true;
+                on_host[v as usize] = true;
             }
         }
     }
     for v in 0..m.positions.len() {
-        if !host[v] {
+        if !on_host[v] {
             continue;
         }
         let p = m.positions[v];
@@ -234,6 +278,4 @@ pub fn apply_feature(
         m.positions[v] = np;
         rep.vertices_moved += 1;
     }
-    rep.triangles_after = m.triangles.len();
-    Ok(rep)
 }

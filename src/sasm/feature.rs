@@ -35,6 +35,175 @@ pub struct Feature {
     pub factors: Vec<super::silhouette::Factor>,
 }
 
+/// The profile curves of one or two `profiles` strokes, after checking
+/// that the region `poly` projects onto the part (`pr`); refuses another
+/// count of profiles and two profiles along the same axis.
+fn profile_curves(
+    pr: &Projector,
+    view: View,
+    poly: &[[f64; 2]],
+    profiles: &[Stroke],
+) -> Result<Vec<ProfileCurve>, SasmError> {
+    if profiles.is_empty() || profiles.len() > 2 {
+        return Err(SasmError::Shape {
+            what: "profiles".into(),
+            message: format!(
+                "expected one or two profile strokes, got {}",
+                profiles.len()
+            ),
+        });
+    }
+    super::project::project_stroke(pr, "curve", poly)?;
+    let curves: Vec<ProfileCurve> = profiles
+        .iter()
+        .enumerate()
+        .map(|(i, s)| ProfileCurve::new(s, view, i + 1))
+        .collect::<Result<_, _>>()?;
+    if curves.len() == 2 && curves[0].ri == curves[1].ri {
+        return Err(SasmError::Shape {
+            what: "profiles".into(),
+            message: format!(
+                "both profiles are drawn in views sharing the same axis with the {} view; use two different views",
+                view
+            ),
+        });
+    }
+    Ok(curves)
+}
+
+/// The peak: along each profile's axis through the region's centroid (its
+/// horizontal coordinate `axis` when given, then kept), the largest height
+/// of the profile over the part (`depth`).
+fn peak_centre(
+    poly: &[[f64; 2]],
+    axis: Option<f64>,
+    curves: &[ProfileCurve],
+    depth: &impl Fn([f64; 2]) -> Option<f64>,
+) -> [f64; 2] {
+    let mut c = centroid(poly);
+    if let Some(a) = axis {
+        c[0] = a;
+    }
+    let (lo, hi) = poly
+        .iter()
+        .fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(l, h), p| {
+            (
+                [l[0].min(p[0]), l[1].min(p[1])],
+                [h[0].max(p[0]), h[1].max(p[1])],
+            )
+        });
+    let c_start = c;
+    for pc in curves {
+        let ri = pc.ri;
+        let mut best = (f64::NEG_INFINITY, c_start[ri]);
+        for k in 1..PEAK_SAMPLES - 1 {
+            let mut q = c_start;
+            q[ri] = lo[ri] + (hi[ri] - lo[ri]) * k as f64 / (PEAK_SAMPLES - 1) as f64;
+            if !crate::polygon::point_in_polygon(poly, q) {
+                continue;
+            }
+            if let (Some(zp), Some(zh)) = (pc.depth_at(q[ri]), depth(q)) {
+                if zp - zh > best.0 {
+                    best = (zp - zh, q[ri]);
+                }
+            }
+        }
+        if ri == 0 && axis.is_some() {
+            continue;
+        }
+        c[ri] = best.1;
+    }
+    c
+}
+
+/// The height samples on the rays along each profile's axis (both
+/// directions): the profile's depth less the part's (`depth`), the last
+/// profile depth carried into the blend zone where the profile ends early.
+/// Which rays have samples (a missing pair's do not).
+fn profile_rays(
+    part: &PartSurface,
+    view: View,
+    region: &Region,
+    curves: &[ProfileCurve],
+    depth: &impl Fn([f64; 2]) -> Option<f64>,
+) -> Result<([Vec<f64>; 4], [bool; 4]), SasmError> {
+    let mut rays: [Vec<f64>; 4] = Default::default();
+    let mut have = [false; 4];
+    for pc in curves {
+        let cov = pc.range();
+        for k in [pc.ri, pc.ri + 2] {
+            let phi = k as f64 * PI / 2.0;
+            let mut e = Vec::with_capacity(RAY_SAMPLES);
+            let mut last = None;
+            for j in 0..RAY_SAMPLES {
+                let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
+                let q = region.at(rho, phi);
+                let zh = depth(q).ok_or_else(|| SasmError::Misses {
+                    what: "the region's interior".into(),
+                    part: part.name.clone(),
+                    view,
+                    index: j,
+                    at: q,
+                })?;
+                let zp = match pc.depth_at(q[pc.ri]) {
+                    Some(z) => z,
+                    None if rho > 1.0 - BLEND => last.unwrap_or(zh),
+                    None => {
+                        let r0 = region.at(1.0 - BLEND, PI / 2.0 * pc.ri as f64);
+                        let r1 = region.at(1.0 - BLEND, PI / 2.0 * (pc.ri + 2) as f64);
+                        let (a, b) = (r0[pc.ri].min(r1[pc.ri]), r0[pc.ri].max(r1[pc.ri]));
+                        return Err(SasmError::ProfileShort {
+                            view: pc.view,
+                            axis: axis_name([view.axes().0, view.axes().1][pc.ri]),
+                            covered: cov,
+                            needed: [a, b],
+                        });
+                    }
+                };
+                last = Some(zp);
+                e.push(zp - zh);
+            }
+            rays[k] = e;
+            have[k] = true;
+        }
+    }
+    Ok((rays, have))
+}
+
+/// Fills a missing pair of rays (not `have`) with the mean of the other
+/// pair, refuses pairs disagreeing at the peak by more than
+/// [`PEAK_AGREEMENT`], and tilts the horizontal pair to meet the vertical
+/// one there.
+fn level_rays(rays: &mut [Vec<f64>; 4], have: [bool; 4]) -> Result<(), SasmError> {
+    // a missing pair: the mean of the other pair
+    for k in 0..2 {
+        if !have[k] {
+            let (a, b) = (&rays[k + 1], &rays[(k + 3) % 4]);
+            let m: Vec<f64> = a.iter().zip(b).map(|(x, y)| 0.5 * (x + y)).collect();
+            rays[k] = m.clone();
+            rays[k + 2] = m;
+        }
+    }
+    // both pairs must agree at the peak (the same point)
+    let (e_v, e_h) = (rays[1][0], rays[0][0]);
+    let scale = e_v.abs().max(e_h.abs());
+    if (e_v - e_h).abs() > PEAK_AGREEMENT * scale {
+        return Err(SasmError::Shape {
+            what: "profiles".into(),
+            message: format!(
+                "the two profiles disagree on the feature's height at its peak ({e_v:.4} vs {e_h:.4})"
+            ),
+        });
+    }
+    for k in [0, 2] {
+        for (j, v) in rays[k].iter_mut().enumerate() {
+            let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
+            *v += (e_v - e_h) * (1.0 - rho);
+        }
+    }
+    Ok(())
+}
+
 impl Feature {
     /// Builds a feature on `part` from a closed region polygon (already
     /// validated) in `view` and one or two profiles. `axis`: a fixed
@@ -47,134 +216,13 @@ impl Feature {
         profiles: &[Stroke],
         axis: Option<f64>,
     ) -> Result<Feature, SasmError> {
-        if profiles.is_empty() || profiles.len() > 2 {
-            return Err(SasmError::Shape {
-                what: "profiles".into(),
-                message: format!(
-                    "expected one or two profile strokes, got {}",
-                    profiles.len()
-                ),
-            });
-        }
         let pr = Projector::new(part, view);
-        super::project::project_stroke(&pr, "curve", poly)?;
-        let curves: Vec<ProfileCurve> = profiles
-            .iter()
-            .enumerate()
-            .map(|(i, s)| ProfileCurve::new(s, view, i + 1))
-            .collect::<Result<_, _>>()?;
-        if curves.len() == 2 && curves[0].ri == curves[1].ri {
-            return Err(SasmError::Shape {
-                what: "profiles".into(),
-                message: format!(
-                    "both profiles are drawn in views sharing the same axis with the {} view; use two different views",
-                    view
-                ),
-            });
-        }
+        let curves = profile_curves(&pr, view, poly, profiles)?;
         let depth = |q: [f64; 2]| pr.cast(q).map(|h| pr.depth(h.point));
-        // the peak: along each profile's axis through the centroid, the
-        // largest height of the profile over the part
-        let mut c = centroid(poly);
-        if let Some(a) = axis {
-            c[0] = a;
-        }
-        let (lo, hi) =
-            poly.iter()
-                .fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(l, h), p| {
-                    (
-                        [l[0].min(p[0]), l[1].min(p[1])],
-                        [h[0].max(p[0]), h[1].max(p[1])],
-                    )
-                });
-        let c_start = c;
-        for pc in &curves {
-            let ri = pc.ri;
-            let mut best = (f64::NEG_INFINITY, c_start[ri]);
-            for k in 1..PEAK_SAMPLES - 1 {
-                let mut q = c_start;
-                q[ri] = lo[ri] + (hi[ri] - lo[ri]) * k as f64 / (PEAK_SAMPLES - 1) as f64;
-                if !crate::polygon::point_in_polygon(poly, q) {
-                    continue;
-                }
-                if let (Some(zp), Some(zh)) = (pc.depth_at(q[ri]), depth(q)) {
-                    if zp - zh > best.0 {
-                        best = (zp - zh, q[ri]);
-                    }
-                }
-            }
-            if ri == 0 && axis.is_some() {
-                continue;
-            }
-            c[ri] = best.1;
-        }
+        let c = peak_centre(poly, axis, &curves, &depth);
         let region = Region::new(poly, c)?;
-        let mut rays: [Vec<f64>; 4] = Default::default();
-        let mut have = [false; 4];
-        for pc in &curves {
-            let cov = pc.range();
-            for k in [pc.ri, pc.ri + 2] {
-                let phi = k as f64 * PI / 2.0;
-                let mut e = Vec::with_capacity(RAY_SAMPLES);
-                let mut last = None;
-                for j in 0..RAY_SAMPLES {
-                    let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
-                    let q = region.at(rho, phi);
-                    let zh = depth(q).ok_or_else(|| SasmError::Misses {
-                        what: "the region's interior".into(),
-                        part: part.name.clone(),
-                        view,
-                        index: j,
-                        at: q,
-                    })?;
-                    let zp = match pc.depth_at(q[pc.ri]) {
-                        Some(z) => z,
-                        None if rho > 1.0 - BLEND => last.unwrap_or(zh),
-                        None => {
-                            let r0 = region.at(1.0 - BLEND, PI / 2.0 * pc.ri as f64);
-                            let r1 = region.at(1.0 - BLEND, PI / 2.0 * (pc.ri + 2) as f64);
-                            let (a, b) = (r0[pc.ri].min(r1[pc.ri]), r0[pc.ri].max(r1[pc.ri]));
-                            return Err(SasmError::ProfileShort {
-                                view: pc.view,
-                                axis: axis_name([view.axes().0, view.axes().1][pc.ri]),
-                                covered: cov,
-                                needed: [a, b],
-                            });
-                        }
-                    };
-                    last = Some(zp);
-                    e.push(zp - zh);
-                }
-                rays[k] = e;
-                have[k] = true;
-            }
-        }
-        // a missing pair: the mean of the other pair
-        for k in 0..2 {
-            if !have[k] {
-                let (a, b) = (&rays[k + 1], &rays[(k + 3) % 4]);
-                let m: Vec<f64> = a.iter().zip(b).map(|(x, y)| 0.5 * (x + y)).collect();
-                rays[k] = m.clone();
-                rays[k + 2] = m;
-            }
-        }
-        // both pairs must agree at the peak (the same point)
-        let (e_v, e_h) = (rays[1][0], rays[0][0]);
-        let scale = e_v.abs().max(e_h.abs());
-        if (e_v - e_h).abs() > PEAK_AGREEMENT * scale {
-            return Err(SasmError::Shape {
-                what: "profiles".into(),
-                message: format!(
-                    "the two profiles disagree on the feature's height at its peak ({e_v:.4} vs {e_h:.4})"
-                ),
-            });
-        }
-        for k in [0, 2] {
-            for (j, v) in rays[k].iter_mut().enumerate() {
-                let rho = j as f64 / (RAY_SAMPLES - 1) as f64;
-                *v += (e_v - e_h) * (1.0 - rho);
-            }
-        }
+        let (mut rays, have) = profile_rays(part, view, &region, &curves, &depth)?;
+        level_rays(&mut rays, have)?;
         let peak = rays.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
         if peak.is_nan() || peak <= 0.0 {
             return Err(SasmError::Shape {

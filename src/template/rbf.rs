@@ -93,57 +93,9 @@ impl<const D: usize, const M: usize> Rbf<D, M> {
         condition: bool,
     ) -> Result<Self, RbfError> {
         assert!(D == 2 || D == 3, "RBF dimension must be 2 or 3");
+        check_input(centres, values)?;
         let n = centres.len();
-        if n != values.len() {
-            return Err(RbfError::CountMismatch {
-                centres: n,
-                values: values.len(),
-            });
-        }
-        if n < D + 2 {
-            return Err(RbfError::TooFewCentres {
-                need: D + 2,
-                got: n,
-                dim: D,
-            });
-        }
-        for (i, (c, v)) in centres.iter().zip(values).enumerate() {
-            if c.iter().chain(v.iter()).any(|x| !x.is_finite()) {
-                return Err(RbfError::NonFinite { index: i });
-            }
-        }
-        // normalise: centred, unit diameter
-        let mut lo = [f64::INFINITY; D];
-        let mut hi = [f64::NEG_INFINITY; D];
-        for c in centres {
-            for k in 0..D {
-                lo[k] = lo[k].min(c[k]);
-                hi[k] = hi[k].max(c[k]);
-            }
-        }
-        let mut shift = [0.0; D];
-        for k in 0..D {
-            shift[k] = 0.5 * (lo[k] + hi[k]);
-        }
-        let diam = dist(&lo, &hi);
-        if diam <= 0.0 {
-            return Err(RbfError::CoincidentCentres {
-                i: 0,
-                j: 1,
-                at: centres[0].to_vec(),
-            });
-        }
-        let scale = 1.0 / diam;
-        let xs: Vec<[f64; D]> = centres
-            .iter()
-            .map(|c| {
-                let mut p = [0.0; D];
-                for k in 0..D {
-                    p[k] = (c[k] - shift[k]) * scale;
-                }
-                p
-            })
-            .collect();
+        let Normalised { xs, shift, scale } = normalise(centres)?;
         coincident(&xs, centres)?;
         if degenerate_affine(&xs) {
             return Err(RbfError::Degenerate {
@@ -151,39 +103,10 @@ impl<const D: usize, const M: usize> Rbf<D, M> {
             });
         }
         let q = D + 1;
-        let size = n + q;
-        let a = Mat::<f64>::from_fn(size, size, |i, j| {
-            if i < n && j < n {
-                kernel(D, dist(&xs[i], &xs[j]))
-            } else if i < n {
-                poly_basis(&xs[i], j - n)
-            } else if j < n {
-                poly_basis(&xs[j], i - n)
-            } else {
-                0.0
-            }
-        });
-        let b = Mat::<f64>::from_fn(size, M, |i, m| if i < n { values[i][m] } else { 0.0 });
+        let a = system_matrix(&xs);
+        let b = Mat::<f64>::from_fn(n + q, M, |i, m| if i < n { values[i][m] } else { 0.0 });
         let x = a.partial_piv_lu().solve(&b);
-        // proof of the solve: its residual
-        let r = &a * &x - &b;
-        let bmax = (0..n)
-            .flat_map(|i| (0..M).map(move |m| (i, m)))
-            .map(|(i, m)| b[(i, m)].abs())
-            .fold(0.0f64, f64::max)
-            .max(1e-300);
-        let mut rmax = 0.0f64;
-        for i in 0..size {
-            for m in 0..M {
-                let v = r[(i, m)];
-                rmax = if v.is_finite() {
-                    rmax.max(v.abs())
-                } else {
-                    f64::INFINITY
-                };
-            }
-        }
-        let residual = rmax / bmax.max(1.0);
+        let residual = relative_residual(&a, &x, &b, n);
         if !residual.is_finite() || residual > 1e-6 {
             return Err(RbfError::Singular { residual });
         }
@@ -263,6 +186,121 @@ impl<const D: usize, const M: usize> Rbf<D, M> {
         }
         out
     }
+}
+
+/// Refuses centres and values of different counts, fewer than `D + 2`
+/// centres, and a value or coordinate not finite.
+fn check_input<const D: usize, const M: usize>(
+    centres: &[[f64; D]],
+    values: &[[f64; M]],
+) -> Result<(), RbfError> {
+    let n = centres.len();
+    if n != values.len() {
+        return Err(RbfError::CountMismatch {
+            centres: n,
+            values: values.len(),
+        });
+    }
+    if n < D + 2 {
+        return Err(RbfError::TooFewCentres {
+            need: D + 2,
+            got: n,
+            dim: D,
+        });
+    }
+    for (i, (c, v)) in centres.iter().zip(values).enumerate() {
+        if c.iter().chain(v.iter()).any(|x| !x.is_finite()) {
+            return Err(RbfError::NonFinite { index: i });
+        }
+    }
+    Ok(())
+}
+
+/// Centres normalised: `(c - shift) * scale`.
+struct Normalised<const D: usize> {
+    xs: Vec<[f64; D]>,
+    shift: [f64; D],
+    scale: f64,
+}
+
+/// The centres normalised (centred on their bounding box, unit
+/// diameter); refuses a box of zero diameter.
+fn normalise<const D: usize>(centres: &[[f64; D]]) -> Result<Normalised<D>, RbfError> {
+    let mut lo = [f64::INFINITY; D];
+    let mut hi = [f64::NEG_INFINITY; D];
+    for c in centres {
+        for k in 0..D {
+            lo[k] = lo[k].min(c[k]);
+            hi[k] = hi[k].max(c[k]);
+        }
+    }
+    let mut shift = [0.0; D];
+    for k in 0..D {
+        shift[k] = 0.5 * (lo[k] + hi[k]);
+    }
+    let diam = dist(&lo, &hi);
+    if diam <= 0.0 {
+        return Err(RbfError::CoincidentCentres {
+            i: 0,
+            j: 1,
+            at: centres[0].to_vec(),
+        });
+    }
+    let scale = 1.0 / diam;
+    let xs: Vec<[f64; D]> = centres
+        .iter()
+        .map(|c| {
+            let mut p = [0.0; D];
+            for k in 0..D {
+                p[k] = (c[k] - shift[k]) * scale;
+            }
+            p
+        })
+        .collect();
+    Ok(Normalised { xs, shift, scale })
+}
+
+/// The interpolation system's matrix: the kernel between the centres
+/// `xs`, bordered by the affine polynomial basis.
+fn system_matrix<const D: usize>(xs: &[[f64; D]]) -> Mat<f64> {
+    let n = xs.len();
+    let size = n + D + 1;
+    Mat::<f64>::from_fn(size, size, |i, j| {
+        if i < n && j < n {
+            kernel(D, dist(&xs[i], &xs[j]))
+        } else if i < n {
+            poly_basis(&xs[i], j - n)
+        } else if j < n {
+            poly_basis(&xs[j], i - n)
+        } else {
+            0.0
+        }
+    })
+}
+
+/// The proof of the solve `a x = b` (`n` centres): the largest residual
+/// over the largest value (at least 1), infinite where a residual is not
+/// finite.
+fn relative_residual(a: &Mat<f64>, x: &Mat<f64>, b: &Mat<f64>, n: usize) -> f64 {
+    let (size, m_count) = (b.nrows(), b.ncols());
+    let r = a * x - b;
+    let bmax = (0..n)
+        .flat_map(|i| (0..m_count).map(move |m| (i, m)))
+        .map(|(i, m)| b[(i, m)].abs())
+        .fold(0.0f64, f64::max)
+        .max(1e-300);
+    let mut rmax = 0.0f64;
+    for i in 0..size {
+        for m in 0..m_count {
+            let v = r[(i, m)];
+            rmax = if v.is_finite() {
+                rmax.max(v.abs())
+            } else {
+                f64::INFINITY
+            };
+        }
+    }
+    rmax / bmax.max(1.0)
 }
 
 fn poly_basis<const D: usize>(x: &[f64; D], k: usize) -> f64 {

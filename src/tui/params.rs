@@ -218,30 +218,9 @@ pub fn parse(
     part: &PartSpec,
     section: Option<usize>,
 ) -> Result<Parsed, String> {
-    let gec = |transform| Edit::GecTransform {
-        part: part.name.clone(),
-        section,
-        transform,
-    };
     let edit = match kind {
         RowKind::Info => return Err("this row is read-only".into()),
-        RowKind::Section => {
-            let t = text.trim();
-            if t == "all" {
-                return Ok(Parsed::Section(None));
-            }
-            let i: usize = t
-                .parse()
-                .map_err(|_| format!("'{t}' is neither 'all' nor a section index"))?;
-            if i >= part.sections.len() {
-                return Err(format!(
-                    "section {i} does not exist ({} has {} sections)",
-                    part.name,
-                    part.sections.len()
-                ));
-            }
-            return Ok(Parsed::Section(Some(i)));
-        }
+        RowKind::Section => return parse_section(text, part),
         RowKind::ShapeA => {
             let v = numbers(text, 1, 1)?;
             Edit::ShapeParameter {
@@ -249,72 +228,15 @@ pub fn parse(
                 a: v[0],
             }
         }
-        RowKind::Translate => {
-            let v = numbers(text, 3, 3)?;
-            gec(SectionTransform::Translate {
-                d: [v[0], v[1], v[2]],
-            })
-        }
-        RowKind::Scale => {
-            let v = numbers(text, 1, 2)?;
-            gec(SectionTransform::Scale {
-                sx: v[0],
-                sy: *v.get(1).unwrap_or(&v[0]),
-            })
-        }
-        RowKind::Rotate => {
-            let v = numbers(text, 1, 1)?;
-            gec(SectionTransform::Rotate {
-                angle: v[0].to_radians(),
-            })
-        }
-        RowKind::Bend => {
-            let v = numbers(text, 1, 4)?;
-            if v.len() != 1 && v.len() != 4 {
-                return Err("expected kappa, or kappa and an axis of 3 numbers".into());
-            }
-            let axis = if v.len() == 4 {
-                [v[1], v[2], v[3]]
-            } else {
-                [0.0, 0.0, 1.0]
-            };
-            gec(SectionTransform::Bend { kappa: v[0], axis })
-        }
-        RowKind::Force => {
-            let v = numbers(text, 5, 7)?;
-            let kind = match v.len() {
-                5 => ForceKind::Uniform,
-                7 => ForceKind::Concentrated { u0: v[5], v0: v[6] },
-                _ => return Err("expected u0 u1 px py pz, then optionally uc vc".into()),
-            };
-            Edit::Force {
+        RowKind::Translate | RowKind::Scale | RowKind::Rotate | RowKind::Bend | RowKind::Bump => {
+            Edit::GecTransform {
                 part: part.name.clone(),
-                u: [v[0], v[1]],
-                force: Force {
-                    kind,
-                    p: [v[2], v[3], v[4]],
-                },
-                a: 1.0,
+                section,
+                transform: section_transform(kind, text)?,
             }
         }
-        RowKind::Boundary => {
-            let t = text.trim_start();
-            let (end, rest) = if let Some(r) = t.strip_prefix("start") {
-                (End::Start, r)
-            } else if let Some(r) = t.strip_prefix("end") {
-                (End::End, r)
-            } else {
-                return Err("begin with 'start' or 'end' (which end of the part)".into());
-            };
-            let v = numbers(rest, 3, 4)?;
-            Edit::Boundary {
-                part: part.name.clone(),
-                end,
-                curve: None,
-                tangent: Some([v[0], v[1], v[2]]),
-                reach: *v.get(3).unwrap_or(&0.3),
-            }
-        }
+        RowKind::Force => force_edit(text, part)?,
+        RowKind::Boundary => boundary_edit(text, part)?,
         RowKind::Plate => {
             let v = numbers(text, 7, 7)?;
             Edit::Plate {
@@ -323,14 +245,6 @@ pub fn parse(
                 radius: v[3],
                 d: [v[4], v[5], v[6]],
             }
-        }
-        RowKind::Bump => {
-            let v = numbers(text, 3, 3)?;
-            gec(SectionTransform::Bump {
-                h: v[0],
-                theta: v[1].to_radians(),
-                sigma: v[2],
-            })
         }
     };
     validate_params(&edit).map_err(|e| e.to_string())?;
@@ -344,4 +258,111 @@ pub fn parse(
         }
     }
     Ok(Parsed::Edit(edit))
+}
+
+/// The section row: `all` or the index of one of the part's sections.
+fn parse_section(text: &str, part: &PartSpec) -> Result<Parsed, String> {
+    let t = text.trim();
+    if t == "all" {
+        return Ok(Parsed::Section(None));
+    }
+    let i: usize = t
+        .parse()
+        .map_err(|_| format!("'{t}' is neither 'all' nor a section index"))?;
+    if i >= part.sections.len() {
+        return Err(format!(
+            "section {i} does not exist ({} has {} sections)",
+            part.name,
+            part.sections.len()
+        ));
+    }
+    Ok(Parsed::Section(Some(i)))
+}
+
+/// The section transform of a translate, scale, rotate (degrees), bend or
+/// bump (angle in degrees) row.
+fn section_transform(kind: RowKind, text: &str) -> Result<SectionTransform, String> {
+    Ok(match kind {
+        RowKind::Translate => {
+            let v = numbers(text, 3, 3)?;
+            SectionTransform::Translate {
+                d: [v[0], v[1], v[2]],
+            }
+        }
+        RowKind::Scale => {
+            let v = numbers(text, 1, 2)?;
+            SectionTransform::Scale {
+                sx: v[0],
+                sy: *v.get(1).unwrap_or(&v[0]),
+            }
+        }
+        RowKind::Rotate => {
+            let v = numbers(text, 1, 1)?;
+            SectionTransform::Rotate {
+                angle: v[0].to_radians(),
+            }
+        }
+        RowKind::Bend => {
+            let v = numbers(text, 1, 4)?;
+            if v.len() != 1 && v.len() != 4 {
+                return Err("expected kappa, or kappa and an axis of 3 numbers".into());
+            }
+            let axis = if v.len() == 4 {
+                [v[1], v[2], v[3]]
+            } else {
+                [0.0, 0.0, 1.0]
+            };
+            SectionTransform::Bend { kappa: v[0], axis }
+        }
+        RowKind::Bump => {
+            let v = numbers(text, 3, 3)?;
+            SectionTransform::Bump {
+                h: v[0],
+                theta: v[1].to_radians(),
+                sigma: v[2],
+            }
+        }
+        _ => return Err(format!("a {kind:?} row is not a section transform")),
+    })
+}
+
+/// The force row: `u0 u1 px py pz`, a uniform force over the u-range, or
+/// with `uc vc` a concentrated one.
+fn force_edit(text: &str, part: &PartSpec) -> Result<Edit, String> {
+    let v = numbers(text, 5, 7)?;
+    let kind = match v.len() {
+        5 => ForceKind::Uniform,
+        7 => ForceKind::Concentrated { u0: v[5], v0: v[6] },
+        _ => return Err("expected u0 u1 px py pz, then optionally uc vc".into()),
+    };
+    Ok(Edit::Force {
+        part: part.name.clone(),
+        u: [v[0], v[1]],
+        force: Force {
+            kind,
+            p: [v[2], v[3], v[4]],
+        },
+        a: 1.0,
+    })
+}
+
+/// The boundary row: `start` or `end`, the tangent (3 numbers), optionally
+/// the reach.
+fn boundary_edit(text: &str, part: &PartSpec) -> Result<Edit, String> {
+    let t = text.trim_start();
+    let (end, rest) = if let Some(r) = t.strip_prefix("start") {
+        (End::Start, r)
+    } else if let Some(r) = t.strip_prefix("end") {
+        (End::End, r)
+    } else {
+        return Err("begin with 'start' or 'end' (which end of the part)".into());
+    };
+    let v = numbers(rest, 3, 4)?;
+    Ok(Edit::Boundary {
+        part: part.name.clone(),
+        end,
+        curve: None,
+        tangent: Some([v[0], v[1], v[2]]),
+        reach: *v.get(3).unwrap_or(&0.3),
+    })
 }

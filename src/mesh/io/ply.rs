@@ -89,19 +89,64 @@ struct Element {
 
 /// Parses ASCII or binary little-endian PLY.
 pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
-    let err = |line: usize, message: String| MeshError::Parse {
-        path: path.to_string(),
-        line,
-        message,
-    };
-    let berr = |message: String| MeshError::Invalid(format!("{path}: {message}"));
     let end = bytes
         .windows(11)
         .position(|w| w == b"end_header\n")
-        .ok_or_else(|| err(1, "no 'end_header' line".into()))?;
-    let header =
-        std::str::from_utf8(&bytes[..end]).map_err(|_| err(1, "header is not text".into()))?;
+        .ok_or_else(|| parse_error(path, 1, "no 'end_header' line".into()))?;
+    let header = std::str::from_utf8(&bytes[..end])
+        .map_err(|_| parse_error(path, 1, "header is not text".into()))?;
     let body = &bytes[end + 11..];
+    let (ascii, elements) = parse_header(header, path)?;
+    let header_end = end + 11;
+    check_elements(&elements, body.len(), path)?;
+    let vertex_count = elements
+        .iter()
+        .find(|e| e.name == "vertex")
+        .map_or(0, |e| e.count);
+    let mut m = Mesh::new(Vec::new(), Vec::new());
+    let tokens = if ascii {
+        Some(
+            std::str::from_utf8(body)
+                .map_err(|_| invalid(path, "ASCII body is not text".into()))?
+                .split_whitespace(),
+        )
+    } else {
+        None
+    };
+    let mut r = Reader {
+        path,
+        body,
+        header_end,
+        tokens,
+        pos: 0,
+        token_no: 0,
+    };
+    for e in &elements {
+        for _ in 0..e.count {
+            read_entry(e, &mut r, vertex_count, &mut m)?;
+        }
+    }
+    Ok(m)
+}
+
+/// A header line's error.
+fn parse_error(path: &str, line: usize, message: String) -> MeshError {
+    MeshError::Parse {
+        path: path.to_string(),
+        line,
+        message,
+    }
+}
+
+/// A body's error.
+fn invalid(path: &str, message: String) -> MeshError {
+    MeshError::Invalid(format!("{path}: {message}"))
+}
+
+/// The header's format (ASCII or not) and its elements with their
+/// properties.
+fn parse_header(header: &str, path: &str) -> Result<(bool, Vec<Element>), MeshError> {
+    let err = |line: usize, message: String| parse_error(path, line, message);
     let mut lines = header.lines().enumerate();
     if lines.next().map(|l| l.1.trim()) != Some("ply") {
         return Err(err(1, "missing 'ply' magic".into()));
@@ -143,19 +188,24 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
         }
     }
     let ascii = ascii.ok_or_else(|| err(2, "missing 'format' line".into()))?;
-    let header_end = end + 11;
-    for e in &elements {
+    Ok((ascii, elements))
+}
+
+/// Refuses an element with entries but no properties, one declaring more
+/// entries than the body (`body_len` bytes) could hold, and a vertex
+/// element without x, y and z.
+fn check_elements(elements: &[Element], body_len: usize, path: &str) -> Result<(), MeshError> {
+    let berr = |message: String| invalid(path, message);
+    for e in elements {
         if e.count > 0 && e.props.is_empty() {
             return Err(berr(format!("element '{}' has no properties", e.name)));
         }
         // every element takes at least one token or byte: a count beyond the
         // data is refused before any allocation or loop
-        if e.count > body.len() {
+        if e.count > body_len {
             return Err(berr(format!(
                 "element '{}' declares {} entries but the data has only {} bytes",
-                e.name,
-                e.count,
-                body.len()
+                e.name, e.count, body_len
             )));
         }
         if e.name == "vertex" {
@@ -172,35 +222,39 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
             }
         }
     }
-    let vertex_count = elements
-        .iter()
-        .find(|e| e.name == "vertex")
-        .map_or(0, |e| e.count);
-    let mut m = Mesh::new(Vec::new(), Vec::new());
-    let mut tokens = if ascii {
-        Some(
-            std::str::from_utf8(body)
-                .map_err(|_| berr("ASCII body is not text".into()))?
-                .split_whitespace(),
-        )
-    } else {
-        None
-    };
-    let mut pos = 0usize;
-    let mut token_no = 0usize;
-    // where the next value starts: byte offset in the file (binary) or the
-    // value number in the body (ASCII)
-    let at = |pos: usize, token_no: usize| {
-        if ascii {
-            format!("value {token_no} of the data")
+    Ok(())
+}
+
+/// The body's values in order: ASCII tokens, or binary little-endian
+/// values read from `pos`.
+struct Reader<'a> {
+    path: &'a str,
+    body: &'a [u8],
+    /// Byte offset of the body in the file.
+    header_end: usize,
+    /// The ASCII body's tokens; `None` for a binary body.
+    tokens: Option<std::str::SplitWhitespace<'a>>,
+    pos: usize,
+    token_no: usize,
+}
+
+impl Reader<'_> {
+    /// Where the next value starts: byte offset in the file (binary) or the
+    /// value number in the body (ASCII).
+    fn at(&self) -> String {
+        if self.tokens.is_some() {
+            format!("value {} of the data", self.token_no)
         } else {
-            format!("byte {}", header_end + pos)
+            format!("byte {}", self.header_end + self.pos)
         }
-    };
-    let mut next = |ty: Ty| -> Result<(f64, String), MeshError> {
-        let here = at(pos, token_no);
-        if let Some(t) = tokens.as_mut() {
-            token_no += 1;
+    }
+
+    /// The next value (of type `ty` in a binary body) and where it starts.
+    fn next(&mut self, ty: Ty) -> Result<(f64, String), MeshError> {
+        let here = self.at();
+        let berr = |message: String| invalid(self.path, message);
+        if let Some(t) = self.tokens.as_mut() {
+            self.token_no += 1;
             let s = t
                 .next()
                 .ok_or_else(|| berr(format!("{here}: unexpected end of PLY data")))?;
@@ -210,67 +264,78 @@ pub fn parse_ply(bytes: &[u8], path: &str) -> Result<Mesh, MeshError> {
             Ok((v, here))
         } else {
             let n = ty.size();
-            let b = body
-                .get(pos..pos + n)
+            let b = self
+                .body
+                .get(self.pos..self.pos + n)
                 .ok_or_else(|| berr(format!("{here}: unexpected end of PLY data")))?;
-            pos += n;
+            self.pos += n;
             Ok((ty.read(b), here))
         }
-    };
-    let index = |v: f64, here: &str, what: &str, max: f64| -> Result<usize, MeshError> {
+    }
+
+    /// `v` (read at `here`) as an index in `0..max`, refused otherwise.
+    fn index(&self, v: f64, here: &str, what: &str, max: f64) -> Result<usize, MeshError> {
         if !(v.is_finite() && v.fract() == 0.0 && v >= 0.0 && v < max) {
-            return Err(berr(format!(
-                "{here}: {what} {v} is not an integer in 0..{max}"
-            )));
+            return Err(invalid(
+                self.path,
+                format!("{here}: {what} {v} is not an integer in 0..{max}"),
+            ));
         }
         Ok(v as usize)
-    };
-    for e in &elements {
-        for _ in 0..e.count {
-            let mut p = [0.0; 3];
-            let mut face: Vec<u32> = Vec::new();
-            for prop in &e.props {
-                match prop {
-                    Prop::Scalar(name, ty) => {
-                        let (x, here) = next(*ty)?;
-                        let slot = match name.as_str() {
-                            "x" => Some(0),
-                            "y" => Some(1),
-                            "z" => Some(2),
-                            _ => None,
-                        };
-                        if let Some(k) = slot {
-                            if !x.is_finite() {
-                                return Err(berr(format!("{here}: vertex coordinate {x}")));
-                            }
-                            p[k] = x;
-                        }
+    }
+}
+
+/// Reads one entry of element `e` and adds it to `m`: a vertex's position,
+/// or a face fanned into triangles.
+fn read_entry(
+    e: &Element,
+    r: &mut Reader,
+    vertex_count: usize,
+    m: &mut Mesh,
+) -> Result<(), MeshError> {
+    let berr = |message: String| invalid(r.path, message);
+    let mut p = [0.0; 3];
+    let mut face: Vec<u32> = Vec::new();
+    for prop in &e.props {
+        match prop {
+            Prop::Scalar(name, ty) => {
+                let (x, here) = r.next(*ty)?;
+                let slot = match name.as_str() {
+                    "x" => Some(0),
+                    "y" => Some(1),
+                    "z" => Some(2),
+                    _ => None,
+                };
+                if let Some(k) = slot {
+                    if !x.is_finite() {
+                        return Err(berr(format!("{here}: vertex coordinate {x}")));
                     }
-                    Prop::List(name, cty, ity) => {
-                        let (n, here) = next(*cty)?;
-                        let n = index(n, &here, "list length", 1e6)?;
-                        for _ in 0..n {
-                            let (i, here) = next(*ity)?;
-                            if name == "vertex_indices" || name == "vertex_index" {
-                                let i = index(i, &here, "face index", vertex_count as f64)?;
-                                face.push(i as u32);
-                            }
-                        }
-                    }
+                    p[k] = x;
                 }
             }
-            if e.name == "vertex" {
-                m.positions.push(p);
-            } else if e.name == "face" {
-                if face.len() < 3 {
-                    return Err(berr(format!("face with {} vertices", face.len())));
-                }
-                for k in 1..face.len() - 1 {
-                    m.triangles.push([face[0], face[k], face[k + 1]]);
-                    m.tri_group.push(0);
+            Prop::List(name, cty, ity) => {
+                let (n, here) = r.next(*cty)?;
+                let n = r.index(n, &here, "list length", 1e6)?;
+                for _ in 0..n {
+                    let (i, here) = r.next(*ity)?;
+                    if name == "vertex_indices" || name == "vertex_index" {
+                        let i = r.index(i, &here, "face index", vertex_count as f64)?;
+                        face.push(i as u32);
+                    }
                 }
             }
         }
     }
-    Ok(m)
+    if e.name == "vertex" {
+        m.positions.push(p);
+    } else if e.name == "face" {
+        if face.len() < 3 {
+            return Err(berr(format!("face with {} vertices", face.len())));
+        }
+        for k in 1..face.len() - 1 {
+            m.triangles.push([face[0], face[k], face[k + 1]]);
+            m.tri_group.push(0);
+        }
+    }
+    Ok(())
 }
