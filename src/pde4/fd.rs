@@ -32,7 +32,8 @@ pub fn fd_centre(
         });
     }
     let h = 1.0 / n as f64;
-    let h4 = h.powi(4);
+    // multiplied out, as `plate_ratio`'s rho^4: the same bits in every build
+    let h4 = (h * h) * (h * h);
     let m = n - 1; // interior nodes per direction, indices 1..=m
     let id = |i: usize, j: usize| (i - 1) * m + (j - 1);
     // node index after the clamped ghost mirror: 0 and n are zero, -1 -> 1, n+1 -> n-1
