@@ -1,33 +1,9 @@
 //! JSON polyline input: `{"view": "front", "points": [[h, v], ...]}` in
 //! profile coordinates (unknown fields rejected).
 
-use super::{Profile, ProfileError, View};
-use serde::{Deserialize, Serialize};
+use super::polygon::ProfileJson;
+use super::{Profile, ProfileError};
 use std::path::Path;
-
-/// The serde form of a [`Profile`] (validated on deserialisation).
-#[derive(Clone, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub(crate) struct ProfileJson {
-    view: View,
-    points: Vec<[f64; 2]>,
-}
-
-impl TryFrom<ProfileJson> for Profile {
-    type Error = ProfileError;
-    fn try_from(j: ProfileJson) -> Result<Profile, ProfileError> {
-        Profile::new(j.view, j.points)
-    }
-}
-
-impl From<Profile> for ProfileJson {
-    fn from(p: Profile) -> ProfileJson {
-        ProfileJson {
-            view: p.view(),
-            points: p.points().to_vec(),
-        }
-    }
-}
 
 /// Reads a JSON profile; see [`parse_json`].
 pub fn read_json(path: &Path) -> Result<Profile, ProfileError> {

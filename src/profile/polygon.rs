@@ -12,10 +12,7 @@ use serde::{Deserialize, Serialize};
 /// input format); deserialising validates with [`Profile::new`], so a
 /// document embedding a profile cannot hold an invalid one.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(
-    try_from = "super::json::ProfileJson",
-    into = "super::json::ProfileJson"
-)]
+#[serde(try_from = "ProfileJson", into = "ProfileJson")]
 pub struct Profile {
     view: View,
     outline: Outline,
@@ -240,6 +237,30 @@ impl From<OutlineError> for ProfileError {
             OutlineError::SelfIntersecting { a, b, at } => {
                 ProfileError::SelfIntersecting { a, b, at }
             }
+        }
+    }
+}
+
+/// The serde form of a [`Profile`] (validated on deserialisation).
+#[derive(Clone, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct ProfileJson {
+    pub(super) view: View,
+    pub(super) points: Vec<[f64; 2]>,
+}
+
+impl TryFrom<ProfileJson> for Profile {
+    type Error = ProfileError;
+    fn try_from(j: ProfileJson) -> Result<Profile, ProfileError> {
+        Profile::new(j.view, j.points)
+    }
+}
+
+impl From<Profile> for ProfileJson {
+    fn from(p: Profile) -> ProfileJson {
+        ProfileJson {
+            view: p.view(),
+            points: p.points().to_vec(),
         }
     }
 }

@@ -18,34 +18,13 @@
 //! for one join) is an error naming the cut. Without cuts every join is
 //! placed from the outline's concave corners ([`super::segment`]).
 
+/// Join heights set by cuts (defined with the segmentation that reads them).
+pub use super::segment::JoinHeights;
 use super::segment::{Landmarks, GAP_FRACTION};
 use super::SketchError;
 
 /// A cut: its SVG id and its points (model coordinates).
 pub type CutPath = (String, Vec<[f64; 2]>);
-
-/// Join heights set by cuts (None: automatic).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct JoinHeights {
-    pub arm_l: Option<f64>,
-    pub arm_r: Option<f64>,
-    pub leg_l: Option<f64>,
-    pub leg_r: Option<f64>,
-    pub neck: Option<f64>,
-}
-
-impl JoinHeights {
-    /// The cut height of a limb region by name.
-    pub fn limb(&self, name: &str) -> Option<f64> {
-        match name {
-            "arm_l" => self.arm_l,
-            "arm_r" => self.arm_r,
-            "leg_l" => self.leg_l,
-            "leg_r" => self.leg_r,
-            _ => None,
-        }
-    }
-}
 
 /// Crossings of a polyline with a closed outline, in order along the cut.
 pub fn crossings(cut: &[[f64; 2]], outline: &[[f64; 2]]) -> Vec<[f64; 2]> {

@@ -20,7 +20,6 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
-use super::cuts::JoinHeights;
 use super::poly::{gap_tops, slice, top_at, GapTop};
 use super::SketchError;
 
@@ -403,4 +402,27 @@ pub fn regions(
 /// Height of the outline's top above x (for the shoulder seams).
 pub fn shoulder_top(front: &[[f64; 2]], x: f64) -> Option<f64> {
     top_at(front, x)
+}
+
+/// Join heights set by cut paths (`sketch::cuts`; None: automatic).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct JoinHeights {
+    pub arm_l: Option<f64>,
+    pub arm_r: Option<f64>,
+    pub leg_l: Option<f64>,
+    pub leg_r: Option<f64>,
+    pub neck: Option<f64>,
+}
+
+impl JoinHeights {
+    /// The cut height of a limb region by name.
+    pub fn limb(&self, name: &str) -> Option<f64> {
+        match name {
+            "arm_l" => self.arm_l,
+            "arm_r" => self.arm_r,
+            "leg_l" => self.leg_l,
+            "leg_r" => self.leg_r,
+            _ => None,
+        }
+    }
 }

@@ -52,8 +52,6 @@ const KNOWN_LOOPS: &[&[&str]] = &[
         "pde6::check::printed_appendix",
         "pde6::check::printed_appendix_b",
     ],
-    &["profile::json", "profile::polygon"],
-    &["sketch::cuts", "sketch::segment"],
     &["sketch::derive", "sketch::keysection", "sketch::quadruped"],
 ];
 
