@@ -188,11 +188,12 @@ impl PartGeometry for Ode6Part {
         let mut out = [0.0f64; 3];
         for &k in &self.knots[1..self.knots.len() - 1] {
             let (i, _) = self.patch_at(k);
-            for j in 0..samples {
-                let v = 2.0 * PI * j as f64 / samples as f64;
-                for (d, o) in out.iter_mut().enumerate() {
-                    let a = self.section_of(i - 1, k, d).eval(v);
-                    let b = self.section_of(i, k, d).eval(v);
+            for (d, o) in out.iter_mut().enumerate() {
+                // each side's section once per knot and order, then sampled
+                let (sa, sb) = (self.section_of(i - 1, k, d), self.section_of(i, k, d));
+                for j in 0..samples {
+                    let v = 2.0 * PI * j as f64 / samples as f64;
+                    let (a, b) = (sa.eval(v), sb.eval(v));
                     let big = crate::mesh::norm(a).max(crate::mesh::norm(b)).max(1.0);
                     *o = crate::check::Worst::worst(*o, crate::mesh::dist(a, b) / big);
                 }
