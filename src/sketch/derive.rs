@@ -90,7 +90,29 @@ pub(super) fn part_from_region(
         (true, Some(sd)) => s.iter().map(|q| side_depth(sd, map, q.y, r.side)).collect(),
         _ => None,
     };
-    let idx = place(&s, depth.as_deref(), SECTIONS_PER_PART);
+    // a humanoid leg whose side view shows a foot turns into it
+    let foot = match (leg_with_side(r), side, depth.as_deref()) {
+        (true, Some(sd), Some(d)) => super::foot::find(sd, map, &s, d, SECTIONS_PER_PART + 3),
+        _ => None,
+    };
+    let (n_upper, m_foot) = match &foot {
+        Some(f) => (f.last_upper + 1, foot_sections(&s, f)),
+        None => (s.len(), 0),
+    };
+    // the leg above the bend keeps its sections; the chain's count stays
+    // 3 P + 1 (`SECTIONS_PER_PART`'s rule)
+    let m_upper = match &foot {
+        Some(_) => {
+            let lower = 3 + m_foot;
+            (SECTIONS_PER_PART + lower - 1).div_ceil(3) * 3 + 1 - lower
+        }
+        None => SECTIONS_PER_PART,
+    };
+    let idx = place(
+        &s[..n_upper],
+        depth.as_deref().map(|d| &d[..n_upper]),
+        m_upper,
+    );
     let mut sections = Vec::with_capacity(idx.len() + 1);
     let mut u = 0.0;
     let mut prev: Option<[f64; 3]> = None;
@@ -112,7 +134,7 @@ pub(super) fn part_from_region(
         }
         prev = Some(centre0);
         let a_r = s[i].w * cos_tilt;
-        let last = j + 1 == idx.len();
+        let last = j + 1 == idx.len() && foot.is_none();
         let shape = match (uses_side, side) {
             (true, Some(sd)) if !(last && r.tip) => match side_depth(sd, map, s[i].y, r.side) {
                 Some((zc, b)) => SectionShape::Ellipse {
@@ -132,7 +154,25 @@ pub(super) fn part_from_region(
             shape,
         });
     }
-    if r.tip {
+    if let (Some(f), Some(sd)) = (&foot, side) {
+        let lastc = sections.last().map(|q| q.centre).unwrap_or([0.0; 3]);
+        let i = idx[idx.len() - 1];
+        let end = super::foot::LegEnd {
+            front,
+            pick: r.pick,
+            side: sd,
+            map,
+            u,
+            centre: [
+                lastc[0],
+                lastc[1],
+                side_depth(sd, map, s[i].y, r.side).map_or(0.0, |d| d.0),
+            ],
+            e1x: sections.last().map_or(-1.0, |q| q.e1[0].signum()),
+        };
+        let pts = super::foot::path(sd, f, m_foot);
+        sections.extend(super::foot::sections(&end, f, &pts));
+    } else if r.tip {
         // the free end collapses to the outline's extreme point
         let tip_y = if r.downward { r.y0 } else { r.y1 };
         let lastc = sections.last().map(|q| q.centre).unwrap_or([0.0; 3]);
@@ -158,6 +198,27 @@ pub(super) fn part_from_region(
         closed_start: false,
         closed_end: r.tip,
     })
+}
+
+/// A humanoid leg read with the side view (its depth from the side's whole
+/// slice): the only part whose side view can show a foot.
+fn leg_with_side(r: &Region) -> bool {
+    r.downward && r.tip && r.shoulder.is_none() && r.side == SidePick::Whole
+}
+
+/// Sections along a foot (after the three of the bend, the last one its
+/// toe): its share of the leg's path length, so that the foot's sections
+/// are spaced like the leg's, between 2 and 4.
+fn foot_sections(s: &[Sample], f: &super::foot::Foot) -> usize {
+    let up: f64 = s[..=f.last_upper]
+        .windows(2)
+        .map(|w| (w[1].y - w[0].y).hypot(w[1].c - w[0].c))
+        .sum();
+    let bend = std::f64::consts::FRAC_PI_2 * f.radius;
+    let along = (f.toe[0] - f.start[0]).abs() - f.radius;
+    let total = up + bend + along;
+    let share = (SECTIONS_PER_PART - 1) as f64 * along / total;
+    (share.round() as usize).clamp(2, 4)
 }
 
 /// Tilts the top sections of a limb hanging from a shoulder (an arm): the

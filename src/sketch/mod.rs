@@ -54,6 +54,7 @@ pub mod derive;
 pub mod figure;
 pub mod figure_animal;
 pub mod figure_params;
+mod foot;
 pub mod input;
 pub mod keysection;
 pub mod limb;
