@@ -301,6 +301,40 @@ fn a_t_pose_builds_with_its_arms_traced_along_their_axis() {
     assert!(z[0] - a[0] > 0.2 * 1.75, "arm from {a:?} to {z:?}");
 }
 
+/// One arm 10 and the other 40 degrees below the horizontal is a pose, not a
+/// tilted drawing: the drawing's rotation is read from its thick core
+/// (`sketch::align::core_axes`), so both feet stay on the ground. Read from
+/// the whole outline's area the arms turned it by 7 degrees, and one leg,
+/// cut at the wrong slices, ended 10 % of the height above the ground.
+#[test]
+fn an_asymmetric_arm_pose_is_not_read_as_a_tilted_figure() {
+    // corpus arms_apart: arms 10 and 40 degrees below the horizontal
+    let dir = corpus_dir();
+    let (f, s) = (
+        dir.join("arms_apart_front.svg"),
+        dir.join("arms_apart_side.svg"),
+    );
+    let b = build(&f, &s, None).unwrap_or_else(|e| panic!("arms apart: {e}"));
+    let height = b.report.height_m;
+    for leg in ["leg_l", "leg_r"] {
+        let p = b.doc.parts.iter().find(|p| p.name == leg).expect("leg");
+        let low = p
+            .sections
+            .iter()
+            .map(|s| s.centre[1])
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            low <= FOOT_REACH * height,
+            "{leg}: lowest section at {:.2} % of the height",
+            100.0 * low / height
+        );
+    }
+}
+
+/// A leg's lowest key section lies this close to the ground (relative to
+/// the height): the foot's sections sit at its mid height, a few percent.
+const FOOT_REACH: f64 = 0.05;
+
 proptest! {
     #![proptest_config(crate::strategies::config(6))]
 
