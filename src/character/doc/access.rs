@@ -56,12 +56,28 @@ impl CharacterDoc {
         self.parts.iter_mut().find(|p| p.name == name)
     }
 
+    /// The stored transition named `name`, to change in place (its
+    /// continuity, tangent scale or cut angles). `None` when there is no
+    /// such transition.
+    pub fn transition_mut(&mut self, name: &str) -> Option<&mut TransitionSpec> {
+        self.transitions.iter_mut().find(|t| t.name == name)
+    }
+
     /// Sets the continuity of every stored transition to the parts (`C2`
     /// is the quintic Hermite blend, `C1` the cubic one).
     pub fn set_continuity(&mut self, continuity: Continuity) {
         for t in &mut self.transitions {
             t.continuity = continuity;
         }
+    }
+
+    /// Records a separately drawn part (an input). It is built into a part
+    /// when the parts are derived (a build of a document without stored
+    /// parts, or with `rederive`); until then the report lists it as not
+    /// built. [`Self::add_drawn_part`] records and stores the built part at
+    /// once.
+    pub fn push_removed_part(&mut self, removed: RemovedPart) {
+        self.removed_parts.push(removed);
     }
 
     /// Adds a separately drawn part: its drawing (`removed`, an input) and
@@ -81,6 +97,13 @@ impl CharacterDoc {
     /// Attaches the prop `p` (appended to the props).
     pub fn push_prop(&mut self, p: PropSpec) {
         self.props.push(p);
+    }
+
+    /// Detaches the prop named `name` and returns it (`None`, the document
+    /// unchanged, when there is no such prop).
+    pub fn remove_prop(&mut self, name: &str) -> Option<PropSpec> {
+        let i = self.props.iter().position(|p| p.name == name)?;
+        Some(self.props.remove(i))
     }
 
     /// Puts back the inputs and every derived field as they were (an
