@@ -78,13 +78,13 @@ pub struct CharacterDoc {
     version: u32,
     #[serde(default)]
     level: Level,
-    pub inputs: Inputs,
+    inputs: Inputs,
     #[serde(default)]
-    pub parts: Vec<PartSpec>,
+    parts: Vec<PartSpec>,
     #[serde(default)]
-    pub transitions: Vec<TransitionSpec>,
+    transitions: Vec<TransitionSpec>,
     #[serde(default)]
-    pub removed_parts: Vec<RemovedPart>,
+    removed_parts: Vec<RemovedPart>,
     /// The edit log (see [`crate::character::log`]).
     #[serde(default)]
     edits: Vec<crate::character::log::Edit>,
@@ -94,7 +94,7 @@ pub struct CharacterDoc {
     /// Props: conv models composed as separate components
     /// ([`crate::character::props`]); absent in older documents.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub props: Vec<crate::character::props::PropSpec>,
+    props: Vec<crate::character::props::PropSpec>,
 }
 
 impl CharacterDoc {
