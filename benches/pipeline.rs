@@ -59,7 +59,7 @@ fn bench(c: &mut Criterion) {
         .doc;
     let path = dir.join("char.json");
     doc.save(&path).expect("saves");
-    let parts: Vec<String> = doc.parts.iter().map(|p| p.name.clone()).collect();
+    let parts: Vec<String> = doc.parts().iter().map(|p| p.name.clone()).collect();
     let preview_res = Resolution {
         rings_per_height: PREVIEW_RINGS,
         ..Resolution::default()
@@ -84,11 +84,11 @@ fn bench(c: &mut Criterion) {
             let mut d = doc.clone();
             // the UI thread: push_edit (replay, part solved) and the tree
             d.push_edit(edit(k)).expect("valid");
-            black_box(pdesculpt::edit::apply_to_parts(&d.parts, d.active_edits()).expect("ok"));
+            black_box(pdesculpt::edit::apply_to_parts(d.parts(), d.active_edits()).expect("ok"));
             // the worker: the document as read back, pre-warm, build
             let text = serde_json::to_string_pretty(&d).expect("serialises");
             let d = CharacterDoc::parse(&text, Path::new("document")).expect("parses");
-            let edited = pdesculpt::edit::apply_to_parts(&d.parts, d.active_edits()).expect("ok");
+            let edited = pdesculpt::edit::apply_to_parts(d.parts(), d.active_edits()).expect("ok");
             for p in &edited {
                 cache.get(p).expect("solves");
             }

@@ -153,7 +153,7 @@ fn bench(c: &mut Criterion) {
     // part cached: transitions, mesh assembly, report)
     let torso = app
         .doc
-        .parts
+        .parts()
         .iter()
         .max_by_key(|p| p.sections.len())
         .expect("parts")

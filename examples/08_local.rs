@@ -31,7 +31,7 @@ fn main() -> anyhow::Result<()> {
 
     // a force pushing the front of the torso out, over the middle of its u range
     let torso = doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == "torso")
         .ok_or_else(|| anyhow::anyhow!("torso"))?;

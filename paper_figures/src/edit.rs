@@ -130,7 +130,7 @@ fn panels(
 fn fig8(ctx: &Ctx) -> anyhow::Result<()> {
     let doc = female()?;
     let torso = doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == "torso")
         .ok_or_else(|| anyhow::anyhow!("no torso"))?
@@ -229,7 +229,7 @@ fn fig9(ctx: &Ctx) -> anyhow::Result<()> {
     let base = with(&doc, &[])?;
     let height = base.report.height;
     let leg = doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == "leg_fl")
         .ok_or_else(|| anyhow::anyhow!("the animal has no leg_fl"))?;

@@ -40,7 +40,7 @@ fn stroke_row() -> anyhow::Result<StrokeRow> {
     let doc = bundled("female", Level::Final).ok_or_else(|| anyhow::anyhow!("bundled female"))?;
     let base = build_document(&doc, std::path::Path::new("."), Resolution::default(), true)?;
     let mut doc = base.doc.clone();
-    let spec = doc.parts.iter().find(|p| p.name == "torso").cloned();
+    let spec = doc.parts().iter().find(|p| p.name == "torso").cloned();
     let spec = spec.ok_or_else(|| anyhow::anyhow!("no torso"))?;
     let surf = base.model.parts.iter().find(|p| p.name == "torso");
     let surf = surf.ok_or_else(|| anyhow::anyhow!("no torso surface"))?;

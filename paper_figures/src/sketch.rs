@@ -98,7 +98,7 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
     // curve (the section centres); (c) every key section
     let mut parts = vec![outline(grey)];
     let mut sections = vec![outline(grey)];
-    for (i, p) in b.doc.parts.iter().enumerate() {
+    for (i, p) in b.doc.parts().iter().enumerate() {
         let col = PALETTE[i % PALETTE.len()];
         parts.push(flat(
             p.sections.iter().map(|s| s.centre).collect(),
@@ -123,13 +123,13 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
         draw(&b.model.mesh, vec![outline(RED)]),
     ];
     let r = &b.report;
-    let n_sections: usize = b.doc.parts.iter().map(|p| p.sections.len()).sum();
+    let n_sections: usize = b.doc.parts().iter().map(|p| p.sections.len()).sum();
     let front = r.profile_error.first();
     let captions = vec![
         format!("a outline ({} points)", b.front.points().len()),
         format!(
             "b {} parts: central curves\nand join boundaries",
-            b.doc.parts.len()
+            b.doc.parts().len()
         ),
         format!("c {n_sections} key sections (circles)"),
         format!(
@@ -151,12 +151,12 @@ fn fig5(ctx: &Ctx) -> anyhow::Result<()> {
         &json!({
             "figure": "000-fig5",
             "model": "data/sketch/female_front.svg",
-            "parts": b.doc.parts.iter().map(|p| json!({
+            "parts": b.doc.parts().iter().map(|p| json!({
                 "name": p.name,
                 "sections": p.sections.len(),
                 "centres": p.sections.iter().map(|s| s.centre).collect::<Vec<_>>(),
             })).collect::<Vec<_>>(),
-            "transitions": b.doc.transitions.iter().map(|t| json!({"name": t.name, "parent": t.parent, "children": t.children})).collect::<Vec<_>>(),
+            "transitions": b.doc.transitions().iter().map(|t| json!({"name": t.name, "parent": t.parent, "children": t.children})).collect::<Vec<_>>(),
             "profile_error": r.profile_error,
             "watertight": r.topology.watertight,
         }),

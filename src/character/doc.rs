@@ -57,31 +57,34 @@ use crate::mesh::io::write_atomic;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
+pub mod access;
+
 /// The character document.
 ///
-/// The schema version, the level and the edit log are private: the version
-/// and level are fixed when the document is made ([`CharacterDoc::from_inputs`]
-/// or a load), and the log changes only through its API
-/// ([`CharacterDoc::push_edit`], [`CharacterDoc::append_edit`],
-/// [`CharacterDoc::undo`], [`CharacterDoc::redo`],
-/// [`CharacterDoc::drop_inactive_edits`]), so the cursor never points past
-/// the log's end. The inputs and the derived parts, transitions, removed
-/// parts and props stay public fields: the editor, the sketch deriver and
-/// template fitting change them in place, and [`CharacterDoc::validate`]
-/// (run by every save and build) checks them.
+/// Every field is private. The version and level are fixed when the
+/// document is made ([`CharacterDoc::from_inputs`] or a load), and the log
+/// changes only through its API ([`CharacterDoc::push_edit`],
+/// [`CharacterDoc::append_edit`], [`CharacterDoc::undo`],
+/// [`CharacterDoc::redo`], [`CharacterDoc::drop_inactive_edits`]), so the
+/// cursor never points past the log's end. The inputs and the derived
+/// parts, transitions, removed parts and props are read through accessors
+/// and change only through named operations ([`access`]: a build's
+/// [`CharacterDoc::set_derived`], the editor's commands, a template's
+/// [`CharacterDoc::part_mut`]), which [`CharacterDoc::validate`] (run by
+/// every save and build) checks.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CharacterDoc {
     version: u32,
     #[serde(default)]
     level: Level,
-    pub inputs: Inputs,
+    inputs: Inputs,
     #[serde(default)]
-    pub parts: Vec<PartSpec>,
+    parts: Vec<PartSpec>,
     #[serde(default)]
-    pub transitions: Vec<TransitionSpec>,
+    transitions: Vec<TransitionSpec>,
     #[serde(default)]
-    pub removed_parts: Vec<RemovedPart>,
+    removed_parts: Vec<RemovedPart>,
     /// The edit log (see [`crate::character::log`]).
     #[serde(default)]
     edits: Vec<crate::character::log::Edit>,
@@ -91,7 +94,7 @@ pub struct CharacterDoc {
     /// Props: conv models composed as separate components
     /// ([`crate::character::props`]); absent in older documents.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub props: Vec<crate::character::props::PropSpec>,
+    props: Vec<crate::character::props::PropSpec>,
 }
 
 impl CharacterDoc {

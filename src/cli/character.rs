@@ -77,17 +77,21 @@ fn doc_inputs(d: &CharacterDoc, doc: &Path) -> Vec<PathBuf> {
             out.push(CharacterDoc::resolve(doc, s));
         }
     };
-    profile(&d.inputs.front);
-    if let Some(s) = &d.inputs.side {
+    profile(&d.inputs().front);
+    if let Some(s) = &d.inputs().side {
         profile(s);
     }
-    for r in &d.removed_parts {
+    for r in d.removed_parts() {
         profile(&r.front);
         if let Some(s) = &r.side {
             profile(s);
         }
     }
-    out.extend(d.props.iter().map(|p| CharacterDoc::resolve(doc, &p.model)));
+    out.extend(
+        d.props()
+            .iter()
+            .map(|p| CharacterDoc::resolve(doc, &p.model)),
+    );
     out
 }
 

@@ -93,9 +93,9 @@ pub fn sketched_female() -> Result<(Mesh, SketchStep), DemoError> {
             .map(|p| (p.view, p.max_rel))
             .collect(),
         max_c1: r.max_c1,
-        parts: (b.doc.parts.iter().map(|p| &p.name))
-            .chain(b.doc.transitions.iter().map(|t| &t.name))
-            .chain(b.doc.removed_parts.iter().map(|r| &r.name))
+        parts: (b.doc.parts().iter().map(|p| &p.name))
+            .chain(b.doc.transitions().iter().map(|t| &t.name))
+            .chain(b.doc.removed_parts().iter().map(|r| &r.name))
             .cloned()
             .collect(),
     };

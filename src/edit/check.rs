@@ -171,7 +171,7 @@ fn differing(a: &Mesh, b: &Mesh) -> f64 {
 
 /// The edits of the undo and replay checks: one of every kind.
 pub fn sample_edits(doc: &CharacterDoc) -> Vec<Edit> {
-    let torso = &doc.parts[0];
+    let torso = &doc.parts()[0];
     let c = torso.sections[torso.sections.len() / 2].centre;
     vec![
         Edit::ShapeParameter {
@@ -217,8 +217,8 @@ pub fn checks() -> Vec<Check> {
     let mut out = Vec::new();
     force_checks(&doc, &mut out);
     out.extend(super::check_stroke::checks(&doc, |e| force4_mesh(&doc, e)));
-    transform_checks(&doc.parts, &mut out);
-    boundary_checks(&doc.parts, &mut out);
+    transform_checks(doc.parts(), &mut out);
+    boundary_checks(doc.parts(), &mut out);
     replay_checks(&doc, &mut out);
     out
 }
@@ -226,7 +226,7 @@ pub fn checks() -> Vec<Check> {
 /// Sec 5.1: the 2-sided and 4-sided force edits are clamped at their
 /// boundary and local.
 fn force_checks(doc: &CharacterDoc, out: &mut Vec<Check>) {
-    let torso = &doc.parts[0];
+    let torso = &doc.parts()[0];
     // force: the displacement and its u-derivative vanish at the range ends
     let force = sample_force(torso, [0.0, 0.0, 5.0]);
     let field = super::force4::force_field(&force);
@@ -417,7 +417,7 @@ fn replay_checks(doc: &CharacterDoc, out: &mut Vec<Check>) {
     }
     let undone = session.build().ok();
     let m = match (&base, &undone) {
-        (Some(a), Some(b)) if ok && moved > 0.0 && b.doc.parts == doc.parts => {
+        (Some(a), Some(b)) if ok && moved > 0.0 && b.doc.parts() == doc.parts() => {
             differing(&a.model.mesh, &b.model.mesh)
         }
         _ => f64::NAN,

@@ -258,7 +258,7 @@ pub fn checks(doc: &CharacterDoc, mesh_local: impl Fn(&Edit) -> f64) -> Vec<Chec
     let c = |eq: &str, n: &str, kind, m: f64, t: f64| {
         Check::new("edit", "000", eq, &format!("edit.{n}"), kind, m, t)
     };
-    let torso = &doc.parts[0];
+    let torso = &doc.parts()[0];
     let e = sample_force_stroke(torso, 0.8, [0.0, 0.0, 5.0]);
     let m = stroke_measures(&e);
     let get = |f: &dyn Fn(&StrokeMeasures) -> f64| m.as_ref().map(f).unwrap_or(f64::NAN);

@@ -179,8 +179,8 @@ pub fn build(
     let placed = crate::sketch::place::place(
         &front,
         side.as_ref(),
-        doc.inputs.height,
-        doc.inputs.body_plan,
+        doc.inputs().height,
+        doc.inputs().body_plan,
     )?;
     let warnings = placed.warnings.clone();
     let placement = placed.report.placement;
@@ -192,35 +192,35 @@ pub fn build(
     if doc.level() != Level::Initial && side.is_none() {
         return Err(level("a side profile"));
     }
-    if doc.level() == Level::Final && doc.inputs.sections.is_empty() {
+    if doc.level() == Level::Final && doc.inputs().sections.is_empty() {
         return Err(level("key cross-section sketches"));
     }
     let removed = doc
-        .removed_parts
+        .removed_parts()
         .iter()
         .map(|r| crate::sketch::removed::removed_part(r, base, tol, &placement))
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
     let yr = crate::polygon::span(front.points(), 1);
     let height = yr[1] - yr[0];
-    if opts.rederive || doc.parts.is_empty() {
+    if opts.rederive || doc.parts().is_empty() {
         let d = derive(
             front.points(),
             side.as_ref().map(|s| s.points()),
-            &crate::sketch::place::placed_sections(&doc.inputs.sections, &placement),
+            &crate::sketch::place::placed_sections(&doc.inputs().sections, &placement),
             &front.cuts,
             doc.level(),
-            doc.inputs.body_plan,
+            doc.inputs().body_plan,
         )?;
-        out.parts = d.parts;
-        out.parts.extend(removed.iter().map(|r| r.spec.clone()));
-        out.transitions = d.transitions;
+        let mut parts = d.parts;
+        parts.extend(removed.iter().map(|r| r.spec.clone()));
+        out.set_derived(parts, d.transitions);
     }
     let (edited, model) = replay(&out, height, opts, cache)?;
     let mut model = model;
-    let mut props = Vec::with_capacity(doc.props.len());
+    let mut props = Vec::with_capacity(doc.props().len());
     let cells = props::resolution(opts.res.rings_per_height);
-    for p in &doc.props {
+    for p in doc.props() {
         opts.check_cancel()?;
         props.push(props::compose_one(&mut model.mesh, p, base, cells)?);
     }
@@ -259,8 +259,8 @@ fn replay(
     cache: Option<&mut PartCache>,
 ) -> Result<(Vec<PartSpec>, Model), BuildError> {
     let active = doc.active_edits();
-    check_order(&doc.transitions, active)?;
-    let edited = crate::edit::apply_to_parts(&doc.parts, active)?;
+    check_order(doc.transitions(), active)?;
+    let edited = crate::edit::apply_to_parts(doc.parts(), active)?;
     let disp = crate::edit::displacements(active)?;
     let mut local = PartCache::default();
     let cache = match cache {
@@ -273,7 +273,7 @@ fn replay(
     }
     let mut model = build_model_with(
         &edited,
-        &doc.transitions,
+        doc.transitions(),
         height,
         opts.res,
         &disp,

@@ -14,14 +14,14 @@ impl CharacterDoc {
     /// active edits applied) before changing anything, then drops the redo
     /// tail, appends `e` and moves the cursor to the end.
     pub fn push_edit(&mut self, e: Edit) -> Result<(), EditError> {
-        if self.parts.is_empty() {
+        if self.parts().is_empty() {
             return Err(EditError::NoParts);
         }
-        let mut parts = crate::edit::apply_to_parts(&self.parts, self.active_edits())?;
+        let mut parts = crate::edit::apply_to_parts(self.parts(), self.active_edits())?;
         validate_params(&e)?;
         let mut log = self.active_edits().to_vec();
         log.push(e.clone());
-        check_order(&self.transitions, &log)?;
+        check_order(self.transitions(), &log)?;
         crate::edit::apply_one(&mut parts, &e)?;
         check_builds(&parts, &e)?;
         self.append_edit(e);
@@ -106,7 +106,7 @@ pub fn project_force_stroke(
         let err = crate::edit::stroke::StrokeError::TooManyPoints { count };
         return Err(invalid(format!("stroke: {err}")));
     }
-    let parts = crate::edit::apply_to_parts(&doc.parts, doc.active_edits())?;
+    let parts = crate::edit::apply_to_parts(doc.parts(), doc.active_edits())?;
     let spec = parts
         .iter()
         .find(|p| &p.name == part)

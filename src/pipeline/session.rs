@@ -63,13 +63,13 @@ pub fn push_checked(
     opts: &BuildOptions,
     cache: Option<&mut PartCache>,
 ) -> Result<Built, BuildError> {
-    if doc.parts.is_empty() {
+    if doc.parts().is_empty() {
         return Err(EditError::NoParts.into());
     }
     validate_params(&e)?;
     let mut next = doc.clone();
     next.append_edit(e);
-    check_order(&next.transitions, next.active_edits())?;
+    check_order(next.transitions(), next.active_edits())?;
     let (index, pushed) = next.last_active().expect("an edit was just appended");
     let what = format!("edit {index} ({})", pushed.summary());
     let built = validate_by_build(&next, opts, cache, &what).map_err(|err| match err {
@@ -119,9 +119,9 @@ pub fn validate_by_build(
     what: &str,
 ) -> Result<Built, BuildError> {
     let built = build(doc, opts, cache)?;
-    if !doc.parts.is_empty() {
-        let b = Extent::of_parts(&doc.parts);
-        let props: Vec<&str> = doc.props.iter().map(|p| p.name.as_str()).collect();
+    if !doc.parts().is_empty() {
+        let b = Extent::of_parts(doc.parts());
+        let props: Vec<&str> = doc.props().iter().map(|p| p.name.as_str()).collect();
         let after = Extent::of_groups(&built.model.mesh, &props);
         let reach = b.overreach(&after);
         if reach.is_nan() || reach > GROWTH {

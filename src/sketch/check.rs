@@ -181,9 +181,7 @@ fn quintic_check() -> Check {
 /// C2 jump is reported, not claimed).
 fn c2_option_check(b: &crate::pipeline::Built) -> Check {
     let mut d = b.doc.clone();
-    for t in &mut d.transitions {
-        t.continuity = crate::character::doc::Continuity::C2;
-    }
+    d.set_continuity(crate::character::doc::Continuity::C2);
     let c2 = build_document(&d, std::path::Path::new("."), Resolution::default(), false)
         .map(|b| b.model.joins.iter().map(|j| j.c2).fold(0.0, worst))
         .unwrap_or(f64::NAN);

@@ -23,17 +23,13 @@ pub const ARMS: [&str; 2] = ["arm_l", "arm_r"];
 /// transition to the quintic C2 one when `c2`), built.
 pub fn with_ode6_arms(b: &Built, c2: bool) -> Option<Built> {
     let mut d = b.doc.clone();
-    for p in d
-        .parts
-        .iter_mut()
-        .filter(|p| ARMS.contains(&p.name.as_str()))
-    {
-        p.surface = ARM;
+    for arm in ARMS {
+        if let Some(p) = d.part_mut(arm) {
+            p.surface = ARM;
+        }
     }
     if c2 {
-        for t in &mut d.transitions {
-            t.continuity = crate::character::doc::Continuity::C2;
-        }
+        d.set_continuity(crate::character::doc::Continuity::C2);
     }
     build_document(&d, std::path::Path::new("."), Resolution::default(), false).ok()
 }

@@ -306,10 +306,11 @@ pub fn read_views(
     doc: &CharacterDoc,
     base: &Path,
 ) -> Result<(Outline, Option<Outline>, Option<f64>), SketchError> {
+    let inputs = doc.inputs();
     let read = |tol: Option<f64>| -> Result<(Outline, Option<Outline>), SketchError> {
         let front =
-            super::input::read_profile(&doc.inputs.front, base, crate::profile::View::Front, tol)?;
-        let side = match &doc.inputs.side {
+            super::input::read_profile(&inputs.front, base, crate::profile::View::Front, tol)?;
+        let side = match &inputs.side {
             Some(s) => Some(super::input::read_profile(
                 s,
                 base,
@@ -320,7 +321,7 @@ pub fn read_views(
         };
         Ok((front, side))
     };
-    match (doc.inputs.tolerance, doc.inputs.height) {
+    match (inputs.tolerance, inputs.height) {
         (Some(t), Some(h)) => {
             let (f, _) = read(None)?;
             let yr = crate::polygon::span(f.points(), 1);
@@ -342,8 +343,8 @@ pub fn placement(doc: &CharacterDoc, base: &Path) -> Result<Placement, SketchErr
     let placed = place(
         &front,
         side.as_ref(),
-        doc.inputs.height,
-        doc.inputs.body_plan,
+        doc.inputs().height,
+        doc.inputs().body_plan,
     )?;
     Ok(placed.report.placement)
 }

@@ -161,7 +161,7 @@ pub fn report(
         .map(|c| c.interior_deg)
         .fold(0.0, f64::max);
     let transitions = out
-        .transitions
+        .transitions()
         .iter()
         .map(|t| TransitionReport {
             crease_deg: crease_of(&t.name).map_or(0.0, |c| c.interior_deg),
@@ -198,7 +198,7 @@ pub fn report(
         .iter()
         .map(|p| p.name.clone())
         .filter(|n| !names.contains(&n.as_str()))
-        .chain(out.transitions.iter().map(|t| t.name.clone()))
+        .chain(out.transitions().iter().map(|t| t.name.clone()))
         .collect();
     let quality = super::quality::measure(
         &body,
@@ -226,9 +226,9 @@ pub fn report(
         max_c1,
         part_crease_deg,
         not_built: out
-            .removed_parts
+            .removed_parts()
             .iter()
-            .filter(|r| !out.parts.iter().any(|p| p.name == r.name))
+            .filter(|r| !out.parts().iter().any(|p| p.name == r.name))
             .map(|r| r.name.clone())
             .collect(),
         removed: removed_reports,

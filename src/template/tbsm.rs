@@ -396,8 +396,8 @@ pub fn replace_in_doc(
     template: &TemplatePart,
     terms: usize,
 ) -> Result<usize, TemplateError> {
-    let names: Vec<&str> = doc.parts.iter().map(|p| p.name.as_str()).collect();
-    let Some(k) = doc.parts.iter().position(|p| p.name == name) else {
+    let names: Vec<&str> = doc.parts().iter().map(|p| p.name.as_str()).collect();
+    let Some(part) = doc.parts().iter().find(|p| p.name == name) else {
         return Err(bad(format!(
             "the document has no part '{name}' (parts: {})",
             if names.is_empty() {
@@ -407,7 +407,6 @@ pub fn replace_in_doc(
             }
         )));
     };
-    let part = &doc.parts[k];
     let replaceable = |s: &SectionSpec| {
         matches!(s.shape, SectionShape::Circle { r } if r > 0.0)
             || matches!(s.shape, SectionShape::Ellipse { .. })
@@ -418,7 +417,8 @@ pub fn replace_in_doc(
             "part '{name}' has no elliptic or round section to replace"
         )));
     }
-    doc.parts[k] = replace_sections(part, template, terms)?;
+    let replaced = replace_sections(part, template, terms)?;
+    *doc.part_mut(name).expect("the part was found above") = replaced;
     Ok(count)
 }
 

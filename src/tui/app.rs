@@ -189,14 +189,14 @@ impl App {
     }
 
     fn refresh_edited(&mut self) {
-        self.edited = apply_to_parts(&self.doc.parts, self.doc.active_edits())
-            .unwrap_or_else(|_| self.doc.parts.clone());
+        self.edited = apply_to_parts(self.doc.parts(), self.doc.active_edits())
+            .unwrap_or_else(|_| self.doc.parts().to_vec());
         self.log_sel = self.log_sel.min(self.doc.edits().len());
     }
 
     /// The part tree.
     pub fn tree(&self) -> Vec<TreeItem> {
-        let removed = |n: &str| self.doc.removed_parts.iter().any(|r| r.name == n);
+        let removed = |n: &str| self.doc.removed_parts().iter().any(|r| r.name == n);
         let mut out: Vec<TreeItem> = self
             .edited
             .iter()
@@ -210,14 +210,14 @@ impl App {
                 detail: format!("{} sections", p.sections.len()),
             })
             .collect();
-        out.extend(self.doc.transitions.iter().map(|t| TreeItem {
+        out.extend(self.doc.transitions().iter().map(|t| TreeItem {
             kind: ItemKind::Transition,
             name: t.name.clone(),
             detail: format!("{} -> {}", t.parent, t.children.join(", ")),
         }));
         out.extend(
             self.doc
-                .removed_parts
+                .removed_parts()
                 .iter()
                 .filter(|r| !self.edited.iter().any(|p| p.name == r.name))
                 .map(|r| TreeItem {
@@ -226,7 +226,7 @@ impl App {
                     detail: "removed, not built".into(),
                 }),
         );
-        out.extend(self.doc.props.iter().map(|p| TreeItem {
+        out.extend(self.doc.props().iter().map(|p| TreeItem {
             kind: ItemKind::Prop,
             name: p.name.clone(),
             detail: format!("conv model x{}", p.scale),
@@ -373,11 +373,11 @@ impl App {
 
     pub(super) fn built(&mut self, r: Rebuilt, elapsed: Duration) -> Vec<Effect> {
         let mut effects = Vec::new();
-        if self.doc.parts.is_empty() {
+        if self.doc.parts().is_empty() {
             // the first build derived the parts: the document keeps them
             // (edits act on stored parts)
-            self.doc.parts = r.doc.parts.clone();
-            self.doc.transitions = r.doc.transitions.clone();
+            self.doc
+                .set_derived(r.doc.parts().to_vec(), r.doc.transitions().to_vec());
             effects = self.changed();
             effects.clear();
         }

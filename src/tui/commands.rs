@@ -140,10 +140,10 @@ fn stem_name(p: &Path) -> String {
 
 /// Every name in use (parts, transitions, removed parts, props).
 fn name_used(doc: &CharacterDoc, name: &str) -> bool {
-    doc.parts.iter().any(|p| p.name == name)
-        || doc.transitions.iter().any(|t| t.name == name)
-        || doc.removed_parts.iter().any(|r| r.name == name)
-        || doc.props.iter().any(|p| p.name == name)
+    doc.parts().iter().any(|p| p.name == name)
+        || doc.transitions().iter().any(|t| t.name == name)
+        || doc.removed_parts().iter().any(|r| r.name == name)
+        || doc.props().iter().any(|p| p.name == name)
 }
 
 fn check_name(doc: &CharacterDoc, name: &str) -> Result<(), String> {
@@ -165,7 +165,7 @@ fn number(w: &str, what: &str) -> Result<f64, String> {
 }
 
 fn need_parts(doc: &CharacterDoc) -> Result<(), String> {
-    if doc.parts.is_empty() {
+    if doc.parts().is_empty() {
         Err("the document has no parts yet (wait for the first build)".into())
     } else {
         Ok(())
@@ -194,13 +194,12 @@ pub fn add_part(
         side: None,
     };
     let placement = crate::sketch::place::placement(doc, base).map_err(|e| e.to_string())?;
-    let built = crate::sketch::removed::removed_part(&rp, base, doc.inputs.tolerance, &placement)
+    let built = crate::sketch::removed::removed_part(&rp, base, doc.inputs().tolerance, &placement)
         .map_err(|e| e.to_string())?;
     let mut out = doc.clone();
-    out.removed_parts.push(rp);
-    out.parts.push(built.spec);
+    out.add_drawn_part(rp, built.spec);
     out.validate().map_err(|e| e.to_string())?;
-    let n = out.parts.last().map_or(0, |p| p.sections.len());
+    let n = out.parts().last().map_or(0, |p| p.sections.len());
     Ok((
         out,
         format!(
@@ -262,7 +261,7 @@ pub fn add_key_section(
 ) -> Result<(CharacterDoc, String), String> {
     need_parts(doc)?;
     let stored = doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == part)
         .ok_or_else(|| format!("'{part}' is not a part: select a part first"))?;
@@ -300,13 +299,12 @@ pub fn add_key_section(
         y,
         points,
     };
-    let mut parts = doc.parts.clone();
+    let mut parts = doc.parts().to_vec();
     crate::sketch::keysection::apply_key_section(&mut parts, &k).map_err(|e| e.to_string())?;
     crate::edit::apply_to_parts(&parts, doc.active_edits())
         .map_err(|e| format!("the edit log no longer applies: {e}"))?;
     let mut out = doc.clone();
-    out.parts = parts;
-    out.inputs.sections.push(k);
+    out.add_key_section(k, parts);
     out.validate().map_err(|e| e.to_string())?;
     Ok((out, format!("key section of '{part}' at y = {y}: {what}")))
 }
@@ -321,7 +319,7 @@ pub fn add_prop(
     if words.is_empty() || words.len() > 6 || words.len() == 4 || words.len() == 5 {
         return Err("expected MODEL.json [NAME [SCALE [TX TY TZ]]]".into());
     }
-    if doc.props.len() >= MAX_PROPS {
+    if doc.props().len() >= MAX_PROPS {
         return Err(format!("the document has {MAX_PROPS} props already"));
     }
     let path = typed_file(words[0], &["json"])?;
@@ -345,7 +343,7 @@ pub fn add_prop(
     p.validate().map_err(|e| e.to_string())?;
     let (_, model) = p.read_model(base).map_err(|e| e.to_string())?;
     let mut out = doc.clone();
-    out.props.push(p);
+    out.push_prop(p);
     out.validate().map_err(|e| e.to_string())?;
     Ok((
         out,
@@ -425,12 +423,12 @@ impl App {
                         let what = match kind {
                             PromptKind::AddPart => format!(
                                 "add part '{}'",
-                                doc.removed_parts.last().map_or("", |r| r.name.as_str())
+                                doc.removed_parts().last().map_or("", |r| r.name.as_str())
                             ),
                             PromptKind::KeySection => format!("key section of '{part}'"),
                             PromptKind::AddProp => format!(
                                 "attach prop '{}'",
-                                doc.props.last().map_or("", |p| p.name.as_str())
+                                doc.props().last().map_or("", |p| p.name.as_str())
                             ),
                         };
                         let before = std::mem::replace(&mut self.doc, doc);

@@ -35,21 +35,23 @@ impl InputState {
     /// The input fields of `doc`.
     pub fn of(doc: &CharacterDoc) -> InputState {
         InputState {
-            inputs: doc.inputs.clone(),
-            parts: doc.parts.clone(),
-            transitions: doc.transitions.clone(),
-            removed_parts: doc.removed_parts.clone(),
-            props: doc.props.clone(),
+            inputs: doc.inputs().clone(),
+            parts: doc.parts().to_vec(),
+            transitions: doc.transitions().to_vec(),
+            removed_parts: doc.removed_parts().to_vec(),
+            props: doc.props().to_vec(),
         }
     }
 
     /// Puts these input fields into `doc` (its edit log is left alone).
     pub fn put(&self, doc: &mut CharacterDoc) {
-        doc.inputs = self.inputs.clone();
-        doc.parts = self.parts.clone();
-        doc.transitions = self.transitions.clone();
-        doc.removed_parts = self.removed_parts.clone();
-        doc.props = self.props.clone();
+        doc.restore_content(
+            self.inputs.clone(),
+            self.parts.clone(),
+            self.transitions.clone(),
+            self.removed_parts.clone(),
+            self.props.clone(),
+        );
     }
 }
 

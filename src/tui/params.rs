@@ -147,7 +147,7 @@ pub fn part_rows(part: &PartSpec, section: Option<usize>) -> Vec<Row> {
 
 /// Rows for a transition or a removed part of `doc`.
 pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
-    if let Some(t) = doc.transitions.iter().find(|t| t.name == name) {
+    if let Some(t) = doc.transitions().iter().find(|t| t.name == name) {
         let mut rows = vec![
             info("surface", "cubic Hermite blend (C1)"),
             info("parent", format!("{} ({:?} end)", t.parent, t.parent_end)),
@@ -162,7 +162,7 @@ pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
         rows.push(info("edits", "none (transitions follow their parts)"));
         return rows;
     }
-    if let Some(p) = doc.props.iter().find(|p| p.name == name) {
+    if let Some(p) = doc.props().iter().find(|p| p.name == name) {
         return vec![
             info("prop", "conv model (paper 003), not stitched"),
             info("model", p.model.clone()),
@@ -173,7 +173,7 @@ pub fn other_rows(doc: &CharacterDoc, name: &str) -> Vec<Row> {
             info("scale", format!("{}", p.scale)),
         ];
     }
-    if doc.removed_parts.iter().any(|r| r.name == name) {
+    if doc.removed_parts().iter().any(|r| r.name == name) {
         return vec![info("removed", "recorded, not built in version 1")];
     }
     Vec::new()

@@ -155,7 +155,7 @@ fn profile_text(label: &str, p: &ProfileInput, width: usize) -> String {
 fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
     let d = &app.doc;
     let mut per_part: Vec<(String, usize)> = Vec::new();
-    for s in &d.inputs.sections {
+    for s in &d.inputs().sections {
         match per_part.iter_mut().find(|(n, _)| *n == s.part) {
             Some(e) => e.1 += 1,
             None => per_part.push((s.part.clone(), 1)),
@@ -169,9 +169,9 @@ fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
     let w = area.width.saturating_sub(2) as usize;
     let lines = vec![
         Line::from(format!("level    {}", d.level().name())),
-        Line::from(profile_text("front    ", &d.inputs.front, w)),
+        Line::from(profile_text("front    ", &d.inputs().front, w)),
         Line::from(
-            d.inputs
+            d.inputs()
                 .side
                 .as_ref()
                 .map_or("side     none".into(), |p| profile_text("side     ", p, w)),
@@ -182,7 +182,7 @@ fn draw_inputs(f: &mut Frame, app: &App, area: Rect) {
         )),
         Line::from(format!(
             "template none · tol {}",
-            d.inputs
+            d.inputs()
                 .tolerance
                 .map_or("1/1000 of the height".to_string(), |t| format!("{t} m"))
         )),

@@ -127,7 +127,7 @@ fn build_replays_the_active_edits_and_saving_keeps_the_parts_unedited() {
     ))
     .expect("valid");
     let b = build_document(&d, Path::new("."), low(), false).expect("builds");
-    assert_eq!(b.doc.parts, d0.parts, "stored parts are not edited");
+    assert_eq!(b.doc.parts(), d0.parts(), "stored parts are not edited");
     assert_ne!(b.model.mesh.positions, base.model.mesh.positions);
     assert!(b.report.topology.watertight, "{:?}", b.report.topology);
     d.undo().expect("undo");
@@ -172,7 +172,7 @@ fn cli_edit_undo_redo_log_and_bad_edits_leave_the_file_unchanged() {
     assert_eq!(v["edits"][1]["active"], false);
     let o = pdesculpt(&["character", "redo", docs]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let torso = female().parts[0].clone();
+    let torso = female().parts()[0].clone();
     let (u0, u1) = (
         torso.sections[0].u,
         torso.sections[torso.sections.len() - 1].u,
@@ -274,7 +274,7 @@ fn edit_checks_pass() {
 #[test]
 fn force_boundary_and_plate_edits_refuse_bad_parameters() {
     let mut d = female();
-    let torso = d.parts[0].clone();
+    let torso = d.parts()[0].clone();
     let before = d.clone();
     let good = pdesculpt::edit::check::sample_force(&torso, [0.0, 0.0, 1.0]);
     let Edit::Force { force, .. } = good.clone() else {
@@ -350,7 +350,7 @@ fn force_boundary_and_plate_edits_refuse_bad_parameters() {
 fn force_region_edits_are_validated_and_applied_inside_their_curve() {
     use pdesculpt::edit::check::sample_force_region;
     let mut d = female();
-    let torso = d.parts[0].clone();
+    let torso = d.parts()[0].clone();
     let before = d.clone();
     let good = sample_force_region(&torso, 0.2, [0.0, 0.0, 5.0]);
     let Edit::ForceRegion { force, u, .. } = good.clone() else {
@@ -393,8 +393,8 @@ fn force_region_edits_are_validated_and_applied_inside_their_curve() {
 }
 
 fn edit_strategy(doc: &CharacterDoc) -> impl Strategy<Value = Option<Edit>> {
-    let torso = doc.parts[0].clone();
-    let names: Vec<String> = doc.parts.iter().map(|p| p.name.clone()).collect();
+    let torso = doc.parts()[0].clone();
+    let names: Vec<String> = doc.parts().iter().map(|p| p.name.clone()).collect();
     let c = torso.sections[torso.sections.len() / 2].centre;
     (
         0usize..8,

@@ -37,7 +37,7 @@ fn stroke_edit(part: &str, stroke: Vec<[f64; 2]>, corners: Option<[usize; 4]>) -
 #[test]
 fn the_stroke_force_is_c0_and_c1_on_its_stroke_zero_outside_and_one_to_one() {
     let d = female();
-    let e = sample_force_stroke(&d.parts[0], 0.8, [0.0, 0.0, 5.0]);
+    let e = sample_force_stroke(&d.parts()[0], 0.8, [0.0, 0.0, 5.0]);
     let m = stroke_measures(&e).expect("the sample stroke force evaluates");
     assert!(m.c0 <= tol::ROUNDING, "{m:?}");
     assert!((m.order - 1.0).abs() <= C1_ORDER_TOL, "{m:?}");
@@ -49,7 +49,7 @@ fn the_stroke_force_is_c0_and_c1_on_its_stroke_zero_outside_and_one_to_one() {
 #[test]
 fn a_rectangle_stroke_reproduces_the_rectangle_force() {
     let d = female();
-    let r = sample_force_region(&d.parts[0], 0.2, [0.0, 0.0, 5.0]);
+    let r = sample_force_region(&d.parts()[0], 0.2, [0.0, 0.0, 5.0]);
     assert!(rectangle_difference(&r) <= tol::ROUNDING);
     // the same rectangle drawn clockwise, corners found by default: the
     // same map (the first corner stays at the rectangle's (u_a, theta_a))
@@ -75,7 +75,7 @@ fn a_rectangle_stroke_reproduces_the_rectangle_force() {
 #[test]
 fn a_stroke_across_theta_zero_maps_the_angles_modulo_the_ring() {
     let d = female();
-    let torso = &d.parts[0];
+    let torso = &d.parts()[0];
     let e = sample_force_stroke(torso, 0.1, [0.0, 0.0, 5.0]);
     let m = stroke_measures(&e).expect("evaluates");
     assert_eq!(m.outside, 0.0);
@@ -155,7 +155,7 @@ fn bad_strokes_get_named_errors() {
 #[test]
 fn stroke_edits_are_validated_against_the_part_and_leave_the_document_unchanged() {
     let mut d = female();
-    let torso = d.parts[0].clone();
+    let torso = d.parts()[0].clone();
     let (u0, u1) = (
         torso.sections[0].u,
         torso.sections[torso.sections.len() - 1].u,
@@ -211,7 +211,7 @@ fn stroke_edits_are_validated_against_the_part_and_leave_the_document_unchanged(
 #[test]
 fn force_regions_below_the_minimum_size_are_refused() {
     let mut d = female();
-    let torso = d.parts[0].clone();
+    let torso = d.parts()[0].clone();
     let (u0, u1) = (
         torso.sections[0].u,
         torso.sections[torso.sections.len() - 1].u,
@@ -264,7 +264,7 @@ fn cli_force_stroke_edits_and_bad_strokes_leave_the_file_unchanged() {
     let docs = doc.to_str().unwrap();
     let op = dir.join("op.json");
     let ops = op.to_str().unwrap();
-    let e = sample_force_stroke(&d.parts[0], 0.8, [0.0, 0.0, 5.0]);
+    let e = sample_force_stroke(&d.parts()[0], 0.8, [0.0, 0.0, 5.0]);
     std::fs::write(&op, serde_json::to_string(&e).unwrap()).unwrap();
     let o = pdesculpt(&["character", "edit", docs, "--op", ops]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
@@ -304,7 +304,7 @@ fn drawn_front(
     d: &pdesculpt::character::doc::CharacterDoc,
 ) -> (pdesculpt::sasm::Stroke, Vec<[f64; 2]>) {
     use pdesculpt::profile::View;
-    let spec = &d.parts[0];
+    let spec = &d.parts()[0];
     let surf = pdesculpt::character::part::build_part(spec).expect("builds");
     let um = 0.5 * (surf.u0 + surf.u1);
     let front = (0..360)
@@ -392,7 +392,7 @@ fn cli_edit_projects_a_drawn_stroke_and_refuses_one_that_misses() {
 fn a_stroke_whose_u_width_overflows_is_refused_by_name() {
     // finite points whose u width overflows to infinity: the box scaling
     // made NaN of them and the error blamed the corners
-    let mut s = sample_stroke(&female().parts[0], 0.8);
+    let mut s = sample_stroke(&female().parts()[0], 0.8);
     s[3][0] = 1e308;
     s[10][0] = -1e308;
     let err = StrokeMap::new(&s, None).expect_err("an unbounded stroke");

@@ -187,7 +187,7 @@ pub fn gen_doc(p: &mut Pick) -> Vec<u8> {
 pub fn parse_doc(b: &[u8]) -> Result<Vec<f64>, String> {
     let text = String::from_utf8_lossy(b);
     let d = CharacterDoc::parse(&text, Path::new("fuzz.json")).map_err(|e| e.to_string())?;
-    parts_numbers(&d.parts)
+    parts_numbers(d.parts())
 }
 
 fn parts_numbers(parts: &[pdesculpt::character::spec::PartSpec]) -> Result<Vec<f64>, String> {
@@ -256,7 +256,7 @@ pub fn apply_edit(b: &[u8]) -> Result<Vec<f64>, String> {
     let mut d = base_doc().clone();
     d.push_edit(e).map_err(|e| e.to_string())?;
     let parts =
-        pdesculpt::edit::apply_to_parts(&d.parts, d.active_edits()).map_err(|e| e.to_string())?;
+        pdesculpt::edit::apply_to_parts(d.parts(), d.active_edits()).map_err(|e| e.to_string())?;
     parts_numbers(&parts)
 }
 

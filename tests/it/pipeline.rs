@@ -32,7 +32,7 @@ fn props_doc(name: &str) -> (CharacterDoc, PathBuf) {
         transform: SectionTransform::Scale { sx: 1.05, sy: 0.97 },
     })
     .expect("a valid edit");
-    doc.props.push(PropSpec {
+    doc.push_prop(PropSpec {
         name: "ball".into(),
         model: "blob.json".into(),
         translate: [0.1, 0.5, 0.3],
@@ -137,7 +137,7 @@ fn a_checked_push_builds_once_and_keeps_the_edit() {
     let opts = BuildOptions::new(&dir).cancel(&hook);
     let built = push_checked(&mut d, e.clone(), &opts, None).expect("a valid edit");
     let questions = asked.load(std::sync::atomic::Ordering::SeqCst);
-    assert_eq!(questions, doc.parts.len() + doc.props.len() + 2);
+    assert_eq!(questions, doc.parts().len() + doc.props().len() + 2);
     assert_eq!(d.edits().len(), doc.edits().len() + 1);
     assert_eq!(built.doc, d, "the build's document is the one kept");
     // refused: the document is unchanged and the edit's own error named

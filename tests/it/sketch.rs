@@ -57,7 +57,7 @@ fn document_round_trips_and_rejects_unknown_fields() {
     let p = dir.join("char.json");
     b.doc.save(&p).expect("saves");
     let back = CharacterDoc::load(&p).expect("loads");
-    let names = |d: &CharacterDoc| d.parts.iter().map(|p| p.name.clone()).collect::<Vec<_>>();
+    let names = |d: &CharacterDoc| d.parts().iter().map(|p| p.name.clone()).collect::<Vec<_>>();
     assert_eq!(names(&back), names(&b.doc));
     assert_eq!(back.level(), b.doc.level());
     // rebuilding the stored parts gives the same mesh (to JSON float rounding)
@@ -225,9 +225,20 @@ fn cli_bad_inputs_get_clear_errors_and_no_file() {
     assert!(!out.exists());
 }
 
+/// The bundled female at the initial level drawn by `front` alone (no side
+/// view, no key sections).
+fn front_only(front: ProfileInput) -> CharacterDoc {
+    let doc = bundled("female", Level::Initial).expect("bundled");
+    let mut inputs = doc.inputs().clone();
+    inputs.front = front;
+    inputs.side = None;
+    inputs.sections.clear();
+    CharacterDoc::from_inputs(inputs, Level::Initial)
+}
+
 fn perturbed(scale: f64, angle_deg: f64, noise: f64, extra: bool, seed: u64) -> Vec<[f64; 2]> {
     let doc = bundled("female", Level::Initial).expect("bundled");
-    let ProfileInput::Points(p) = doc.inputs.front else {
+    let ProfileInput::Points(p) = doc.inputs().front.clone() else {
         panic!("inline points")
     };
     let (s, c) = angle_deg.to_radians().sin_cos();
@@ -257,16 +268,19 @@ fn perturbed(scale: f64, angle_deg: f64, noise: f64, extra: bool, seed: u64) -> 
 
 #[test]
 fn outline_rotated_past_the_limit_is_a_clear_error() {
-    let mut doc = bundled("female", Level::Initial).expect("bundled");
-    doc.inputs.side = None;
-    doc.inputs.sections.clear();
     let angle = 1.5 * MAX_ROTATION_DEG;
-    doc.inputs.front = ProfileInput::Points(perturbed(1.0, angle, 0.0, false, 1));
+    let doc = front_only(ProfileInput::Points(perturbed(1.0, angle, 0.0, false, 1)));
     let e = build_document(&doc, Path::new("."), Resolution::default(), true)
         .expect_err("rotated too far");
     assert!(e.to_string().contains("degrees from upright"), "{e}");
     // within the limit it builds, upright segmentation turned back
-    doc.inputs.front = ProfileInput::Points(perturbed(1.0, 0.8 * MAX_ROTATION_DEG, 0.0, false, 1));
+    let doc = front_only(ProfileInput::Points(perturbed(
+        1.0,
+        0.8 * MAX_ROTATION_DEG,
+        0.0,
+        false,
+        1,
+    )));
     let b = build_document(&doc, Path::new("."), Resolution::default(), true).expect("builds");
     assert!(b.report.profile_error[0].max_rel <= PROFILE_FRONT);
 }
@@ -277,7 +291,7 @@ fn with_cut(d: &str) -> String {
 }
 
 fn first_centre_y(b: &pdesculpt::pipeline::Built, part: &str) -> f64 {
-    let p = b.doc.parts.iter().find(|p| p.name == part).expect("part");
+    let p = b.doc.parts().iter().find(|p| p.name == part).expect("part");
     p.sections[0].centre[1]
 }
 
@@ -287,10 +301,7 @@ fn cuts_place_the_joins_or_fail_clearly() {
     let build = |svg: &str| {
         let path = dir.join("front.svg");
         std::fs::write(&path, svg).expect("writes");
-        let mut doc = bundled("female", Level::Initial).expect("bundled");
-        doc.inputs.front = ProfileInput::Path(path.display().to_string());
-        doc.inputs.side = None;
-        doc.inputs.sections.clear();
+        let doc = front_only(ProfileInput::Path(path.display().to_string()));
         build_document(&doc, Path::new("."), Resolution::default(), true)
     };
     let auto = build(&with_cut("M 5,5 L 6,5"));
@@ -320,9 +331,12 @@ fn cuts_place_the_joins_or_fail_clearly() {
 #[test]
 fn removed_part_is_built_from_its_profile_as_a_separate_component() {
     use pdesculpt::character::doc::RemovedPart;
-    let mut doc = bundled("female", Level::Initial).expect("bundled");
-    doc.inputs.side = None;
-    doc.inputs.sections.clear();
+    let bundled_front = bundled("female", Level::Initial)
+        .expect("bundled")
+        .inputs()
+        .front
+        .clone();
+    let mut doc = front_only(bundled_front);
     // a tail: an ellipse 0.4 x 0.06 turned 30 degrees, beside the legs
     let (s, c) = 30f64.to_radians().sin_cos();
     let tail: Vec<[f64; 2]> = (0..200)
@@ -332,7 +346,7 @@ fn removed_part_is_built_from_its_profile_as_a_separate_component() {
             [0.45 + c * x - s * y, 0.6 + s * x + c * y]
         })
         .collect();
-    doc.removed_parts.push(RemovedPart {
+    doc.push_removed_part(RemovedPart {
         name: "tail".into(),
         front: ProfileInput::Points(tail),
         side: None,
@@ -351,7 +365,7 @@ fn removed_part_is_built_from_its_profile_as_a_separate_component() {
     // the tail lies along its drawn axis: its end points near the ellipse's
     let p = b
         .doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == "tail")
         .expect("tail part");
@@ -392,10 +406,7 @@ proptest! {
         extra in any::<bool>(),
         seed in any::<u64>(),
     ) {
-        let mut doc = bundled("female", Level::Initial).expect("bundled");
-        doc.inputs.front = ProfileInput::Points(perturbed(scale, angle, noise, extra, seed));
-        doc.inputs.side = None;
-        doc.inputs.sections.clear();
+        let doc = front_only(ProfileInput::Points(perturbed(scale, angle, noise, extra, seed)));
         match build_document(&doc, Path::new("."), Resolution::default(), true) {
             Ok(b) => {
                 let t = &b.report.topology;
@@ -424,7 +435,10 @@ fn out_of_range_transition_and_prop_numbers_are_named_errors() {
     // a Hermite tangent factor of 1e300 used to reach the file writer
     // (vertex outside the f32 range) instead of naming the field
     let mut d = derived.clone();
-    d.transitions[0].tangent_scale = 1e300;
+    let first = d.transitions()[0].name.clone();
+    d.transition_mut(&first)
+        .expect("a transition")
+        .tangent_scale = 1e300;
     let e = build_document(&d, Path::new("."), Resolution::default(), false)
         .expect_err("tangent_scale 1e300 is refused")
         .to_string();
@@ -462,7 +476,7 @@ fn transitions_are_c1_by_default_and_c2_on_request() {
         |b: &pdesculpt::pipeline::Built| b.model.joins.iter().map(|j| j.c2).fold(0.0, f64::max);
     assert!(b
         .doc
-        .transitions
+        .transitions()
         .iter()
         .all(|t| t.continuity == Continuity::C1));
     assert!(b.report.max_c1 <= C1_JUMP);
@@ -470,9 +484,7 @@ fn transitions_are_c1_by_default_and_c2_on_request() {
     assert!(c2(&b) > C2_JUMP, "cubic C2 jump {}", c2(&b));
     assert!(b.report.transitions[0].surface.starts_with("cubic"));
     let mut d = b.doc.clone();
-    for t in &mut d.transitions {
-        t.continuity = Continuity::C2;
-    }
+    d.set_continuity(Continuity::C2);
     let q = build_document(&d, Path::new("."), Resolution::default(), false).expect("builds");
     let t = &q.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
@@ -487,7 +499,7 @@ fn transitions_are_c1_by_default_and_c2_on_request() {
     assert!(text.contains("\"continuity\": \"c2\""), "{text}");
     let back = CharacterDoc::load(&p).expect("loads");
     assert!(back
-        .transitions
+        .transitions()
         .iter()
         .all(|t| t.continuity == Continuity::C2));
     let plain = std::fs::read_to_string({
@@ -499,7 +511,7 @@ fn transitions_are_c1_by_default_and_c2_on_request() {
     assert!(!plain.contains("continuity"), "the default is not written");
     let old = CharacterDoc::parse(&plain, &p).expect("a document without the field loads");
     assert!(old
-        .transitions
+        .transitions()
         .iter()
         .all(|t| t.continuity == Continuity::C1));
     let bad = text.replacen("\"continuity\": \"c2\"", "\"continuity\": \"c3\"", 1);
@@ -530,19 +542,13 @@ fn crease_report_is_the_same_on_every_call() {
 fn cut_angles_out_of_range_are_refused_by_name() {
     let doc = bundled("female", Level::Final).expect("bundled");
     let b = build_document(&doc, Path::new("."), Resolution::default(), true).expect("builds");
-    let hips = b
-        .doc
-        .transitions
-        .iter()
-        .position(|t| t.name == "hips")
-        .expect("hips");
     for (angles, what) in [
         (vec![1e308], "cut_angles[0] = 1e308 is outside [0, pi]"),
         (vec![-0.5], "cut_angles[0] = -0.5 is outside [0, pi]"),
         (vec![1.5, 0.5], "cut_angles[1] = 0.5 is outside [pi, 2 pi]"),
     ] {
         let mut d = b.doc.clone();
-        d.transitions[hips].cut_angles = angles;
+        d.transition_mut("hips").expect("hips").cut_angles = angles;
         let Err(e) = build_document(&d, Path::new("."), Resolution::default(), false) else {
             panic!("{what}: built");
         };
@@ -550,7 +556,7 @@ fn cut_angles_out_of_range_are_refused_by_name() {
     }
     // in range, front and back: builds
     let mut d = b.doc.clone();
-    d.transitions[hips].cut_angles = vec![1.5, 4.5];
+    d.transition_mut("hips").expect("hips").cut_angles = vec![1.5, 4.5];
     assert!(build_document(&d, Path::new("."), Resolution::default(), false).is_ok());
 }
 

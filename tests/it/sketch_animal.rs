@@ -21,9 +21,14 @@ fn every_level_of_the_bundled_animal_is_closed_with_its_parts() {
             .unwrap_or_else(|e| panic!("{level:?}: {e}"));
         let t = &b.report.topology;
         assert!(t.watertight && t.manifold && t.oriented, "{level:?}: {t:?}");
-        let names: Vec<&str> = b.doc.parts.iter().map(|p| p.name.as_str()).collect();
+        let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
         assert_eq!(names, PARTS, "{level:?}");
-        let tr: Vec<&str> = b.doc.transitions.iter().map(|t| t.name.as_str()).collect();
+        let tr: Vec<&str> = b
+            .doc
+            .transitions()
+            .iter()
+            .map(|t| t.name.as_str())
+            .collect();
         assert_eq!(tr, ["underside", "topside"]);
         assert!(
             b.report.max_c1 <= C1_JUMP,
@@ -31,7 +36,7 @@ fn every_level_of_the_bundled_animal_is_closed_with_its_parts() {
             b.report.max_c1
         );
         // the legs stand on the ground, the far ones (inner) behind the near
-        let leg = |n: &str| b.doc.parts.iter().find(|p| p.name == n).expect("leg");
+        let leg = |n: &str| b.doc.parts().iter().find(|p| p.name == n).expect("leg");
         if level != Level::Initial {
             let z = |n: &str| {
                 let sec = &leg(n).sections[3];

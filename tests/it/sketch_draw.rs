@@ -289,7 +289,7 @@ fn a_t_pose_builds_with_its_arms_traced_along_their_axis() {
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
     let arm = b
         .doc
-        .parts
+        .parts()
         .iter()
         .find(|p| p.name == "arm_r")
         .expect("arm_r");

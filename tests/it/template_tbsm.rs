@@ -158,7 +158,7 @@ mod cli_tests {
             .expect("builds")
             .doc;
         doc.save(path).unwrap();
-        doc.parts
+        doc.parts()
             .iter()
             .find(|p| {
                 p.sections
@@ -196,8 +196,8 @@ mod cli_tests {
             CharacterDoc::load(&out).unwrap(),
         );
         let (b, a) = (
-            before.parts.iter().find(|p| p.name == part).unwrap(),
-            after.parts.iter().find(|p| p.name == part).unwrap(),
+            before.parts().iter().find(|p| p.name == part).unwrap(),
+            after.parts().iter().find(|p| p.name == part).unwrap(),
         );
         assert_eq!(a.sections.len(), b.sections.len());
         let gecs = a
@@ -210,7 +210,7 @@ mod cli_tests {
             assert_eq!((x.u, x.centre, x.e1, x.e2), (y.u, y.centre, y.e1, y.e2));
         }
         // the other parts are untouched
-        for (x, y) in after.parts.iter().zip(&before.parts) {
+        for (x, y) in after.parts().iter().zip(before.parts()) {
             if x.name != part {
                 assert_eq!(x, y);
             }

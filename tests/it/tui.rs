@@ -195,7 +195,7 @@ fn tui_edit_undo_redo_through_the_log() {
     // (parts go through JSON, whose float parsing may round: compare the log)
     let side = CharacterDoc::load(&autosave::sidecar(&app.path)).expect("autosave");
     assert_eq!((&side.edits(), side.cursor()), (&app.doc.edits(), 1));
-    assert_eq!(side.parts.len(), app.doc.parts.len());
+    assert_eq!(side.parts().len(), app.doc.parts().len());
     key(&mut app, KeyCode::Char('u'));
     assert_eq!(app.doc.cursor(), 0);
     assert!(screen(&app).contains("Edit log (0 of 1 active)"));
@@ -375,16 +375,24 @@ fn tui_every_line_keeps_its_point_under_a_long_path() {
     let m = message_line(&app);
     assert!(m.contains("/char.glb in 42 ms"), "{m}");
     // an input profile given by a long path: the panel keeps its lines
-    let side = app.doc.inputs.side.clone();
-    app.doc.inputs.side = Some(ProfileInput::Path(
+    let before = app.doc.clone();
+    let mut inputs = before.inputs().clone();
+    inputs.side = Some(ProfileInput::Path(
         dir.join("side.svg").display().to_string(),
     ));
+    app.doc.restore_content(
+        inputs,
+        before.parts().to_vec(),
+        before.transitions().to_vec(),
+        before.removed_parts().to_vec(),
+        before.props().to_vec(),
+    );
     let s = screen(&app);
     assert!(s.contains("side.svg"), "{s}");
     for l in ["level    final", "sections torso", "template none"] {
         assert!(s.contains(l), "{l} pushed out of the inputs panel:\n{s}");
     }
-    app.doc.inputs.side = side;
+    app.doc = before;
     // a prop whose model is outside the document's directory (absolute)
     let models = deep_dir("deep-models");
     let blob = models.join("ball.json");

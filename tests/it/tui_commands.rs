@@ -94,8 +94,8 @@ fn tui_add_part_from_svg_refuses_bad_input_and_builds_a_separate_component() {
     key(&mut app, KeyCode::Enter);
     assert_eq!(app.mode, Mode::Normal, "{:?}", app.message);
     assert!(!app.stale, "rebuilt: {:?}", app.message);
-    assert!(app.doc.removed_parts.iter().any(|r| r.name == "tail"));
-    assert!(app.doc.parts.iter().any(|p| p.name == "tail"));
+    assert!(app.doc.removed_parts().iter().any(|r| r.name == "tail"));
+    assert!(app.doc.parts().iter().any(|p| p.name == "tail"));
     let shown = app.shown.as_ref().expect("built");
     assert!(shown.mesh.groups.iter().any(|g| g == "tail"));
     assert!(shown
@@ -114,7 +114,7 @@ fn tui_add_part_from_svg_refuses_bad_input_and_builds_a_separate_component() {
     // the saved document builds the same part through `character build`
     key(&mut app, KeyCode::Char('s'));
     let saved = CharacterDoc::load(&app.path).expect("saved");
-    assert_eq!(saved.removed_parts.len(), 1);
+    assert_eq!(saved.removed_parts().len(), 1);
 }
 
 #[test]
@@ -139,10 +139,10 @@ fn tui_key_section_as_ellipse_or_curve_file_refuses_bad_input() {
     assert_eq!(app.mode, Mode::Normal, "{:?}", app.message);
     assert!(!app.stale, "rebuilt: {:?}", app.message);
     assert_eq!(
-        app.doc.inputs.sections.len(),
-        before.inputs.sections.len() + 1
+        app.doc.inputs().sections.len(),
+        before.inputs().sections.len() + 1
     );
-    let torso = |d: &CharacterDoc| d.parts[0].clone();
+    let torso = |d: &CharacterDoc| d.parts()[0].clone();
     let changed: Vec<usize> = (0..torso(&before).sections.len())
         .filter(|&j| torso(&before).sections[j] != torso(&app.doc).sections[j])
         .collect();
@@ -270,7 +270,7 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
             Polygonizer::MarchingTetrahedra,
         )
         .expect("polygonises");
-    let spec: &PropSpec = &saved.props[0];
+    let spec: &PropSpec = &saved.props()[0];
     let placed = place(fresh, spec);
     let g = b
         .model
@@ -302,7 +302,8 @@ fn tui_prop_builds_as_its_own_component_equal_to_character_build() {
     // the report leaves the prop out of the body's profile error
     let without = {
         let mut d = saved.clone();
-        d.props.clear();
+        d.remove_prop("ball").expect("the prop");
+        assert!(d.props().is_empty(), "the ball was the only prop");
         pdesculpt::pipeline::build_document(&d, &dir, Resolution::default(), false).expect("builds")
     };
     assert_eq!(
@@ -320,7 +321,7 @@ fn documents_without_props_load_and_save_without_the_field() {
         "an empty props list is not written"
     );
     let d = CharacterDoc::parse(&text, Path::new("old.json")).expect("an old document loads");
-    assert!(d.props.is_empty());
+    assert!(d.props().is_empty());
     // unknown fields in a prop are refused
     let mut v: serde_json::Value = serde_json::from_str(&text).expect("json");
     v["props"] = serde_json::json!([{"name": "b", "model": "m.json", "colour": 1}]);
@@ -343,7 +344,7 @@ fn form(app: &mut App, row: &str, value: &str) {
 #[test]
 fn tui_force_boundary_plate_forms_check_numbers_and_refuse_bad_edits() {
     let mut app = built("cmd-forms");
-    let torso = app.doc.parts[0].clone();
+    let torso = app.doc.parts()[0].clone();
     let len = torso.sections.last().expect("sections").u;
     let before = app.doc.clone();
     // checked as typed: shown on screen, Enter does nothing
@@ -431,11 +432,11 @@ fn tui_cancelled_build_stops_between_parts_and_leaves_the_document() {
     });
     assert_eq!(r.err().as_deref(), Some(worker::CANCELLED));
     assert_eq!(cache.solved, 2, "stopped between parts");
-    assert!(app.doc.parts.len() > 2);
+    assert!(app.doc.parts().len() > 2);
     // not cancelled: the same call builds (and finds the two parts cached)
     let r = worker::build_cancellable(&j, Some(&mut cache), &|| false);
     assert!(r.is_ok());
-    assert_eq!(cache.solved, app.doc.parts.len());
+    assert_eq!(cache.solved, app.doc.parts().len());
     // through the app and the real worker: Esc while exporting cancels it,
     // nothing is written and the document is unchanged
     let before = app.doc.clone();
@@ -483,8 +484,8 @@ fn tui_cancel_stops_at_the_next_question_at_most_one_part_solve_later() {
     use pdesculpt::character::assembly::PartCache;
     use std::cell::Cell;
     let app = built("cmd-cancel-steps");
-    let n = app.doc.parts.len();
-    assert!(app.doc.props.is_empty());
+    let n = app.doc.parts().len();
+    assert!(app.doc.props().is_empty());
     let j = Job {
         gen: 1,
         doc: app.doc.clone(),

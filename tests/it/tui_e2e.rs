@@ -308,7 +308,7 @@ fn tui_e2e_add_part_key_section_prop_then_export_equals_character_build() {
     s.wait_for("rebuilt", Some("rebuilding"));
     export_save_quit(&s);
     let saved = CharacterDoc::load(&doc).expect("the document was saved");
-    assert_eq!(saved.removed_parts.len(), 1);
-    assert_eq!(saved.props.len(), 1);
+    assert_eq!(saved.removed_parts().len(), 1);
+    assert_eq!(saved.props().len(), 1);
     assert_export_equals_build(&dir, &doc);
 }

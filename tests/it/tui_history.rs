@@ -69,12 +69,12 @@ fn tui_undo_redo_steps_over_add_part_key_section_and_prop() {
     ok(&app);
     let result = app.doc.clone();
     let result_mesh = mesh(&app);
-    assert_eq!(result.removed_parts.len(), 1);
+    assert_eq!(result.removed_parts().len(), 1);
     assert_eq!(
-        result.inputs.sections.len(),
-        original.inputs.sections.len() + 1
+        result.inputs().sections.len(),
+        original.inputs().sections.len() + 1
     );
-    assert_eq!(result.props.len(), 1);
+    assert_eq!(result.props().len(), 1);
     autosaved(&app);
     for k in 0..3 {
         key(&mut app, KeyCode::Char('u'));
@@ -135,8 +135,8 @@ fn tui_undo_redo_steps_over_add_part_key_section_and_prop() {
         &format!("{ROOT}/data/conv/blob.json other 0.1 -0.5 1.0 0.3"),
     );
     ok(&app);
-    assert_eq!(app.doc.props.len(), 1);
-    assert_eq!(app.doc.props[0].name, "other");
+    assert_eq!(app.doc.props().len(), 1);
+    assert_eq!(app.doc.props()[0].name, "other");
     key(&mut app, KeyCode::Char('r'));
     assert!(app.message.as_ref().is_some_and(|m| m.error));
     key(&mut app, KeyCode::Char('u'));
@@ -160,14 +160,15 @@ fn tui_command_after_an_undone_edit_drops_the_inactive_edits() {
     key(&mut app, KeyCode::Char('u'));
     assert_eq!((app.doc.edits().len(), app.doc.cursor()), (1, 0));
     app.focus = Focus::Tree;
-    let sections = app.doc.inputs.sections.clone();
+    let sections = app.doc.inputs().sections.clone();
     command(&mut app, 'x', "1.0 0.12 0.09");
     ok(&app);
     assert_eq!((app.doc.edits().len(), app.doc.cursor()), (0, 0));
     autosaved(&app);
     key(&mut app, KeyCode::Char('u'));
     assert_eq!(
-        app.doc.inputs.sections, sections,
+        app.doc.inputs().sections,
+        sections,
         "the key section is undone"
     );
     assert!(
@@ -225,11 +226,11 @@ fn tui_paths_below_the_document_are_stored_relative_and_a_copy_builds_elsewhere(
     key(&mut app, KeyCode::Char('s'));
     let saved = CharacterDoc::load(&app.path).expect("saved");
     assert_eq!(
-        saved.removed_parts[0].front,
+        saved.removed_parts()[0].front,
         ProfileInput::Path("models/tail.svg".into())
     );
-    assert_eq!(saved.props[0].model, "models/ball.json");
-    assert_eq!(saved.props[1].model, blob.display().to_string());
+    assert_eq!(saved.props()[0].model, "models/ball.json");
+    assert_eq!(saved.props()[1].model, blob.display().to_string());
     assert_eq!(stored_path(&blob, &dir), blob.display().to_string());
     // the document and its files copied elsewhere, the original gone
     let there = tmpdir("tui-rel-copy").join("moved");

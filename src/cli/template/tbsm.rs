@@ -163,7 +163,7 @@ pub fn run(cmd: TbsmCommand, json: bool) -> anyhow::Result<i32> {
             let replaced = replace_in_doc(&mut doc, &a.part, &part, a.terms)?;
             doc.save(&a.output)?;
             let sections = doc
-                .parts
+                .parts()
                 .iter()
                 .find(|p| p.name == a.part)
                 .map_or(0, |p| p.sections.len());
