@@ -317,7 +317,7 @@ fn an_asymmetric_arm_pose_is_not_read_as_a_tilted_figure() {
     let b = build(&f, &s, None).unwrap_or_else(|e| panic!("arms apart: {e}"));
     let height = b.report.height_m;
     for leg in ["leg_l", "leg_r"] {
-        let p = b.doc.parts.iter().find(|p| p.name == leg).expect("leg");
+        let p = b.doc.parts().iter().find(|p| p.name == leg).expect("leg");
         let low = p
             .sections
             .iter()
