@@ -77,11 +77,19 @@ fn every_document_style_gives_the_drawn_size_and_the_same_placed_model() {
             b.report.height_m
         );
         assert_eq!(b.report.unit, "m");
-        // placed by its own outline: feet at 0, torso at x = 0
+        // placed by its own outline: feet at 0, torso at x = 0; the model's
+        // sole (a surface between the foot's sections, `sketch::foot`) within
+        // the issue's outside bound of that ground
+        let (flo, _) = pdesculpt::vec3::bounds(b.front.points()).expect("front");
+        assert!(
+            flo[1].abs() <= PLACEMENT_REL * drawn + tol::ROUNDING,
+            "{style:?}: drawn feet at {}",
+            flo[1]
+        );
         let (lo, _) = pdesculpt::vec3::bounds(&b.model.mesh.positions).expect("bounds");
         assert!(
-            lo[1].abs() <= PLACEMENT_REL * drawn + tol::ROUNDING,
-            "{style:?}: feet at {}",
+            lo[1].abs() <= Bounds::ISSUE.outside * drawn,
+            "{style:?}: model's feet at {}",
             lo[1]
         );
         // the same placed drawings wherever and however they were written
