@@ -21,7 +21,9 @@ outline (any path commands, flattened with --tolerance, at most 1 % of the drawi
 or the neck, a cut places that join at its mean height. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \
 segmentation expects a standing humanoid seen from the front, arms away from the body and legs apart \
 (parts torso, head, arm_l, arm_r, leg_l, leg_r; _l is negative x); a drawing up to 12 degrees off \
-upright is segmented about its principal axis. A four-legged animal (--body-plan quadruped, or \
+upright is segmented about the principal axis of its thick core (limbs weigh little, so one raised arm \
+is not a tilt). With a side view, a foot drawn in it turns each leg at the ankle: the leg's sections \
+follow the foot to the toe. A four-legged animal (--body-plan quadruped, or \
 auto: an outline longer than tall) is drawn in the same files: the front file holds its lateral \
 silhouette (model x-y, head toward +x or -x, legs apart: 2, or all 4 in a walking pose), the side file \
 the animal seen head-on (model z-y, left and right legs apart in z); parts body, head (neck and head), \

@@ -195,7 +195,7 @@ pub fn core_axes(points: &[[f64; 2]]) -> Axes {
             }
         }
     }
-    if !(w > 0.0) {
+    if !w.is_finite() || w <= 0.0 {
         return axes(points);
     }
     let c = [m[0] / w, m[1] / w];

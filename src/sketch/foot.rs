@@ -89,7 +89,8 @@ pub(super) fn find(
         back = back.max((za - ba) - (zc - b));
     }
     let dir = if fwd >= back { 1.0 } else { -1.0 };
-    if !(fwd.max(back) > ba) {
+    let reach = fwd.max(back);
+    if reach.is_nan() || reach <= ba {
         return None;
     }
     let ya = map[0] + map[1] * s[ia].y;
@@ -153,9 +154,13 @@ pub(super) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec<PathPoint>
         out.push(PathPoint { p, n, inner: d });
     }
     let z0 = c[0];
-    let len = d * (f.toe[0] - z0);
+    let z_last = toe_cap(side, f, z0);
     for k in 1..=m_foot {
-        let z = z0 + d * len * k as f64 / m_foot as f64;
+        let z = if k == m_foot {
+            f.toe[0]
+        } else {
+            z0 + (z_last - z0) * k as f64 / (m_foot - 1) as f64
+        };
         let y = if k == m_foot {
             f.toe[1]
         } else {
@@ -240,6 +245,32 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<Section
         });
     }
     out
+}
+
+/// Where the foot's last full section goes: as far from the toe as the
+/// foot is half high there, so the chain closes the toe like a round cap
+/// of that radius (a section spaced like the others left a cone, a spike
+/// at the toe). Found by bisection between the bend's end `z0` and the
+/// toe; halfway when the foot is no longer than it is high.
+fn toe_cap(side: &[[f64; 2]], f: &Foot, z0: f64) -> f64 {
+    let d = f.dir;
+    let g = |z: f64| {
+        let h = vertical_slice(side, z, f.ankle_y).map_or(0.0, |iv| 0.5 * (iv[1] - iv[0]));
+        h - d * (f.toe[0] - z)
+    };
+    let (mut a, mut b) = (z0, f.toe[0]);
+    if g(a) >= 0.0 {
+        return 0.5 * (z0 + f.toe[0]);
+    }
+    for _ in 0..48 {
+        let m = 0.5 * (a + b);
+        if g(m) < 0.0 {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
 }
 
 /// Where the line `p + t n` meets the outline: the crossing interval
