@@ -17,7 +17,7 @@
 //! inside the tube; each section's extent in the side view is where its
 //! plane's line meets the drawn side outline.
 
-use super::section_place::Sample;
+use super::section_place::{Sample, SECTIONS_PER_PART};
 use crate::character::doc::{SectionShape, SectionSpec};
 
 /// A foot found in the side view, in the side view's coordinates
@@ -139,6 +139,47 @@ pub(super) fn find(
     })
 }
 
+/// A humanoid leg read with the side view (its depth from the side's whole
+/// slice): the only part whose side view can show a foot.
+pub(super) fn leg_with_side(r: &super::segment::Region) -> bool {
+    r.downward && r.tip && r.shoulder.is_none() && r.side == super::segment::SidePick::Whole
+}
+
+/// How a leg's sections are shared out: the samples above the bend, the
+/// sections placed on them, and the foot's own (after the bend's three).
+pub(super) struct Plan {
+    pub(super) n_upper: usize,
+    pub(super) m_upper: usize,
+    pub(super) m_foot: usize,
+}
+
+/// The leg above the bend keeps its [`SECTIONS_PER_PART`]; the foot gets its
+/// share of the leg's path length (spaced like the leg's sections, 2 to 4,
+/// the last its toe), and the chain's count stays `3 P + 1`.
+pub(super) fn plan(s: &[Sample], foot: Option<&Foot>) -> Plan {
+    let Some(f) = foot else {
+        return Plan {
+            n_upper: s.len(),
+            m_upper: SECTIONS_PER_PART,
+            m_foot: 0,
+        };
+    };
+    let up: f64 = s[..=f.last_upper]
+        .windows(2)
+        .map(|w| (w[1].y - w[0].y).hypot(w[1].c - w[0].c))
+        .sum();
+    let bend = std::f64::consts::FRAC_PI_2 * f.radius;
+    let along = (f.toe[0] - f.start[0]).abs() - f.radius;
+    let share = (SECTIONS_PER_PART - 1) as f64 * along / (up + bend + along);
+    let m_foot = (share.round() as usize).clamp(2, 4);
+    let lower = 3 + m_foot;
+    Plan {
+        n_upper: f.last_upper + 1,
+        m_upper: (SECTIONS_PER_PART + lower - 1).div_ceil(3) * 3 + 1 - lower,
+        m_foot,
+    }
+}
+
 /// Bend sections (at a sixth, a third and a half of pi) followed by
 /// `m_foot` points along the foot, the last one the toe.
 pub(super) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec<PathPoint> {
@@ -197,8 +238,11 @@ pub(super) struct LegEnd<'a> {
 }
 
 /// The key sections of the bend and the foot, continuing a leg at `end`;
-/// the last one closes at the toe.
-pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<SectionSpec> {
+/// the last one closes at the toe. None when a section's line misses the
+/// side outline, the front view has no slice at its height, or a
+/// semi-axis is not positive and finite (a foot read from a side view
+/// that is not one: the leg is then built without it).
+pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Option<Vec<SectionSpec>> {
     let to_front = |ys: f64| (ys - end.map[0]) / end.map[1];
     let front_at = |y: f64| {
         super::segment::interval(end.front, end.pick, y)
@@ -206,12 +250,13 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<Section
     };
     let mut out: Vec<SectionSpec> = Vec::with_capacity(pts.len());
     let (mut u, mut prev) = (end.u, end.centre);
-    let mut last_front = (end.centre[0], 0.0);
+    let mut last_front = None;
     for (k, q) in pts.iter().enumerate() {
         let tip = k + 1 == pts.len();
         let (mut lo, mut hi) = match (tip, extent(end.side, q.p, q.n)) {
             (false, Some(iv)) => (iv[0], iv[1]),
-            _ => (0.0, 0.0),
+            (false, None) => return None,
+            (true, _) => (0.0, 0.0),
         };
         let reach = BEND_INNER * f.radius;
         if q.inner > 0.0 {
@@ -222,8 +267,13 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<Section
         let off = 0.5 * (lo + hi);
         let cs = [q.p[0] + off * q.n[0], q.p[1] + off * q.n[1]];
         let y = to_front(cs[1]);
-        let (cx, w) = front_at(y).unwrap_or(last_front);
-        last_front = (cx, w);
+        let (cx, w) = front_at(y).or(last_front)?;
+        last_front = Some((cx, w));
+        let b = 0.5 * (hi - lo);
+        let good = |v: f64| v.is_finite() && v > 0.0;
+        if !tip && !(good(w) && good(b)) {
+            return None;
+        }
         let centre = [cx, y, cs[0]];
         u += crate::mesh::dist(prev, centre);
         prev = centre;
@@ -232,7 +282,7 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<Section
         } else {
             SectionShape::Ellipse {
                 a: w,
-                b: 0.5 * (hi - lo),
+                b,
                 offset: 0.0,
             }
         };
@@ -244,7 +294,7 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Vec<Section
             shape,
         });
     }
-    out
+    Some(out)
 }
 
 /// Where the foot's last full section goes: as far from the toe as the

@@ -58,6 +58,7 @@ mod foot;
 pub mod input;
 pub mod keysection;
 pub mod limb;
+pub mod part_slices;
 pub mod place;
 pub mod poly;
 pub mod quadruped;
