@@ -15,7 +15,10 @@ coefficients).
   3. 000: 2 int_a^b sin(pi (u - a)/L) sin(k pi u) du equals
      c1 f3 with c1 = -2 L/pi (A4) and f3 = (sin k pi b + sin k pi a)/(k^2 L^2 - 1);
      the printed A2 f3 reduces to sin(2 k pi c)/(k^2 L^2 - 1). Golden: both f3
-     and the integral (mpmath quadrature, 30 digits) for three forces, k = 1..4.
+     and the integral (mpmath quadrature, 30 digits) for three forces, k = 1..4,
+     and A2's f1, f2 as printed (same r constants); eq 9's f_mn, eq 15's
+     dbar_mn and A1's area-force coefficients as printed, to pin the
+     paper-literal implementations.
 
 Run: python3 verify/printed_forms.py  (writes verify/golden/printed_forms.json)
 """
@@ -101,11 +104,52 @@ for a_, b_ in [(sp.Rational(1, 5), sp.Rational(7, 10)), (sp.Rational(7, 20), sp.
         r2, r3 = 1 / (kv * L - 1), (a_ + b_ - sp.Rational(1, kv)) / 2
         f3p = sp.Rational(1, 2) * (r0 * sp.sin(2 * kv * sp.pi * r1) - r2 * sp.sin(2 * kv * sp.pi * r3))
         assert abs(float(sp.N(f3p - sp.sin(2 * kv * sp.pi * cmid) / (kv**2 * L**2 - 1), 30))) < 1e-25
-        rows.append({"k": kv, "integral": float(sp.N(integral, 30)), "f3_right": float(sp.N(f3, 30)), "f3_printed": float(sp.N(f3p, 30))})
+        # A2's f1 and f2 as printed, same r constants
+        f1p = r0 * sp.cos(kv * sp.pi * r1) ** 2 - r2 * sp.cos(kv * sp.pi * r3) ** 2
+        f2p = r0 * sp.sin(kv * sp.pi * r1) ** 2 - r2 * sp.sin(kv * sp.pi * r3) ** 2
+        rows.append({"k": kv, "integral": float(sp.N(integral, 30)), "f3_right": float(sp.N(f3, 30)), "f3_printed": float(sp.N(f3p, 30)),
+                     "f1_printed": float(sp.N(f1p, 30)), "f2_printed": float(sp.N(f2p, 30))})
     forces.append({"u0": float(a_), "u1": float(b_), "rows": rows})
 print("000: c1 f3_right = projection; printed f3 = sin(2 k pi c)/(k^2 L^2 - 1)")
 
-out = {"pde6_basis_derivatives": samples, "ode6_xi": xi_cases, "pde4_line_f3": forces}
+# 000 eq 9 (f_mn), eq 15 (dbar_mn) and A1 (area force, two-sided) exactly
+# as printed, evaluated from the printed text: pins the paper-literal
+# implementations (pde4::two_sided::printed_f, pde4::four_sided::printed_dbar,
+# pde4::force::printed_two_sided), which the paper-literal checks compare
+# with the corrected forms.
+P4 = sp.pi**4
+printed = {"params": [], "area": []}
+for a1, a2, a3 in [(1, 2, 1), (sp.Rational(3, 10),) * 3, (1, sp.Rational(1, 2), 1)]:
+    rows = []
+    for mv, nv in [(1, 1), (2, 3), (3, 2)]:
+        f = P4 * (4 * mv**2 * nv**2 * (a2 + sp.pi**2 * nv**2 * a3 / 3) - (mv**4 * a1 + 4 * mv**2 * nv**2 * a2 + 16 * nv**4 * a3))
+        d = 2 * mv**3 * a1 + 6 * nv**4 * (-mv * sp.pi**2 / 12 + sp.Rational(1, mv)) * a3
+        rows.append({"m": mv, "n": nv, "f": float(sp.N(f, 30)), "dbar": float(sp.N(d, 30))})
+    printed["params"].append({"a1": float(a1), "a2": float(a2), "a3": float(a3), "rows": rows})
+
+
+def a2_fns(p0, p1, kv):
+    L = p1 - p0
+    r0, r1 = 1 / (kv * L + 1), (p0 + p1 + sp.Rational(1, kv)) / 2
+    r2, r3 = 1 / (kv * L - 1), (p0 + p1 - sp.Rational(1, kv)) / 2
+    f1 = r0 * sp.cos(kv * sp.pi * r1) ** 2 - r2 * sp.cos(kv * sp.pi * r3) ** 2
+    f2 = r0 * sp.sin(kv * sp.pi * r1) ** 2 - r2 * sp.sin(kv * sp.pi * r3) ** 2
+    f3 = sp.Rational(1, 2) * (r0 * sp.sin(2 * kv * sp.pi * r1) - r2 * sp.sin(2 * kv * sp.pi * r3))
+    return f1, f2, f3
+
+
+u0, u1, v0, v1 = sp.Rational(1, 5), sp.Rational(3, 5), sp.Rational(3, 10), sp.Rational(3, 4)
+c0 = 4 * (u1 - u0) * (v1 - v0) / sp.pi**2
+for mv in range(1, 4):
+    for nv in range(1, 4):
+        f1u, _, f3u = a2_fns(u0, u1, mv)
+        _, f2v, f3v = a2_fns(v0, v1, 2 * nv)
+        trip = [-c0 * f1u, -c0 * f3u * f2v, c0 * f3u * f3v]
+        printed["area"].append({"m": mv, "n": nv, "p": [float(sp.N(t, 30)) for t in trip]})
+printed["area_force"] = [float(u0), float(u1), float(v0), float(v1)]
+print("000: eq 9, eq 15 and A1 evaluated as printed")
+
+out = {"pde6_basis_derivatives": samples, "ode6_xi": xi_cases, "pde4_line_f3": forces, "pde4_printed": printed}
 path = os.path.join(os.path.dirname(__file__), "golden", "printed_forms.json")
 with open(path, "w") as f:
     json.dump(out, f, indent=1)

@@ -231,19 +231,19 @@ fn r_consts(rp0: f64, rp1: f64, k: f64) -> [f64; 4] {
 }
 
 /// A2 $f_3(r, k) = 0.5(r_0 \sin 2k\pi r_1 - r_2 \sin 2k\pi r_3)$ as printed.
-fn f3(rp0: f64, rp1: f64, k: f64) -> f64 {
+pub(crate) fn f3(rp0: f64, rp1: f64, k: f64) -> f64 {
     let r = r_consts(rp0, rp1, k);
     0.5 * (r[0] * (2.0 * k * PI * r[1]).sin() - r[2] * (2.0 * k * PI * r[3]).sin())
 }
 
 /// A2 $f_1(u, m) = u_0 \cos^2 m\pi u_1 - u_2 \cos^2 m\pi u_3$ as printed.
-fn f1(rp0: f64, rp1: f64, k: f64) -> f64 {
+pub(crate) fn f1(rp0: f64, rp1: f64, k: f64) -> f64 {
     let r = r_consts(rp0, rp1, k);
     r[0] * (k * PI * r[1]).cos().powi(2) - r[2] * (k * PI * r[3]).cos().powi(2)
 }
 
 /// A2 $f_2(v, 2n) = v_0 \sin^2 2n\pi v_1 - v_2 \sin^2 2n\pi v_3$ as printed.
-fn f2(rp0: f64, rp1: f64, k: f64) -> f64 {
+pub(crate) fn f2(rp0: f64, rp1: f64, k: f64) -> f64 {
     let r = r_consts(rp0, rp1, k);
     r[0] * (k * PI * r[1]).sin().powi(2) - r[2] * (k * PI * r[3]).sin().powi(2)
 }

@@ -13,16 +13,10 @@ pub fn f3_right(rp0: f64, rp1: f64, k: f64) -> f64 {
     ((k * PI * rp1).sin() + (k * PI * rp0).sin()) / (k * k * l * l - 1.0)
 }
 
-/// A2's $f_3$ as printed (with its $r_0..r_3$).
+/// A2's $f_3$ as printed (with its $r_0..r_3$): the implementation the
+/// paper-literal force checks use (`pde4::force::f3`).
 pub fn f3_printed(rp0: f64, rp1: f64, k: f64) -> f64 {
-    let l = rp1 - rp0;
-    let r = [
-        1.0 / (k * l + 1.0),
-        0.5 * (rp1 + rp0 + 1.0 / k),
-        1.0 / (k * l - 1.0),
-        0.5 * (rp1 + rp0 - 1.0 / k),
-    ];
-    0.5 * (r[0] * (2.0 * k * PI * r[1]).sin() - r[2] * (2.0 * k * PI * r[3]).sin())
+    crate::pde4::force::f3(rp0, rp1, k)
 }
 
 /// Eq 12 imposed on BCs (5): the 4x4 system for $(G_0..G_3)$ per unit
@@ -95,7 +89,10 @@ fn f3_vs_sympy() -> (f64, f64) {
                 .abs()
                 .worst((c1 * g - x("integral")).abs());
             right = if e.is_nan() { f64::NAN } else { right.worst(e) };
-            let e = (f3_printed(u0, u1, k) - x("f3_printed")).abs();
+            let e = (f3_printed(u0, u1, k) - x("f3_printed"))
+                .abs()
+                .worst((crate::pde4::force::f1(u0, u1, k) - x("f1_printed")).abs())
+                .worst((crate::pde4::force::f2(u0, u1, k) - x("f2_printed")).abs());
             printed = if e.is_nan() {
                 f64::NAN
             } else {
@@ -106,15 +103,75 @@ fn f3_vs_sympy() -> (f64, f64) {
     (right, printed)
 }
 
+/// Eq 9's `f_mn`, eq 15's `dbar_mn` and A1's area-force coefficients as
+/// implemented for the paper-literal checks, against SymPy's evaluation of
+/// the printed text (`verify/printed_forms.py`): the largest relative
+/// difference, NaN when the golden is missing.
+fn printed_vs_sympy() -> f64 {
+    let g: Value = serde_json::from_str(PRINTED_GOLDEN).unwrap_or_default();
+    let p = &g["pde4_printed"];
+    let num = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
+    let rel = |got: f64, want: f64| (got - want).abs() / want.abs().max(1.0);
+    let mut e = f64::NAN;
+    let mut seen = |x: f64| {
+        e = if e.is_nan() && !x.is_nan() {
+            x
+        } else {
+            e.worst(x)
+        }
+    };
+    for c in p["params"].as_array().into_iter().flatten() {
+        let sp = ShapeParams {
+            a1: num(&c["a1"]),
+            a2: num(&c["a2"]),
+            a3: num(&c["a3"]),
+        };
+        for r in c["rows"].as_array().into_iter().flatten() {
+            let (m, n) = (num(&r["m"]) as usize, num(&r["n"]) as usize);
+            seen(rel(
+                crate::pde4::two_sided::printed_f(&sp, m, n),
+                num(&r["f"]),
+            ));
+            seen(rel(
+                crate::pde4::four_sided::printed_dbar(&sp, m, n),
+                num(&r["dbar"]),
+            ));
+        }
+    }
+    let a = &p["area_force"];
+    let kind = ForceKind::Area {
+        u0: num(&a[0]),
+        u1: num(&a[1]),
+        v0: num(&a[2]),
+        v1: num(&a[3]),
+    };
+    for r in p["area"].as_array().into_iter().flatten() {
+        let (m, n) = (num(&r["m"]) as usize, num(&r["n"]) as usize);
+        match printed_two_sided(&kind, m, n) {
+            Some((x, y, z)) => {
+                for (got, k) in [(x, 0), (y, 1), (z, 2)] {
+                    seen(rel(got, num(&r["p"][k])));
+                }
+            }
+            None => seen(f64::NAN),
+        }
+    }
+    e
+}
+
 pub(super) fn appendix_checks(out: &mut Vec<Check>) {
     let (sym_right, sym_printed) = f3_vs_sympy();
+    out.push(
+        Check::new(F, P, "eqs 9, 15, app A1", "pde4.printed_forms_vs_sympy", Kind::Reference, printed_vs_sympy(), tol::scaled(tol::ROUNDING, 10.0))
+            .note("eq 9's f_mn, eq 15's dbar_mn (3 shape parameters, 3 (m, n)) and A1's area-force coefficients (m, n <= 3) as implemented for the paper-literal checks against SymPy's evaluation of the printed text (verify/printed_forms.py), relative: pins the printed forms the paper-literal checks measure"),
+    );
     out.push(
         Check::new(F, P, "app A3, A4", "pde4.force.line_f3_vs_sympy", Kind::Reference, sym_right, tol::scaled(tol::ROUNDING, 10.0))
             .note("c1 (A4) times the right f3 against SymPy's exact 2 int sin(pi (u - u_p0)/L) sin k pi u du, 3 forces, k <= 4 (verify/printed_forms.py)"),
     );
     out.push(
         Check::new(F, P, "app A2", "pde4.force.a2_f3_printed_vs_sympy", Kind::Reference, sym_printed, tol::scaled(tol::ROUNDING, 10.0))
-            .note("A2's printed f3 (as implemented for the paper-literal checks) against SymPy's evaluation of the printed text, which reduces to sin(2 k pi c)/(k^2 L^2 - 1)"),
+            .note("A2's printed f3, f1 and f2 (pde4::force, as the paper-literal checks use them) against SymPy's evaluation of the printed text (f3 reduces to sin(2 k pi c)/(k^2 L^2 - 1))"),
     );
     let (mut e3, mut e4) = (0.0f64, 0.0f64);
     for (u0, u1, v0) in [(0.2, 0.7, 0.3), (0.35, 0.85, 0.6), (0.1, 0.4, 0.45)] {

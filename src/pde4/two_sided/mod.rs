@@ -304,3 +304,17 @@ impl Surface for TwoSided {
         out
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// Each component holds `2N + 1` modes (constant, then a cos and a sin
+    /// per harmonic), and every index below the count is a mode.
+    #[test]
+    fn a_component_counts_its_two_n_plus_one_modes() {
+        let p = crate::pde4::samples::two_sided().expect("the sample patch solves");
+        for c in &p.comps {
+            assert_eq!(c.mode_count(), 2 * p.n + 1);
+            let _ = c.mode(c.mode_count() - 1);
+        }
+    }
+}
