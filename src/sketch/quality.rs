@@ -62,6 +62,10 @@ pub struct ViewQuality {
     pub max_rel: f64,
     pub rms_rel: f64,
     pub outside_rel: f64,
+    /// Separate pieces of the model's projection in this view (1: one
+    /// silhouette). More: a part floats away from the body, and the
+    /// measures above cover the largest piece.
+    pub pieces: usize,
 }
 
 /// One part's (or the whole model's) measures.
@@ -176,8 +180,31 @@ impl VertexGrid {
 /// distance outside the drawn outline or 0), as [`view_samples`] returns them.
 type Sample = (u32, f64, f64);
 
-fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Option<Vec<Sample>> {
-    let model = outline_of_mesh(mesh, view, &OutlineOptions::default()).ok()?;
+/// The outline of the model's projection in `view` (default resolution)
+/// and how many separate pieces the projection has. A projection in
+/// pieces gives its largest piece's outline (a part floating away from the
+/// body is reported by its count, not by a NaN that fails the build).
+pub fn model_outline(mesh: &Mesh, view: View) -> Option<(Profile, usize)> {
+    match outline_of_mesh(mesh, view, &OutlineOptions::default()) {
+        Ok(m) => Some((m, 1)),
+        Err(crate::profile::ProfileError::Disconnected { count, .. }) => {
+            let largest = OutlineOptions {
+                max_dropped_fraction: 1.0,
+                ..OutlineOptions::default()
+            };
+            Some((outline_of_mesh(mesh, view, &largest).ok()?, count))
+        }
+        Err(_) => None,
+    }
+}
+
+fn view_samples(
+    mesh: &Mesh,
+    groups: &[u32],
+    view: View,
+    sketch: &Profile,
+) -> Option<(Vec<Sample>, usize)> {
+    let (model, pieces) = model_outline(mesh, view)?;
     let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
     let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(&model));
     let ms = model.resample_arclength(SAMPLES);
@@ -195,7 +222,7 @@ fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Op
         let (d, _, _, near) = imo.nearest(q);
         out.push((part_of(near), d, 0.0));
     }
-    Some(out)
+    Some((out, pieces))
 }
 
 fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
@@ -234,7 +261,7 @@ fn dihedrals(m: &Mesh) -> (Vec<(f64, f64)>, (f64, f64)) {
     (per, whole)
 }
 
-fn summarise(view: View, s: &[(u32, f64, f64)], height: f64) -> ViewQuality {
+fn summarise(view: View, s: &[(u32, f64, f64)], height: f64, pieces: usize) -> ViewQuality {
     let (mut max, mut sum2, mut out) = (0.0f64, 0.0, 0.0f64);
     for &(_, d, o) in s {
         max = max.max(d);
@@ -246,6 +273,7 @@ fn summarise(view: View, s: &[(u32, f64, f64)], height: f64) -> ViewQuality {
         max_rel: max / height,
         rms_rel: (sum2 / s.len().max(1) as f64).sqrt() / height,
         outside_rel: out / height,
+        pieces,
     }
 }
 
@@ -260,15 +288,17 @@ pub fn measure(
     parts: &[String],
 ) -> Quality {
     let groups = vertex_groups(mesh);
-    let views: Vec<(View, Option<Vec<Sample>>)> = [(View::Front, Some(front)), (View::Side, side)]
-        .into_iter()
-        .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
-        .collect();
+    let views: Vec<(View, Option<(Vec<Sample>, usize)>)> =
+        [(View::Front, Some(front)), (View::Side, side)]
+            .into_iter()
+            .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
+            .collect();
     let nan = |v: View| ViewQuality {
         view: v.name(),
         max_rel: f64::NAN,
         rms_rel: f64::NAN,
         outside_rel: f64::NAN,
+        pieces: 0,
     };
     let (per, whole) = dihedrals(mesh);
     let part = |name: &str, g: Option<u32>| PartQuality {
@@ -276,13 +306,13 @@ pub fn measure(
         views: views
             .iter()
             .map(|(v, s)| match s {
-                Some(s) => {
+                Some((s, pieces)) => {
                     let mine: Vec<(u32, f64, f64)> = s
                         .iter()
                         .copied()
                         .filter(|x| g.is_none_or(|g| x.0 == g))
                         .collect();
-                    summarise(*v, &mine, height)
+                    summarise(*v, &mine, height, *pieces)
                 }
                 None => nan(*v),
             })
@@ -333,6 +363,12 @@ pub fn warnings(q: &Quality, b: &Bounds) -> Vec<String> {
                     100.0 * bound
                 ));
             }
+            if p.part == "whole" && v.pieces > 1 {
+                out.push(format!(
+                    "the model: its {} view falls apart into {} separate pieces: a part floats away from the body (the profile measures cover the largest piece)",
+                    v.view, v.pieces
+                ));
+            }
             if over(v.outside_rel, b.outside) {
                 out.push(format!(
                     "{who}: leaves the drawn {} outline by {:.2} % of the height (bound {:.1} %)",
@@ -356,4 +392,36 @@ pub fn warnings(q: &Quality, b: &Bounds) -> Vec<String> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::profile::shapes::box_mesh;
+
+    /// A model whose side view falls apart (a box floating 0.5 in front of
+    /// the body) is measured on its largest piece and warned about by
+    /// count, not reported as NaN (which failed the whole build).
+    #[test]
+    fn a_model_in_two_pieces_is_measured_on_the_largest_and_warned_about() {
+        let mut m = box_mesh([-0.2, 0.0, -0.1], [0.2, 1.0, 0.1]);
+        m.append(&box_mesh([-0.05, 0.4, 0.6], [0.05, 0.5, 0.7]));
+        let front = Profile::new(
+            View::Front,
+            vec![[-0.2, 0.0], [0.2, 0.0], [0.2, 1.0], [-0.2, 1.0]],
+        )
+        .expect("front");
+        let side = Profile::new(
+            View::Side,
+            vec![[-0.1, 0.0], [0.1, 0.0], [0.1, 1.0], [-0.1, 1.0]],
+        )
+        .expect("side");
+        let q = measure(&m, &front, Some(&side), 1.0, &[]);
+        let sv = &q.whole.views[1];
+        assert_eq!(sv.pieces, 2);
+        assert!(sv.max_rel.is_finite(), "{sv:?}");
+        assert_eq!(q.whole.views[0].pieces, 1);
+        let w = warnings(&q, &Bounds::ISSUE);
+        assert!(w.iter().any(|x| x.contains("2 separate pieces")), "{w:?}");
+    }
 }

@@ -9,7 +9,7 @@ use crate::character::doc::{CharacterDoc, Level, PartSpec, SectionShape};
 use crate::character::props::PropReport;
 use crate::mesh::topology::{report as topology, TopologyReport};
 use crate::mesh::Mesh;
-use crate::profile::{outline_of_mesh, profile_distance, OutlineOptions, View};
+use crate::profile::{profile_distance, View};
 use serde::Serialize;
 
 /// One section in the report.
@@ -239,8 +239,10 @@ pub fn report(
 /// Profile error per given view: the model's silhouette
 /// (`profile::outline_of_mesh`, default resolution) against the sketched
 /// outline (`profile::profile_distance`: symmetric boundary distance), max
-/// and RMS divided by the model height. A view whose silhouette cannot be
-/// extracted reports NaN (and fails every threshold).
+/// and RMS divided by the model height; a projection in separate pieces is
+/// measured on its largest (`quality::model_outline`; the quality report
+/// warns). A view whose silhouette cannot be extracted reports NaN (and
+/// fails every threshold).
 pub fn profile_errors(
     mesh: &Mesh,
     front: &Outline,
@@ -251,8 +253,8 @@ pub fn profile_errors(
     let views = [(View::Front, Some(front)), (View::Side, side)];
     for (view, o) in views {
         let Some(o) = o else { continue };
-        let d = outline_of_mesh(mesh, view, &OutlineOptions::default())
-            .map(|model| profile_distance(&model, &o.profile))
+        let d = super::quality::model_outline(mesh, view)
+            .map(|(model, _)| profile_distance(&model, &o.profile))
             .map(|d| (d.max / height, d.rms / height))
             .unwrap_or((f64::NAN, f64::NAN));
         out.push(ProfileErrorReport {
