@@ -271,7 +271,8 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Option<Vec<
         last_front = Some((cx, w));
         let b = 0.5 * (hi - lo);
         let good = |v: f64| v.is_finite() && v > 0.0;
-        if !tip && !(good(w) && good(b)) {
+        let usable = good(w) && good(b);
+        if !tip && !usable {
             return None;
         }
         let centre = [cx, y, cs[0]];

@@ -180,6 +180,9 @@ impl VertexGrid {
 /// distance outside the drawn outline or 0), as [`view_samples`] returns them.
 type Sample = (u32, f64, f64);
 
+/// One view's samples and the count of the model projection's pieces.
+type Measured = (Vec<Sample>, usize);
+
 /// The outline of the model's projection in `view` (default resolution)
 /// and how many separate pieces the projection has. A projection in
 /// pieces gives its largest piece's outline (a part floating away from the
@@ -198,12 +201,7 @@ pub fn model_outline(mesh: &Mesh, view: View) -> Option<(Profile, usize)> {
     }
 }
 
-fn view_samples(
-    mesh: &Mesh,
-    groups: &[u32],
-    view: View,
-    sketch: &Profile,
-) -> Option<(Vec<Sample>, usize)> {
+fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Option<Measured> {
     let (model, pieces) = model_outline(mesh, view)?;
     let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
     let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(&model));
@@ -288,11 +286,10 @@ pub fn measure(
     parts: &[String],
 ) -> Quality {
     let groups = vertex_groups(mesh);
-    let views: Vec<(View, Option<(Vec<Sample>, usize)>)> =
-        [(View::Front, Some(front)), (View::Side, side)]
-            .into_iter()
-            .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
-            .collect();
+    let views: Vec<(View, Option<Measured>)> = [(View::Front, Some(front)), (View::Side, side)]
+        .into_iter()
+        .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
+        .collect();
     let nan = |v: View| ViewQuality {
         view: v.name(),
         max_rel: f64::NAN,

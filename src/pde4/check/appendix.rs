@@ -111,7 +111,11 @@ fn printed_vs_sympy() -> f64 {
     let g: Value = serde_json::from_str(PRINTED_GOLDEN).unwrap_or_default();
     let p = &g["pde4_printed"];
     let num = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
-    let rel = |got: f64, want: f64| (got - want).abs() / want.abs().max(1.0);
+    // relative to |want| above 1 (a NaN want stays NaN through got - want)
+    let rel = |got: f64, want: f64| {
+        let scale = if want.abs() > 1.0 { want.abs() } else { 1.0 };
+        (got - want).abs() / scale
+    };
     let mut e = f64::NAN;
     let mut seen = |x: f64| {
         e = if e.is_nan() && !x.is_nan() {
