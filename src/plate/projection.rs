@@ -132,4 +132,39 @@ mod tests {
         assert!(ViewPlane::through([f64::NAN, 0.0, 0.0], [0.0, 0.0, 1.0]).is_err());
         assert!(ViewPlane::through([0.0; 3], [f64::INFINITY, 0.0, 0.0]).is_err());
     }
+
+    /// A plane away from the origin: a point projects onto it along the
+    /// normal (hand computed: the plane z = 2, and the plane of normal
+    /// (1, 2, 3) through (1, 1, 1), where (2, 3, 4) lands at
+    /// (2, 3, 4) - (14/14) (1, 2, 3)).
+    #[test]
+    fn a_point_projects_onto_a_plane_through_any_point() {
+        let z2 = ViewPlane::through([5.0, -3.0, 2.0], [0.0, 0.0, 1.0]).expect("plane");
+        let q = project(&z2, [1.0, 1.0, 5.0]);
+        assert!(
+            crate::mesh::dist(q, [1.0, 1.0, 2.0]) < crate::check::tol::ROUNDING,
+            "{q:?}"
+        );
+        let tilted = ViewPlane::through([1.0; 3], [1.0, 2.0, 3.0]).expect("plane");
+        let q = project(&tilted, [2.0, 3.0, 4.0]);
+        assert!(
+            crate::mesh::dist(q, [1.0, 1.0, 1.0]) < crate::check::tol::ROUNDING,
+            "{q:?}"
+        );
+    }
+
+    /// Eq 13 as printed reads `b p_x` for `b p_y`: through the origin with
+    /// normal (1, 2, 3), (2, 3, 4) gets t = (2 + 4 + 12)/14 = 18/14, not
+    /// the right 20/14 (hand computed).
+    #[test]
+    fn eq13_as_printed_uses_p_x_twice() {
+        let plane = ViewPlane::through([0.0; 3], [1.0, 2.0, 3.0]).expect("plane");
+        let q = project_paper_literal(&plane, [2.0, 3.0, 4.0]);
+        let t = 18.0 / 14.0;
+        let want = [2.0 - t, 3.0 - 2.0 * t, 4.0 - 3.0 * t];
+        assert!(
+            crate::mesh::dist(q, want) < crate::check::tol::ROUNDING,
+            "{q:?}"
+        );
+    }
 }
