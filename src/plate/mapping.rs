@@ -97,14 +97,9 @@ impl DiskMapping {
         let mut hits: Vec<f64> = Vec::new();
         for i in 0..m {
             let (a, b) = (self.polygon[i], self.polygon[(i + 1) % m]);
-            let e = [b[0] - a[0], b[1] - a[1]];
-            let den = dir[0] * e[1] - dir[1] * e[0];
-            if den == 0.0 {
+            let Some((t, s)) = crate::polygon::line_segment_params(c, dir, a, b) else {
                 continue;
-            }
-            let ac = [a[0] - c[0], a[1] - c[1]];
-            let t = (ac[0] * e[1] - ac[1] * e[0]) / den;
-            let s = (ac[0] * dir[1] - ac[1] * dir[0]) / den;
+            };
             // a ray through a polygon vertex must hit one of its two edges
             // despite rounding
             if t > 0.0 && (-VERTEX_SNAP..=1.0 + VERTEX_SNAP).contains(&s) {

@@ -93,6 +93,29 @@ fn straddles(s: f64, t: f64) -> bool {
     (s > 0.0 && t < 0.0) || (s < 0.0 && t > 0.0)
 }
 
+/// Where the line `p + t d` meets the line through the segment
+/// `a + s (b - a)`: `(t, s)` (the segment is hit for `s` in [0, 1]); None
+/// when the two are parallel (`d x (b - a) = 0`). Shared by the rays of the
+/// plate's disk mapping, the sketch's cut crossings and the foot's section
+/// lines.
+pub fn line_segment_params(
+    p: [f64; 2],
+    d: [f64; 2],
+    a: [f64; 2],
+    b: [f64; 2],
+) -> Option<(f64, f64)> {
+    let e = [b[0] - a[0], b[1] - a[1]];
+    let den = d[0] * e[1] - d[1] * e[0];
+    if den == 0.0 {
+        return None;
+    }
+    let w = [a[0] - p[0], a[1] - p[1]];
+    Some((
+        (w[0] * e[1] - w[1] * e[0]) / den,
+        (w[0] * d[1] - w[1] * d[0]) / den,
+    ))
+}
+
 /// Whether the closed segments `a b` and `c d` cross properly: they meet
 /// in one point interior to both, each having its ends strictly on
 /// opposite sides of the other's line. Touching (an end on the other

@@ -36,14 +36,9 @@ pub fn crossings(cut: &[[f64; 2]], outline: &[[f64; 2]]) -> Vec<[f64; 2]> {
         for i in 0..n {
             let (c, d) = (outline[i], outline[(i + 1) % n]);
             let r = [b[0] - a[0], b[1] - a[1]];
-            let s = [d[0] - c[0], d[1] - c[1]];
-            let den = r[0] * s[1] - r[1] * s[0];
-            if den == 0.0 {
+            let Some((t, u)) = crate::polygon::line_segment_params(a, r, c, d) else {
                 continue;
-            }
-            let q = [c[0] - a[0], c[1] - a[1]];
-            let t = (q[0] * s[1] - q[1] * s[0]) / den;
-            let u = (q[0] * r[1] - q[1] * r[0]) / den;
+            };
             if (0.0..=1.0).contains(&t) && (0.0..1.0).contains(&u) {
                 here.push((t, [a[0] + t * r[0], a[1] + t * r[1]]));
             }

@@ -331,18 +331,12 @@ pub(super) fn extent(poly: &[[f64; 2]], p: [f64; 2], n: [f64; 2]) -> Option<[f64
     let m = poly.len();
     let mut ts = Vec::new();
     for i in 0..m {
-        let a = poly[i];
-        let b = poly[(i + 1) % m];
-        let e = [b[0] - a[0], b[1] - a[1]];
-        let den = n[0] * e[1] - n[1] * e[0];
-        if den == 0.0 {
-            continue;
-        }
-        let w = [a[0] - p[0], a[1] - p[1]];
-        let t = (w[0] * e[1] - w[1] * e[0]) / den;
-        let sgm = (w[0] * n[1] - w[1] * n[0]) / den;
-        if (0.0..1.0).contains(&sgm) {
-            ts.push(t);
+        if let Some((t, s)) = crate::polygon::line_segment_params(p, n, poly[i], poly[(i + 1) % m])
+        {
+            // half-open: a line through a vertex counts it once
+            if (0.0..1.0).contains(&s) {
+                ts.push(t);
+            }
         }
     }
     ts.sort_by(f64::total_cmp);
