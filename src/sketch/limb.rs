@@ -258,10 +258,16 @@ fn tilted(
     f: f64,
     w: f64,
 ) -> Option<([f64; 2], [f64; 2], f64)> {
-    let phi = chord[1].atan2(chord[0]);
-    // turn toward +y: counter-clockwise when the chord points to +x
+    // turn toward +y (the angle pi/2): counter-clockwise when the chord
+    // points to +x (phi in [-pi/2, pi/2]), clockwise when it points to -x
+    // (phi taken in (pi/2, 3 pi/2)), so a mirrored arm turns mirrored
     let up = if chord[0] >= 0.0 { 1.0 } else { -1.0 };
-    let vertical = up * std::f64::consts::FRAC_PI_2;
+    let phi = if up > 0.0 {
+        chord[1].atan2(chord[0])
+    } else {
+        chord[1].atan2(chord[0]).rem_euclid(std::f64::consts::TAU)
+    };
+    let vertical = std::f64::consts::FRAC_PI_2;
     let mut target = phi + up * f * SHOULDER_TILT_DEG.to_radians();
     if up * (target - vertical) > 0.0 {
         target = vertical;
@@ -292,4 +298,40 @@ fn tilted(
         d,
         0.5 * len,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A mirrored arm's shoulder section is the mirror image: both chords
+    /// turn toward +y and stop at the vertical (before, a chord pointing
+    /// to -x was measured against -pi/2 and turned past the vertical, so
+    /// the left arm's top ring leaned over its shoulder: the A-pose fold).
+    #[test]
+    fn a_mirrored_chord_turns_to_the_mirrored_section() {
+        let square = [[-3.0, -3.0], [3.0, -3.0], [3.0, 3.0], [-3.0, 3.0]];
+        let mirrored: Vec<[f64; 2]> = square.iter().rev().map(|p| [-p[0], p[1]]).collect();
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        for chord_y in [h, 0.2, -0.3] {
+            let c = [(1.0f64 - chord_y * chord_y).sqrt(), chord_y];
+            for f in [1.0, 0.5] {
+                let (ca, da, la) = tilted(&square, [0.0, 0.0], c, f, 1.0).expect("right");
+                let (cb, db, lb) =
+                    tilted(&mirrored, [0.0, 0.0], [-c[0], c[1]], f, 1.0).expect("left");
+                let eps = crate::check::tol::ROUNDING;
+                assert!(
+                    (ca[0] + cb[0]).abs() < eps && (ca[1] - cb[1]).abs() < eps,
+                    "{ca:?} {cb:?}"
+                );
+                assert!(
+                    (da[0] + db[0]).abs() < eps && (da[1] - db[1]).abs() < eps,
+                    "{da:?} {db:?}"
+                );
+                assert!((la - lb).abs() < eps);
+                // never past the vertical
+                assert!(da[0] >= -eps && db[0] <= eps, "{da:?} {db:?}");
+            }
+        }
+    }
 }
