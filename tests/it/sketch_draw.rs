@@ -309,6 +309,59 @@ fn a_t_pose_builds_with_its_arms_traced_along_their_axis() {
     assert!(z[0] - a[0] > 0.2 * 1.75, "arm from {a:?} to {z:?}");
 }
 
+/// A mirror-symmetric drawing gives mirror-image shoulders: arm_l's first
+/// section is arm_r's mirrored (x -> -x), centre and direction, in an
+/// A-pose and a near-T pose. The left arm's shoulder sections once turned
+/// past the vertical (its chord, pointing to -x, was measured against
+/// -pi/2), leaning its top ring over the shoulder: the shoulders
+/// transition folded (176-180 degrees) on the left only.
+#[test]
+fn a_symmetric_drawing_gives_mirror_image_arms() {
+    let dir = tmpdir("draw-mirror");
+    for angle in [40.0, 15.0] {
+        let h = Humanoid {
+            arm_angle_deg: [angle, angle],
+            ..Humanoid::default()
+        };
+        let (f, s) = write_pair(&dir, "m", &h, Style::InkscapeMm, 0.2, [105.0, 250.0]);
+        let b = build(&f, &s, Some(1.75)).unwrap_or_else(|e| panic!("{angle}: {e}"));
+        let arm = |n: &str| {
+            b.doc
+                .parts()
+                .iter()
+                .find(|p| p.name == n)
+                .expect("arm")
+                .sections
+                .clone()
+        };
+        let (l, r) = (arm("arm_l"), arm("arm_r"));
+        // the first (shoulder) section: the most tilted one
+        let (a, c) = (&l[0], &r[0]);
+        let off = (a.centre[0] + c.centre[0])
+            .abs()
+            .max((a.centre[1] - c.centre[1]).abs());
+        assert!(off <= MIRROR_REL * 1.75, "{angle} deg: {a:?} {c:?}");
+        // the section lines are mirror images: e1 (x, y) against (-x, y), up to sign
+        let cross = (a.e1[0] * c.e1[1] + a.e1[1] * c.e1[0]).abs();
+        assert!(
+            cross <= MIRROR_TURN,
+            "{angle} deg: e1 {:?} against {:?}",
+            a.e1,
+            c.e1
+        );
+    }
+}
+
+/// A mirror-symmetric drawing's two shoulder sections agree to this,
+/// relative to the height (the generated figure's two arms differ by
+/// about 0.2 % at the shoulder).
+const MIRROR_REL: f64 = 5e-3;
+/// ... and their directions to this sine of the angle between them (0.1:
+/// 6 degrees; the traced arms' chords differ by up to 5 degrees toward
+/// the hands; the fold came from 18 degrees at 40-degree arms and 45 at
+/// 15-degree arms).
+const MIRROR_TURN: f64 = 0.1;
+
 /// One arm 10 and the other 40 degrees below the horizontal is a pose, not a
 /// tilted drawing: the drawing's rotation is read from its thick core
 /// (`sketch::align::core_axes`), so both feet stay on the ground. Read from
