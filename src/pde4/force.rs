@@ -299,3 +299,50 @@ pub fn printed_four_sided(kind: &ForceKind, m: usize, n: usize) -> Option<f64> {
         ForceKind::Uniform => return None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bump is the half sine on `[a, b]` and zero on either side of it.
+    #[test]
+    fn bump_is_a_half_sine_inside_and_zero_outside() {
+        let (a, b) = (0.2, 0.6);
+        for x in [0.0, 0.1, 0.19, 0.61, 0.9, 1.0] {
+            assert_eq!(bump(a, b, x), 0.0, "x = {x}");
+        }
+        assert!((bump(a, b, 0.4) - 1.0).abs() < crate::check::tol::ROUNDING);
+        let x = 0.3;
+        let want = (PI * (x - a) / (b - a)).sin();
+        assert!((bump(a, b, x) - want).abs() < crate::check::tol::ROUNDING);
+    }
+
+    /// A uniform force's profile is 1 everywhere, an area force's the
+    /// product of its two bumps, and a distribution (point, line) has none.
+    #[test]
+    fn force_profiles_by_kind() {
+        let p = [0.0, 0.0, 1.0];
+        let uniform = Force {
+            kind: ForceKind::Uniform,
+            p,
+        };
+        assert_eq!(uniform.profile(0.3, 0.7), Some(1.0));
+        let area = Force {
+            kind: ForceKind::Area {
+                u0: 0.2,
+                u1: 0.6,
+                v0: 0.1,
+                v1: 0.5,
+            },
+            p,
+        };
+        let want = bump(0.2, 0.6, 0.3) * bump(0.1, 0.5, 0.2);
+        assert_eq!(area.profile(0.3, 0.2), Some(want));
+        assert_eq!(area.profile(0.7, 0.2), Some(0.0));
+        let point = Force {
+            kind: ForceKind::Concentrated { u0: 0.5, v0: 0.5 },
+            p,
+        };
+        assert_eq!(point.profile(0.5, 0.5), None);
+    }
+}
