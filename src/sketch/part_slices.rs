@@ -99,11 +99,18 @@ fn region_part(
         _ => None,
     };
     let plan = super::foot::plan(&s, foot.as_ref());
-    let idx = place(
-        &s[..plan.n_upper],
-        depth.as_deref().map(|d| &d[..plan.n_upper]),
-        plan.m_upper,
-    );
+    let upper_depth = depth.as_deref().map(|d| &d[..plan.n_upper]);
+    let idx = match &foot {
+        // the bend's sections are a sixth of pi of its radius apart (side
+        // units, `map[1]` per front unit)
+        Some(f) => super::foot::graded_place(
+            &s[..plan.n_upper],
+            upper_depth,
+            plan.m_upper,
+            std::f64::consts::FRAC_PI_6 * f.radius / map[1].abs(),
+        ),
+        None => place(&s[..plan.n_upper], upper_depth, plan.m_upper),
+    };
     let ctx = SliceCtx {
         r,
         side: if uses_side { side } else { None },

@@ -52,9 +52,13 @@ pub(super) fn place(s: &[Sample], depth: Option<&[(f64, f64)]>, m: usize) -> Vec
     for i in 1..n {
         var[i] = var[i - 1] + inc[i].min(4.0 * mean);
     }
-    let (lt, vt) = (len[n - 1], var[n - 1].max(f64::MIN_POSITIVE));
+    let (lt, vt) = (len[n - 1], var[n - 1]);
+    // a profile that does not vary at all (a straight tube of constant
+    // width) is placed by arc length alone: half of the share would
+    // otherwise never be reached, and the sections bunched at its end
+    let wv = if vt > 0.0 { 0.5 } else { 0.0 };
     let f: Vec<f64> = (0..n)
-        .map(|i| 0.5 * len[i] / lt + 0.5 * var[i] / vt)
+        .map(|i| (1.0 - wv) * len[i] / lt + wv * var[i] / vt.max(f64::MIN_POSITIVE))
         .collect();
     let mut idx: Vec<usize> = (0..m)
         .map(|j| {
@@ -168,4 +172,26 @@ pub(super) fn centre_slope(s: &[Sample], i: usize) -> f64 {
 pub(super) fn direction(s: &[Sample], i: usize) -> f64 {
     let (a, b) = (i.saturating_sub(2), (i + 2).min(s.len() - 1));
     (s[b].y - s[a].y).signum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A straight tube of constant width (no profile variation at all) gets
+    /// its sections evenly along it, not bunched at its end.
+    #[test]
+    fn a_tube_that_does_not_vary_is_placed_by_length() {
+        let n = 121;
+        let s: Vec<Sample> = (0..n)
+            .map(|k| Sample {
+                y: -(k as f64),
+                c: 0.0,
+                w: 1.0,
+            })
+            .collect();
+        let idx = place(&s, None, SECTIONS_PER_PART);
+        let want: Vec<usize> = (0..SECTIONS_PER_PART).map(|j| 10 * j).collect();
+        assert_eq!(idx, want);
+    }
 }
