@@ -209,3 +209,39 @@ pub fn least_squares(p: &ShapeParams, omega: f64, f: &[f64]) -> Result<Vec<f64>,
     })?;
     Ok(c.iter().copied().collect())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Below [`SERIES_SIGMA`] the power series gives the closed forms
+    /// `e^{-A x} cosh(g x)`, `e^{-A x} sinh(g x) / g` (sigma = g^2 > 0) and
+    /// `e^{-A x} cos(b x)`, `e^{-A x} sin(b x) / b` (sigma = -b^2), to
+    /// rounding; the branch the modes of small `omega^2 s` take.
+    #[test]
+    fn the_series_branch_matches_the_closed_forms() {
+        let a = 0.7;
+        for sigma in [0.9 * SERIES_SIGMA, 0.3 * SERIES_SIGMA, -0.5 * SERIES_SIGMA] {
+            for x in [0.0, 0.25, 0.6, 1.0] {
+                let (c, s) = ecs(a, sigma, x);
+                let e = (-a * x).exp();
+                let (cw, sw) = if sigma > 0.0 {
+                    let g = sigma.sqrt();
+                    (e * (g * x).cosh(), e * (g * x).sinh() / g)
+                } else {
+                    let b = (-sigma).sqrt();
+                    (e * (b * x).cos(), e * (b * x).sin() / b)
+                };
+                let tol = 10.0 * crate::check::tol::ROUNDING;
+                assert!(
+                    (c - cw).abs() <= tol,
+                    "C: sigma {sigma}, x {x}: {c} against {cw}"
+                );
+                assert!(
+                    (s - sw).abs() <= tol,
+                    "S: sigma {sigma}, x {x}: {s} against {sw}"
+                );
+            }
+        }
+    }
+}
