@@ -15,7 +15,7 @@ height instead. JSON profiles are metres. SVG y points down and model y up; in a
 is model x, in a side view svg x is model z (the front of the body at +z). Each view is placed by \
 its own outline, wherever it sits on the page: its lowest point at y = 0, the front's torso axis at \
 x = 0, the side's torso centred at z = 0; a side view whose height differs from the front's by at \
-most 5 % is scaled to it with a warning, more is an error. Each SVG holds one closed path for the \
+most 5 % is scaled to it with a warning, more is an error; a humanoid side view deeper than it is tall is an error. Each SVG holds one closed path for the \
 outline (any path commands, flattened with --tolerance, at most 1 % of the drawing's height); extra paths whose id starts with \
 `cut` are explicit part boundaries: drawn across an arm (below the armpit), a leg (below the crotch) \
 or the neck, a cut places that join at its mean height. A .json profile is [[x, y], ...] or {\"points\": [...]}. Automatic \

@@ -54,6 +54,13 @@ pub const SIDE_HEIGHT_SILENT: f64 = 0.005;
 /// 5 %).
 pub const SIDE_HEIGHT_SCALED: f64 = 0.05;
 
+/// Most depth (front to back) of a humanoid's side view per unit of its
+/// height. A standing figure seen from the side, feet included, is a
+/// fraction of its height deep (the corpus: 0.2-0.5, the cartoon's round
+/// head the most); a side view deeper than tall is not one (a foot three
+/// times the figure's height built with a 1000 % side error and exit 0).
+pub const SIDE_DEPTH_MAX: f64 = 1.0;
+
 /// The similarity that takes each drawn view to the model's frame:
 /// `model = scale * drawn + shift` (side: `side_scale * scale`).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -257,6 +264,21 @@ pub fn place(
     // the front at its size, feet at y = 0: find the torso there
     let f0 = placement.front_outline(front)?;
     let plan = super::quadruped::resolve_plan(plan, f0.points());
+    if let (Some(sd), BodyPlan::Humanoid) = (side, plan) {
+        let (w, hs) = (
+            crate::polygon::span(sd.points(), 0),
+            crate::polygon::span(sd.points(), 1),
+        );
+        let ratio = (w[1] - w[0]) / (hs[1] - hs[0]);
+        if ratio > SIDE_DEPTH_MAX {
+            return Err(SketchError::Mismatch(format!(
+                "the side view is {ratio:.2} times as deep (front to back) as it is tall: a standing \
+                 figure seen from the side is taller than it is deep, so this is not its side view \
+                 (a foot longer than the leg, a figure lying down, or the front and side files \
+                 swapped): draw the side view of the standing figure"
+            )));
+        }
+    }
     let torso = match plan {
         BodyPlan::Quadruped => None,
         _ => torso_axis(f0.points()),

@@ -189,6 +189,43 @@ fn side_view_a_little_taller_is_scaled_with_a_warning_and_much_taller_is_refused
     }
 }
 
+/// A humanoid side view deeper than it is tall is not one (a foot three
+/// times the figure's height once built with a 1000 % side error and exit
+/// 0): a clear error naming the ratio, and no file.
+#[test]
+fn a_side_view_deeper_than_tall_is_refused() {
+    let dir = tmpdir("draw-deep");
+    let h = Humanoid::default();
+    let (front, side) = h.outlines().expect("outline");
+    let f = dir.join("f.svg");
+    std::fs::write(
+        &f,
+        document(Style::Cm, &front, 1.7, [500.0, 1900.0], 500, "front"),
+    )
+    .expect("w");
+    // the side view stretched front to back, its height kept
+    let deep: Vec<[f64; 2]> = side.iter().map(|p| [8.0 * p[0], p[1]]).collect();
+    let s = dir.join("deep.svg");
+    std::fs::write(
+        &s,
+        document(Style::Cm, &deep, 1.7, [500.0, 1900.0], 500, "side"),
+    )
+    .expect("w");
+    let out = dir.join("o.obj");
+    let o = pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        f.to_str().unwrap(),
+        "--side",
+        s.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_clear_error(&o, "times as deep (front to back) as it is tall");
+    assert!(!out.exists());
+}
+
 /// A drawing `metres` tall (an SVG in cm whose path is scaled by a group).
 fn sized(dir: &Path, name: &str, metres: f64) -> PathBuf {
     let (front, _) = Humanoid::default().outlines().expect("outline");
