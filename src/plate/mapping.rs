@@ -292,6 +292,34 @@ mod tests {
         assert!((q.u + 1.0).abs() <= TOL && q.v.abs() <= TOL, "{q:?}");
     }
 
+    /// A ray that leaves the boundary, re-enters it and leaves again (a
+    /// notch cut into the top edge of a square) is counted as a non-star
+    /// ray, its three crossings kept apart although they lie within one
+    /// ray length of each other; a convex boundary has none.
+    #[test]
+    fn a_ray_crossing_a_notch_is_counted_as_not_star_shaped() {
+        let notched = vec![
+            [2.0, -2.0],
+            [2.0, 2.0],
+            [1.5, 2.0],
+            [1.0, 0.3],
+            [0.5, 2.0],
+            [-2.0, 2.0],
+            [-2.0, -2.0],
+        ];
+        let mut m = DiskMapping::new(notched, [0.0, 0.0]).expect("notched");
+        // the ray y = x / 2 crosses the notch at x = 0.95 and 1.07 and the
+        // right edge at x = 2: t = 0.53, 0.59, 1.11 for B at x = 1.8
+        let p = m.map_point([1.8, 0.9], None);
+        assert_eq!(m.non_star_rays, 1, "{p:?}");
+        assert!((p.rho - 0.9).abs() <= TOL, "{p:?}");
+        let mut sq = square();
+        for q in [[0.5, 0.2], [-0.3, 0.9], [0.99, -0.99]] {
+            sq.map_point(q, None);
+        }
+        assert_eq!(sq.non_star_rays, 0);
+    }
+
     #[test]
     fn the_harmonic_disk_puts_the_boundary_by_arc_length_and_the_centre_at_the_mean() {
         // a unit square away from the origin, fanned around its centre
