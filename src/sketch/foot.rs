@@ -449,6 +449,25 @@ mod tests {
         assert_eq!(graded_place(&s, None, m, 1.0), free);
     }
 
+    /// The last full section sits as far from the toe as the foot is half
+    /// high there: the boot's foot is 0.1 high with its toe at z = 0.3, so
+    /// at z = 0.25; a foot no longer than it is high gets the midpoint.
+    #[test]
+    fn the_toe_cap_is_a_half_height_from_the_toe() {
+        let f = Foot {
+            last_upper: 0,
+            dir: 1.0,
+            radius: 0.05,
+            start: [0.0, 0.15],
+            toe: [0.3, 0.05],
+            ankle_y: 0.2,
+        };
+        let z = toe_cap(&boot(), &f, 0.1);
+        assert!((z - 0.25).abs() < crate::check::tol::SOLVE, "{z}");
+        let near = toe_cap(&boot(), &f, 0.27);
+        assert!((near - 0.285).abs() < crate::check::tol::ROUNDING, "{near}");
+    }
+
     fn leg_samples(side: &[[f64; 2]]) -> (Vec<Sample>, Vec<(f64, f64)>) {
         let ys: Vec<f64> = (0..200).map(|k| 0.999 - k as f64 * 0.995 / 199.0).collect();
         let s = ys.iter().map(|&y| Sample { y, c: 0.0, w: 0.05 }).collect();
