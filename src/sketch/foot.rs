@@ -180,53 +180,6 @@ pub(super) fn plan(s: &[Sample], foot: Option<&Foot>) -> Plan {
     }
 }
 
-/// Ratio of consecutive graded spacings above the bend ([`graded_place`]).
-/// Chosen between 2 and 1.5 on the corpus's development drawings: at 2 the
-/// chain still rang behind long_legs' ankles (side error 2.26 % of the
-/// height, a dent), at 1.5 no development drawing's leg is over 1.64 %.
-const GRADE_RATIO: f64 = 1.5;
-
-/// The upper leg's section indices among its samples `s` (the last one is
-/// the ankle, where the bend starts), `m` of them: the last sections
-/// before the bend are graded from the bend's own spacing `step` (front
-/// units), growing by [`GRADE_RATIO`] (`step`, `1.5 step`, `2.25 step`,
-/// ...) until the next would reach the leg's mean spacing; the rest are placed as for any part
-/// ([`place`](super::section_place::place)). Placed freely, a section could
-/// fall a fifth of a bend step above the ankle and the next one five bend
-/// steps higher: the C2 chain rang across that jump in spacing, a bulge
-/// behind the ankle up to 2 % of the height outside the drawn side outline.
-pub(super) fn graded_place(
-    s: &[Sample],
-    depth: Option<&[(f64, f64)]>,
-    m: usize,
-    step: f64,
-) -> Vec<usize> {
-    let n = s.len();
-    // arc length from each sample down to the ankle
-    let mut to_end = vec![0.0; n];
-    for i in (0..n.saturating_sub(1)).rev() {
-        to_end[i] = to_end[i + 1] + (s[i + 1].y - s[i].y).hypot(s[i + 1].c - s[i].c);
-    }
-    let mean = to_end.first().copied().unwrap_or(0.0) / m.saturating_sub(1).max(1) as f64;
-    let mut tail = vec![n - 1];
-    let (mut d, mut gap) = (0.0, step);
-    // keep at least four freely placed sections above the graded ones
-    while step > 0.0 && gap < mean && tail.len() + 4 <= m {
-        d += gap;
-        let last = tail[tail.len() - 1];
-        match (0..last).rev().find(|&k| to_end[k] >= d) {
-            Some(k) if k >= 3 => tail.push(k),
-            _ => break,
-        }
-        gap *= GRADE_RATIO;
-    }
-    let top = tail[tail.len() - 1];
-    let mut idx =
-        super::section_place::place(&s[..=top], depth.map(|d| &d[..=top]), m + 1 - tail.len());
-    idx.extend(tail.iter().rev().skip(1));
-    idx
-}
-
 /// Bend sections (at a sixth, a third and a half of pi) followed by
 /// `m_foot` points along the foot, the last one the toe.
 pub(super) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec<PathPoint> {
@@ -412,41 +365,6 @@ mod tests {
             [0.05, 1.0],
             [-0.05, 1.0],
         ]
-    }
-
-    /// Above the bend, the last sections are a bend step apart, then 1.5,
-    /// 2.25, ... steps (to within a sample) while below the mean spacing, and the rest placed as any part's;
-    /// a step as long as the leg's mean spacing changes nothing.
-    #[test]
-    fn the_last_sections_above_the_bend_are_graded_from_its_step() {
-        let n = 400;
-        let s: Vec<Sample> = (0..n)
-            .map(|k| Sample {
-                y: 1.0 - k as f64 / (n - 1) as f64,
-                c: 0.0,
-                w: 0.05,
-            })
-            .collect();
-        let m = 13;
-        let step = 0.01;
-        let idx = graded_place(&s, None, m, step);
-        assert_eq!(idx.len(), m);
-        assert!(idx.windows(2).all(|w| w[0] < w[1]), "{idx:?}");
-        assert_eq!(idx[m - 1], n - 1);
-        let y = |j: usize| s[idx[j]].y;
-        let dy = 1.0 / (n - 1) as f64;
-        // mean spacing 1/12: steps 0.01 to 0.0759 (six), 0.114 is past it
-        for k in 1..=6 {
-            let want = step * GRADE_RATIO.powi(k as i32 - 1);
-            let got = y(m - 1 - k) - y(m - k);
-            assert!(
-                (got - want).abs() <= dy,
-                "interval {k}: {got} against {want}"
-            );
-        }
-        assert!(y(m - 8) - y(m - 7) > 7.0 * step, "{idx:?}");
-        let free = super::super::section_place::place(&s, None, m);
-        assert_eq!(graded_place(&s, None, m, 1.0), free);
     }
 
     /// The last full section sits as far from the toe as the foot is half

@@ -103,7 +103,7 @@ fn region_part(
     let idx = match &foot {
         // the bend's sections are a sixth of pi of its radius apart (side
         // units, `map[1]` per front unit)
-        Some(f) => super::foot::graded_place(
+        Some(f) => super::section_place::graded_place(
             &s[..plan.n_upper],
             upper_depth,
             plan.m_upper,
