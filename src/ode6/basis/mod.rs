@@ -313,3 +313,78 @@ impl Basis {
         self.coef.iter().flatten().fold(0.0, |a, b| a.max(b.abs()))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `rcond` against the test's own condition number: the two inverses
+    /// (LU here and there) agree to far better than this.
+    const RCOND_REL: f64 = 1e-9;
+    /// A coefficient moved by this ...
+    const NUDGE: f64 = 1e-3;
+    /// ... moves the boundary values by at least this (y_k and their
+    /// derivatives at the ends are of order one after equilibration).
+    const SEEN: f64 = 1e-6;
+
+    /// Forcing a root case that does not belong to the parameters is
+    /// refused (its functions would not solve eq 8).
+    #[test]
+    fn a_case_forced_on_other_parameters_is_refused() {
+        let p = Params::new(1.0, 3.0, 1.0);
+        let r = Basis::with_case(
+            p,
+            RootCase::Complex {
+                alpha: 0.5,
+                beta: 2.0,
+            },
+        );
+        assert!(matches!(r, Err(Ode6Error::WrongCase { .. })), "{r:?}");
+    }
+
+    /// `rcond` is the reciprocal 1-norm condition number of the boundary
+    /// matrix (rows: `y_k^{(i)}` at u = 0 and 1) with its columns scaled to
+    /// a largest entry of 1, computed here from the case basis with
+    /// nalgebra's own inverse and norms.
+    #[test]
+    fn rcond_is_the_reciprocal_condition_number_of_the_scaled_boundary_matrix() {
+        for p in [Params::new(1.0, 3.0, 1.0), Params::new(-0.5, 2.0, 4.0)] {
+            let b = Basis::new(p).expect("basis");
+            let (y0, y1) = (b.y(Jet::<3, 1>::var_u(0.0)), b.y(Jet::<3, 1>::var_u(1.0)));
+            let m = DMatrix::from_fn(6, 6, |r, k| {
+                let col = |i: usize| {
+                    if i < 3 {
+                        y0[k].deriv(i, 0)
+                    } else {
+                        y1[k].deriv(i - 3, 0)
+                    }
+                };
+                let s = (0..6).map(|i| col(i).abs()).fold(0.0, f64::max);
+                col(r) / s
+            });
+            let inv = m.clone().try_inverse().expect("regular");
+            let one = |a: &DMatrix<f64>| a.column_iter().map(|c| c.lp_norm(1)).fold(0.0, f64::max);
+            let want = 1.0 / (one(&m) * one(&inv));
+            assert!(
+                (b.rcond - want).abs() <= RCOND_REL * want,
+                "{p:?}: {} against {want}",
+                b.rcond
+            );
+        }
+    }
+
+    /// The boundary error sees a basis whose coefficients are off: one
+    /// coefficient moved by 1e-3 moves `g_j` or its derivatives at an end.
+    #[test]
+    fn the_boundary_error_sees_a_wrong_coefficient() {
+        let b = Basis::new(Params::new(1.0, 3.0, 1.0)).expect("basis");
+        assert!(
+            b.boundary_error() <= crate::check::tol::SOLVE,
+            "{}",
+            b.boundary_error()
+        );
+        let mut off = b.clone();
+        off.coef[0][0] += NUDGE;
+        assert!(off.boundary_error() >= SEEN, "{}", off.boundary_error());
+    }
+}
