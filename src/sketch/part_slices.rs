@@ -26,7 +26,16 @@ pub(super) fn side_depth(
     let s = slice(side, map[0] + map[1] * y);
     let (lo, hi) = match pick {
         SidePick::Hidden => return None,
-        SidePick::Whole => (s.first()?[0], s.last()?[1]),
+        // the widest interval: a hand or a finger hanging in front of the
+        // body is a separate interval of a real body's side view, and the
+        // slice's whole extent (first to last) doubled the torso's depth
+        // there: the chain shot a sheet metres out
+        SidePick::Whole => {
+            let iv = s
+                .iter()
+                .max_by(|p, q| (p[1] - p[0]).total_cmp(&(q[1] - q[0])))?;
+            (iv[0], iv[1])
+        }
         SidePick::CentreIn(a, b) => {
             let iv = s
                 .iter()
@@ -286,5 +295,45 @@ fn tilt_top(
     for i in 1..sections.len() {
         u += crate::mesh::dist(sections[i - 1].centre, sections[i].centre);
         sections[i].u = u;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A side view whose arm hangs in front of the body, apart from it: at
+    /// the hand's height the body's depth is its own interval, not the
+    /// slice's whole extent (the hand in front once doubled a real body's
+    /// torso depth, and its chain shot a sheet out of the model).
+    #[test]
+    fn a_hand_apart_in_the_side_view_is_not_the_body_s_depth() {
+        // body z in [-1, 1] up to y = 10; an arm from its top out to z = 3
+        // and down to y = 4, its hand at z in [2.5, 3]
+        let side = vec![
+            [-1.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 8.0],
+            [2.5, 8.0],
+            [2.5, 4.0],
+            [3.0, 4.0],
+            [3.0, 9.0],
+            [1.0, 9.0],
+            [1.0, 10.0],
+            [-1.0, 10.0],
+        ];
+        let (z, half) = side_depth(&side, [0.0, 1.0], 5.0, SidePick::Whole).expect("a slice");
+        assert!(
+            z.abs() < crate::check::tol::ROUNDING
+                && (half - 1.0).abs() < crate::check::tol::ROUNDING,
+            "{z} {half}"
+        );
+        // above the arm the slice is one interval, the whole of it
+        let (z, half) = side_depth(&side, [0.0, 1.0], 8.5, SidePick::Whole).expect("a slice");
+        assert!(
+            (z - 1.0).abs() < crate::check::tol::ROUNDING
+                && (half - 2.0).abs() < crate::check::tol::ROUNDING,
+            "{z} {half}"
+        );
     }
 }
