@@ -39,7 +39,7 @@
 //!
 //! **Frontiers.** The narrow-band octree asks these questions for nested
 //! boxes. [`SegmentBvh::refine`] answers for a box starting from its
-//! parent's [`Frontier`] instead of the root: a cluster accepted for the
+//! parent's [`Frontier`](super::frontier::Frontier) instead of the root: a cluster accepted for the
 //! parent's ball is valid (and within its share) on every point of the
 //! child box, so its bounds are inherited and never tested again; only the
 //! nodes the parent left open (segments, and clusters whose expansion was
@@ -53,7 +53,6 @@
 //! needs: it decides node values.
 
 use super::farfield::{Moments, SegmentField};
-pub use super::frontier::Frontier;
 use super::kernel::Segment;
 use crate::mesh::{dot, norm, sub};
 

@@ -7,7 +7,7 @@
 use super::fit::{self, paper_literal_field, RawSegment, Solver, WeightMode};
 use super::kernel::{self, Segment};
 use super::model::{Component, Model, Polygonizer};
-pub use super::samples::{random_case, Lcg};
+pub use super::samples::{random_case, Lcg, FIT_RMS_TOLERANCE};
 use super::{shapes, silhouette, sketch};
 use crate::check::{rel_err, tol, Check, Kind};
 use crate::check::{worst, Worst};
@@ -17,10 +17,6 @@ use crate::mesh::topology::report;
 const FAMILY: &str = "conv";
 const PAPER: &str = "003";
 
-/// Largest RMS relative deviation $|F - T|/T$ at the silhouette points
-/// accepted after the global fit (it is a least-squares fit with
-/// $\Lambda \ge 0$, not an interpolation: the optimum itself leaves this).
-pub const FIT_RMS_TOLERANCE: f64 = 0.15;
 /// Largest silhouette-following error (max distance / stroke size) after
 /// the global fit at resolution 48 (the grid cell is ~2% of the size).
 pub const SILHOUETTE_TOLERANCE: f64 = 0.03;

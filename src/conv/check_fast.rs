@@ -6,12 +6,12 @@
 //! an incremental rebuild equals a full one, and the option sweep's
 //! near-circular ellipse is reconstructed (issue 16).
 
-use super::bvh::Frontier;
-use super::check::{Lcg, FIT_RMS_TOLERANCE};
+use super::frontier::Frontier;
 use super::incremental::{MeshCache, SketchCache};
 use super::kernel::total_field;
 use super::model::{Component, Model, Polygonizer};
 use super::sample::Sampler;
+use super::samples::{Lcg, FIT_RMS_TOLERANCE};
 use super::{shapes, sketch};
 use crate::check::{tol, Check, Kind};
 use crate::check::{worst, Worst};

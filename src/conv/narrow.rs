@@ -41,7 +41,8 @@
 //! ([`NarrowStats::evaluated`] equals [`NarrowStats::exact_nodes`]; test
 //! `narrow_band_is_identical_for_any_thread_count`).
 
-use super::bvh::{Frontier, Interaction, SegmentBvh};
+use super::bvh::{Interaction, SegmentBvh};
+use super::frontier::Frontier;
 use super::narrow_merge::{finish, Event, Grid, LeafContext, Record};
 use crate::mesh::isosurface::ScalarGrid;
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -4,6 +4,11 @@
 
 use super::kernel::Segment;
 
+/// Largest RMS relative deviation $|F - T|/T$ at the silhouette points
+/// accepted after the global fit (it is a least-squares fit with
+/// $\Lambda \ge 0$, not an interpolation: the optimum itself leaves this).
+pub const FIT_RMS_TOLERANCE: f64 = 0.15;
+
 /// Deterministic pseudo-random numbers in [0, 1) (no dependency).
 pub struct Lcg(pub u64);
 

@@ -17,14 +17,11 @@
 
 use super::printed::*;
 use super::printed_appendix_b::appendix_b_checks;
+use super::printed_checks::rel;
 use super::*;
 use crate::check::{worst, Worst};
 use crate::jet::Real;
 use nalgebra::Complex;
-
-pub(super) fn rel(x: f64, y: f64) -> f64 {
-    (x - y).abs() / y.abs().worst(1.0)
-}
 
 /// Polynomial coefficient functions of a test surface that does not solve
 /// eq 2 (degree 7, so every sixth derivative is non-zero).

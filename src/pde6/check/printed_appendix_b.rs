@@ -6,8 +6,7 @@
 //! The numbering is fixed in [`super::printed_appendix`].
 
 use super::printed::*;
-use super::printed_appendix::rel;
-use super::printed_checks::{node_error, solved_rows_error, PRINTED_TOL};
+use super::printed_checks::{node_error, rel, solved_rows_error, PRINTED_TOL};
 use super::*;
 use crate::check::{worst, Worst};
 

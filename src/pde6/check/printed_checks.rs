@@ -11,7 +11,7 @@ use crate::check::{worst, Worst};
 const US: [f64; 9] = [0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0];
 
 /// |x - y| / max(|y|, 1); NaN stays NaN.
-fn rel(x: f64, y: f64) -> f64 {
+pub(super) fn rel(x: f64, y: f64) -> f64 {
     (x - y).abs() / y.abs().worst(1.0)
 }
 

@@ -39,18 +39,12 @@ const KNOWN_LOOPS: &[&[&str]] = &[
         "conv::narrow_merge",
         "conv::sample",
     ],
-    &["conv::bvh", "conv::frontier"],
-    &["conv::check", "conv::check_fast"],
     // the GEC fit, its FFT path, section checks and parameter correction
     &[
         "curve::gec::correct",
         "curve::gec::fft",
         "curve::gec::fit",
         "curve::gec::section",
-    ],
-    &[
-        "pde6::check::printed_appendix",
-        "pde6::check::printed_appendix_b",
     ],
     &["sketch::derive", "sketch::keysection", "sketch::quadruped"],
 ];
