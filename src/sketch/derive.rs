@@ -9,15 +9,12 @@ use super::segment::{landmarks, regions, shoulder_top, Landmarks};
 use super::SketchError;
 use crate::character::doc::{BodyPlan, KeySection, Level, PartSpec, SectionShape, TransitionSpec};
 
+pub use super::keysection::{GEC_TERMS, SECTION_SLACK};
 pub(super) use super::part_slices::part_from_region;
 pub use super::part_slices::{SHOULDER_TILT_DEG, SHOULDER_TILT_SECTIONS};
 pub use super::section_place::SECTIONS_PER_PART;
-/// GEC terms for key cross-section sketches.
-pub const GEC_TERMS: usize = 6;
 /// Largest allowed side/front height mismatch (relative).
 pub const HEIGHT_MISMATCH: f64 = 0.05;
-/// How far a key section may reach beyond its part's width (relative).
-pub const SECTION_SLACK: f64 = 0.15;
 
 /// Parts and transitions derived from the outlines.
 #[derive(Clone, Debug)]

@@ -2,10 +2,14 @@
 //! in the horizontal plane at a height of a part, fitted by a GEC
 //! (`curve::gec::fit`) that replaces the part's section nearest that height.
 
-use super::derive::{GEC_TERMS, SECTION_SLACK};
 use super::SketchError;
 use crate::character::doc::{KeySection, PartSpec, SectionShape};
 use crate::curve::gec::Frame;
+
+/// GEC terms for key cross-section sketches.
+pub const GEC_TERMS: usize = 6;
+/// How far a key section may reach beyond its part's width (relative).
+pub const SECTION_SLACK: f64 = 0.15;
 
 /// Fits a key cross-section sketch and puts it in place of the nearest
 /// section of its part.
