@@ -307,21 +307,6 @@ proptest! {
     }
 }
 
-/// Forcing a case that does not belong to the parameters is refused.
-#[test]
-fn mismatched_case_is_refused() {
-    use pdesculpt::ode6::RootCase;
-    let p = Params::new(1.0, 3.0, 1.0);
-    let r = Basis::with_case(
-        p,
-        RootCase::Complex {
-            alpha: 0.5,
-            beta: 2.0,
-        },
-    );
-    assert!(matches!(r, Err(Ode6Error::WrongCase { .. })));
-}
-
 /// The quintic Hermite segment takes its end data: position, first and
 /// second derivative at v = 0 and v = 1 (jets).
 #[test]

@@ -143,35 +143,41 @@ fn height_flag_scales_to_the_asked_height() {
     assert!(r["warnings"].is_array());
 }
 
-#[test]
-fn side_view_a_little_taller_is_scaled_with_a_warning_and_much_taller_is_refused() {
-    let dir = tmpdir("draw-side");
-    let h = Humanoid::default();
-    let (front, side) = h.outlines().expect("outline");
+/// Writes the default humanoid's front (1.7 m, cm page) and `side`
+/// (`tall` metres high) and runs `sketch build` on them into `out`.
+fn build_with_side(dir: &Path, side: &[[f64; 2]], tall: f64, out: &Path) -> std::process::Output {
+    let (front, _) = Humanoid::default().outlines().expect("outline");
     let f = dir.join("f.svg");
     std::fs::write(
         &f,
         document(Style::Cm, &front, 1.7, [500.0, 1900.0], 500, "front"),
     )
     .expect("w");
+    let s = dir.join(format!("s{tall}.svg"));
+    std::fs::write(
+        &s,
+        document(Style::Cm, side, tall, [300.0, 1950.0], 500, "side"),
+    )
+    .expect("w");
+    pdesculpt(&[
+        "sketch",
+        "build",
+        "--front",
+        f.to_str().unwrap(),
+        "--side",
+        s.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+    ])
+}
+
+#[test]
+fn side_view_a_little_taller_is_scaled_with_a_warning_and_much_taller_is_refused() {
+    let dir = tmpdir("draw-side");
+    let (_, side) = Humanoid::default().outlines().expect("outline");
     for (k, expect_ok) in [(1.03, true), (1.2, false)] {
-        let s = dir.join(format!("s{k}.svg"));
-        std::fs::write(
-            &s,
-            document(Style::Cm, &side, 1.7 * k, [300.0, 1950.0], 500, "side"),
-        )
-        .expect("w");
         let out = dir.join(format!("o{k}.obj"));
-        let o = pdesculpt(&[
-            "sketch",
-            "build",
-            "--front",
-            f.to_str().unwrap(),
-            "--side",
-            s.to_str().unwrap(),
-            "-o",
-            out.to_str().unwrap(),
-        ]);
+        let o = build_with_side(&dir, &side, 1.7 * k, &out);
         let err = String::from_utf8_lossy(&o.stderr).to_string();
         if expect_ok {
             assert!(o.status.success(), "{err}");
@@ -195,33 +201,11 @@ fn side_view_a_little_taller_is_scaled_with_a_warning_and_much_taller_is_refused
 #[test]
 fn a_side_view_deeper_than_tall_is_refused() {
     let dir = tmpdir("draw-deep");
-    let h = Humanoid::default();
-    let (front, side) = h.outlines().expect("outline");
-    let f = dir.join("f.svg");
-    std::fs::write(
-        &f,
-        document(Style::Cm, &front, 1.7, [500.0, 1900.0], 500, "front"),
-    )
-    .expect("w");
+    let (_, side) = Humanoid::default().outlines().expect("outline");
     // the side view stretched front to back, its height kept
     let deep: Vec<[f64; 2]> = side.iter().map(|p| [8.0 * p[0], p[1]]).collect();
-    let s = dir.join("deep.svg");
-    std::fs::write(
-        &s,
-        document(Style::Cm, &deep, 1.7, [500.0, 1900.0], 500, "side"),
-    )
-    .expect("w");
     let out = dir.join("o.obj");
-    let o = pdesculpt(&[
-        "sketch",
-        "build",
-        "--front",
-        f.to_str().unwrap(),
-        "--side",
-        s.to_str().unwrap(),
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let o = build_with_side(&dir, &deep, 1.7, &out);
     assert_clear_error(&o, "times as deep (front to back) as it is tall");
     assert!(!out.exists());
 }
