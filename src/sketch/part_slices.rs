@@ -180,7 +180,8 @@ fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSp
     let r = ctx.r;
     let mut sections = Vec::with_capacity(idx.len() + 1);
     let mut u = 0.0;
-    let mut prev: Option<[f64; 3]> = None;
+    let mut prev: Option<([f64; 3], Option<f64>)> = None;
+    let follows_depth = !r.horizontal && r.side == SidePick::Whole;
     for (j, &i) in idx.iter().enumerate() {
         let dir = direction(s, i);
         let t = if r.horizontal {
@@ -194,10 +195,6 @@ fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSp
         let e2 = [0.0, 0.0, 1.0];
         let cos_tilt = t[1].abs();
         let centre0 = [s[i].c, s[i].y, 0.0];
-        if let Some(p) = prev {
-            u += crate::mesh::dist(p, centre0);
-        }
-        prev = Some(centre0);
         let a_r = s[i].w * cos_tilt;
         let last = j + 1 == idx.len() && ctx.close_last;
         let shape = match ctx.side {
@@ -211,6 +208,21 @@ fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSp
             },
             _ => SectionShape::Circle { r: a_r },
         };
+        // u runs along the ring centres themselves: between two sections
+        // that both take their depth from the side view, its depth centre
+        // moves them too
+        let zc = match shape {
+            SectionShape::Ellipse { offset, .. } => Some(offset),
+            _ => None,
+        };
+        if let Some((p, pz)) = prev {
+            let dz = match (pz, zc) {
+                (Some(a), Some(b)) if follows_depth => b - a,
+                _ => 0.0,
+            };
+            u += crate::mesh::dist(p, centre0).hypot(dz);
+        }
+        prev = Some((centre0, zc));
         sections.push(SectionSpec {
             u,
             centre: centre0,
