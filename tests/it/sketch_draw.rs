@@ -566,3 +566,74 @@ fn the_drawing_template_reads_and_asks_for_an_outline() {
     let out = super::cli::pdesculpt(&["profile", "check", page, "--view", "front"]);
     super::cli::assert_clear_error(&out, "no closed outline");
 }
+
+/// A real body's silhouettes, as issue 28 describes the held-out ones: the
+/// MakeHuman base body's front, and its side with the arms removed (every
+/// triangle with a vertex beside the torso above mid-height). They build
+/// closed at the body's height, and the side view has no fin: the head
+/// chain's parameter once ignored the side depth's move at the jaw, its
+/// start tangent drove the shoulders transition 0.8 m backward (side error
+/// 11.4 % of the height; now 1.9 %). Not yet within the issue's bounds
+/// (front 3.0 %: the hands; docs/drawing-corpus.md).
+#[test]
+fn a_real_body_s_silhouettes_build_without_a_fin() {
+    use pdesculpt::profile::{outline_of_mesh, to_svg_physical, OutlineOptions, View};
+    let body = pdesculpt::makehuman::base_body()
+        .expect("the base body")
+        .mesh;
+    let ys = pdesculpt::polygon::span(
+        &body
+            .positions
+            .iter()
+            .map(|p| [p[0], p[1]])
+            .collect::<Vec<_>>(),
+        1,
+    );
+    let h = ys[1] - ys[0];
+    let beside = |t: &[u32; 3]| {
+        t.iter().any(|&i| {
+            let p = body.positions[i as usize];
+            p[0].abs() > ARM_BESIDE * h && p[1] > ys[0] + 0.5 * h
+        })
+    };
+    let mut armless = body.clone();
+    armless.triangles.clear();
+    armless.tri_group.clear();
+    for (t, g) in body.triangles.iter().zip(&body.tri_group) {
+        if !beside(t) {
+            armless.triangles.push(*t);
+            armless.tri_group.push(*g);
+        }
+    }
+    let opts = OutlineOptions::default();
+    let front = outline_of_mesh(&body, View::Front, &opts).expect("front outline");
+    let side = outline_of_mesh(&armless, View::Side, &opts).expect("side outline");
+    let dir = tmpdir("draw-real-body");
+    let (f, s) = (dir.join("front.svg"), dir.join("side.svg"));
+    // MakeHuman's unit is the decimetre
+    std::fs::write(&f, to_svg_physical(&[&front], 0.1)).expect("w");
+    std::fs::write(&s, to_svg_physical(&[&side], 0.1)).expect("w");
+    let b = build(&f, &s, None).unwrap_or_else(|e| panic!("the real body: {e}"));
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    assert!((b.report.height_m - 0.1 * h).abs() <= HEIGHT_REL * 0.1 * h);
+    let q = &b.report.quality.whole;
+    let side_err = q
+        .views
+        .iter()
+        .find(|v| v.view == "side")
+        .expect("side")
+        .max_rel;
+    assert!(
+        side_err <= REAL_BODY_SIDE,
+        "side error {:.2} % of the height",
+        100.0 * side_err
+    );
+}
+
+/// Beside the torso: farther from the body's axis than this fraction of
+/// its height (the base body's torso is 0.11 of it wide on each side).
+const ARM_BESIDE: f64 = 0.114;
+/// The real body's side error bound in this test: measured 1.9 % of the
+/// height, 11.4 % with the fin.
+const REAL_BODY_SIDE: f64 = 0.025;
