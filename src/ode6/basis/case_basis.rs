@@ -120,3 +120,36 @@ pub(super) fn case_basis<T: Real>(case: &RootCase, u: T) -> [T; 6] {
         RootCase::SecondOrder => [one, u, z, z, z, z],
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The series of `F2(q, u) = sum q^k u^(2k+2) / (2k+2)!` and `F3(q, u) =
+    /// sum q^k u^(2k+3) / (2k+3)!` against their closed forms: with `s =
+    /// sqrt(|q|)`, `(cosh su - 1) / q` and `(sinh su - su) / (q s)` for `q >
+    /// 0`, `(cos su - 1) / q` and `(su - sin su) / s^3` for `q < 0`.
+    #[test]
+    fn the_f2_f3_series_match_their_closed_forms() {
+        for q in [0.5f64, -0.5, 2.0] {
+            let s = q.abs().sqrt();
+            for u in [0.25f64, 0.7, 1.0] {
+                let [f2, f3] = series_f23(q, u);
+                let (w2, w3) = if q > 0.0 {
+                    (
+                        ((s * u).cosh() - 1.0) / q,
+                        ((s * u).sinh() - s * u) / (q * s),
+                    )
+                } else {
+                    (
+                        ((s * u).cos() - 1.0) / q,
+                        (s * u - (s * u).sin()) / s.powi(3),
+                    )
+                };
+                let tol = crate::check::tol::SOLVE;
+                assert!((f2 - w2).abs() <= tol, "F2({q}, {u}): {f2} against {w2}");
+                assert!((f3 - w3).abs() <= tol, "F3({q}, {u}): {f3} against {w3}");
+            }
+        }
+    }
+}

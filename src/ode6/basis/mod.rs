@@ -373,6 +373,16 @@ mod tests {
         }
     }
 
+    /// The coefficient magnitude is the largest |coef| (the unit
+    /// constraints make at least one coefficient of order one).
+    #[test]
+    fn the_coefficient_magnitude_is_the_largest_coefficient() {
+        let b = Basis::new(Params::new(1.0, 3.0, 1.0)).expect("basis");
+        let want = b.coef.iter().flatten().map(|c| c.abs()).fold(0.0, f64::max);
+        assert!(want > 0.0);
+        assert_eq!(b.coef_magnitude(), want);
+    }
+
     /// The boundary error sees a basis whose coefficients are off: one
     /// coefficient moved by 1e-3 moves `g_j` or its derivatives at an end.
     #[test]
