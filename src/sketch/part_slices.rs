@@ -36,6 +36,7 @@ pub(super) fn side_depth(
                 .max_by(|p, q| (p[1] - p[0]).total_cmp(&(q[1] - q[0])))?;
             (iv[0], iv[1])
         }
+        SidePick::Span => (s.first()?[0], s.last()?[1]),
         SidePick::CentreIn(a, b) => {
             let iv = s
                 .iter()

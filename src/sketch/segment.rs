@@ -269,8 +269,12 @@ pub enum SidePick {
     /// Hidden in the side view (a humanoid's arms, an animal's tail): the
     /// sections stay circles.
     Hidden,
-    /// The slice's whole extent (torso, head, legs of a humanoid).
+    /// The slice's widest interval (torso, head, legs of a humanoid: a hand
+    /// hanging apart in the side view is left out).
     Whole,
+    /// The slice's extent from its first interval to its last (an animal's
+    /// body seen head-on, where its legs are still apart at the belly).
+    Span,
     /// The widest slice interval whose centre z lies in `(lo, hi)` (one leg
     /// of an animal's pair, seen apart in the view from its front).
     CentreIn(f64, f64),

@@ -15,9 +15,12 @@
 //! lower half (where, going up, two leg intervals merge under the belly);
 //! the **top gaps** are the gap tops of the outline seen upside down in the
 //! upper half: the concave corners where, going down, the tail, the back and
-//! the neck merge into the body. 1 or 3 leg gaps (2 or 4 legs) and 1 or 2 top
-//! gaps (tail and head, or tail, back and head) are accepted; anything else
-//! is an error naming what was found.
+//! the neck merge into the body. A corner found on two neighbouring slices
+//! counts once, and a corner with no part rising above it (the tail's
+//! underside meeting a rounded rump below a flat back) is dropped
+//! (`landmarks::prune_notches`). 1 or 3 leg gaps (2 or 4 legs) and 1 or 2
+//! top gaps (tail and head, or tail, back and head) are accepted; anything
+//! else is an error naming what was found.
 //!
 //! **Parts**, each the slice intervals of a region of heights as for a
 //! humanoid, so each is a C2 pde6 chain with sections perpendicular to its
@@ -33,7 +36,9 @@
 //! +x: `leg_fr`, `leg_br`), the inner one the far one (`leg_fl`, `leg_bl`);
 //! with the head-on view, each takes its depth and z from the head-on
 //! slice's interval on its side of the view's middle. With 2, `leg_f` and
-//! `leg_b`, their depth from the whole head-on slice. The tail is hidden in
+//! `leg_b`, their depth from the whole head-on slice (first interval to
+//! last, `SidePick::Span`), as the body's: at the belly the legs are still
+//! apart in the head-on view. The tail is hidden in
 //! the head-on view (circles, like a humanoid's arms).
 //!
 //! **Transitions** (`character::transition`): `underside` joins the body's
@@ -46,9 +51,11 @@
 //! cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
+mod landmarks;
+pub use landmarks::{landmarks, QuadLandmarks};
+
 use super::derive::{check_side_height, part_from_region, Derived};
-use super::poly::gap_tops;
-use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION, LANDMARK_SLICES};
+use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION};
 use super::SketchError;
 use crate::character::doc::{
     BodyPlan, End, KeySection, Level, PartSpec, SectionShape, TransitionSpec,
@@ -71,25 +78,6 @@ pub const UNDERSIDE_CUT_BLEND: f64 = 0.35;
 /// 0.92 % at 0.8).
 pub const TANGENT_SCALE: f64 = 0.8;
 
-/// The joins found on an animal's lateral outline.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct QuadLandmarks {
-    pub y_min: f64,
-    pub y_max: f64,
-    /// Tops of the gaps between the legs, by x.
-    pub leg_gaps: Vec<[f64; 2]>,
-    /// Corners between tail, back and neck at the top, by x.
-    pub top_gaps: Vec<[f64; 2]>,
-    /// +1 when the head is toward +x, -1 toward -x.
-    pub facing: f64,
-}
-
-impl QuadLandmarks {
-    pub fn height(&self) -> f64 {
-        self.y_max - self.y_min
-    }
-}
-
 /// Whether an outline is longer than tall: its principal axis
 /// (`align::axes`) is defined and within 45 degrees of horizontal.
 pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
@@ -105,46 +93,6 @@ pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
         BodyPlan::Auto => BodyPlan::Humanoid,
         p => p,
     }
-}
-
-/// Finds the leg gaps and top corners.
-pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
-    let yr = crate::polygon::span(front, 1);
-    let mid = 0.5 * (yr[0] + yr[1]);
-    let by_x = |v: &mut Vec<[f64; 2]>| v.sort_by(|a, b| a[0].total_cmp(&b[0]));
-    let mut legs: Vec<[f64; 2]> = gap_tops(front, LANDMARK_SLICES)
-        .into_iter()
-        .filter(|t| t.y < mid)
-        .map(|t| [t.x, t.y])
-        .collect();
-    by_x(&mut legs);
-    let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
-    let mut top: Vec<[f64; 2]> = gap_tops(&flipped, LANDMARK_SLICES)
-        .into_iter()
-        .map(|t| [t.x, -t.y])
-        .filter(|t| t[1] > mid)
-        .collect();
-    by_x(&mut top);
-    if legs.len() != 1 && legs.len() != 3 {
-        return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
-            legs.len(),
-            legs.len() + 1
-        )));
-    }
-    if top.is_empty() || top.len() > 2 {
-        return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them): draw the neck and the tail rising above the back line (a tail hanging down or level with the back is not recognised yet)",
-            top.len()
-        )));
-    }
-    Ok(QuadLandmarks {
-        y_min: yr[0],
-        y_max: yr[1],
-        leg_gaps: legs,
-        top_gaps: top,
-        facing: 1.0,
-    })
 }
 
 /// The farthest height from `from` toward `to` where the region still has
@@ -209,7 +157,7 @@ pub fn regions(
         tip: false,
         shoulder: None,
         horizontal: true,
-        side: SidePick::Whole,
+        side: SidePick::Span,
     }];
     // parts above the body, by x
     let mut xs = vec![-big];
@@ -286,7 +234,7 @@ pub fn regions(
         let y0 = reach(front, pick, y1, lm.y_min - g);
         let outer = i == 0 || i + 1 == n;
         let side_pick = if n == 2 {
-            SidePick::Whole
+            SidePick::Span
         } else if outer {
             SidePick::CentreIn(zc, big)
         } else {

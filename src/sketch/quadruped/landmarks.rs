@@ -1,0 +1,163 @@
+//! Landmarks of an animal's lateral outline: the gaps between its legs
+//! and the corners where tail, back and neck join the body (see the parent
+//! module's docs).
+
+use super::super::poly::gap_tops;
+use super::super::segment::{interval, Pick, GAP_FRACTION, LANDMARK_SLICES};
+use super::super::SketchError;
+
+/// The joins found on an animal's lateral outline.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct QuadLandmarks {
+    pub y_min: f64,
+    pub y_max: f64,
+    /// Tops of the gaps between the legs, by x.
+    pub leg_gaps: Vec<[f64; 2]>,
+    /// Corners between tail, back and neck at the top, by x.
+    pub top_gaps: Vec<[f64; 2]>,
+    /// +1 when the head is toward +x, -1 toward -x.
+    pub facing: f64,
+}
+
+impl QuadLandmarks {
+    pub fn height(&self) -> f64 {
+        self.y_max - self.y_min
+    }
+}
+
+/// Finds the leg gaps and top corners.
+pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
+    let yr = crate::polygon::span(front, 1);
+    let mid = 0.5 * (yr[0] + yr[1]);
+    let by_x = |v: &mut Vec<[f64; 2]>| v.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let mut legs: Vec<[f64; 2]> = gap_tops(front, LANDMARK_SLICES)
+        .into_iter()
+        .filter(|t| t.y < mid)
+        .map(|t| [t.x, t.y])
+        .collect();
+    by_x(&mut legs);
+    let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
+    let mut top: Vec<[f64; 2]> = gap_tops(&flipped, LANDMARK_SLICES)
+        .into_iter()
+        .map(|t| [t.x, -t.y])
+        .filter(|t| t[1] > mid)
+        .collect();
+    by_x(&mut top);
+    let g = GAP_FRACTION * (yr[1] - yr[0]);
+    dedup_gaps(&mut legs, g);
+    dedup_gaps(&mut top, g);
+    prune_notches(front, &mut top, g);
+    if legs.len() != 1 && legs.len() != 3 {
+        return Err(SketchError::Segmentation(format!(
+            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
+            legs.len(),
+            legs.len() + 1
+        )));
+    }
+    if top.is_empty() || top.len() > 2 {
+        return Err(SketchError::Segmentation(format!(
+            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them): draw the neck and the tail rising above the back line (a tail hanging down or level with the back is not recognised yet)",
+            top.len()
+        )));
+    }
+    Ok(QuadLandmarks {
+        y_min: yr[0],
+        y_max: yr[1],
+        leg_gaps: legs,
+        top_gaps: top,
+        facing: 1.0,
+    })
+}
+
+/// Merges gap tops closer than `g` to each other (one corner found on two
+/// neighbouring slices), keeping the higher.
+fn dedup_gaps(gaps: &mut Vec<[f64; 2]>, g: f64) {
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(gaps.len());
+    for p in gaps.iter() {
+        match out.last_mut() {
+            Some(q) if (p[0] - q[0]).hypot(p[1] - q[1]) < g => {
+                if p[1] > q[1] {
+                    *q = *p;
+                }
+            }
+            _ => out.push(*p),
+        }
+    }
+    *gaps = out;
+}
+
+/// Removes top gaps that separate nothing: a corner of the outline that
+/// opens upward with no part rising above it between its neighbours (a
+/// notch where a tail's underside meets the body's rounded end, below the
+/// back line that really separates tail and neck). While some region
+/// between consecutive gaps has no outline a band `g` above its higher
+/// bounding gap, the lower of its bounding gaps is dropped.
+fn prune_notches(front: &[[f64; 2]], top: &mut Vec<[f64; 2]>, g: f64) {
+    let big = f64::MAX;
+    loop {
+        let empty = (0..=top.len()).find(|&i| {
+            let lo = if i == 0 { -big } else { top[i - 1][0] };
+            let hi = top.get(i).map_or(big, |p| p[0]);
+            let y = [i.checked_sub(1), Some(i)]
+                .iter()
+                .flatten()
+                .filter_map(|&j| top.get(j))
+                .map(|p| p[1])
+                .fold(f64::MIN, f64::max);
+            !top.is_empty() && interval(front, Pick::CentreIn(lo, hi), y + g).is_none()
+        });
+        let Some(i) = empty else { return };
+        let lower = [i.checked_sub(1), Some(i)]
+            .into_iter()
+            .flatten()
+            .filter(|&j| j < top.len())
+            .min_by(|&a, &b| top[a][1].total_cmp(&top[b][1]));
+        match lower {
+            Some(j) => {
+                top.remove(j);
+            }
+            None => return,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A flat-backed body 4 long with a tail post at its left end and a
+    /// taller neck post at its right (counter-clockwise).
+    fn flat_back() -> Vec<[f64; 2]> {
+        vec![
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 3.0],
+            [3.5, 3.0],
+            [3.5, 1.0],
+            [0.5, 1.0],
+            [0.5, 2.0],
+            [0.0, 2.0],
+        ]
+    }
+
+    #[test]
+    fn a_corner_found_twice_is_one_corner() {
+        let mut g = vec![[1.0, 2.0], [1.001, 2.0005], [3.0, 2.0]];
+        dedup_gaps(&mut g, 0.01);
+        assert_eq!(g, vec![[1.001, 2.0005], [3.0, 2.0]]);
+    }
+
+    #[test]
+    fn a_notch_with_nothing_above_it_is_dropped() {
+        let front = flat_back();
+        // the back line between the posts, and a notch below it that would
+        // leave the stretch of back between them as a part of its own
+        let mut top = vec![[1.0, 0.95], [2.0, 1.0]];
+        prune_notches(&front, &mut top, 0.05);
+        assert_eq!(top, vec![[2.0, 1.0]]);
+        // the back line alone separates two parts: kept
+        let mut top = vec![[2.0, 1.0]];
+        prune_notches(&front, &mut top, 0.05);
+        assert_eq!(top, vec![[2.0, 1.0]]);
+    }
+}
