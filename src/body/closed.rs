@@ -415,6 +415,7 @@ fn hand_specs(
         cut_angles: vec![(THUMB_ARC_SHARE * std::f64::consts::PI * hand.thumb_share)
             .clamp(THUMB_ARC_MIN, THUMB_ARC_MAX)],
         tangent_scale: WRIST_TANGENT_SCALE,
+        child_tangent_scales: Vec::new(),
         continuity: Default::default(),
     });
     arms.hands

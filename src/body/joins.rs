@@ -11,13 +11,7 @@ use crate::character::ring::{cut_indices, RING_VERTICES};
 use crate::mesh::metrics::TriangleBvh;
 use crate::mesh::{add, scale, Mesh};
 
-/// Cross-tangent scale of the shoulder transition. Measured on the base and
-/// nine morphs (README): 0.7 instead of 1 flattens the Hermite bulge in
-/// front of the throat (recon -> skin max of african-male-young 3.89 ->
-/// 2.68 %, caucasian-female-young 3.38 -> 2.48 %,
-/// universal-female-young-averagemuscle-maxweight 3.78 -> 2.80 %), at a
-/// cost on the base (2.51 -> 2.94 %); 0.5 overshoots (base 3.2 %).
-pub const SHOULDER_TANGENT_SCALE: f64 = 0.7;
+pub use crate::character::spec::SHOULDER_TANGENT_SCALE;
 
 /// How far (ring vertices of [`RING_VERTICES`]) [`shoulder_cuts`] may move
 /// each shoulder cut from the fixed angles toward its arm: 5 of 48 keeps at
@@ -182,6 +176,7 @@ pub(super) fn transitions(
     Ok(TransitionSpec::humanoid(
         crotch,
         apex,
+        SHOULDER_TANGENT_SCALE,
         SHOULDER_TANGENT_SCALE,
     ))
 }

@@ -14,7 +14,7 @@
 //! | `parts[i].sections[j].e1, e2` | orthonormal within [`FRAME_TOL`] |
 //! | `...shape.gec.x, y` | equal lengths, at most [`SECTION_HARMONICS`] harmonics |
 //! | a collapsed section (circle `r = 0`, ellipse `a = 0` or `b = 0`) | only as the first section of a part with `closed_start` or the last with `closed_end` |
-//! | `transitions[i].cut_angles`, `tangent_scale` | checked by name when built (`character::assembly`: front angles in `[0, pi]`, back in `[pi, 2 pi]`; `(0,` [`crate::character::assembly::TANGENT_SCALE_MAX`]`]`) |
+//! | `transitions[i].cut_angles`, `tangent_scale`, `child_tangent_scales` | checked by name when built (`character::assembly`: front angles in `[0, pi]`, back in `[pi, 2 pi]`; each scale in `(0,` [`crate::character::assembly::TANGENT_SCALE_MAX`]`]`, one per child or none) |
 //! | `edits` | at most [`LOG_EDITS`]; each its own ranges (`character::edit::validate_params`) |
 //! | `props` | at most [`DOC_PROPS`]; each `PropSpec::validate` |
 //! | names of parts, transitions, removed parts, props | non-empty, unique |
@@ -142,7 +142,7 @@ pub fn check(doc: &Fields) -> Result<(), DocError> {
         for (j, a) in t.seam_apex.iter().enumerate() {
             coords(|| format!("{f}.seam_apex[{j}]"), a)?;
         }
-        // cut_angles and tangent_scale: refused by name by the build
+        // cut_angles and the tangent scales: refused by name by the build
         // (`character::assembly`), which knows the finer rules
     }
     for (k, r) in doc.removed_parts.iter().enumerate() {

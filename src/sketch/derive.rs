@@ -275,6 +275,7 @@ fn derive_upright(
     let transitions = TransitionSpec::humanoid(
         [lm.crotch[0], lm.crotch[1], bot_c[2]],
         vec![apex(-1.0), apex(1.0)],
+        crate::character::spec::SHOULDER_TANGENT_SCALE,
         1.0,
     );
     Ok(Derived {

@@ -446,6 +446,26 @@ fn out_of_range_transition_and_prop_numbers_are_named_errors() {
         e.contains("tangent_scale must be in (0, 10], got 1e300"),
         "{e}"
     );
+    // per-child factors: each in range, one per child
+    let shoulders = |f: Vec<f64>| {
+        let mut d = derived.clone();
+        d.transition_mut("shoulders")
+            .expect("the shoulders")
+            .child_tangent_scales = f;
+        build_document(&d, Path::new("."), Resolution::default(), false)
+            .expect_err("refused")
+            .to_string()
+    };
+    let e = shoulders(vec![0.7, f64::NAN, 0.7]);
+    assert!(
+        e.contains("child_tangent_scales[1] must be in (0, 10], got NaN"),
+        "{e}"
+    );
+    let e = shoulders(vec![0.7, 1.0]);
+    assert!(
+        e.contains("child_tangent_scales has 2 factors for 3 children"),
+        "{e}"
+    );
     // likewise a prop translated by 1e300
     let prop = PropSpec {
         name: "p".into(),

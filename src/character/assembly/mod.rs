@@ -203,14 +203,27 @@ fn check_transition(
     k: usize,
     cuts: &[(usize, usize)],
 ) -> Result<(), ModelError> {
-    if !(t.tangent_scale.is_finite()
-        && t.tangent_scale > 0.0
-        && t.tangent_scale <= TANGENT_SCALE_MAX)
-    {
+    let ok = |s: f64| s.is_finite() && s > 0.0 && s <= TANGENT_SCALE_MAX;
+    let bad = std::iter::once(("tangent_scale".to_string(), t.tangent_scale))
+        .chain(
+            t.child_tangent_scales
+                .iter()
+                .enumerate()
+                .map(|(i, &s)| (format!("child_tangent_scales[{i}]"), s)),
+        )
+        .find(|(_, s)| !ok(*s));
+    if let Some((field, s)) = bad {
         return Err(ModelError::Document(format!(
-            "transition '{}': tangent_scale must be in (0, {TANGENT_SCALE_MAX}], got {}",
+            "transition '{}': {field} must be in (0, {TANGENT_SCALE_MAX}], got {}",
             t.name,
-            crate::limits::Num(t.tangent_scale)
+            crate::limits::Num(s)
+        )));
+    }
+    if !t.child_tangent_scales.is_empty() && t.child_tangent_scales.len() != k {
+        return Err(ModelError::Document(format!(
+            "transition '{}': child_tangent_scales has {} factors for {k} children (one per child, or none)",
+            t.name,
+            t.child_tangent_scales.len()
         )));
     }
     let km1 = k.saturating_sub(1);
@@ -274,7 +287,7 @@ fn plan_transition(
             &parts[idx],
             &seams,
             &cuts,
-            t.tangent_scale,
+            t.child_scale(c),
             t.continuity,
         );
         if thetas[idx].is_some() {

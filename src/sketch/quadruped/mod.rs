@@ -338,6 +338,7 @@ pub fn derive(
                 .map(|p| cut_angle(c0, a0, p[0], UNDERSIDE_CUT_BLEND))
                 .collect(),
             tangent_scale: TANGENT_SCALE,
+            child_tangent_scales: Vec::new(),
             continuity: Default::default(),
         },
         TransitionSpec {
@@ -352,6 +353,7 @@ pub fn derive(
                 .map(|p| cut_angle(c1, a1, p[0], 1.0))
                 .collect(),
             tangent_scale: TANGENT_SCALE,
+            child_tangent_scales: Vec::new(),
             continuity: Default::default(),
         },
     ];
