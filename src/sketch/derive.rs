@@ -9,74 +9,12 @@ use super::segment::{landmarks, regions, shoulder_top, Landmarks};
 use super::SketchError;
 use crate::character::doc::{BodyPlan, KeySection, Level, PartSpec, SectionShape, TransitionSpec};
 
+pub(super) use super::derived::{check_side_height, check_side_position};
+pub use super::derived::{Derived, HEIGHT_MISMATCH};
 pub use super::keysection::{GEC_TERMS, SECTION_SLACK};
 pub(super) use super::part_slices::part_from_region;
 pub use super::part_slices::{SHOULDER_TILT_DEG, SHOULDER_TILT_SECTIONS};
 pub use super::section_place::SECTIONS_PER_PART;
-/// Largest allowed side/front height mismatch (relative).
-pub const HEIGHT_MISMATCH: f64 = 0.05;
-
-/// Parts and transitions derived from the outlines.
-#[derive(Clone, Debug)]
-pub struct Derived {
-    /// The body plan used (never `Auto`).
-    pub plan: BodyPlan,
-    /// The drawing's rotation from upright (identity when upright).
-    pub alignment: Alignment,
-    /// A humanoid's landmarks in the upright frame.
-    pub landmarks: Option<Landmarks>,
-    /// A quadruped's landmarks.
-    pub quadruped: Option<super::quadruped::QuadLandmarks>,
-    pub parts: Vec<PartSpec>,
-    pub transitions: Vec<TransitionSpec>,
-}
-
-/// The side profile must be drawn at the front's heights: its lowest point
-/// within [`HEIGHT_MISMATCH`] of the front's height from the front's (the
-/// views share model y; a side drawn 5 m higher would be measured against
-/// a model that is not there). Checked on the outlines as drawn.
-pub(super) fn check_side_position(
-    front: &[[f64; 2]],
-    side: Option<&[[f64; 2]]>,
-) -> Result<(), SketchError> {
-    let Some(sd) = side else { return Ok(()) };
-    let fy = crate::polygon::span(front, 1);
-    let ys = crate::polygon::span(sd, 1);
-    let shift = (ys[0] - fy[0]).abs() / (fy[1] - fy[0]);
-    if shift > HEIGHT_MISMATCH {
-        return Err(SketchError::Mismatch(format!(
-            "the side profile spans model y {:.4} to {:.4}, the front {:.4} to {:.4}: draw both views at the same heights (their lowest points within {:.0} % of the height; they differ by {:.1} %)",
-            ys[0],
-            ys[1],
-            fy[0],
-            fy[1],
-            100.0 * HEIGHT_MISMATCH,
-            100.0 * shift
-        )));
-    }
-    Ok(())
-}
-
-/// The side profile's height must match the front's within
-/// [`HEIGHT_MISMATCH`].
-pub(super) fn check_side_height(
-    front_height: f64,
-    side: Option<&[[f64; 2]]>,
-) -> Result<(), SketchError> {
-    if let Some(sd) = side {
-        let ys = crate::polygon::span(sd, 1);
-        let hs = ys[1] - ys[0];
-        let rel = (hs - front_height).abs() / front_height;
-        if rel > HEIGHT_MISMATCH {
-            return Err(SketchError::Mismatch(format!(
-                "side profile height {hs:.4} differs from the front height {front_height:.4} by {:.1} % (> {:.0} %)",
-                100.0 * rel,
-                100.0 * HEIGHT_MISMATCH
-            )));
-        }
-    }
-    Ok(())
-}
 
 /// Derives parts and transitions from validated, counter-clockwise outlines
 /// with the given body plan ([`super::quadruped::resolve_plan`]). A humanoid's front outline

@@ -51,6 +51,7 @@ pub mod check_ode6;
 pub mod corpus;
 pub mod cuts;
 pub mod derive;
+mod derived;
 pub mod figure;
 pub mod figure_animal;
 pub mod figure_params;

@@ -51,10 +51,11 @@
 //! cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
-mod landmarks;
+pub mod landmarks;
 pub use landmarks::{landmarks, QuadLandmarks};
 
-use super::derive::{check_side_height, part_from_region, Derived};
+use super::derived::{check_side_height, Derived};
+use super::part_slices::part_from_region;
 use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION};
 use super::SketchError;
 use crate::character::doc::{

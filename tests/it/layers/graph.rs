@@ -46,7 +46,6 @@ const KNOWN_LOOPS: &[&[&str]] = &[
         "curve::gec::fit",
         "curve::gec::section",
     ],
-    &["sketch::derive", "sketch::quadruped"],
 ];
 
 fn files_under(dir: &Path, out: &mut Vec<PathBuf>) {
