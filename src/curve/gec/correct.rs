@@ -37,55 +37,13 @@
 //! [`Correction::None`] keeps the old behaviour (angles from the rule only)
 //! for comparison, [`Correction::Project`] corrects the given rule only.
 
-use super::fit::{solve, Coefficients, Solver};
+use super::lsq::{solve, Coefficients, Solver};
 use super::metrics::diagonal;
-use super::{Frame, Gec, GecError};
+use super::{Frame, Gec};
 use crate::jet::Jet;
 use std::f64::consts::PI;
 
-/// Whether the fit corrects the angles of its parameter rule.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
-pub enum Correction {
-    /// The angles of the parameter rule as they are (the fit before the
-    /// correction existed).
-    None,
-    /// Iterative parameter correction from the angles of the given rule
-    /// (see the module doc).
-    Project,
-    /// Per section, the best of every rule ([`super::Param::ALL`]), each
-    /// uncorrected and corrected: the fit with the smallest ErM (the given
-    /// rule first, so it wins ties).
-    #[default]
-    Best,
-}
-
-impl Correction {
-    /// Every choice.
-    pub const ALL: [Correction; 3] = [Correction::None, Correction::Project, Correction::Best];
-
-    /// Stable name (CLI and JSON).
-    pub fn name(self) -> &'static str {
-        match self {
-            Correction::None => "none",
-            Correction::Project => "project",
-            Correction::Best => "best",
-        }
-    }
-}
-
-impl std::str::FromStr for Correction {
-    type Err = GecError;
-    fn from_str(s: &str) -> Result<Correction, GecError> {
-        Correction::ALL
-            .into_iter()
-            .find(|c| c.name() == s)
-            .ok_or_else(|| {
-                GecError::InvalidParameter(format!(
-                    "unknown correction '{s}' (none, project, best)"
-                ))
-            })
-    }
-}
+pub use super::lsq::Correction;
 
 /// Most correction steps (fit, project).
 pub const MAX_CORRECTIONS: usize = 100;

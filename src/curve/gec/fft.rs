@@ -5,7 +5,7 @@
 //! the chosen parameter. (No parameter correction here: the resampled
 //! points are not the data; see [`super::correct`].)
 
-use super::fit::{check_counts, finish, parameters, Coefficients, FitOptions, FitReport};
+use super::lsq::{check_counts, finish, parameters, Coefficients, FitOptions, FitReport};
 use super::section::{check_scale, section};
 use super::GecError;
 use rustfft::num_complex::Complex;

@@ -66,6 +66,7 @@ pub mod fft;
 pub mod fit;
 pub mod frame;
 pub mod input;
+mod lsq;
 pub mod metrics;
 pub mod paper;
 pub mod pipeline;

@@ -3,10 +3,19 @@
 //! points, closed (no opening gap), planar within a tolerance, enclosing an
 //! area; the plane is fitted (Newell's normal, area centroid) or given.
 
-use super::fit::FrameChoice;
 use super::{Frame, GecError};
 use crate::mesh::{dist, norm};
 use crate::vec3::bounds;
+
+/// The plane the curve is placed in.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub enum FrameChoice {
+    /// Fitted (Newell normal, area centroid).
+    #[default]
+    Auto,
+    /// Given: points are projected onto it (still checked for planarity).
+    Given(Frame),
+}
 
 /// Two points closer than this times the polyline's diameter are "repeated".
 pub const REPEAT_TOL: f64 = 1e-12;

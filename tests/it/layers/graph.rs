@@ -39,13 +39,6 @@ const KNOWN_LOOPS: &[&[&str]] = &[
         "conv::narrow_merge",
         "conv::sample",
     ],
-    // the GEC fit, its FFT path, section checks and parameter correction
-    &[
-        "curve::gec::correct",
-        "curve::gec::fft",
-        "curve::gec::fit",
-        "curve::gec::section",
-    ],
 ];
 
 fn files_under(dir: &Path, out: &mut Vec<PathBuf>) {
