@@ -142,6 +142,31 @@ fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> bool {
     true
 }
 
+/// When no armpit is found on `side`: a gap top on that side lower than
+/// the crotch (an arm whose gap with the body closes at the hip or the
+/// thigh, below where the torso starts) names the drawing's problem.
+fn below_crotch(
+    front: &[[f64; 2]],
+    tops: &[GapTop],
+    crotch: GapTop,
+    side: f64,
+) -> Option<SketchError> {
+    let which = if side < 0.0 { "left" } else { "right" };
+    let y_min = crate::polygon::span(front, 1)[0];
+    tops.iter()
+        .filter(|t| side * (t.x - crotch.x) > 0.0 && t.y < crotch.y)
+        // the crotch's own gap found again beside it runs to the ground
+        .filter(|t| !reaches_ground(front, t, y_min))
+        .max_by(|a, b| a.y.total_cmp(&b.y))
+        .map(|t| {
+            SketchError::Segmentation(format!(
+                "the {which} arm's gap with the body closes at y = {:.4}, below the crotch (y = {:.4}): \
+                 an arm must leave the torso above the crotch; draw the {which} arm apart from the hip and leg up to its armpit",
+                t.y, crotch.y
+            ))
+        })
+}
+
 /// Finds the crotch, armpits and neck. The crotch is the highest gap top
 /// whose gap runs down to the ground between the legs
 /// ([`reaches_ground`]); each armpit is where the torso's side, followed
@@ -176,8 +201,12 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             .copied()
             .unwrap_or(a)
     };
-    let a0 = at_gap(armpit(front, crotch, yr[1], -1.0)?);
-    let a1 = at_gap(armpit(front, crotch, yr[1], 1.0)?);
+    let find = |side: f64| {
+        armpit(front, crotch, yr[1], side)
+            .map_err(|e| below_crotch(front, &tops, crotch, side).unwrap_or(e))
+    };
+    let a0 = at_gap(find(-1.0)?);
+    let a1 = at_gap(find(1.0)?);
     // neck: narrowest single interval between armpits and top
     let ya = a0.y.max(a1.y);
     let d = yr[1] - ya;

@@ -567,6 +567,25 @@ fn the_shoulders_do_not_crease_beside_the_neck() {
     }
 }
 
+/// An arm whose gap with the body closes below the crotch (corpus
+/// random_7: a head half the figure's height, arms leaving the hips) is
+/// refused with the height of that join and the crotch's, not with "no
+/// armpit found ... draw the arm reaching out from the shoulder" (it is
+/// drawn).
+#[test]
+fn an_arm_joining_the_body_below_the_crotch_is_named() {
+    let rows = measure_corpus(|e| e.name == "random_7");
+    let e = rows
+        .first()
+        .and_then(|r| r.error.clone())
+        .expect("random_7 is refused");
+    assert!(
+        e.contains("the left arm's gap with the body closes at y = ")
+            && e.contains("below the crotch (y = "),
+        "{e}"
+    );
+}
+
 /// The whole corpus with the held-out drawings, against every bound of
 /// issue 28 (the Done-means): run with `--ignored`; fails today
 /// (docs/drawing-corpus.md has the measured table).
