@@ -36,6 +36,7 @@ pub mod shapes;
 pub mod silhouette;
 pub mod skeleton;
 pub mod sketch;
+mod sketch_cache;
 pub mod stroke;
 
 use thiserror::Error;

@@ -18,9 +18,9 @@
 //! groups). The file stores only strokes, planes, transforms and operations,
 //! so it rebuilds at any resolution.
 
-use super::incremental::SketchCache;
 use super::kernel::Segment;
 use super::sketch::{ConvOptions, Sketch};
+use super::sketch_cache::SketchCache;
 use super::ConvError;
 use serde::{Deserialize, Serialize};
 
@@ -455,8 +455,6 @@ fn depth_from_surface(prev: &[&BuiltComponent], frame: [[f64; 3]; 3], pt: [f64; 
     }
     0.0
 }
-
-pub use super::sample::MAX_RESOLUTION;
 
 impl BuiltModel {
     /// The field of group `g` at `r`.

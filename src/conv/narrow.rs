@@ -43,6 +43,7 @@
 
 use super::bvh::{Interaction, SegmentBvh};
 use super::frontier::Frontier;
+pub use super::narrow_merge::NarrowStats;
 use super::narrow_merge::{finish, Event, Grid, LeafContext, Record};
 use crate::mesh::isosurface::ScalarGrid;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -56,41 +57,6 @@ pub const FIELD_TOLERANCE: f64 = 1e-4;
 pub const TASK_DEPTH: usize = 2;
 /// Most threads [`sample`] uses.
 pub const MAX_THREADS: usize = 8;
-
-/// What [`sample`] did: node evaluations and boxes decided without them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
-pub struct NarrowStats {
-    pub nodes: usize,
-    pub evaluated: usize,
-    pub boxes_skipped: usize,
-    pub boxes_tested: usize,
-    /// Exact segment evaluations (the segments near a leaf times its
-    /// nodes evaluated).
-    pub segment_evaluations: usize,
-    /// Cluster expansions evaluated (the clusters near a leaf times its
-    /// nodes evaluated).
-    pub cluster_evaluations: usize,
-    /// Of `evaluated`: nodes on faces between tasks, evaluated after the
-    /// merge (once each).
-    pub shared_evaluated: usize,
-    /// Nodes within the margin of $T$ given the reference's value after
-    /// sampling (`BuiltModel::sample_group_fast`; 0 from [`sample`]).
-    pub reference_nodes: usize,
-    /// Nodes holding an evaluated value in the grid (counted in the grid,
-    /// not by the walkers): equals `evaluated` when no node is evaluated
-    /// twice.
-    pub exact_nodes: usize,
-}
-
-impl NarrowStats {
-    pub(super) fn add(&mut self, o: &NarrowStats) {
-        self.evaluated += o.evaluated;
-        self.boxes_skipped += o.boxes_skipped;
-        self.boxes_tested += o.boxes_tested;
-        self.segment_evaluations += o.segment_evaluations;
-        self.cluster_evaluations += o.cluster_evaluations;
-    }
-}
 
 /// A box left to a task: cells `lo..hi`, its depth and its frontier.
 struct Task {

@@ -4,9 +4,54 @@
 //! of [`super::narrow`], "Threads").
 
 use super::bvh::{Interaction, SegmentBvh};
-use super::narrow::NarrowStats;
-use super::sample::node_position;
 use crate::mesh::isosurface::ScalarGrid;
+
+/// What [`super::narrow::sample`] did: node evaluations and boxes decided without them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct NarrowStats {
+    pub nodes: usize,
+    pub evaluated: usize,
+    pub boxes_skipped: usize,
+    pub boxes_tested: usize,
+    /// Exact segment evaluations (the segments near a leaf times its
+    /// nodes evaluated).
+    pub segment_evaluations: usize,
+    /// Cluster expansions evaluated (the clusters near a leaf times its
+    /// nodes evaluated).
+    pub cluster_evaluations: usize,
+    /// Of `evaluated`: nodes on faces between tasks, evaluated after the
+    /// merge (once each).
+    pub shared_evaluated: usize,
+    /// Nodes within the margin of $T$ given the reference's value after
+    /// sampling (`BuiltModel::sample_group_fast`; 0 from [`super::narrow::sample`]).
+    pub reference_nodes: usize,
+    /// Nodes holding an evaluated value in the grid (counted in the grid,
+    /// not by the walkers): equals `evaluated` when no node is evaluated
+    /// twice.
+    pub exact_nodes: usize,
+}
+
+impl NarrowStats {
+    pub(super) fn add(&mut self, o: &NarrowStats) {
+        self.evaluated += o.evaluated;
+        self.boxes_skipped += o.boxes_skipped;
+        self.boxes_tested += o.boxes_tested;
+        self.segment_evaluations += o.segment_evaluations;
+        self.cluster_evaluations += o.cluster_evaluations;
+    }
+}
+
+/// Position of node `id` (x fastest, then y, then z) of the grid
+/// `origin + (i, j, k) * spacing` with `dims` nodes: the arithmetic of
+/// `ScalarGrid::sample`, so a value computed here is the reference's.
+pub fn node_position(origin: [f64; 3], spacing: [f64; 3], dims: [usize; 3], id: usize) -> [f64; 3] {
+    let ijk = [
+        id % dims[0],
+        (id / dims[0]) % dims[1],
+        id / (dims[0] * dims[1]),
+    ];
+    [0, 1, 2].map(|a| origin[a] + ijk[a] as f64 * spacing[a])
+}
 
 /// A write of the sequential traversal (applied in order by [`merge`]).
 #[derive(Clone, Copy, Debug)]

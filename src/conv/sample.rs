@@ -6,6 +6,7 @@
 use super::bvh::SegmentBvh;
 use super::model::{components_field, BuiltComponent, BuiltModel, Polygonizer};
 use super::narrow::{self, NarrowStats, FIELD_TOLERANCE};
+pub use super::narrow_merge::node_position;
 use super::ConvError;
 use crate::mesh::isosurface::{marching_tetrahedra, surface_nets, ScalarGrid, MAX_NODES};
 use crate::mesh::Mesh;
@@ -38,18 +39,6 @@ pub fn settle_near_threshold(
         }
     }
     n
-}
-
-/// Position of node `id` (x fastest, then y, then z) of the grid
-/// `origin + (i, j, k) * spacing` with `dims` nodes: the arithmetic of
-/// `ScalarGrid::sample`, so a value computed here is the reference's.
-pub fn node_position(origin: [f64; 3], spacing: [f64; 3], dims: [usize; 3], id: usize) -> [f64; 3] {
-    let ijk = [
-        id % dims[0],
-        (id / dims[0]) % dims[1],
-        id / (dims[0] * dims[1]),
-    ];
-    [0, 1, 2].map(|a| origin[a] + ijk[a] as f64 * spacing[a])
 }
 
 /// Largest allowed resolution (cells along the longest axis).
