@@ -8,6 +8,7 @@
 //! upward arrow between any two files) is [`graph`].
 
 mod graph;
+mod size;
 
 use std::path::{Path, PathBuf};
 
