@@ -160,7 +160,31 @@ pub fn regions(
         horizontal: true,
         side: SidePick::Span,
     }];
-    // parts above the body, by x
+    above_regions(front, lm, g, big, &mut out)?;
+    leg_regions(front, side, lm, g, big, &mut out)?;
+    for r in &out {
+        if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
+            return Err(SketchError::Segmentation(format!(
+                "{}: too short ({:.4} between y = {:.4} and {:.4}): draw it longer",
+                r.name,
+                r.y1 - r.y0,
+                r.y0,
+                r.y1
+            )));
+        }
+    }
+    Ok(out)
+}
+
+/// The parts above an animal's body (tail, back, head), by x; sets
+/// `lm.facing` from which end part reaches higher (the head).
+fn above_regions(
+    front: &[[f64; 2]],
+    lm: &mut QuadLandmarks,
+    g: f64,
+    big: f64,
+    out: &mut Vec<Region>,
+) -> Result<(), SketchError> {
     let mut xs = vec![-big];
     xs.extend(lm.top_gaps.iter().map(|p| p[0]));
     xs.push(big);
@@ -209,7 +233,18 @@ pub fn regions(
             },
         });
     }
-    // legs, by x
+    Ok(())
+}
+
+/// An animal's legs below its body, by x, named by `lm.facing`.
+fn leg_regions(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &QuadLandmarks,
+    g: f64,
+    big: f64,
+    out: &mut Vec<Region>,
+) -> Result<(), SketchError> {
     let mut xs = vec![-big];
     xs.extend(lm.leg_gaps.iter().map(|p| p[0]));
     xs.push(big);
@@ -253,18 +288,7 @@ pub fn regions(
             side: side_pick,
         });
     }
-    for r in &out {
-        if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
-            return Err(SketchError::Segmentation(format!(
-                "{}: too short ({:.4} between y = {:.4} and {:.4}): draw it longer",
-                r.name,
-                r.y1 - r.y0,
-                r.y0,
-                r.y1
-            )));
-        }
-    }
-    Ok(out)
+    Ok(())
 }
 
 /// The body ring's cut angle for a seam apex at `x`: where the ring's e1

@@ -23,7 +23,6 @@ const KNOWN_LONG: &[(&str, &str, usize)] = &[
     ("src/character/log/validate.rs", "validate_params", 142),
     ("src/cli/template/mod.rs", "run_fit", 132),
     ("src/sketch/figure.rs", "contour", 130),
-    ("src/sketch/quadruped/mod.rs", "regions", 126),
     ("src/sketch/figure_animal.rs", "figures", 122),
     ("src/conv/skeleton.rs", "prune_and_link", 121),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
