@@ -321,6 +321,32 @@ pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
         .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
 }
 
+/// The farthest height from `from` toward `to` where the region still has
+/// an interval (scan, then bisection).
+pub(super) fn reach(front: &[[f64; 2]], pick: Pick, from: f64, to: f64) -> f64 {
+    let n = 400;
+    let (mut out, mut inside) = (to, from);
+    let mut last = from;
+    for k in 1..=n {
+        let y = from + (to - from) * k as f64 / n as f64;
+        if interval(front, pick, y).is_none() {
+            out = y;
+            inside = last;
+            break;
+        }
+        last = y;
+    }
+    for _ in 0..40 {
+        let m = 0.5 * (out + inside);
+        if interval(front, pick, m).is_some() {
+            inside = m;
+        } else {
+            out = m;
+        }
+    }
+    inside
+}
+
 /// The six regions of a standing humanoid; a limb starts at its cut when
 /// `cuts` gives one ([`super::cuts`]), else a join band below its armpit or
 /// the crotch.
@@ -380,29 +406,10 @@ pub fn regions(
             )));
         }
         // lowest height where the region still has an interval
-        let (mut a, mut b) = (lm.y_min - g, y1);
-        let n = 400;
-        let mut last = y1;
-        for k in 1..=n {
-            let y = y1 - (y1 - a) * k as f64 / n as f64;
-            if interval(front, pick, y).is_none() {
-                a = y;
-                b = last;
-                break;
-            }
-            last = y;
-        }
-        for _ in 0..40 {
-            let m = 0.5 * (a + b);
-            if interval(front, pick, m).is_some() {
-                b = m;
-            } else {
-                a = m;
-            }
-        }
+        let y0 = reach(front, pick, y1, lm.y_min - g);
         out.push(Region {
             name: name.into(),
-            y0: b,
+            y0,
             y1,
             pick,
             downward: true,

@@ -56,7 +56,7 @@ pub use landmarks::{landmarks, QuadLandmarks};
 
 use super::derived::{check_side_height, Derived};
 use super::part_slices::part_from_region;
-use super::segment::{interval, Pick, Region, SidePick, GAP_FRACTION};
+use super::segment::{interval, reach, Pick, Region, SidePick, GAP_FRACTION};
 use super::SketchError;
 use crate::character::doc::{
     BodyPlan, End, KeySection, Level, PartSpec, SectionShape, TransitionSpec,
@@ -94,32 +94,6 @@ pub fn resolve_plan(plan: BodyPlan, front: &[[f64; 2]]) -> BodyPlan {
         BodyPlan::Auto => BodyPlan::Humanoid,
         p => p,
     }
-}
-
-/// The farthest height from `from` toward `to` where the region still has
-/// an interval (scan, then bisection).
-fn reach(front: &[[f64; 2]], pick: Pick, from: f64, to: f64) -> f64 {
-    let n = 400;
-    let (mut out, mut inside) = (to, from);
-    let mut last = from;
-    for k in 1..=n {
-        let y = from + (to - from) * k as f64 / n as f64;
-        if interval(front, pick, y).is_none() {
-            out = y;
-            inside = last;
-            break;
-        }
-        last = y;
-    }
-    for _ in 0..40 {
-        let m = 0.5 * (out + inside);
-        if interval(front, pick, m).is_some() {
-            inside = m;
-        } else {
-            out = m;
-        }
-    }
-    inside
 }
 
 /// Names of the legs by x, given the facing.
