@@ -74,35 +74,7 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
         what: "key section".into(),
         message: e.to_string(),
     })?;
-    let (lo, hi) = crate::polygon::bbox(&pts);
-    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
-    let half = [0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])];
-    let mut thetas: Vec<f64> = pts
-        .iter()
-        .map(|p| ((p[1] - mid[1]) / half[1]).atan2((p[0] - mid[0]) / half[0]))
-        .collect();
-    // unwrap to a monotone sequence in the direction of travel
-    let dir = if crate::polygon::signed_area(&pts) > 0.0 {
-        1.0
-    } else {
-        -1.0
-    };
-    let tau = 2.0 * std::f64::consts::PI;
-    let step = 1e-3 * tau / thetas.len() as f64;
-    for i in 1..thetas.len() {
-        // nearest branch to the previous angle, then monotone
-        let d = (thetas[i] - thetas[i - 1]) / tau;
-        thetas[i] -= d.round() * tau;
-        if dir * (thetas[i] - thetas[i - 1]) < step {
-            thetas[i] = thetas[i - 1] + dir * step;
-        }
-    }
-    if dir * (thetas[thetas.len() - 1] - thetas[0]) >= tau {
-        return Err(SketchError::Section(format!(
-            "section of '{}' at y = {}: the curve winds around its centre more than once",
-            k.part, k.y
-        )));
-    }
+    let thetas = ellipse_angles(&pts, k)?;
     let (gc, gx, gy) = crate::curve::gec::fit::solve(&pts, &thetas, GEC_TERMS, Default::default())
         .map_err(|e| {
             SketchError::section_fit(format!("section of '{}' at y = {}", k.part, k.y), e)
@@ -125,4 +97,41 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
         part.sections[i].u = u;
     }
     Ok(())
+}
+
+/// The angles of a key section's points on its bounding ellipse, unwrapped
+/// to a monotone sequence in the direction of travel (the parameter of the
+/// neighbouring ellipse sections, so the chain does not twist between
+/// them); a curve winding around its centre more than once is refused.
+fn ellipse_angles(pts: &[[f64; 2]], k: &KeySection) -> Result<Vec<f64>, SketchError> {
+    let (lo, hi) = crate::polygon::bbox(pts);
+    let mid = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+    let half = [0.5 * (hi[0] - lo[0]), 0.5 * (hi[1] - lo[1])];
+    let mut thetas: Vec<f64> = pts
+        .iter()
+        .map(|p| ((p[1] - mid[1]) / half[1]).atan2((p[0] - mid[0]) / half[0]))
+        .collect();
+    // unwrap to a monotone sequence in the direction of travel
+    let dir = if crate::polygon::signed_area(pts) > 0.0 {
+        1.0
+    } else {
+        -1.0
+    };
+    let tau = 2.0 * std::f64::consts::PI;
+    let step = 1e-3 * tau / thetas.len() as f64;
+    for i in 1..thetas.len() {
+        // nearest branch to the previous angle, then monotone
+        let d = (thetas[i] - thetas[i - 1]) / tau;
+        thetas[i] -= d.round() * tau;
+        if dir * (thetas[i] - thetas[i - 1]) < step {
+            thetas[i] = thetas[i - 1] + dir * step;
+        }
+    }
+    if dir * (thetas[thetas.len() - 1] - thetas[0]) >= tau {
+        return Err(SketchError::Section(format!(
+            "section of '{}' at y = {}: the curve winds around its centre more than once",
+            k.part, k.y
+        )));
+    }
+    Ok(thetas)
 }
