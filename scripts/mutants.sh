@@ -36,7 +36,7 @@ skip=()
 case "$family" in
   jet) files=(src/jet/mod.rs src/jet/elementary.rs src/jet/real.rs)
        filter="jet::" ;;
-  gec) files=(src/curve/gec/mod.rs src/curve/gec/fit.rs src/curve/gec/metrics.rs)
+  gec) files=(src/curve/gec/mod.rs src/curve/gec/fit.rs src/curve/gec/lsq.rs src/curve/gec/metrics.rs)
        filter="curve::gec::" ;;
   pde4) files=(src/pde4/two_sided/mode.rs src/pde4/two_sided/mod.rs src/pde4/force.rs src/pde4/four_sided.rs)
         filter="pde4::" ;;

@@ -330,3 +330,28 @@ pub(super) fn finish(
         correction_steps: 0,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The counts a fit needs before any matrix is built: J >= 1 and
+    /// 2J + 1 points (a mutation sample found that nothing else noticed
+    /// `check_counts` doing nothing: the least squares then reports a rank
+    /// deficiency instead of naming the missing points).
+    #[test]
+    fn check_counts_names_what_is_missing() {
+        assert!(matches!(check_counts(10, 0), Err(GecError::ZeroTerms)));
+        assert!(matches!(
+            check_counts(4, 2),
+            Err(GecError::TooFewPoints {
+                terms: 2,
+                needed: 5,
+                got: 4
+            })
+        ));
+        assert!(check_counts(5, 2).is_ok());
+        let too_many = crate::limits::GEC_TERMS.max as usize + 1;
+        assert!(check_counts(4 * too_many, too_many).is_err());
+    }
+}
