@@ -132,3 +132,35 @@ pub fn fit_auto(
         max_terms: cap,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 2J + 1 points are interpolated by every parameter rule, so their
+    /// ErMs differ only by rounding, which grows with the section's size:
+    /// the given rule's fit is kept unless another is better by more than
+    /// `GAIN_TOL` times the diameter. On a pentagon a million units across
+    /// every rule is kept, at any scale; with the tolerance divided by the
+    /// diameter instead (a mutant) another rule's rounding won.
+    #[test]
+    fn interpolated_points_keep_the_given_rule_at_any_scale() {
+        let pentagon = [
+            [1.0, 0.1],
+            [0.4, 0.9],
+            [-0.7, 0.8],
+            [-0.9, -0.3],
+            [0.2, -0.8],
+        ];
+        for scale in [1e-6, 1.0, 1e6] {
+            let pts: Vec<[f64; 3]> = pentagon
+                .iter()
+                .map(|p| [scale * p[0], scale * p[1], 0.0])
+                .collect();
+            for param in Param::ALL {
+                let r = fit(&pts, &FitOptions::new(2).with_param(param)).expect("fits");
+                assert_eq!(r.param, param, "scale {scale}");
+            }
+        }
+    }
+}
