@@ -130,29 +130,7 @@ pub fn report(
 ) -> SketchReport {
     let out = doc;
     let topo = topology(&model.mesh);
-    let parts = edited
-        .iter()
-        .map(|p| PartReport {
-            name: p.name.clone(),
-            surface: p.surface.describe(),
-            sections: p
-                .sections
-                .iter()
-                .map(|s| SectionReport {
-                    u: s.u,
-                    centre: s.centre,
-                    shape: shape_name(&s.shape),
-                })
-                .collect(),
-            closed_end: p.closed_end,
-            joins: model
-                .joins
-                .iter()
-                .filter(|j| j.part == p.name)
-                .cloned()
-                .collect(),
-        })
-        .collect();
+    let parts = part_reports(edited, model);
     let creases = crate::character::crease::creases(&model.mesh);
     let crease_of = |name: &str| creases.iter().find(|c| c.group == name);
     let part_crease_deg = edited
@@ -160,34 +138,7 @@ pub fn report(
         .filter_map(|p| crease_of(&p.name))
         .map(|c| c.interior_deg)
         .fold(0.0, f64::max);
-    let transitions = out
-        .transitions()
-        .iter()
-        .map(|t| TransitionReport {
-            crease_deg: crease_of(&t.name).map_or(0.0, |c| c.interior_deg),
-            join_crease_deg: crease_of(&t.name).map_or(0.0, |c| c.border_deg),
-            creased_length_rel: crease_of(&t.name).map_or(0.0, |c| c.creased_length / height),
-            name: t.name.clone(),
-            parent: t.parent.clone(),
-            children: t.children.clone(),
-            surface: match t.continuity {
-                crate::character::doc::Continuity::C1 => "cubic Hermite blend (C1 to the parts)",
-                crate::character::doc::Continuity::C2 => "quintic Hermite blend (C2 to the parts)",
-            },
-            joins: model
-                .joins
-                .iter()
-                .filter(|j| j.transition == t.name)
-                .cloned()
-                .collect(),
-            seams: model
-                .seams
-                .iter()
-                .filter(|s| s.transition == t.name)
-                .cloned()
-                .collect(),
-        })
-        .collect();
+    let transitions = transition_reports(out, model, &creases, height);
     let max_c1 = model.joins.iter().map(|j| j.c1).fold(0.0, f64::max);
     let mut names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
     names.extend(props.iter().map(|p| p.name.as_str()));
@@ -234,6 +185,70 @@ pub fn report(
         removed: removed_reports,
         props,
     }
+}
+
+/// Each part's surface, sections and joins.
+fn part_reports(edited: &[PartSpec], model: &Model) -> Vec<PartReport> {
+    edited
+        .iter()
+        .map(|p| PartReport {
+            name: p.name.clone(),
+            surface: p.surface.describe(),
+            sections: p
+                .sections
+                .iter()
+                .map(|s| SectionReport {
+                    u: s.u,
+                    centre: s.centre,
+                    shape: shape_name(&s.shape),
+                })
+                .collect(),
+            closed_end: p.closed_end,
+            joins: model
+                .joins
+                .iter()
+                .filter(|j| j.part == p.name)
+                .cloned()
+                .collect(),
+        })
+        .collect()
+}
+
+/// Each transition's surface, creases, joins and seams.
+fn transition_reports(
+    out: &CharacterDoc,
+    model: &Model,
+    creases: &[crate::character::crease::CreaseReport],
+    height: f64,
+) -> Vec<TransitionReport> {
+    let crease_of = |name: &str| creases.iter().find(|c| c.group == name);
+    out.transitions()
+        .iter()
+        .map(|t| TransitionReport {
+            crease_deg: crease_of(&t.name).map_or(0.0, |c| c.interior_deg),
+            join_crease_deg: crease_of(&t.name).map_or(0.0, |c| c.border_deg),
+            creased_length_rel: crease_of(&t.name).map_or(0.0, |c| c.creased_length / height),
+            name: t.name.clone(),
+            parent: t.parent.clone(),
+            children: t.children.clone(),
+            surface: match t.continuity {
+                crate::character::doc::Continuity::C1 => "cubic Hermite blend (C1 to the parts)",
+                crate::character::doc::Continuity::C2 => "quintic Hermite blend (C2 to the parts)",
+            },
+            joins: model
+                .joins
+                .iter()
+                .filter(|j| j.transition == t.name)
+                .cloned()
+                .collect(),
+            seams: model
+                .seams
+                .iter()
+                .filter(|s| s.transition == t.name)
+                .cloned()
+                .collect(),
+        })
+        .collect()
 }
 
 /// Profile error per given view: the model's silhouette

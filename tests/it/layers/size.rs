@@ -27,7 +27,6 @@ const KNOWN_LONG: &[(&str, &str, usize)] = &[
     ("src/conv/skeleton.rs", "prune_and_link", 121),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
     ("src/sketch/corpus.rs", "path_data", 120),
-    ("src/sketch/report.rs", "report", 119),
     ("src/profile/svg.rs", "flattened_subpaths", 103),
     ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/conv/skeleton.rs", "extract", 103),
