@@ -93,30 +93,7 @@ fn douglas_peucker(pts: &[[f64; 2]], eps: f64, keep: &mut [bool], i0: usize, i1:
 /// re-inserted points, self-intersection rejection, counter-clockwise
 /// orientation.
 pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64; 2]>, ConvError> {
-    if !(opts.dp_tolerance >= 0.0 && opts.dp_tolerance < 0.5) {
-        return Err(ConvError::Parameter(format!(
-            "dp_tolerance {} outside [0, 0.5)",
-            opts.dp_tolerance
-        )));
-    }
-    if !(opts.spacing > 1e-4 && opts.spacing <= 0.25) {
-        return Err(ConvError::Parameter(format!(
-            "spacing {} outside (1e-4, 0.25]",
-            opts.spacing
-        )));
-    }
-    for (i, p) in raw.iter().enumerate() {
-        if !p[0].is_finite() || !p[1].is_finite() {
-            return Err(ConvError::NonFinite { index: i });
-        }
-        if let Some(&value) = p.iter().find(|v| v.abs() > MAX_COORDINATE) {
-            return Err(ConvError::OutOfRange {
-                index: i,
-                value,
-                limit: MAX_COORDINATE,
-            });
-        }
-    }
+    check_input(raw, opts)?;
     // hypot: the squares of a tiny stroke's extent underflow
     let diag = crate::polygon::diagonal(raw);
     if diag > 0.0 && diag < MIN_SIZE {
@@ -192,4 +169,34 @@ pub fn filter_stroke(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<Vec<[f64;
         out.reverse();
     }
     Ok(out)
+}
+
+/// The options' ranges and every raw point finite and within
+/// [`MAX_COORDINATE`].
+fn check_input(raw: &[[f64; 2]], opts: &StrokeOptions) -> Result<(), ConvError> {
+    if !(opts.dp_tolerance >= 0.0 && opts.dp_tolerance < 0.5) {
+        return Err(ConvError::Parameter(format!(
+            "dp_tolerance {} outside [0, 0.5)",
+            opts.dp_tolerance
+        )));
+    }
+    if !(opts.spacing > 1e-4 && opts.spacing <= 0.25) {
+        return Err(ConvError::Parameter(format!(
+            "spacing {} outside (1e-4, 0.25]",
+            opts.spacing
+        )));
+    }
+    for (i, p) in raw.iter().enumerate() {
+        if !p[0].is_finite() || !p[1].is_finite() {
+            return Err(ConvError::NonFinite { index: i });
+        }
+        if let Some(&value) = p.iter().find(|v| v.abs() > MAX_COORDINATE) {
+            return Err(ConvError::OutOfRange {
+                index: i,
+                value,
+                limit: MAX_COORDINATE,
+            });
+        }
+    }
+    Ok(())
 }

@@ -31,7 +31,6 @@ const KNOWN_LONG: &[(&str, &str, usize)] = &[
     ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/conv/skeleton.rs", "extract", 103),
     ("src/template/sections.rs", "fit_sections", 102),
-    ("src/conv/stroke.rs", "filter_stroke", 101),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
