@@ -8,7 +8,6 @@
 //! upward arrow between any two files) is [`graph`].
 
 mod graph;
-mod size;
 
 use std::path::{Path, PathBuf};
 
