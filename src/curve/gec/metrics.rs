@@ -281,6 +281,12 @@ mod tests {
             (point_segment([3.0, 1.0], a, b) - 2f64.sqrt()).abs() <= crate::check::tol::ROUNDING
         );
         assert_eq!(point_segment([1.0, 1.0], a, a), 2f64.sqrt());
+        // a slanted segment (3, 4): p projects at t = 24/25, 1.4 away (an
+        // axis-aligned one leaves a wrong |ab|^2 in y unseen)
+        assert!(
+            (point_segment([4.0, 3.0], [0.0, 0.0], [3.0, 4.0]) - 1.4).abs()
+                <= crate::check::tol::ROUNDING
+        );
     }
 
     #[test]
