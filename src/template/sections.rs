@@ -239,17 +239,8 @@ pub fn fit_sections(
                 .iter()
                 .all(|s| (y - s.y).abs() > SECTION_CLEARANCE * h)
     };
-    let band: Vec<[f64; 3]> = if banded {
-        let mut seen = std::collections::HashSet::new();
-        let all: Vec<[f64; 3]> = skin
-            .positions
-            .iter()
-            .filter(|p| !in_band(p[1]))
-            .filter(|p| seen.insert(p.map(f64::to_bits)))
-            .copied()
-            .collect();
-        let step = all.len().div_ceil(opts.band_anchors).max(1);
-        all.into_iter().step_by(step).collect()
+    let band = if banded {
+        out_of_band(&skin.positions, in_band, opts.band_anchors)
     } else {
         Vec::new()
     };
@@ -307,4 +298,18 @@ pub fn fit_sections(
         },
         high,
     ))
+}
+
+/// About `n` distinct skin points outside the sections' band (every
+/// k-th of them), held in place by the fit.
+fn out_of_band(positions: &[[f64; 3]], in_band: impl Fn(f64) -> bool, n: usize) -> Vec<[f64; 3]> {
+    let mut seen = std::collections::HashSet::new();
+    let all: Vec<[f64; 3]> = positions
+        .iter()
+        .filter(|p| !in_band(p[1]))
+        .filter(|p| seen.insert(p.map(f64::to_bits)))
+        .copied()
+        .collect();
+    let step = all.len().div_ceil(n).max(1);
+    all.into_iter().step_by(step).collect()
 }

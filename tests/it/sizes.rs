@@ -30,7 +30,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/template/envelope.rs", "envelope_pass", 279),
     ("src/template/fit.rs", "fit", 189),
-    ("src/template/sections.rs", "fit_sections", 102),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
