@@ -198,16 +198,7 @@ fn flattened_subpaths(
     let doc = if edits.is_empty() {
         doc
     } else {
-        edits.sort_by_key(|e| e.0);
-        let mut t = String::with_capacity(text.len() + 32 * edits.len());
-        let mut pos = 0;
-        for (at, removed, insert) in &edits {
-            t.push_str(&text[pos..*at]);
-            t.push_str(insert);
-            pos = at + removed;
-        }
-        t.push_str(&text[pos..]);
-        edited = t;
+        edited = splice(text, &mut edits);
         roxmltree::Document::parse_with_options(&edited, svg_guard::xml_options())
             .map_err(svg_guard::xml_error)?
     };
@@ -253,6 +244,21 @@ fn flattened_subpaths(
         }
     }
     Ok((out, units))
+}
+
+/// `text` with each `(position, bytes removed, text inserted)` edit made,
+/// in position order.
+fn splice(text: &str, edits: &mut [(usize, usize, String)]) -> String {
+    edits.sort_by_key(|e| e.0);
+    let mut t = String::with_capacity(text.len() + 32 * edits.len());
+    let mut pos = 0;
+    for (at, removed, insert) in edits.iter() {
+        t.push_str(&text[pos..*at]);
+        t.push_str(insert);
+        pos = at + removed;
+    }
+    t.push_str(&text[pos..]);
+    t
 }
 
 /// A shape read by usvg, transformed to model-oriented user units, not
