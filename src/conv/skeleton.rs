@@ -169,36 +169,8 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
             needed: 3,
         });
     }
-    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
-    let mut index_of: HashMap<usize, usize> = HashMap::new();
-    let mut handles = Vec::with_capacity(n);
-    for (i, p) in poly.iter().enumerate() {
-        let h = cdt
-            .insert(Point2::new(p[0], p[1]))
-            .map_err(|e| ConvError::insertion(i, e))?;
-        index_of.insert(h.index(), i);
-        handles.push(h);
-    }
-    if index_of.len() != n {
-        return Err(ConvError::Triangulation(
-            "duplicate vertices in the polygon".into(),
-        ));
-    }
-    for i in 0..n {
-        cdt.add_constraint(handles[i], handles[(i + 1) % n]);
-    }
+    let all = triangulate(poly)?;
     let is_external = |a: usize, b: usize| (a + 1) % n == b || (b + 1) % n == a;
-    let mut all: Vec<[usize; 3]> = Vec::new();
-    for f in cdt.inner_faces() {
-        let vs = f.vertices();
-        let mut idx = [0usize; 3];
-        for k in 0..3 {
-            idx[k] = *index_of.get(&vs[k].fix().index()).ok_or_else(|| {
-                ConvError::Triangulation("the triangulation added a vertex".into())
-            })?;
-        }
-        all.push(idx);
-    }
     let tris = inside_triangles(&all, poly);
     if tris.is_empty() {
         return Err(ConvError::Triangulation(
@@ -263,6 +235,43 @@ pub fn extract(poly: &[[f64; 2]], opts: &SkeletonOptions) -> Result<Skeleton, Co
         });
     }
     Ok(prune_and_link(triangles, opts))
+}
+
+/// The constrained Delaunay triangulation of the polygon's vertices with
+/// its edges as constraints, as triangles of polygon indices (every face,
+/// inside or not).
+fn triangulate(poly: &[[f64; 2]]) -> Result<Vec<[usize; 3]>, ConvError> {
+    let n = poly.len();
+    let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::new();
+    let mut index_of: HashMap<usize, usize> = HashMap::new();
+    let mut handles = Vec::with_capacity(n);
+    for (i, p) in poly.iter().enumerate() {
+        let h = cdt
+            .insert(Point2::new(p[0], p[1]))
+            .map_err(|e| ConvError::insertion(i, e))?;
+        index_of.insert(h.index(), i);
+        handles.push(h);
+    }
+    if index_of.len() != n {
+        return Err(ConvError::Triangulation(
+            "duplicate vertices in the polygon".into(),
+        ));
+    }
+    for i in 0..n {
+        cdt.add_constraint(handles[i], handles[(i + 1) % n]);
+    }
+    let mut all: Vec<[usize; 3]> = Vec::new();
+    for f in cdt.inner_faces() {
+        let vs = f.vertices();
+        let mut idx = [0usize; 3];
+        for k in 0..3 {
+            idx[k] = *index_of.get(&vs[k].fix().index()).ok_or_else(|| {
+                ConvError::Triangulation("the triangulation added a vertex".into())
+            })?;
+        }
+        all.push(idx);
+    }
+    Ok(all)
 }
 
 /// The triangles inside the counter-clockwise polygon: a triangle with a

@@ -24,7 +24,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/character/log/stroke.rs", "new", 157),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
-    ("src/conv/skeleton.rs", "extract", 103),
     ("src/conv/skeleton.rs", "prune_and_link", 121),
     ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/template/envelope.rs", "envelope_pass", 279),
