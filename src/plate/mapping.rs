@@ -199,27 +199,9 @@ pub fn harmonic_disk(
         };
         on_boundary[boundary_loop[k]] = true;
     }
-    let mut nbrs: Vec<Vec<usize>> = vec![Vec::new(); n_points];
-    for t in triangles {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            if !nbrs[a].contains(&b) {
-                nbrs[a].push(b);
-                nbrs[b].push(a);
-            }
-        }
-    }
+    let nbrs = neighbours(n_points, triangles);
     // interior vertices reachable from the boundary
-    let mut reach = on_boundary.clone();
-    let mut stack: Vec<usize> = boundary_loop.to_vec();
-    while let Some(v) = stack.pop() {
-        for &w in &nbrs[v] {
-            if !reach[w] {
-                reach[w] = true;
-                stack.push(w);
-            }
-        }
-    }
+    let reach = reachable(&nbrs, &on_boundary, boundary_loop);
     let mut col = vec![usize::MAX; n_points];
     let mut unknown = Vec::new();
     for v in 0..n_points {
@@ -260,6 +242,36 @@ pub fn harmonic_disk(
         };
     }
     Ok(out)
+}
+
+/// Each vertex's neighbours along the triangles' edges.
+fn neighbours(n_points: usize, triangles: &[[usize; 3]]) -> Vec<Vec<usize>> {
+    let mut nbrs: Vec<Vec<usize>> = vec![Vec::new(); n_points];
+    for t in triangles {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            if !nbrs[a].contains(&b) {
+                nbrs[a].push(b);
+                nbrs[b].push(a);
+            }
+        }
+    }
+    nbrs
+}
+
+/// The vertices connected to the boundary loop (the boundary included).
+fn reachable(nbrs: &[Vec<usize>], on_boundary: &[bool], boundary_loop: &[usize]) -> Vec<bool> {
+    let mut reach = on_boundary.to_vec();
+    let mut stack: Vec<usize> = boundary_loop.to_vec();
+    while let Some(v) = stack.pop() {
+        for &w in &nbrs[v] {
+            if !reach[w] {
+                reach[w] = true;
+                stack.push(w);
+            }
+        }
+    }
+    reach
 }
 
 #[cfg(test)]

@@ -25,7 +25,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
     ("src/conv/skeleton.rs", "prune_and_link", 121),
-    ("src/plate/mapping.rs", "harmonic_disk", 103),
     ("src/template/envelope.rs", "envelope_pass", 279),
     ("src/template/fit.rs", "fit", 189),
 ];
