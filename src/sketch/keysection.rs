@@ -55,7 +55,8 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
     // of its bounding ellipse (the parameter of the neighbouring ellipse
     // sections, so the chain does not twist between them)
     let centre = [sec.centre[0], k.y, 0.0];
-    let frame = Frame::new(centre, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0])
+    // the horizontal frame at the section's height must exist
+    Frame::new(centre, [1.0, 0.0, 0.0], [0.0, 0.0, 1.0])
         .map_err(|e| SketchError::SectionFrame(Box::new(e)))?;
     let mut pts: Vec<[f64; 2]> = k.points.iter().map(|p| [p[0] - cx, p[1]]).collect();
     if pts.len() > 1 && pts.first() == pts.last() {
@@ -79,16 +80,14 @@ pub fn apply_key_section(parts: &mut [PartSpec], k: &KeySection) -> Result<(), S
         .map_err(|e| {
             SketchError::section_fit(format!("section of '{}' at y = {}", k.part, k.y), e)
         })?;
-    let _ = frame;
-    let rep = (gc, gx, gy);
     let sec = &mut part.sections[j];
     sec.centre = centre;
     sec.e1 = [1.0, 0.0, 0.0];
     sec.e2 = [0.0, 0.0, 1.0];
     sec.shape = SectionShape::Gec {
-        centre: rep.0,
-        x: rep.1,
-        y: rep.2,
+        centre: gc,
+        x: gx,
+        y: gy,
     };
     // re-measure u along the section centres
     let mut u = 0.0;
