@@ -423,6 +423,15 @@ fn landmarks(front: &Path) -> Result<(), String> {
     .map_err(|e| e.to_string())?;
     let p = pdesculpt::sketch::place::place(&o, None, None, Default::default())
         .map_err(|e| e.to_string())?;
+    let tops = pdesculpt::sketch::poly::gap_tops(
+        p.front.points(),
+        pdesculpt::sketch::segment::LANDMARK_SLICES,
+    );
+    println!("gap tops {tops:?}");
+    println!(
+        "as an animal: {:?}",
+        pdesculpt::sketch::quadruped::landmarks(p.front.points())
+    );
     let lm = pdesculpt::sketch::segment::landmarks(p.front.points()).map_err(|e| e.to_string())?;
     println!("{lm:?}");
     let neck = pdesculpt::sketch::segment::neck_interval(p.front.points(), &lm);

@@ -75,3 +75,136 @@ pub fn top_at(points: &[[f64; 2]], x: f64) -> Option<f64> {
     }
     best
 }
+
+/// Steps per armpit-to-top height in which the neck is followed down.
+pub const NECK_STEPS: f64 = 400.0;
+
+/// The neck base: the neck (`(width, height)`) is followed down in steps
+/// of `d` / [`NECK_STEPS`], not below `floor`, while its width (`width`,
+/// `None` off the outline) stays under [`NECK_FLARE`](super::segment::NECK_FLARE) times the neck's;
+/// where it stops, the crossing is found by bisection and the base is put
+/// one step above it. The base is then a continuous function of the
+/// drawing: the last whole step above the crossing (the rule before) sat
+/// anywhere from 0 to 1 step above it, and a base moved one step down
+/// into the fillet where a drawn neck meets the shoulder line (0.06 % of
+/// the height on the corpus drawings) turned t_pose's side error from
+/// 1.51 to 2.14 % and tripled the creases of long_legs and arms_low
+/// (docs/drawing-corpus.md, sixth measurement).
+pub fn neck_base(width: impl Fn(f64) -> Option<f64>, neck: (f64, f64), floor: f64, d: f64) -> f64 {
+    let step = d / NECK_STEPS;
+    let narrow = |y: f64| matches!(width(y), Some(w) if w < super::segment::NECK_FLARE * neck.0);
+    let mut base = neck.1;
+    while base - step > floor {
+        if !narrow(base - step) {
+            let (mut lo, mut hi) = (base - step, base);
+            for _ in 0..40 {
+                let m = 0.5 * (lo + hi);
+                if narrow(m) {
+                    hi = m;
+                } else {
+                    lo = m;
+                }
+            }
+            return (hi + step).min(neck.1);
+        }
+        base -= step;
+    }
+    base
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Slices used by the tests: as many as the segmentation uses.
+    const SLICES: usize = crate::sketch::segment::LANDMARK_SLICES;
+
+    /// Two legs joined above y = 3, the gap between them a wedge 1 wide at
+    /// the ground closing to a point at (1.5, 3), all leaning by `lean` in
+    /// x per unit of height: the gap's top is at x = 1.5 + 3 lean.
+    fn leaning_legs(lean: f64) -> Vec<[f64; 2]> {
+        let at = |x: f64, y: f64| [x + lean * y, y];
+        vec![
+            at(0.0, 0.0),
+            at(1.0, 0.0),
+            at(1.5, 3.0),
+            at(2.0, 0.0),
+            at(3.0, 0.0),
+            at(3.0, 4.0),
+            at(0.0, 4.0),
+        ]
+    }
+
+    #[test]
+    fn an_upright_gap_has_one_top_at_its_corner() {
+        let tops = gap_tops(&leaning_legs(0.0), SLICES);
+        assert_eq!(tops.len(), 1, "{tops:?}");
+        let spacing = 4.0 / SLICES as f64;
+        assert!((tops[0].y - 3.0).abs() < spacing, "{tops:?}");
+        assert!((tops[0].x - 1.5).abs() < spacing, "{tops:?}");
+    }
+
+    /// Known defect, kept as a failing test: near the top of a leaning
+    /// wedge the gap is narrower than the sideways move of its middle from
+    /// one slice to the next, so the middle of each of the last slices'
+    /// gaps lies inside a leg one slice higher and the gap is reported on
+    /// each of them (13 tops here, all within 0.08 of the true one; the
+    /// quadruped merges them with `dedup_gaps`, the humanoid picks the one
+    /// nearest its armpit). Judging closure by overlap (one higher interval
+    /// meeting both sides) still reports 7, and moves the top of a wide,
+    /// nearly flat-floored gap (an animal's back between tail and neck)
+    /// from below the gap's middle to the floor's highest point, which
+    /// breaks the corpus cat and horse. The exact answer is the outline's
+    /// split vertices (both neighbours below, reflex), filtered by the
+    /// gap's depth; the quadruped would then need its own rule for the
+    /// back. docs/drawing-corpus.md, "gap tops".
+    #[test]
+    #[ignore = "known defect: a slanted gap is reported on several slices (see the doc comment)"]
+    fn a_slanted_gap_is_reported_once_at_its_top() {
+        // near its top the wedge is narrower than the sideways move of its
+        // middle from one slice to the next (2 per unit of height): there
+        // the middle of a slice's gap lies inside a leg one slice higher
+        for lean in [2.0, -2.0] {
+            let tops = gap_tops(&leaning_legs(lean), SLICES);
+            assert_eq!(tops.len(), 1, "lean {lean}: {tops:?}");
+            let spacing = 4.0 / SLICES as f64;
+            let top = tops[0];
+            assert!((top.y - 3.0).abs() < spacing, "lean {lean}: {top:?}");
+            // the middle just below the top, to within a slice's sideways
+            // move
+            let tol = spacing * (1.0 + lean.abs());
+            assert!(
+                (top.x - (1.5 + 3.0 * lean)).abs() < tol,
+                "lean {lean}: {top:?}"
+            );
+        }
+    }
+
+    /// A neck of width 1 above `y_s`, 10 wide below: the base is one step
+    /// above `y_s` wherever `y_s` falls between the steps (the last whole
+    /// step above it moved by up to a step with the phase).
+    #[test]
+    fn the_neck_base_follows_the_shoulder_line_continuously() {
+        let d = 1.0;
+        let step = d / NECK_STEPS;
+        for k in 0..10 {
+            let y_s = 0.5 + step * k as f64 / 10.0;
+            let width = |y: f64| Some(if y > y_s { 1.0 } else { 10.0 });
+            let base = neck_base(width, (1.0, 1.0), 0.0, d);
+            let err = (base - (y_s + step)).abs();
+            assert!(
+                err < 1e-9 * d,
+                "shoulder at {y_s}: base {base}, off by {err}"
+            );
+        }
+        // no crossing above the floor: the base stops at the floor
+        let base = neck_base(|_| Some(1.0), (1.0, 1.0), 0.5, d);
+        assert!(base > 0.5 && base - 0.5 <= step, "{base}");
+    }
+
+    #[test]
+    fn no_gap_no_top() {
+        let square = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        assert!(gap_tops(&square, SLICES).is_empty());
+    }
+}

@@ -20,7 +20,7 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
-use super::poly::{gap_tops, slice, top_at, GapTop};
+use super::poly::{gap_tops, neck_base, slice, top_at, GapTop};
 use super::SketchError;
 
 /// Half-height of a join band, as a fraction of the model height.
@@ -234,14 +234,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
         ));
     }
-    let mut base = neck.1;
-    let step = d / 400.0;
-    while base - step > ya + 2.0 * GAP_FRACTION * h {
-        match width(base - step) {
-            Some(w) if w < NECK_FLARE * neck.0 => base -= step,
-            _ => break,
-        }
-    }
+    let base = neck_base(width, neck, ya + 2.0 * GAP_FRACTION * h, d);
     Ok(Landmarks {
         y_min: yr[0],
         y_max: yr[1],
