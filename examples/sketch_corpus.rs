@@ -298,13 +298,67 @@ fn describe(h: &Humanoid) -> String {
     )
 }
 
-fn measure(dir: &Path, all: bool, sheet: Option<&Path>) -> Result<(), String> {
+/// Builds an entry from its outlines with the front's (or lateral view's)
+/// x stretched by `1 + eps` about its middle: a drawing a little wider or
+/// narrower, for the continuity study (`measure ... --stretch-x EPS`).
+fn build_stretched(dir: &Path, e: &Entry, eps: f64) -> Result<pdesculpt::pipeline::Built, String> {
+    use pdesculpt::character::doc::{CharacterDoc, Inputs, Level, ProfileInput};
+    use pdesculpt::profile::View;
+    use pdesculpt::sketch::input::read_profile;
+    let read = |f: &str, view| {
+        read_profile(
+            &ProfileInput::Path(dir.join(f).display().to_string()),
+            Path::new("."),
+            view,
+            None,
+        )
+        .map_err(|e| e.to_string())
+    };
+    let front = read(&e.front, View::Front)?;
+    let side = read(&e.side, View::Side)?;
+    let xr = pdesculpt::polygon::span(front.points(), 0);
+    let mid = 0.5 * (xr[0] + xr[1]);
+    let stretched = front
+        .points()
+        .iter()
+        .map(|p| [mid + (p[0] - mid) * (1.0 + eps), p[1]])
+        .collect();
+    let doc = CharacterDoc::from_inputs(
+        Inputs {
+            front: ProfileInput::Points(stretched),
+            side: Some(ProfileInput::Points(side.points().to_vec())),
+            sections: Vec::new(),
+            tolerance: None,
+            height: e.height_m,
+            body_plan: Default::default(),
+        },
+        Level::Intermediate,
+    );
+    pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), true)
+        .map_err(|e| e.to_string())
+}
+
+fn measure(
+    dir: &Path,
+    all: bool,
+    sheet: Option<&Path>,
+    stretch: Option<f64>,
+) -> Result<(), String> {
     let m = read_manifest(dir)?;
     let mut rows = Vec::new();
     let mut images = Vec::new();
     for e in m.entries.iter().filter(|e| all || !e.held_out) {
         let t0 = std::time::Instant::now();
-        let built = build_entry(dir, e);
+        let built = match stretch {
+            None => build_entry(dir, e),
+            Some(eps) => match build_stretched(dir, e, eps) {
+                Ok(b) => Ok(b),
+                Err(err) => {
+                    eprintln!("{}: error: {err}", e.name);
+                    continue;
+                }
+            },
+        };
         let row = measure_entry(e, &built);
         eprintln!(
             "{}: {} in {:.2} s",
@@ -460,10 +514,16 @@ fn main() {
                 .position(|a| a == "--sheet")
                 .and_then(|i| args.get(i + 1))
                 .map(Path::new);
-            measure(Path::new(&args[1]), all, sheet)
+            let stretch = args
+                .iter()
+                .position(|a| a == "--stretch-x")
+                .and_then(|i| args.get(i + 1))
+                .map(|v| v.parse::<f64>().map_err(|e| format!("--stretch-x {v}: {e}")))
+                .transpose();
+            stretch.and_then(|stretch| measure(Path::new(&args[1]), all, sheet, stretch))
         }
         Some("landmarks") if args.len() >= 2 => landmarks(Path::new(&args[1])),
-        _ => Err("usage: sketch_corpus write DIR | measure DIR [--all] [--sheet OUT.png] | landmarks FRONT.svg".into()),
+        _ => Err("usage: sketch_corpus write DIR | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
     };
     if let Err(e) = r {
         eprintln!("error: {e}");

@@ -20,7 +20,7 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
-use super::poly::{gap_tops, neck_base, slice, top_at, GapTop};
+use super::poly::{gap_tops, merge_repeats, neck_base, slice, top_at, GapTop};
 use super::SketchError;
 
 /// Half-height of a join band, as a fraction of the model height.
@@ -176,6 +176,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let yr = crate::polygon::span(front, 1);
     let h = yr[1] - yr[0];
     let mut tops: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
+    merge_repeats(&mut tops, GAP_FRACTION * h);
     tops.sort_by(|a, b| b.y.total_cmp(&a.y));
     let crotch = tops
         .iter()

@@ -2,7 +2,7 @@
 //! and the corners where tail, back and neck join the body (see the parent
 //! module's docs).
 
-use super::super::poly::gap_tops;
+use super::super::poly::{gap_tops, merge_repeats, GapTop};
 use super::super::segment::{interval, Pick, GAP_FRACTION, LANDMARK_SLICES};
 use super::super::SketchError;
 
@@ -29,23 +29,16 @@ impl QuadLandmarks {
 pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     let yr = crate::polygon::span(front, 1);
     let mid = 0.5 * (yr[0] + yr[1]);
-    let by_x = |v: &mut Vec<[f64; 2]>| v.sort_by(|a, b| a[0].total_cmp(&b[0]));
-    let mut legs: Vec<[f64; 2]> = gap_tops(front, LANDMARK_SLICES)
-        .into_iter()
-        .filter(|t| t.y < mid)
-        .map(|t| [t.x, t.y])
-        .collect();
-    by_x(&mut legs);
-    let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
-    let mut top: Vec<[f64; 2]> = gap_tops(&flipped, LANDMARK_SLICES)
-        .into_iter()
-        .map(|t| [t.x, -t.y])
-        .filter(|t| t[1] > mid)
-        .collect();
-    by_x(&mut top);
     let g = GAP_FRACTION * (yr[1] - yr[0]);
-    dedup_gaps(&mut legs, g);
-    dedup_gaps(&mut top, g);
+    let mut legs: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
+    legs.retain(|t| t.y < mid);
+    merge_repeats(&mut legs, g);
+    let legs: Vec<[f64; 2]> = legs.iter().map(|t| [t.x, t.y]).collect();
+    let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
+    let mut top: Vec<GapTop> = gap_tops(&flipped, LANDMARK_SLICES);
+    top.retain(|t| -t.y > mid);
+    merge_repeats(&mut top, g);
+    let mut top: Vec<[f64; 2]> = top.iter().map(|t| [t.x, -t.y]).collect();
     prune_notches(front, &mut top, g);
     if legs.len() != 1 && legs.len() != 3 {
         return Err(SketchError::Segmentation(format!(
@@ -67,23 +60,6 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         top_gaps: top,
         facing: 1.0,
     })
-}
-
-/// Merges gap tops closer than `g` to each other (one corner found on two
-/// neighbouring slices), keeping the higher.
-fn dedup_gaps(gaps: &mut Vec<[f64; 2]>, g: f64) {
-    let mut out: Vec<[f64; 2]> = Vec::with_capacity(gaps.len());
-    for p in gaps.iter() {
-        match out.last_mut() {
-            Some(q) if (p[0] - q[0]).hypot(p[1] - q[1]) < g => {
-                if p[1] > q[1] {
-                    *q = *p;
-                }
-            }
-            _ => out.push(*p),
-        }
-    }
-    *gaps = out;
 }
 
 /// Removes top gaps that separate nothing: a corner of the outline that
@@ -138,13 +114,6 @@ mod tests {
             [0.5, 2.0],
             [0.0, 2.0],
         ]
-    }
-
-    #[test]
-    fn a_corner_found_twice_is_one_corner() {
-        let mut g = vec![[1.0, 2.0], [1.001, 2.0005], [3.0, 2.0]];
-        dedup_gaps(&mut g, 0.01);
-        assert_eq!(g, vec![[1.001, 2.0005], [3.0, 2.0]]);
     }
 
     #[test]
