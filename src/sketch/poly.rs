@@ -201,7 +201,7 @@ mod tests {
             gt(1.0, 2.0),
             gt(0.005, 1.004),
             gt(0.01, 1.008),
-            gt(1.005, 1.99),
+            gt(1.005, 1.996),
         ];
         merge_repeats(&mut tops, 0.0075);
         assert_eq!(tops, vec![gt(0.01, 1.008), gt(1.0, 2.0)]);
