@@ -14,7 +14,7 @@
 //! wider than the item's ranges. Every third generated drawing is held out.
 
 use pdesculpt::pipeline::corpus::{
-    build_entry, measure_entry, read_manifest, table, Entry, Manifest,
+    build_entry, build_entry_stretched, measure_entry, read_manifest, table, Entry, Manifest,
 };
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
@@ -298,46 +298,6 @@ fn describe(h: &Humanoid) -> String {
     )
 }
 
-/// Builds an entry from its outlines with the front's (or lateral view's)
-/// x stretched by `1 + eps` about its middle: a drawing a little wider or
-/// narrower, for the continuity study (`measure ... --stretch-x EPS`).
-fn build_stretched(dir: &Path, e: &Entry, eps: f64) -> Result<pdesculpt::pipeline::Built, String> {
-    use pdesculpt::character::doc::{CharacterDoc, Inputs, Level, ProfileInput};
-    use pdesculpt::profile::View;
-    use pdesculpt::sketch::input::read_profile;
-    let read = |f: &str, view| {
-        read_profile(
-            &ProfileInput::Path(dir.join(f).display().to_string()),
-            Path::new("."),
-            view,
-            None,
-        )
-        .map_err(|e| e.to_string())
-    };
-    let front = read(&e.front, View::Front)?;
-    let side = read(&e.side, View::Side)?;
-    let xr = pdesculpt::polygon::span(front.points(), 0);
-    let mid = 0.5 * (xr[0] + xr[1]);
-    let stretched = front
-        .points()
-        .iter()
-        .map(|p| [mid + (p[0] - mid) * (1.0 + eps), p[1]])
-        .collect();
-    let doc = CharacterDoc::from_inputs(
-        Inputs {
-            front: ProfileInput::Points(stretched),
-            side: Some(ProfileInput::Points(side.points().to_vec())),
-            sections: Vec::new(),
-            tolerance: None,
-            height: e.height_m,
-            body_plan: Default::default(),
-        },
-        Level::Intermediate,
-    );
-    pdesculpt::pipeline::build_document(&doc, Path::new("."), Default::default(), true)
-        .map_err(|e| e.to_string())
-}
-
 fn measure(
     dir: &Path,
     all: bool,
@@ -351,13 +311,7 @@ fn measure(
         let t0 = std::time::Instant::now();
         let built = match stretch {
             None => build_entry(dir, e),
-            Some(eps) => match build_stretched(dir, e, eps) {
-                Ok(b) => Ok(b),
-                Err(err) => {
-                    eprintln!("{}: error: {err}", e.name);
-                    continue;
-                }
-            },
+            Some(eps) => build_entry_stretched(dir, e, eps),
         };
         let row = measure_entry(e, &built);
         eprintln!(

@@ -75,6 +75,50 @@ pub fn build_entry(
     build_document(&doc, Path::new("."), Resolution::default(), true)
 }
 
+/// Builds an entry as [`build_entry`] does, but from its outlines' points
+/// with the front (or lateral) view's x stretched by `1 + eps` about its
+/// middle: the same drawing a little wider or narrower, for the continuity
+/// study (`sketch_corpus measure --stretch-x EPS`, docs/drawing-corpus.md).
+/// At `eps` = 0 it builds the same model as [`build_entry`] (cut paths
+/// aside: the corpus drawings have none).
+pub fn build_entry_stretched(
+    dir: &Path,
+    e: &Entry,
+    eps: f64,
+) -> Result<crate::pipeline::Built, crate::pipeline::BuildError> {
+    use crate::profile::View;
+    use crate::sketch::input::read_profile;
+    let read = |f: &str, view| {
+        read_profile(
+            &ProfileInput::Path(dir.join(f).display().to_string()),
+            Path::new("."),
+            view,
+            None,
+        )
+    };
+    let front = read(&e.front, View::Front)?;
+    let side = read(&e.side, View::Side)?;
+    let xr = crate::polygon::span(front.points(), 0);
+    let mid = 0.5 * (xr[0] + xr[1]);
+    let stretched = front
+        .points()
+        .iter()
+        .map(|p| [mid + (p[0] - mid) * (1.0 + eps), p[1]])
+        .collect();
+    let doc = CharacterDoc::from_inputs(
+        Inputs {
+            front: ProfileInput::Points(stretched),
+            side: Some(ProfileInput::Points(side.points().to_vec())),
+            sections: Vec::new(),
+            tolerance: None,
+            height: e.height_m,
+            body_plan: Default::default(),
+        },
+        Level::Intermediate,
+    );
+    build_document(&doc, Path::new("."), Resolution::default(), true)
+}
+
 /// Measures one entry's build ([`build_entry`]).
 pub fn measure_entry(
     e: &Entry,
