@@ -158,30 +158,7 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
     for w in &placed.warnings {
         eprintln!("warning: {w}");
     }
-    let k = if a.template == "makehuman" {
-        1.0 / pdesculpt::mesh::unit::MAKEHUMAN.metres()
-    } else {
-        1.0
-    };
-    let to_template = |o: &pdesculpt::sketch::input::Outline| -> Vec<[f64; 2]> {
-        o.points().iter().map(|p| [k * p[0], k * p[1]]).collect()
-    };
-    let mut sketch = Sketch {
-        front: to_template(&placed.front),
-        ..Default::default()
-    };
-    sketch.side = placed.side.as_ref().map(to_template);
-    if let Some(s) = &a.sections {
-        let text = io::read_input_text(s, "sections file")?;
-        #[derive(serde::Deserialize)]
-        #[serde(deny_unknown_fields)]
-        struct File {
-            sections: Vec<SectionSketch>,
-        }
-        let f: File = serde_json::from_str(&text)
-            .with_context(|| format!("{}: invalid sections JSON", s.display()))?;
-        sketch.sections = f.sections;
-    }
+    let sketch = template_sketch(&a, &placed)?;
     let mut opts = FitOptions::default();
     opts.on_miss = if a.strict {
         OnMiss::Fail
@@ -216,6 +193,46 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
         profile_errors: errors,
         seconds: t0.elapsed().as_secs_f64(),
     };
+    print_report(&report, &opts, json)?;
+    Ok(0)
+}
+
+/// The placed drawings in the template's unit (MakeHuman's decimetres, a
+/// mesh file's metres), with the key sections of `--sections`.
+fn template_sketch(
+    a: &FitArgs,
+    placed: &pdesculpt::sketch::place::Placed,
+) -> anyhow::Result<Sketch> {
+    let k = if a.template == "makehuman" {
+        1.0 / pdesculpt::mesh::unit::MAKEHUMAN.metres()
+    } else {
+        1.0
+    };
+    let to_template = |o: &pdesculpt::sketch::input::Outline| -> Vec<[f64; 2]> {
+        o.points().iter().map(|p| [k * p[0], k * p[1]]).collect()
+    };
+    let mut sketch = Sketch {
+        front: to_template(&placed.front),
+        ..Default::default()
+    };
+    sketch.side = placed.side.as_ref().map(to_template);
+    if let Some(s) = &a.sections {
+        let text = io::read_input_text(s, "sections file")?;
+        #[derive(serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct File {
+            sections: Vec<SectionSketch>,
+        }
+        let f: File = serde_json::from_str(&text)
+            .with_context(|| format!("{}: invalid sections JSON", s.display()))?;
+        sketch.sections = f.sections;
+    }
+    Ok(sketch)
+}
+
+/// The fit's warnings, then its report: JSON on stdout, or text on
+/// stderr.
+fn print_report(report: &Report, opts: &FitOptions, json: bool) -> anyhow::Result<()> {
     for l in &report.levels {
         for v in l.profiles.iter().filter(|v| !v.within) {
             eprintln!(
@@ -256,5 +273,5 @@ fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
             report.output, report.vertices, report.seconds
         );
     }
-    Ok(0)
+    Ok(())
 }
