@@ -184,7 +184,6 @@ fn derive_upright(
     // shoulder apex: the top of the outline halfway between the neck's side
     // and the shoulder's outer side (at the armpits' height)
     let neck_iv = super::segment::neck_interval(front, &lm);
-    let outer = slice(front, ya + g);
     let apex = |sign: f64| -> [f64; 3] {
         let neck_x = match neck_iv {
             Some(iv) => {
@@ -202,11 +201,8 @@ fn derive_upright(
         } else {
             shoulders[1][0]
         };
-        let _ = &outer;
         let x = 0.5 * (neck_x + out_x);
-        let y = shoulder_top(front, x)
-            .filter(|y| *y < lm.neck_base + g)
-            .unwrap_or(ya + 4.0 * g);
+        let y = shoulder_top(front, x, &lm).unwrap_or(ya + 4.0 * g);
         [x, y, top_c[2]]
     };
     let bot_c = torso.sections[0].centre;

@@ -86,6 +86,28 @@ pub fn merge_repeats(tops: &mut Vec<GapTop>, g: f64) {
     *tops = out;
 }
 
+/// The highest top, below `y_max`, of the outline's vertical intervals at
+/// `x` (even-odd rule), or None. Unlike [`top_at`], a part wholly above
+/// `y_max` over `x` (a head wider than its neck) is not taken for the top.
+pub fn top_below(points: &[[f64; 2]], x: f64, y_max: f64) -> Option<f64> {
+    let n = points.len();
+    let mut ys = Vec::new();
+    for i in 0..n {
+        let a = points[i];
+        let b = points[(i + 1) % n];
+        let (lo, hi) = if a[0] < b[0] { (a, b) } else { (b, a) };
+        if x >= lo[0] && x < hi[0] {
+            let t = (x - lo[0]) / (hi[0] - lo[0]);
+            ys.push(lo[1] + t * (hi[1] - lo[1]));
+        }
+    }
+    ys.sort_by(f64::total_cmp);
+    ys.chunks_exact(2)
+        .map(|c| c[1])
+        .filter(|&y| y < y_max)
+        .last()
+}
+
 /// The top of the outline above `x` (largest y inside), if any.
 pub fn top_at(points: &[[f64; 2]], x: f64) -> Option<f64> {
     let n = points.len();
@@ -227,6 +249,31 @@ mod tests {
         // no crossing above the floor: the base stops at the floor
         let base = neck_base(|_| Some(1.0), (1.0, 1.0), 0.5, d);
         assert!(base > 0.5 && base - 0.5 <= step, "{base}");
+    }
+
+    /// A body 2 wide and 1 tall with a head 1.5 wide on a neck 0.5 wide
+    /// above it: above x = 0.6 the body's top is at 1, the head's at 3.
+    #[test]
+    fn the_top_below_a_height_leaves_out_parts_above_it() {
+        let pts = vec![
+            [-1.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [0.25, 1.0],
+            [0.25, 2.0],
+            [0.75, 2.0],
+            [0.75, 3.0],
+            [-0.75, 3.0],
+            [-0.75, 2.0],
+            [-0.25, 2.0],
+            [-0.25, 1.0],
+            [-1.0, 1.0],
+        ];
+        assert_eq!(top_at(&pts, 0.6), Some(3.0));
+        assert_eq!(top_below(&pts, 0.6, 2.5), Some(1.0));
+        assert_eq!(top_below(&pts, 0.6, 3.5), Some(3.0));
+        assert_eq!(top_below(&pts, 0.6, 0.5), None);
+        assert_eq!(top_below(&pts, 1.5, 2.5), None);
     }
 
     #[test]

@@ -20,7 +20,7 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
-use super::poly::{gap_tops, merge_repeats, neck_base, slice, top_at, GapTop};
+use super::poly::{gap_tops, merge_repeats, neck_base, slice, GapTop};
 use super::SketchError;
 
 /// Half-height of a join band, as a fraction of the model height.
@@ -433,9 +433,11 @@ pub fn regions(
     Ok(out)
 }
 
-/// Height of the outline's top above x (for the shoulder seams).
-pub fn shoulder_top(front: &[[f64; 2]], x: f64) -> Option<f64> {
-    top_at(front, x)
+/// Height of the shoulder's top above `x`, for the shoulder seams: the
+/// outline's highest top over `x` below the neck's narrowest height
+/// (`lm.neck`; a head wider than its neck is above it), or None.
+pub fn shoulder_top(front: &[[f64; 2]], x: f64, lm: &Landmarks) -> Option<f64> {
+    super::poly::top_below(front, x, lm.neck)
 }
 
 /// Join heights set by cut paths (`sketch::cuts`; None: automatic).

@@ -746,3 +746,28 @@ fn spread(v: &[f64]) -> f64 {
     let lo = v.iter().copied().reduce(f64::min).unwrap_or(f64::NAN);
     hi - lo
 }
+
+/// A shoulder seam's apex is the shoulder's own top over its x, even when
+/// the shoulder rises above the neck base (a short neck on high, sloped
+/// shoulders: the corpus's chubby figure). It was refused when above the
+/// neck base plus a join band and replaced by a fallback 3 bands above the
+/// armpits, a notch of 6.8 % of the height in the front silhouette.
+#[test]
+fn high_shoulders_keep_their_drawn_top() {
+    let rows = measure_corpus(|e| e.name == "chubby");
+    let q = rows[0]
+        .quality
+        .as_ref()
+        .unwrap_or_else(|| panic!("{:?}", rows[0].error));
+    let front = q
+        .whole
+        .views
+        .iter()
+        .find(|v| v.view == "front")
+        .expect("a front view");
+    assert!(
+        front.max_rel <= Bounds::ISSUE.profile_front,
+        "front profile error {:.2} % of the height",
+        100.0 * front.max_rel
+    );
+}
