@@ -137,6 +137,29 @@ pub fn fit_auto(
 mod tests {
     use super::*;
 
+    /// `fit_auto`'s search over J = 1..=cap is priced before any fit, at
+    /// about `2 n (4/3) cap^3` operations (a least-squares fit per J), and
+    /// refused over [`crate::limits::WORK_FLOPS`]. 529 points on a circle
+    /// give cap = 264 and an estimate 1.3 times the budget: refused, even
+    /// though the first J would meet the tolerance. (With the estimate's
+    /// 4/3 divided instead of multiplied, a mutant, it was 0.73 times the
+    /// budget and the search ran.)
+    #[test]
+    fn a_search_over_the_work_budget_is_refused_before_fitting() {
+        let n = 529;
+        let pts: Vec<[f64; 3]> = (0..n)
+            .map(|k| {
+                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                [t.cos(), t.sin(), 0.0]
+            })
+            .collect();
+        let cap = (n - 1) / 2;
+        let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
+        assert!(estimate > crate::limits::WORK_FLOPS, "{estimate}");
+        let r = fit_auto(&pts, 1.0, cap, &FitOptions::new(1));
+        assert!(matches!(r, Err(GecError::Limit(_))), "{:?}", r.map(|f| f.gec.terms()));
+    }
+
     /// 2J + 1 points are interpolated by every parameter rule, so their
     /// ErMs differ only by rounding, which grows with the section's size:
     /// the given rule's fit is kept unless another is better by more than
