@@ -102,10 +102,7 @@ pub fn top_below(points: &[[f64; 2]], x: f64, y_max: f64) -> Option<f64> {
         }
     }
     ys.sort_by(f64::total_cmp);
-    ys.chunks_exact(2)
-        .map(|c| c[1])
-        .filter(|&y| y < y_max)
-        .last()
+    ys.chunks_exact(2).map(|c| c[1]).rev().find(|&y| y < y_max)
 }
 
 /// The top of the outline above `x` (largest y inside), if any.

@@ -157,7 +157,11 @@ mod tests {
         let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
         assert!(estimate > crate::limits::WORK_FLOPS, "{estimate}");
         let r = fit_auto(&pts, 1.0, cap, &FitOptions::new(1));
-        assert!(matches!(r, Err(GecError::Limit(_))), "{:?}", r.map(|f| f.gec.terms()));
+        assert!(
+            matches!(r, Err(GecError::Limit(_))),
+            "{:?}",
+            r.map(|f| f.gec.terms())
+        );
     }
 
     /// 2J + 1 points are interpolated by every parameter rule, so their

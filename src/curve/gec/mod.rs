@@ -393,9 +393,9 @@ mod tests {
     #[test]
     fn a_nan_coefficient_or_centre_is_not_finite() {
         let frame = Frame::z_plane(0.0);
-        assert!(Gec::ellipse(frame.clone(), [0.0, 0.0], 2.0, 1.0).is_finite());
-        assert!(!Gec::ellipse(frame.clone(), [0.0, 0.0], f64::NAN, 1.0).is_finite());
-        assert!(!Gec::ellipse(frame.clone(), [0.0, f64::INFINITY], 2.0, 1.0).is_finite());
+        assert!(Gec::ellipse(frame, [0.0, 0.0], 2.0, 1.0).is_finite());
+        assert!(!Gec::ellipse(frame, [0.0, 0.0], f64::NAN, 1.0).is_finite());
+        assert!(!Gec::ellipse(frame, [0.0, f64::INFINITY], 2.0, 1.0).is_finite());
         let r = Gec::new(frame, [0.0, 0.0], vec![[1.0, f64::NAN]], vec![[0.0, 1.0]]);
         assert!(matches!(r, Err(GecError::Malformed(_))), "{r:?}");
     }
