@@ -239,7 +239,7 @@ mod tests {
             let base = neck_base(width, (1.0, 1.0), 0.0, d);
             let err = (base - (y_s + step)).abs();
             assert!(
-                err < 1e-9 * d,
+                err < crate::check::tol::ROUNDING * d,
                 "shoulder at {y_s}: base {base}, off by {err}"
             );
         }

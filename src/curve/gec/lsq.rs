@@ -335,6 +335,34 @@ pub(super) fn finish(
 mod tests {
     use super::*;
 
+    /// A fit's reported angles are each point's angle, wrapped into
+    /// [0, 2 pi): the curve at `thetas[i]` is the i-th point (2J + 1
+    /// points are interpolated). A mutation sample found nothing checking
+    /// the wrap (`rem_euclid(2 pi)` -> `rem_euclid(2 + pi)` survived).
+    #[test]
+    fn reported_angles_are_the_points_angles_in_one_turn() {
+        // five points of a slanted, off-centre ellipse, starting at 3/4
+        // of a turn so that some angles pass 2 pi before the wrap
+        let pts: Vec<[f64; 3]> = (0..5)
+            .map(|k| {
+                let t = 1.5 * PI + 2.0 * PI * k as f64 / 5.0;
+                [
+                    2.0 + 3.0 * t.cos() - 0.5 * t.sin(),
+                    -1.0 + 1.2 * t.sin(),
+                    0.0,
+                ]
+            })
+            .collect();
+        let r = super::super::fit::fit(&pts, &FitOptions::new(2)).expect("five points fit J = 2");
+        assert_eq!(r.thetas.len(), pts.len());
+        for (t, q) in r.thetas.iter().zip(&r.plane_points) {
+            assert!((0.0..2.0 * PI).contains(t), "angle {t} outside one turn");
+            let p = r.gec.eval_plane(*t);
+            let d = (p[0] - q[0]).hypot(p[1] - q[1]);
+            assert!(d < crate::check::tol::SOLVE, "at {t}: {p:?} against {q:?}");
+        }
+    }
+
     /// The counts a fit needs before any matrix is built: J >= 1 and
     /// 2J + 1 points (a mutation sample found that nothing else noticed
     /// `check_counts` doing nothing: the least squares then reports a rank
