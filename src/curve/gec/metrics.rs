@@ -219,6 +219,21 @@ mod tests {
             .max_nan()
     }
 
+    /// A polyline of one repeated point has no size to divide by: its
+    /// relative errors are the absolute ones, finite (a mutation sample
+    /// found nothing checking the `scale > 0` guard; with `>=` they were
+    /// infinite).
+    #[test]
+    fn a_polyline_without_size_gives_finite_relative_errors() {
+        let gec = Gec::ellipse(crate::curve::gec::Frame::z_plane(0.0), [0.0, 0.0], 2.0, 1.0);
+        let e = errors(&gec, &[[1.0, 1.0], [1.0, 1.0], [1.0, 1.0]]);
+        assert_eq!(e.scale, 0.0);
+        assert!(e.erm > 0.0 && e.erm.is_finite(), "{e:?}");
+        assert_eq!(e.erm_rel, e.erm);
+        assert_eq!(e.era_rel, e.era);
+        assert_eq!(e.hausdorff_rel, e.hausdorff);
+    }
+
     #[test]
     fn back_distance_equals_the_double_loop_bit_for_bit() {
         // a star polygon and a noisy ellipse sampled against it, and the
