@@ -182,3 +182,70 @@ pub fn disk_profile(rho: f64) -> f64 {
         s * s / 64.0
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Eq 3's rigidity is refused, naming the parameter, for a modulus or
+    /// thickness that is not positive and finite and a Poisson ratio
+    /// outside [0, 0.5]; the paper's rubber gives E h^3 / 9 (a mutation
+    /// sample found no check of the refusals: `finite && good` -> `||`
+    /// survived).
+    #[test]
+    fn rigidity_refuses_what_is_not_a_material() {
+        let rubber = Material::default();
+        let d = rubber.rigidity().expect("the paper's rubber");
+        assert_eq!(d, 1e6 * 0.1f64.powi(3) / 9.0);
+        let bad = [
+            (
+                "E",
+                Material {
+                    young: -1.0,
+                    ..rubber
+                },
+            ),
+            (
+                "E",
+                Material {
+                    young: f64::INFINITY,
+                    ..rubber
+                },
+            ),
+            (
+                "h",
+                Material {
+                    thickness: 0.0,
+                    ..rubber
+                },
+            ),
+            (
+                "h",
+                Material {
+                    thickness: f64::NAN,
+                    ..rubber
+                },
+            ),
+            (
+                "mu",
+                Material {
+                    poisson: 0.6,
+                    ..rubber
+                },
+            ),
+            (
+                "mu",
+                Material {
+                    poisson: -0.1,
+                    ..rubber
+                },
+            ),
+        ];
+        for (name, m) in bad {
+            match m.rigidity() {
+                Err(PlateError::Parameter { name: n, .. }) => assert_eq!(n, name, "{m:?}"),
+                other => panic!("{m:?}: {other:?}"),
+            }
+        }
+    }
+}
