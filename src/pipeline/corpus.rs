@@ -61,10 +61,21 @@ pub fn build_entry(
     dir: &Path,
     e: &Entry,
 ) -> Result<crate::pipeline::Built, crate::pipeline::BuildError> {
+    let path = |f: &str| ProfileInput::Path(dir.join(f).display().to_string());
+    build_views(e, path(&e.front), path(&e.side))
+}
+
+/// Builds an entry's two views at the intermediate level, with its
+/// `--height`.
+fn build_views(
+    e: &Entry,
+    front: ProfileInput,
+    side: ProfileInput,
+) -> Result<crate::pipeline::Built, crate::pipeline::BuildError> {
     let doc = CharacterDoc::from_inputs(
         Inputs {
-            front: ProfileInput::Path(dir.join(&e.front).display().to_string()),
-            side: Some(ProfileInput::Path(dir.join(&e.side).display().to_string())),
+            front,
+            side: Some(side),
             sections: Vec::new(),
             tolerance: None,
             height: e.height_m,
@@ -105,18 +116,11 @@ pub fn build_entry_stretched(
         .iter()
         .map(|p| [mid + (p[0] - mid) * (1.0 + eps), p[1]])
         .collect();
-    let doc = CharacterDoc::from_inputs(
-        Inputs {
-            front: ProfileInput::Points(stretched),
-            side: Some(ProfileInput::Points(side.points().to_vec())),
-            sections: Vec::new(),
-            tolerance: None,
-            height: e.height_m,
-            body_plan: Default::default(),
-        },
-        Level::Intermediate,
-    );
-    build_document(&doc, Path::new("."), Resolution::default(), true)
+    build_views(
+        e,
+        ProfileInput::Points(stretched),
+        ProfileInput::Points(side.points().to_vec()),
+    )
 }
 
 /// Measures one entry's build ([`build_entry`]).

@@ -4,20 +4,30 @@
 /// The inside intervals `[x0, x1]` of the horizontal line at height `y`,
 /// sorted by x (even-odd rule; the polygon is simple, closure implied).
 pub fn slice(points: &[[f64; 2]], y: f64) -> Vec<[f64; 2]> {
+    crossings(points, 1, y)
+        .chunks_exact(2)
+        .map(|c| [c[0], c[1]])
+        .collect()
+}
+
+/// Where the line `p[axis] = at` crosses the polygon's edges: the other
+/// coordinate of each crossing, sorted (an edge counts when `at` is in
+/// `[min, max)` of its ends along `axis`: each crossing once, even-odd).
+fn crossings(points: &[[f64; 2]], axis: usize, at: f64) -> Vec<f64> {
+    let other = 1 - axis;
     let n = points.len();
-    let mut xs = Vec::new();
+    let mut out = Vec::new();
     for i in 0..n {
         let a = points[i];
         let b = points[(i + 1) % n];
-        // half-open rule: count an edge when y is in [min, max)
-        let (lo, hi) = if a[1] < b[1] { (a, b) } else { (b, a) };
-        if y >= lo[1] && y < hi[1] {
-            let t = (y - lo[1]) / (hi[1] - lo[1]);
-            xs.push(lo[0] + t * (hi[0] - lo[0]));
+        let (lo, hi) = if a[axis] < b[axis] { (a, b) } else { (b, a) };
+        if at >= lo[axis] && at < hi[axis] {
+            let t = (at - lo[axis]) / (hi[axis] - lo[axis]);
+            out.push(lo[other] + t * (hi[other] - lo[other]));
         }
     }
-    xs.sort_by(f64::total_cmp);
-    xs.chunks_exact(2).map(|c| [c[0], c[1]]).collect()
+    out.sort_by(f64::total_cmp);
+    out
 }
 
 /// A gap between two limbs closing at its top: the point where, going up,
@@ -90,36 +100,16 @@ pub fn merge_repeats(tops: &mut Vec<GapTop>, g: f64) {
 /// `x` (even-odd rule), or None. Unlike [`top_at`], a part wholly above
 /// `y_max` over `x` (a head wider than its neck) is not taken for the top.
 pub fn top_below(points: &[[f64; 2]], x: f64, y_max: f64) -> Option<f64> {
-    let n = points.len();
-    let mut ys = Vec::new();
-    for i in 0..n {
-        let a = points[i];
-        let b = points[(i + 1) % n];
-        let (lo, hi) = if a[0] < b[0] { (a, b) } else { (b, a) };
-        if x >= lo[0] && x < hi[0] {
-            let t = (x - lo[0]) / (hi[0] - lo[0]);
-            ys.push(lo[1] + t * (hi[1] - lo[1]));
-        }
-    }
-    ys.sort_by(f64::total_cmp);
-    ys.chunks_exact(2).map(|c| c[1]).rev().find(|&y| y < y_max)
+    crossings(points, 0, x)
+        .chunks_exact(2)
+        .map(|c| c[1])
+        .rev()
+        .find(|&y| y < y_max)
 }
 
 /// The top of the outline above `x` (largest y inside), if any.
 pub fn top_at(points: &[[f64; 2]], x: f64) -> Option<f64> {
-    let n = points.len();
-    let mut best: Option<f64> = None;
-    for i in 0..n {
-        let a = points[i];
-        let b = points[(i + 1) % n];
-        let (lo, hi) = if a[0] < b[0] { (a, b) } else { (b, a) };
-        if x >= lo[0] && x < hi[0] {
-            let t = (x - lo[0]) / (hi[0] - lo[0]);
-            let y = lo[1] + t * (hi[1] - lo[1]);
-            best = Some(best.map_or(y, |v: f64| v.max(y)));
-        }
-    }
-    best
+    crossings(points, 0, x).last().copied()
 }
 
 /// Steps per armpit-to-top height in which the neck is followed down.
