@@ -282,6 +282,22 @@ mod tests {
 
     const TOL: f64 = crate::check::tol::ROUNDING;
 
+    /// Each edge once, both ways: two triangles sharing the edge 1-2 (a
+    /// mutation sample found the interior of the harmonic map untested
+    /// where the mean of the boundary is the origin, so neighbours that
+    /// were never added passed).
+    #[test]
+    fn neighbours_are_the_edges_both_ways_once() {
+        let mut n = neighbours(4, &[[0, 1, 2], [2, 1, 3]]);
+        for l in &mut n {
+            l.sort_unstable();
+        }
+        assert_eq!(
+            n,
+            vec![vec![1, 2], vec![0, 2, 3], vec![0, 1, 3], vec![1, 2]]
+        );
+    }
+
     fn square() -> DiskMapping {
         // side 2, so that an edge parameter and an arc length differ
         let poly = vec![[1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [-1.0, -1.0]];
