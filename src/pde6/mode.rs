@@ -361,3 +361,26 @@ impl Mode {
         s
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The series basis is the fundamental system at u = 1/2 (its doc):
+    /// there phi_0 = 1 and phi_1..phi_5 = 0, in every regime. Any basis of
+    /// the solution space solves the same conditions, so the mode checks
+    /// could not see the expansion point move (a mutation sample:
+    /// `2u - 1` -> `2u + 1`, the system at u = -1/2, survived them).
+    #[test]
+    fn the_series_basis_is_the_fundamental_system_at_one_half() {
+        for a in [1e-3, -1e-3, 0.0] {
+            let b = ModeBasis::new(a, 1);
+            assert!(b.q < Q_SERIES, "{b:?}");
+            let phi = b.eval_series(0.5);
+            assert_eq!(phi[0], 1.0, "a = {a}: {phi:?}");
+            for (k, v) in phi.iter().enumerate().skip(1) {
+                assert_eq!(*v, 0.0, "a = {a}: phi_{k} = {v}");
+            }
+        }
+    }
+}
