@@ -115,10 +115,10 @@ pub fn top_at(points: &[[f64; 2]], x: f64) -> Option<f64> {
 /// Steps per armpit-to-top height in which the neck is followed down.
 pub const NECK_STEPS: f64 = 400.0;
 
-/// The neck base: the neck (`(width, height)`) is followed down in steps
-/// of `d` / [`NECK_STEPS`], not below `floor`, while its width (`width`,
-/// `None` off the outline) stays under [`NECK_FLARE`](super::segment::NECK_FLARE) times the neck's;
-/// where it stops, the crossing is found by bisection and the base is put
+/// The neck base: the neck is followed down from its narrowest height
+/// `top` in steps of `d` / [`NECK_STEPS`], not below `floor`, while it is
+/// `narrow` (the segmentation's test: the width under
+/// `segment::NECK_FLARE` times the neck's); where it stops, the crossing is found by bisection and the base is put
 /// one step above it. The base is then a continuous function of the
 /// drawing: the last whole step above the crossing (the rule before) sat
 /// anywhere from 0 to 1 step above it, and a base moved one step down
@@ -126,10 +126,9 @@ pub const NECK_STEPS: f64 = 400.0;
 /// the height on the corpus drawings) turned t_pose's side error from
 /// 1.51 to 2.14 % and tripled the creases of long_legs and arms_low
 /// (docs/drawing-corpus.md, sixth measurement).
-pub fn neck_base(width: impl Fn(f64) -> Option<f64>, neck: (f64, f64), floor: f64, d: f64) -> f64 {
+pub fn neck_base(narrow: impl Fn(f64) -> bool, top: f64, floor: f64, d: f64) -> f64 {
     let step = d / NECK_STEPS;
-    let narrow = |y: f64| matches!(width(y), Some(w) if w < super::segment::NECK_FLARE * neck.0);
-    let mut base = neck.1;
+    let mut base = top;
     while base - step > floor {
         if !narrow(base - step) {
             let (mut lo, mut hi) = (base - step, base);
@@ -141,7 +140,7 @@ pub fn neck_base(width: impl Fn(f64) -> Option<f64>, neck: (f64, f64), floor: f6
                     lo = m;
                 }
             }
-            return (hi + step).min(neck.1);
+            return (hi + step).min(top);
         }
         base -= step;
     }
@@ -153,7 +152,8 @@ mod tests {
     use super::*;
 
     /// Slices used by the tests: as many as the segmentation uses.
-    const SLICES: usize = crate::sketch::segment::LANDMARK_SLICES;
+    /// As many as the segmentation uses (`segment::LANDMARK_SLICES`).
+    const SLICES: usize = 600;
 
     /// Two legs joined above y = 3, the gap between them a wedge 1 wide at
     /// the ground closing to a point at (1.5, 3), all leaning by `lean` in
@@ -225,8 +225,7 @@ mod tests {
         let step = d / NECK_STEPS;
         for k in 0..10 {
             let y_s = 0.5 + step * k as f64 / 10.0;
-            let width = |y: f64| Some(if y > y_s { 1.0 } else { 10.0 });
-            let base = neck_base(width, (1.0, 1.0), 0.0, d);
+            let base = neck_base(|y| y > y_s, 1.0, 0.0, d);
             let err = (base - (y_s + step)).abs();
             assert!(
                 err < crate::check::tol::ROUNDING * d,
@@ -234,7 +233,7 @@ mod tests {
             );
         }
         // no crossing above the floor: the base stops at the floor
-        let base = neck_base(|_| Some(1.0), (1.0, 1.0), 0.5, d);
+        let base = neck_base(|_| true, 1.0, 0.5, d);
         assert!(base > 0.5 && base - 0.5 <= step, "{base}");
     }
 

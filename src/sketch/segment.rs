@@ -235,7 +235,8 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
         ));
     }
-    let base = neck_base(width, neck, ya + 2.0 * GAP_FRACTION * h, d);
+    let narrow = |y: f64| matches!(width(y), Some(w) if w < NECK_FLARE * neck.0);
+    let base = neck_base(narrow, neck.1, ya + 2.0 * GAP_FRACTION * h, d);
     Ok(Landmarks {
         y_min: yr[0],
         y_max: yr[1],
