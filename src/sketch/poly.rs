@@ -118,8 +118,8 @@ pub const NECK_STEPS: f64 = 400.0;
 /// The neck base: the neck is followed down from its narrowest height
 /// `top` in steps of `d` / [`NECK_STEPS`], not below `floor`, while it is
 /// `narrow` (the segmentation's test: the width under
-/// `segment::NECK_FLARE` times the neck's); where it stops, the crossing is found by bisection and the base is put
-/// one step above it. The base is then a continuous function of the
+/// `segment::NECK_FLARE` times the neck's); where it stops, the crossing
+/// is found by bisection and the base is put one step above it. The base is then a continuous function of the
 /// drawing: the last whole step above the crossing (the rule before) sat
 /// anywhere from 0 to 1 step above it, and a base moved one step down
 /// into the fillet where a drawn neck meets the shoulder line (0.06 % of
@@ -152,8 +152,7 @@ mod tests {
     use super::*;
 
     /// Slices used by the tests: as many as the segmentation uses.
-    /// As many as the segmentation uses (`segment::LANDMARK_SLICES`).
-    const SLICES: usize = 600;
+    const SLICES: usize = crate::sketch::segment::LANDMARK_SLICES;
 
     /// Two legs joined above y = 3, the gap between them a wedge 1 wide at
     /// the ground closing to a point at (1.5, 3), all leaning by `lean` in
