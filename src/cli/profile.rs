@@ -1,6 +1,7 @@
 //! `pdesculpt profile`: outlines of a view.
 //!
-//! * `profile extract MESH --view front|side|top -o OUT.svg [--resolution N]`
+//! * `profile extract MESH --view front|side|top -o OUT.svg [--resolution N]
+//!   [--group NAME]...`
 //! * `profile check SKETCH.svg|SKETCH.json --view V [--tolerance T]`: sizes
 //!   in metres (the drawing's physical size; JSON sketches are metres)
 //!
@@ -69,6 +70,11 @@ pub struct ExtractArgs {
     /// outline is within one pixel of the exact one), at most 8192.
     #[arg(long, default_value_t = OutlineOptions::default().resolution)]
     pub resolution: usize,
+    /// Outline only the triangles of this OBJ group (repeat for several;
+    /// default: all). MakeHuman's `base.obj` needs `--group body`: its other
+    /// groups are hidden helpers (a skirt, tights, hair, joints).
+    #[arg(long = "group", value_name = "NAME")]
+    pub groups: Vec<String>,
 }
 
 #[derive(clap::Args, Debug)]
@@ -118,7 +124,8 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
         bail!("{}: the output must be an .svg file", a.output.display());
     }
     super::outputs::check(&[("MESH", &a.mesh)], &[("-o", &a.output)])?;
-    let mesh = io::read(&a.mesh)?;
+    let mesh = select_groups(io::read(&a.mesh)?, &a.groups)
+        .with_context(|| format!("{}", a.mesh.display()))?;
     let opts = OutlineOptions {
         resolution: a.resolution,
         ..OutlineOptions::default()
@@ -141,6 +148,48 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
         super::print_json(&v)?;
     }
     Ok(0)
+}
+
+/// The triangles of the named groups (all of the mesh when none is named;
+/// then a mesh of several groups gets a note on stderr naming them).
+fn select_groups(
+    mesh: pdesculpt::mesh::Mesh,
+    names: &[String],
+) -> anyhow::Result<pdesculpt::mesh::Mesh> {
+    if names.is_empty() {
+        if mesh.groups.len() > 1 {
+            eprintln!(
+                "note: outlining all {} groups of the mesh; pass --group NAME to outline only some ({})",
+                mesh.groups.len(),
+                abbreviate(&mesh.groups)
+            );
+        }
+        return Ok(mesh);
+    }
+    let mut wanted = Vec::new();
+    for n in names {
+        let Some(g) = mesh.groups.iter().position(|x| x == n) else {
+            bail!(
+                "no group '{n}' in the mesh; its groups: {}",
+                abbreviate(&mesh.groups)
+            );
+        };
+        wanted.push(g as u32);
+    }
+    let keep: Vec<bool> = mesh.tri_group.iter().map(|g| wanted.contains(g)).collect();
+    if !keep.contains(&true) {
+        bail!("the groups {} have no triangles", names.join(", "));
+    }
+    Ok(mesh.filter_triangles(&keep).0)
+}
+
+/// At most eight names, then how many more.
+fn abbreviate(names: &[String]) -> String {
+    let shown: Vec<&str> = names.iter().take(8).map(String::as_str).collect();
+    match names.len().saturating_sub(8) {
+        0 => shown.join(", "),
+        more => format!("{}, and {more} more", shown.join(", ")),
+    }
 }
 
 fn check(a: CheckArgs, json: bool) -> anyhow::Result<i32> {

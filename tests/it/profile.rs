@@ -665,3 +665,99 @@ fn cli_extract_and_check() {
     );
     std::fs::remove_dir_all(&d).ok();
 }
+
+/// `profile extract --group` outlines only the named OBJ groups (MakeHuman's
+/// base mesh hides a skirt and tights in helper groups); without it a
+/// mesh of several groups is outlined whole, with a note naming them.
+#[test]
+fn cli_extract_outlines_only_the_named_groups() {
+    let d = tmpdir("profile-groups");
+    let obj = d.join("two.obj");
+    let cube = |x0: f64, off: usize| {
+        let mut s = String::new();
+        for (x, y, z) in [
+            (0, 0, 0),
+            (1, 0, 0),
+            (1, 2, 0),
+            (0, 2, 0),
+            (0, 0, 1),
+            (1, 0, 1),
+            (1, 2, 1),
+            (0, 2, 1),
+        ] {
+            s += &format!("v {} {y} {z}\n", x0 + x as f64);
+        }
+        for f in [
+            [1, 3, 2],
+            [1, 4, 3],
+            [5, 6, 7],
+            [5, 7, 8],
+            [1, 2, 6],
+            [1, 6, 5],
+            [4, 8, 7],
+            [4, 7, 3],
+            [1, 5, 8],
+            [1, 8, 4],
+            [2, 3, 7],
+            [2, 7, 6],
+        ] {
+            s += &format!("f {} {} {}\n", f[0] + off, f[1] + off, f[2] + off);
+        }
+        s
+    };
+    std::fs::write(
+        &obj,
+        format!("g body\n{}g helper\n{}", cube(0.0, 0), cube(0.5, 8)),
+    )
+    .expect("write");
+    let o = obj.to_str().expect("utf8");
+    let svg = d.join("front.svg");
+    let s = svg.to_str().expect("utf8");
+    let width = |extra: &[&str]| {
+        let mut args = vec![
+            "--json",
+            "profile",
+            "extract",
+            o,
+            "--view",
+            "front",
+            "-o",
+            s,
+            "--resolution",
+            "200",
+        ];
+        args.extend_from_slice(extra);
+        let out = pdesculpt(&args);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+        (
+            v["width"].as_f64().unwrap_or(0.0),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // the outer outline of both boxes spans x 0..1.5; the body alone 0..1
+    let px = 1.5 / 200.0;
+    let (all, note) = width(&[]);
+    assert!((all - 1.5).abs() <= px, "all groups: width {all}");
+    assert!(
+        note.contains("--group") && note.contains("helper"),
+        "{note}"
+    );
+    let (body, quiet) = width(&["--group", "body"]);
+    assert!((body - 1.0).abs() <= px, "body: width {body}");
+    assert!(!quiet.contains("--group"), "{quiet}");
+    let never = d.join("never.svg");
+    let n = never.to_str().expect("utf8");
+    assert_clear_error(
+        &pdesculpt(&[
+            "profile", "extract", o, "--view", "front", "-o", n, "--group", "bdy",
+        ]),
+        "no group 'bdy'",
+    );
+    assert!(!never.exists(), "no output on failure");
+    std::fs::remove_dir_all(&d).ok();
+}
