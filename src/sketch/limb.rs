@@ -13,6 +13,10 @@
 //! by equal fractions of their lengths. A pair's midpoint is a point of the
 //! arm's central curve, half its distance the arm's half width there.
 //!
+//! Fingers drawn apart would pair finger with finger (the arm then
+//! follows each finger: wiggles and folds), so the walk's notches are
+//! closed first into a mitten ([`HAND_NOTCH_MOUTH`]).
+//!
 //! Nothing is assumed about the arm's direction: a T-pose arm (horizontal),
 //! an A-pose arm and an arm hanging 75 degrees below the horizontal are
 //! traced the same way. The tracer fails (in drawing terms) when the arm's
@@ -113,6 +117,14 @@ pub fn trace_arm(
             armpit[0], armpit[1], reach
         )));
     }
+    // fingers: the notches between them are closed (a mitten), so that
+    // the two sides pair hand to hand, not finger to finger
+    let walk = bridge_notches(&walk[..=is], front, HAND_NOTCH_MOUTH * cut);
+    let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
+    let it = (0..walk.len())
+        .max_by(|&i, &j| d[i].total_cmp(&d[j]))
+        .unwrap_or(0);
+    let is = walk.len() - 1;
     let inner = resample_open(&walk[..=it], TRACE_SAMPLES);
     let mut outer_walk: Vec<[f64; 2]> = walk[it..=is].to_vec();
     outer_walk.reverse();
@@ -138,6 +150,48 @@ pub fn trace_arm(
         half_width,
         chord,
     })
+}
+
+/// A notch of a traced arm's outline (between two fingers, or a thumb
+/// and the hand) is closed when its mouth is narrower than this fraction
+/// of the shoulder cut (the arm's width where it leaves the body): a
+/// finger's gap is a small part of it, the arm across its wrist (about
+/// half of it) is material, which no bridge may cross anyway.
+pub const HAND_NOTCH_MOUTH: f64 = 0.5;
+
+/// The open polyline `walk` (part of the closed outline `outline`) with
+/// its notches closed: from each point, a bridge to the farthest later
+/// point that is nearer than `mouth`, where the walk between them is more
+/// than twice as long as the bridge (a notch, not a straight side) and
+/// the bridge lies outside the outline (it crosses no edge of the walk and
+/// its midpoint is outside: a gap, not across a finger or the wrist).
+fn bridge_notches(walk: &[[f64; 2]], outline: &[[f64; 2]], mouth: f64) -> Vec<[f64; 2]> {
+    let m = walk.len();
+    let mut cum = vec![0.0; m];
+    for k in 1..m {
+        cum[k] = cum[k - 1] + dist(walk[k - 1], walk[k]);
+    }
+    let bridge = |i: usize, j: usize| -> bool {
+        let c = dist(walk[i], walk[j]);
+        if !(c < mouth && cum[j] - cum[i] > 2.0 * c) {
+            return false;
+        }
+        let mid = [
+            0.5 * (walk[i][0] + walk[j][0]),
+            0.5 * (walk[i][1] + walk[j][1]),
+        ];
+        !crate::polygon::point_in_polygon(outline, mid)
+            && (i + 1..j - 1)
+                .all(|k| !crate::polygon::segments_cross(walk[i], walk[j], walk[k], walk[k + 1]))
+    };
+    let mut out = vec![walk[0]];
+    let mut i = 0;
+    while i + 1 < m {
+        let next = (i + 2..m).rev().find(|&j| bridge(i, j)).unwrap_or(i + 1);
+        out.push(walk[next]);
+        i = next;
+    }
+    out
 }
 
 /// The arm's part: key sections along the traced central curve from
@@ -303,6 +357,50 @@ fn tilted(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A hand of three fingers (tips at x = 6, 5.5, 6, gaps 0.4 wide and
+    /// 1.5-2 deep): its notches close into a mitten; the bottoms of the
+    /// gaps are gone, the fingertips stay. A strip's two long sides, 0.4
+    /// apart across material, are never bridged.
+    #[test]
+    fn notches_between_fingers_close_and_material_is_never_bridged() {
+        let hand = [
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [6.0, 0.4],
+            [4.0, 0.4],
+            [4.0, 0.8],
+            [5.5, 0.8],
+            [5.5, 1.2],
+            [4.0, 1.2],
+            [4.0, 1.6],
+            [6.0, 1.6],
+            [6.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let mitten = bridge_notches(&hand, &hand, 1.0);
+        assert!(mitten.len() < hand.len(), "{mitten:?}");
+        assert!(
+            mitten[1..mitten.len() - 1].iter().all(|p| p[0] >= 5.5),
+            "a gap's bottom is left: {mitten:?}"
+        );
+        assert_eq!(
+            mitten,
+            [
+                [0.0, 0.0],
+                [6.0, 0.0],
+                [6.0, 0.4],
+                [5.5, 1.2],
+                [6.0, 1.6],
+                [6.0, 2.0],
+                [0.0, 2.0]
+            ]
+        );
+        // a mouth narrower than the gaps closes nothing
+        assert_eq!(bridge_notches(&hand, &hand, 0.3), hand.to_vec());
+        let strip = [[0.0, 0.0], [6.0, 0.0], [6.0, 0.4], [0.0, 0.4]];
+        assert_eq!(bridge_notches(&strip, &strip, 1.0), strip.to_vec());
+    }
 
     /// A mirrored arm's shoulder section is the mirror image: both chords
     /// turn toward +y and stop at the vertical (before, a chord pointing

@@ -675,6 +675,29 @@ fn a_real_body_s_silhouettes_build_without_a_fin() {
         "side error {:.2} % of the height",
         100.0 * side_err
     );
+    // the hands' fingers: their notches closed, the arms follow the hand,
+    // not each finger (`sketch::limb`'s mitten)
+    for part in b
+        .report
+        .quality
+        .parts
+        .iter()
+        .filter(|p| p.part.starts_with("arm"))
+    {
+        let front_err = part
+            .views
+            .iter()
+            .find(|v| v.view == "front")
+            .expect("front")
+            .max_rel;
+        assert!(
+            front_err <= REAL_BODY_ARM_FRONT && part.creased_rel <= REAL_BODY_ARM_CREASED,
+            "{}: front error {:.2} % of the height, creased length {:.3} heights",
+            part.part,
+            100.0 * front_err,
+            part.creased_rel
+        );
+    }
 }
 
 /// Beside the torso: farther from the body's axis than this fraction of
@@ -683,6 +706,12 @@ const ARM_BESIDE: f64 = 0.114;
 /// The real body's side error bound in this test: measured 1.9 % of the
 /// height, 11.4 % with the fin.
 const REAL_BODY_SIDE: f64 = 0.025;
+/// The real body's arms (with fingers): front error measured 1.28 and
+/// 1.20 % of the height, 2.71 and 2.97 % with each finger traced.
+const REAL_BODY_ARM_FRONT: f64 = 0.015;
+/// Their creased length: 0.17 and 0.19 heights measured, 0.34 and 0.71
+/// with each finger traced (the bound of the sketch report's warnings).
+const REAL_BODY_ARM_CREASED: f64 = 0.3;
 
 /// How far a profile error (a fraction of the height) may move when the
 /// front drawing is 0.1 % wider or narrower. Measured since the neck base
