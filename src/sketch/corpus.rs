@@ -198,89 +198,18 @@ fn path_data(style: Style, k: &[[f64; 2]]) -> String {
     let mut i = 0;
     let mut cur = k[0];
     while i < n {
-        let rel = |p: [f64; 2], cur: [f64; 2]| [p[0] - cur[0], p[1] - cur[1]];
         match style {
             Style::InkscapeMm | Style::Inkscape092 | Style::Cm => {
                 let (c1, c2) = ctrl(i);
                 let p = at(i + 1);
-                match (style, i % 4) {
-                    (Style::InkscapeMm, _) => {
-                        let (a, b, q) = (rel(c1, cur), rel(c2, cur), rel(p, cur));
-                        let _ = write!(
-                            d,
-                            " c {} {} {} {} {} {}",
-                            num(a[0]),
-                            num(a[1]),
-                            num(b[0]),
-                            num(b[1]),
-                            num(q[0]),
-                            num(q[1])
-                        );
-                    }
-                    (Style::Inkscape092, 3) => {
-                        let _ = write!(d, " L {} {}", num(p[0]), num(p[1]));
-                    }
-                    (Style::Inkscape092, _) => {
-                        let _ = write!(
-                            d,
-                            " C {},{} {},{} {},{}",
-                            num(c1[0]),
-                            num(c1[1]),
-                            num(c2[0]),
-                            num(c2[1]),
-                            num(p[0]),
-                            num(p[1])
-                        );
-                    }
-                    (_, 0) | (_, 2) => {
-                        let q = rel(p, cur);
-                        let _ = write!(d, " l {} {}", num(q[0]), num(q[1]));
-                    }
-                    _ => {
-                        // smooth cubic: its first control point mirrors the
-                        // previous command's (a line's: the current point)
-                        let (b, q) = (rel(c2, cur), rel(p, cur));
-                        let _ = write!(
-                            d,
-                            " s {} {} {} {}",
-                            num(b[0]),
-                            num(b[1]),
-                            num(q[0]),
-                            num(q[1])
-                        );
-                    }
-                }
+                cubic_command(&mut d, style, i, [c1, c2, p], cur);
                 cur = p;
                 i += 1;
             }
             Style::PxNoViewBox | Style::Inches => {
-                // an arc through three knots, or lines between them
-                let (p1, p2) = (at(i + 1), at(i + 2));
-                let arc = arc_through(cur, p1, p2);
-                match arc {
-                    Some((r, sweep)) if i + 2 <= n && i % 6 != 4 => {
-                        let _ = write!(
-                            d,
-                            " A {} {} 0 0 {} {} {}",
-                            num(r),
-                            num(r),
-                            sweep as u8,
-                            num(p2[0]),
-                            num(p2[1])
-                        );
-                        cur = p2;
-                        i += 2;
-                    }
-                    _ => {
-                        if style == Style::Inches && (p1[1] - cur[1]).abs() < 1e-12 {
-                            let _ = write!(d, " H {}", num(p1[0]));
-                        } else {
-                            let _ = write!(d, " L {} {}", num(p1[0]), num(p1[1]));
-                        }
-                        cur = p1;
-                        i += 1;
-                    }
-                }
+                let step = arc_or_line(&mut d, style, i, n, [cur, at(i + 1), at(i + 2)]);
+                cur = at(i + step);
+                i += step;
             }
             Style::Points => {
                 // a quadratic whose control point is the cubic's mean
@@ -302,6 +231,101 @@ fn path_data(style: Style, k: &[[f64; 2]]) -> String {
     }
     d.push_str(" Z");
     d
+}
+
+/// The command from `cur` to knot `i + 1` (controls `c1`, `c2`, end `p`)
+/// in one of the cubic styles: relative cubics (Inkscape mm), absolute
+/// cubics with every fourth a line (Inkscape 0.92), or relative lines and
+/// smooth cubics (cm).
+fn cubic_command(
+    d: &mut String,
+    style: Style,
+    i: usize,
+    [c1, c2, p]: [[f64; 2]; 3],
+    cur: [f64; 2],
+) {
+    let rel = |q: [f64; 2]| [q[0] - cur[0], q[1] - cur[1]];
+    match (style, i % 4) {
+        (Style::InkscapeMm, _) => {
+            let (a, b, q) = (rel(c1), rel(c2), rel(p));
+            let _ = write!(
+                d,
+                " c {} {} {} {} {} {}",
+                num(a[0]),
+                num(a[1]),
+                num(b[0]),
+                num(b[1]),
+                num(q[0]),
+                num(q[1])
+            );
+        }
+        (Style::Inkscape092, 3) => {
+            let _ = write!(d, " L {} {}", num(p[0]), num(p[1]));
+        }
+        (Style::Inkscape092, _) => {
+            let _ = write!(
+                d,
+                " C {},{} {},{} {},{}",
+                num(c1[0]),
+                num(c1[1]),
+                num(c2[0]),
+                num(c2[1]),
+                num(p[0]),
+                num(p[1])
+            );
+        }
+        (_, 0) | (_, 2) => {
+            let q = rel(p);
+            let _ = write!(d, " l {} {}", num(q[0]), num(q[1]));
+        }
+        _ => {
+            // smooth cubic: its first control point mirrors the previous
+            // command's (a line's: the current point)
+            let (b, q) = (rel(c2), rel(p));
+            let _ = write!(
+                d,
+                " s {} {} {} {}",
+                num(b[0]),
+                num(b[1]),
+                num(q[0]),
+                num(q[1])
+            );
+        }
+    }
+}
+
+/// An arc through the current point `cur` and knots `p1`, `p2`, or a line
+/// to `p1` (a horizontal one as `H` in the inches style); returns how many
+/// knots it advanced (2 or 1).
+fn arc_or_line(
+    d: &mut String,
+    style: Style,
+    i: usize,
+    n: usize,
+    [cur, p1, p2]: [[f64; 2]; 3],
+) -> usize {
+    match arc_through(cur, p1, p2) {
+        Some((r, sweep)) if i + 2 <= n && i % 6 != 4 => {
+            let _ = write!(
+                d,
+                " A {} {} 0 0 {} {} {}",
+                num(r),
+                num(r),
+                sweep as u8,
+                num(p2[0]),
+                num(p2[1])
+            );
+            2
+        }
+        _ => {
+            if style == Style::Inches && (p1[1] - cur[1]).abs() < 1e-12 {
+                let _ = write!(d, " H {}", num(p1[0]));
+            } else {
+                let _ = write!(d, " L {} {}", num(p1[0]), num(p1[1]));
+            }
+            1
+        }
+    }
 }
 
 /// The circle through `a`, `b`, `c`: (radius, sweep flag for SVG's y-down

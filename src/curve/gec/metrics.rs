@@ -96,12 +96,11 @@ impl<'a> Sampled<'a> {
             }
             t -= step;
         }
-        let c = self.gec.eval_plane(t);
-        let dist = (c[0] - p[0]).powi(2) + (c[1] - p[1]).powi(2);
-        if dist < best_d {
-            best_d = dist;
-            best_t = t;
-        }
+        // the last step is not measured: from the nearest of at least
+        // `MIN_SAMPLES` samples Newton has converged by
+        // `NEWTON_ITERS` (a final measurement never improved on 160,000
+        // points around a 3:1 ellipse, its evolute included; it was dead
+        // code, and two mutants of it survived as equivalent)
         (best_d.sqrt(), best_t)
     }
 
