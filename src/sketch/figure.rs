@@ -165,7 +165,7 @@ pub fn contour(
         .collect();
     let val = |i: usize, j: usize| v[j * nx + i];
     // edges keyed: horizontal (i, j, 0) from (i, j) to (i+1, j); vertical (i, j, 1)
-    let cross = |e: (usize, usize, u8)| -> [f64; 2] {
+    let cross = |e: GridEdge| -> [f64; 2] {
         let (a, b) = match e.2 {
             0 => ((e.0, e.1), (e.0 + 1, e.1)),
             _ => ((e.0, e.1), (e.0, e.1 + 1)),
@@ -175,9 +175,42 @@ pub fn contour(
         let (pa, pb) = (at(a.0, a.1), at(b.0, b.1));
         [pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1])]
     };
-    // each cell gives directed segments with the inside (negative) on the left
-    let mut next: std::collections::HashMap<(usize, usize, u8), (usize, usize, u8)> =
-        std::collections::HashMap::new();
+    let next = cell_links(&val, nx, ny);
+    let loops = trace_loops(&next, cross);
+    let area = crate::polygon::signed_area;
+    let mut best = loops
+        .into_iter()
+        .max_by(|a, b| area(a).abs().total_cmp(&area(b).abs()))?;
+    if area(&best) < 0.0 {
+        best.reverse();
+    }
+    // drop points closer than a hundredth of a cell to their predecessor
+    let mut out: Vec<[f64; 2]> = Vec::with_capacity(best.len());
+    for p in best {
+        if out
+            .last()
+            .is_none_or(|q: &[f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]) > 1e-2 * h)
+        {
+            out.push(p);
+        }
+    }
+    Some(out)
+}
+
+/// An edge of the contour grid: `(i, j, 0)` horizontal from `(i, j)` to
+/// `(i + 1, j)`, `(i, j, 1)` vertical to `(i, j + 1)`.
+type GridEdge = (usize, usize, u8);
+
+/// Marching squares: for each crossed grid edge, the crossed edge the
+/// contour leaves its cell through, directed with the inside (negative
+/// values of `val`) on the left; a saddle cell is joined by the sign of
+/// its centre (the mean of its corners).
+fn cell_links(
+    val: &dyn Fn(usize, usize) -> f64,
+    nx: usize,
+    ny: usize,
+) -> std::collections::HashMap<GridEdge, GridEdge> {
+    let mut next = std::collections::HashMap::new();
     for j in 0..ny - 1 {
         for i in 0..nx - 1 {
             // corners counter-clockwise: (i,j) (i+1,j) (i+1,j+1) (i,j+1)
@@ -188,22 +221,15 @@ pub fn contour(
             let crossed: Vec<usize> = (0..4)
                 .filter(|&k| inside(k) != inside((k + 1) % 4))
                 .collect();
-            // directed: leave through edges where the inside corner comes second
-            // (going counter-clockwise around the cell, inside on the left of
-            // the contour means entering where corner k is inside and k+1 out)
-            let pair = |from: usize, to: usize, m: &mut std::collections::HashMap<_, _>| {
-                m.insert(e[from], e[to]);
+            // directed: going counter-clockwise around the cell, inside on
+            // the left of the contour means entering on the edge whose
+            // start corner is outside
+            let mut link = |a: usize, b: usize| {
+                let (a, b) = if !inside(a) { (a, b) } else { (b, a) };
+                next.insert(e[a], e[b]);
             };
             match crossed.len() {
-                2 => {
-                    let (a, b) = (crossed[0], crossed[1]);
-                    // enter on the edge whose start corner is outside
-                    if !inside(a) {
-                        pair(a, b, &mut next);
-                    } else {
-                        pair(b, a, &mut next);
-                    }
-                }
+                2 => link(crossed[0], crossed[1]),
                 4 => {
                     let centre = 0.25 * c.iter().sum::<f64>();
                     // corners 0 and 2 share a sign; join around the centre's sign
@@ -214,17 +240,26 @@ pub fn contour(
                         ((3, 0), (1, 2))
                     };
                     for (a, b) in [p1, p2] {
-                        let (a, b) = if !inside(a) { (a, b) } else { (b, a) };
-                        pair(a, b, &mut next);
+                        link(a, b);
                     }
                 }
                 _ => {}
             }
         }
     }
+    next
+}
+
+/// The closed loops of the links, from the smallest edge key up, each as
+/// its edges' crossing points (`cross`); loops of fewer than 3 points are
+/// dropped.
+fn trace_loops(
+    next: &std::collections::HashMap<GridEdge, GridEdge>,
+    cross: impl Fn(GridEdge) -> [f64; 2],
+) -> Vec<Vec<[f64; 2]>> {
     let mut loops: Vec<Vec<[f64; 2]>> = Vec::new();
     let mut seen = std::collections::HashSet::new();
-    let mut keys: Vec<(usize, usize, u8)> = next.keys().copied().collect();
+    let mut keys: Vec<GridEdge> = next.keys().copied().collect();
     keys.sort_unstable();
     for start in keys {
         if seen.contains(&start) {
@@ -246,29 +281,7 @@ pub fn contour(
             loops.push(lp);
         }
     }
-    let area = |p: &[[f64; 2]]| {
-        let n = p.len();
-        0.5 * (0..n)
-            .map(|i| p[i][0] * p[(i + 1) % n][1] - p[(i + 1) % n][0] * p[i][1])
-            .sum::<f64>()
-    };
-    let mut best = loops
-        .into_iter()
-        .max_by(|a, b| area(a).abs().total_cmp(&area(b).abs()))?;
-    if area(&best) < 0.0 {
-        best.reverse();
-    }
-    // drop points closer than a hundredth of a cell to their predecessor
-    let mut out: Vec<[f64; 2]> = Vec::with_capacity(best.len());
-    for p in best {
-        if out
-            .last()
-            .is_none_or(|q: &[f64; 2]| (p[0] - q[0]).hypot(p[1] - q[1]) > 1e-2 * h)
-        {
-            out.push(p);
-        }
-    }
-    Some(out)
+    loops
 }
 
 /// Unit vector at `deg` degrees below the horizontal, pointing to `side`
