@@ -41,6 +41,9 @@ pub struct Quadruped {
     pub trunk: bool,
 }
 
+/// The figures' blend radius, as a fraction of the animal's length.
+const BLEND: f64 = 0.02;
+
 impl Quadruped {
     /// A dog.
     pub fn dog() -> Quadruped {
@@ -62,12 +65,18 @@ impl Quadruped {
 
     /// The lateral and head-on figures, feet at y = 0.
     pub fn figures(&self) -> (Figure, Figure) {
+        let (lat, neck_top, head_y) = self.lateral();
+        (lat, self.head_on(neck_top, head_y))
+    }
+
+    /// The lateral figure, the height of its neck's top and its head's
+    /// centre (the head-on view's neck and head sit at those heights).
+    fn lateral(&self) -> (Figure, f64, f64) {
         let s = |v: f64| v * self.length;
         let yb = self.legs + self.body;
         let half = 0.5 - self.body;
-        let blend = s(0.02);
         let mut lat = Figure {
-            blend,
+            blend: s(BLEND),
             ..Figure::default()
         };
         lat.shapes.push(Shape::Capsule {
@@ -76,32 +85,7 @@ impl Quadruped {
             ra: s(self.body),
             rb: s(self.body),
         });
-        for (k, x) in [
-            (0usize, half - 0.3 * self.body),
-            (1, -half + 0.3 * self.body),
-        ] {
-            let r = self.leg_radius[k];
-            let len = if k == 1 { self.back_leg_scale } else { 1.0 };
-            let top = self.legs * len + 0.5 * self.body;
-            let xs: Vec<f64> = if self.visible_legs == 4 {
-                vec![x - 1.3 * r, x + 1.3 * r]
-            } else {
-                vec![x]
-            };
-            for (j, &xl) in xs.iter().enumerate() {
-                let step = if xs.len() == 2 {
-                    (j as f64 - 0.5) * 2.0 * r
-                } else {
-                    0.0
-                };
-                lat.shapes.push(Shape::Capsule {
-                    a: [s(xl), s(top)],
-                    b: [s(xl + step), s(0.6 * r)],
-                    ra: s(r),
-                    rb: s(0.6 * r),
-                });
-            }
-        }
+        self.lateral_legs(&mut lat);
         let (sa, ca) = self.neck_angle_deg.to_radians().sin_cos();
         let n0 = [half + 0.2 * self.body, yb + 0.3 * self.body];
         let n1 = [n0[0] + self.neck * ca, n0[1] + self.neck * sa];
@@ -142,9 +126,49 @@ impl Quadruped {
                 rb: s(0.015),
             });
         }
-        // head-on: body, legs apart in z, neck and head on top
+        (lat, n1[1], hc[1])
+    }
+
+    /// The lateral view's legs: front and back, each one capsule, or two
+    /// side by side (stepping apart) when four legs are visible.
+    fn lateral_legs(&self, lat: &mut Figure) {
+        let s = |v: f64| v * self.length;
+        let half = 0.5 - self.body;
+        for (k, x) in [
+            (0usize, half - 0.3 * self.body),
+            (1, -half + 0.3 * self.body),
+        ] {
+            let r = self.leg_radius[k];
+            let len = if k == 1 { self.back_leg_scale } else { 1.0 };
+            let top = self.legs * len + 0.5 * self.body;
+            let xs: Vec<f64> = if self.visible_legs == 4 {
+                vec![x - 1.3 * r, x + 1.3 * r]
+            } else {
+                vec![x]
+            };
+            for (j, &xl) in xs.iter().enumerate() {
+                let step = if xs.len() == 2 {
+                    (j as f64 - 0.5) * 2.0 * r
+                } else {
+                    0.0
+                };
+                lat.shapes.push(Shape::Capsule {
+                    a: [s(xl), s(top)],
+                    b: [s(xl + step), s(0.6 * r)],
+                    ra: s(r),
+                    rb: s(0.6 * r),
+                });
+            }
+        }
+    }
+
+    /// Head-on: body, legs apart in z, the neck up to `neck_top` and the
+    /// head centred at `head_y` (the lateral view's heights).
+    fn head_on(&self, neck_top: f64, head_y: f64) -> Figure {
+        let s = |v: f64| v * self.length;
+        let yb = self.legs + self.body;
         let mut on = Figure {
-            blend,
+            blend: s(BLEND),
             ..Figure::default()
         };
         on.shapes.push(Shape::Ellipse {
@@ -164,24 +188,24 @@ impl Quadruped {
         }
         on.shapes.push(Shape::Capsule {
             a: [0.0, s(yb)],
-            b: [0.0, s(n1[1])],
+            b: [0.0, s(neck_top)],
             ra: s(0.5 * self.body),
             rb: s(0.4 * self.body),
         });
         on.shapes.push(Shape::Ellipse {
-            c: [0.0, s(hc[1])],
+            c: [0.0, s(head_y)],
             r: [s(0.55 * self.head), s(0.55 * self.head)],
             turn: 0.0,
         });
         if self.trunk {
             on.shapes.push(Shape::Capsule {
-                a: [0.0, s(hc[1])],
+                a: [0.0, s(head_y)],
                 b: [0.0, s(0.35 * self.legs)],
                 ra: s(0.3 * self.head),
                 rb: s(0.12 * self.head),
             });
         }
-        (lat, on)
+        on
     }
 
     /// The traced lateral and head-on outlines.

@@ -17,7 +17,6 @@ const FILES_OVER: &[(&str, usize)] = &[];
 
 const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     // issue 28 (draw, merged 2026-11-27): to split
-    ("src/sketch/figure_animal.rs", "figures", 122),
     ("src/character/log/stroke.rs", "new", 157),
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
