@@ -77,6 +77,13 @@ pub struct PartQuality {
     pub creased_rel: f64,
 }
 
+impl PartQuality {
+    /// The measures of view `name` (`"front"`, `"side"`), if measured.
+    pub fn view(&self, name: &str) -> Option<&ViewQuality> {
+        self.views.iter().find(|v| v.view == name)
+    }
+}
+
 /// Everything measured.
 #[derive(Clone, Debug, Serialize, PartialEq)]
 pub struct Quality {

@@ -552,16 +552,46 @@ fn makehuman_body_outline_is_one_simple_polygon_of_the_body_height() {
     }
 }
 
+/// OBJ lines of a 1 x 2 x 1 box at x from `x0`, its vertices numbered
+/// from `first + 1` (boxes written one after another in one file).
+fn box_obj(x0: f64, first: usize) -> String {
+    let mut s = String::new();
+    for (x, y, z) in [
+        (0, 0, 0),
+        (1, 0, 0),
+        (1, 2, 0),
+        (0, 2, 0),
+        (0, 0, 1),
+        (1, 0, 1),
+        (1, 2, 1),
+        (0, 2, 1),
+    ] {
+        s += &format!("v {} {y} {z}\n", x0 + x as f64);
+    }
+    for f in [
+        [1, 3, 2],
+        [1, 4, 3],
+        [5, 6, 7],
+        [5, 7, 8],
+        [1, 2, 6],
+        [1, 6, 5],
+        [4, 8, 7],
+        [4, 7, 3],
+        [1, 5, 8],
+        [1, 8, 4],
+        [2, 3, 7],
+        [2, 7, 6],
+    ] {
+        s += &format!("f {} {} {}\n", f[0] + first, f[1] + first, f[2] + first);
+    }
+    s
+}
+
 #[test]
 fn cli_extract_and_check() {
     let d = tmpdir("profile");
     let obj = d.join("box.obj");
-    std::fs::write(
-        &obj,
-        "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 0 0 1\nv 1 0 1\nv 1 2 1\nv 0 2 1\n\
-         f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n",
-    )
-    .expect("write");
+    std::fs::write(&obj, box_obj(0.0, 0)).expect("write");
     let svg = d.join("front.svg");
     let (o, s) = (obj.to_str().expect("utf8"), svg.to_str().expect("utf8"));
     let out = pdesculpt(&[
@@ -673,41 +703,9 @@ fn cli_extract_and_check() {
 fn cli_extract_outlines_only_the_named_groups() {
     let d = tmpdir("profile-groups");
     let obj = d.join("two.obj");
-    let cube = |x0: f64, off: usize| {
-        let mut s = String::new();
-        for (x, y, z) in [
-            (0, 0, 0),
-            (1, 0, 0),
-            (1, 2, 0),
-            (0, 2, 0),
-            (0, 0, 1),
-            (1, 0, 1),
-            (1, 2, 1),
-            (0, 2, 1),
-        ] {
-            s += &format!("v {} {y} {z}\n", x0 + x as f64);
-        }
-        for f in [
-            [1, 3, 2],
-            [1, 4, 3],
-            [5, 6, 7],
-            [5, 7, 8],
-            [1, 2, 6],
-            [1, 6, 5],
-            [4, 8, 7],
-            [4, 7, 3],
-            [1, 5, 8],
-            [1, 8, 4],
-            [2, 3, 7],
-            [2, 7, 6],
-        ] {
-            s += &format!("f {} {} {}\n", f[0] + off, f[1] + off, f[2] + off);
-        }
-        s
-    };
     std::fs::write(
         &obj,
-        format!("g body\n{}g helper\n{}", cube(0.0, 0), cube(0.5, 8)),
+        format!("g body\n{}g helper\n{}", box_obj(0.0, 0), box_obj(0.5, 8)),
     )
     .expect("write");
     let o = obj.to_str().expect("utf8");

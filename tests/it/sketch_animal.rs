@@ -148,7 +148,7 @@ fn corpus_animals_with_a_flat_back_build_with_their_parts() {
             .iter()
             .find(|p| p.part == "body")
             .expect("body");
-        let side = body.views.iter().find(|v| v.view == "side").expect("side");
+        let side = body.view("side").expect("side");
         assert!(
             side.outside_rel <= Bounds::ISSUE.outside,
             "{name}: the body leaves the head-on outline by {:.2} % of the height",

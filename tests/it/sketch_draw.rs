@@ -528,11 +528,7 @@ fn drawn_feet_are_followed_in_the_side_view() {
             .as_ref()
             .unwrap_or_else(|| panic!("{}: {:?}", r.name, r.error));
         for p in q.parts.iter().filter(|p| p.part.starts_with("leg_")) {
-            let side = p
-                .views
-                .iter()
-                .find(|v| v.view == "side")
-                .expect("side view");
+            let side = p.view("side").expect("side view");
             assert!(
                 side.max_rel <= bound,
                 "{} {}: side error {:.2} % of the height",
@@ -664,12 +660,7 @@ fn a_real_body_s_silhouettes_build_without_a_fin() {
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
     assert!((b.report.height_m - 0.1 * h).abs() <= HEIGHT_REL * 0.1 * h);
     let q = &b.report.quality.whole;
-    let side_err = q
-        .views
-        .iter()
-        .find(|v| v.view == "side")
-        .expect("side")
-        .max_rel;
+    let side_err = q.view("side").expect("side").max_rel;
     assert!(
         side_err <= REAL_BODY_SIDE,
         "side error {:.2} % of the height",
@@ -684,12 +675,7 @@ fn a_real_body_s_silhouettes_build_without_a_fin() {
         .iter()
         .filter(|p| p.part.starts_with("arm"))
     {
-        let front_err = part
-            .views
-            .iter()
-            .find(|v| v.view == "front")
-            .expect("front")
-            .max_rel;
+        let front_err = part.view("front").expect("front").max_rel;
         assert!(
             front_err <= REAL_BODY_ARM_FRONT && part.creased_rel <= REAL_BODY_ARM_CREASED,
             "{}: front error {:.2} % of the height, creased length {:.3} heights",
@@ -788,12 +774,7 @@ fn high_shoulders_keep_their_drawn_top() {
         .quality
         .as_ref()
         .unwrap_or_else(|| panic!("{:?}", rows[0].error));
-    let front = q
-        .whole
-        .views
-        .iter()
-        .find(|v| v.view == "front")
-        .expect("a front view");
+    let front = q.whole.view("front").expect("a front view");
     assert!(
         front.max_rel <= Bounds::ISSUE.profile_front,
         "front profile error {:.2} % of the height",
