@@ -119,7 +119,10 @@ pub fn trace_arm(
     }
     // fingers: the notches between them are closed (a mitten), so that
     // the two sides pair hand to hand, not finger to finger
-    let walk = bridge_notches(&walk[..=is], front, HAND_NOTCH_MOUTH * cut);
+    // the walk follows the outline forward for the right arm (side > 0),
+    // backward for the left; the inside is left of a counter-clockwise one
+    let ccw = crate::polygon::signed_area(front) > 0.0;
+    let walk = bridge_notches(&walk[..=is], ccw == (side > 0.0), HAND_NOTCH_MOUTH * cut);
     let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
     let it = (0..walk.len())
         .max_by(|&i, &j| d[i].total_cmp(&d[j]))
@@ -159,28 +162,33 @@ pub fn trace_arm(
 /// half of it) is material, which no bridge may cross anyway.
 pub const HAND_NOTCH_MOUTH: f64 = 0.5;
 
-/// The open polyline `walk` (part of the closed outline `outline`) with
-/// its notches closed: from each point, a bridge to the farthest later
-/// point that is nearer than `mouth`, where the walk between them is more
-/// than twice as long as the bridge (a notch, not a straight side) and
-/// the bridge lies outside the outline (it crosses no edge of the walk and
-/// its midpoint is outside: a gap, not across a finger or the wrist).
-fn bridge_notches(walk: &[[f64; 2]], outline: &[[f64; 2]], mouth: f64) -> Vec<[f64; 2]> {
+/// The open polyline `walk` (part of a closed outline whose inside is on
+/// the walk's left when `inside_left`) with its notches closed: from each
+/// point, a bridge to the farthest later point that is nearer than
+/// `mouth`, where the walk between them is more than twice as long as the
+/// bridge (a notch, not a straight side) and the bridge lies outside the
+/// outline: the loop of the walk and the bridge turns against the inside
+/// (it encloses a gap, not a finger or the wrist; its signed area from
+/// prefix sums, O(1) per candidate) and the bridge crosses no edge of the
+/// walk between its ends.
+fn bridge_notches(walk: &[[f64; 2]], inside_left: bool, mouth: f64) -> Vec<[f64; 2]> {
     let m = walk.len();
-    let mut cum = vec![0.0; m];
+    let o = walk[0];
+    let rel = |k: usize| [walk[k][0] - o[0], walk[k][1] - o[1]];
+    let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+    let (mut cum, mut twice_area) = (vec![0.0; m], vec![0.0; m]);
     for k in 1..m {
         cum[k] = cum[k - 1] + dist(walk[k - 1], walk[k]);
+        twice_area[k] = twice_area[k - 1] + cross(rel(k - 1), rel(k));
     }
+    let material = if inside_left { 1.0 } else { -1.0 };
     let bridge = |i: usize, j: usize| -> bool {
         let c = dist(walk[i], walk[j]);
         if !(c < mouth && cum[j] - cum[i] > 2.0 * c) {
             return false;
         }
-        let mid = [
-            0.5 * (walk[i][0] + walk[j][0]),
-            0.5 * (walk[i][1] + walk[j][1]),
-        ];
-        !crate::polygon::point_in_polygon(outline, mid)
+        let loop_area = twice_area[j] - twice_area[i] + cross(rel(j), rel(i));
+        material * loop_area < 0.0
             && (i + 1..j - 1)
                 .all(|k| !crate::polygon::segments_cross(walk[i], walk[j], walk[k], walk[k + 1]))
     };
@@ -378,7 +386,7 @@ mod tests {
             [6.0, 2.0],
             [0.0, 2.0],
         ];
-        let mitten = bridge_notches(&hand, &hand, 1.0);
+        let mitten = bridge_notches(&hand, true, 1.0);
         assert!(mitten.len() < hand.len(), "{mitten:?}");
         assert!(
             mitten[1..mitten.len() - 1].iter().all(|p| p[0] >= 5.5),
@@ -396,10 +404,19 @@ mod tests {
                 [0.0, 2.0]
             ]
         );
+        // the same hand walked the other way round (a left arm's walk):
+        // the same bridges, reversed
+        let back: Vec<[f64; 2]> = hand.iter().rev().copied().collect();
+        let mut mitten_back = bridge_notches(&back, false, 1.0);
+        mitten_back.reverse();
+        assert_eq!(mitten_back.len(), mitten.len(), "{mitten_back:?}");
+        assert!(mitten_back[1..mitten_back.len() - 1]
+            .iter()
+            .all(|p| p[0] >= 5.5));
         // a mouth narrower than the gaps closes nothing
-        assert_eq!(bridge_notches(&hand, &hand, 0.3), hand.to_vec());
+        assert_eq!(bridge_notches(&hand, true, 0.3), hand.to_vec());
         let strip = [[0.0, 0.0], [6.0, 0.0], [6.0, 0.4], [0.0, 0.4]];
-        assert_eq!(bridge_notches(&strip, &strip, 1.0), strip.to_vec());
+        assert_eq!(bridge_notches(&strip, true, 1.0), strip.to_vec());
     }
 
     /// A mirrored arm's shoulder section is the mirror image: both chords
