@@ -119,8 +119,9 @@ pub const NECK_STEPS: f64 = 400.0;
 /// `top` in steps of `d` / [`NECK_STEPS`], not below `floor`, while it is
 /// `narrow` (the segmentation's test: the width under
 /// `segment::NECK_FLARE` times the neck's); where it stops, the crossing
-/// is found by bisection and the base is put one step above it. The base is then a continuous function of the
-/// drawing: the last whole step above the crossing (the rule before) sat
+/// is found by bisection and the base is put one step above it. The base
+/// is then a continuous function of the drawing: the last whole step
+/// above the crossing (the rule before) sat
 /// anywhere from 0 to 1 step above it, and a base moved one step down
 /// into the fillet where a drawn neck meets the shoulder line (0.06 % of
 /// the height on the corpus drawings) turned t_pose's side error from

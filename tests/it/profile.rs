@@ -587,6 +587,33 @@ fn box_obj(x0: f64, first: usize) -> String {
     s
 }
 
+/// `pdesculpt --json profile extract MESH --view front -o SVG
+/// --resolution 200 EXTRA...`, which must succeed: its JSON report and
+/// its stderr.
+fn extract_front(mesh: &str, svg: &str, extra: &[&str]) -> (serde_json::Value, String) {
+    let mut args = vec![
+        "--json",
+        "profile",
+        "extract",
+        mesh,
+        "--view",
+        "front",
+        "-o",
+        svg,
+        "--resolution",
+        "200",
+    ];
+    args.extend_from_slice(extra);
+    let out = pdesculpt(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    (v, String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
 #[test]
 fn cli_extract_and_check() {
     let d = tmpdir("profile");
@@ -594,24 +621,7 @@ fn cli_extract_and_check() {
     std::fs::write(&obj, box_obj(0.0, 0)).expect("write");
     let svg = d.join("front.svg");
     let (o, s) = (obj.to_str().expect("utf8"), svg.to_str().expect("utf8"));
-    let out = pdesculpt(&[
-        "--json",
-        "profile",
-        "extract",
-        o,
-        "--view",
-        "front",
-        "-o",
-        s,
-        "--resolution",
-        "200",
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    let (v, _) = extract_front(o, s, &[]);
     let px = 2.0 / 200.0;
     assert!((v["height"].as_f64().unwrap_or(0.0) - 2.0).abs() <= px);
     assert!((v["width"].as_f64().unwrap_or(0.0) - 1.0).abs() <= px);
@@ -712,30 +722,8 @@ fn cli_extract_outlines_only_the_named_groups() {
     let svg = d.join("front.svg");
     let s = svg.to_str().expect("utf8");
     let width = |extra: &[&str]| {
-        let mut args = vec![
-            "--json",
-            "profile",
-            "extract",
-            o,
-            "--view",
-            "front",
-            "-o",
-            s,
-            "--resolution",
-            "200",
-        ];
-        args.extend_from_slice(extra);
-        let out = pdesculpt(&args);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
-        (
-            v["width"].as_f64().unwrap_or(0.0),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
+        let (v, stderr) = extract_front(o, s, extra);
+        (v["width"].as_f64().unwrap_or(0.0), stderr)
     };
     // the outer outline of both boxes spans x 0..1.5; the body alone 0..1
     let px = 1.5 / 200.0;
