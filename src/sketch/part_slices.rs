@@ -6,7 +6,9 @@
 //! (`super::foot`).
 
 use super::poly::slice;
-use super::section_place::{centre_slope, direction, place, samples, Sample, SECTIONS_PER_PART};
+use super::section_place::{
+    centre_line, direction, on_centre_line, place, samples, Sample, SECTIONS_PER_PART,
+};
 use super::segment::{Region, SidePick};
 use super::SketchError;
 use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
@@ -65,6 +67,19 @@ pub(super) fn part_from_region(
     }
 }
 
+/// Region `r`'s slices; an upright part's midpoints without pulses
+/// (`on_centre_line`). A horizontal region's slices cross a part that bends
+/// within its own width (an animal's neck into its head), whose midpoints
+/// are its shape: kept as drawn (the median moved the bundled animal's
+/// head off its outline, 0.90 -> 0.99 % of the height).
+fn region_samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
+    if r.horizontal {
+        samples(front, r)
+    } else {
+        on_centre_line(samples(front, r))
+    }
+}
+
 /// The part of region `r`; with `with_foot`, a humanoid leg follows a
 /// foot drawn in the side view (`super::foot`). None: the foot was found
 /// but one of its sections missed an outline.
@@ -84,7 +99,7 @@ fn region_part(
         }
         None => [0.0, 1.0],
     };
-    let s = samples(front, r);
+    let s = region_samples(front, r);
     if s.len() < SECTIONS_PER_PART + 2 {
         return Err(SketchError::Segmentation(format!(
             "{}: only {} slices: draw it larger (longer or wider)",
@@ -175,7 +190,7 @@ struct SliceCtx<'a> {
 }
 
 /// One key section per index of `idx`: perpendicular to the centre line as
-/// seen at its own scale (`centre_slope`), an ellipse with the side's depth
+/// seen at its own scale (`centre_line`), an ellipse with the side's depth
 /// or a circle; returns them and the last one's `u`.
 fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSpec>, f64) {
     let r = ctx.r;
@@ -185,11 +200,12 @@ fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSp
     let follows_depth = !r.horizontal && r.side == SidePick::Whole;
     for (j, &i) in idx.iter().enumerate() {
         let dir = direction(s, i);
-        let t = if r.horizontal {
-            [0.0, dir, 0.0]
+        let slope = if r.horizontal {
+            0.0
         } else {
-            [dir * centre_slope(s, i), dir, 0.0]
+            centre_line(s, i).1
         };
+        let t = [dir * slope, dir, 0.0];
         let tn = t[0].hypot(t[1]);
         let t = [t[0] / tn, t[1] / tn, 0.0];
         let e1 = [t[1], -t[0], 0.0];
