@@ -205,6 +205,15 @@ mod tests {
                     ..rubber
                 },
             ),
+            // E = 0 is the boundary itself: no rigidity, no plate (a
+            // `>=` in the check let it through, mutation sample plate 7/20)
+            (
+                "E",
+                Material {
+                    young: 0.0,
+                    ..rubber
+                },
+            ),
             (
                 "E",
                 Material {

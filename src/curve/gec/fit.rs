@@ -164,6 +164,27 @@ mod tests {
         );
     }
 
+    /// Under the budget the search runs: 421 points give cap = 210 and an
+    /// estimate of 0.52 times the budget, and the first J meets a loose
+    /// tolerance. (With the estimate's 4/3 turned into 4 x 3, a mutant in
+    /// sample gec 7/37, it was 4.7 times the budget and refused.)
+    #[test]
+    fn a_search_under_the_work_budget_runs() {
+        let n = 421;
+        let pts: Vec<[f64; 3]> = (0..n)
+            .map(|k| {
+                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                [t.cos(), t.sin(), 0.0]
+            })
+            .collect();
+        let cap = (n - 1) / 2;
+        let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
+        assert!(9.0 * estimate > crate::limits::WORK_FLOPS, "{estimate}");
+        assert!(estimate < crate::limits::WORK_FLOPS, "{estimate}");
+        let r = fit_auto(&pts, 1.0, cap, &FitOptions::new(1));
+        assert_eq!(r.map(|f| f.gec.terms()).ok(), Some(1));
+    }
+
     /// 2J + 1 points are interpolated by every parameter rule, so their
     /// ErMs differ only by rounding, which grows with the section's size:
     /// the given rule's fit is kept unless another is better by more than

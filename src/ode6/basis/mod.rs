@@ -397,4 +397,22 @@ mod tests {
         off.coef[0][0] += NUDGE;
         assert!(off.boundary_error() >= SEEN, "{}", off.boundary_error());
     }
+
+    /// In the second-order basis (`rho = eta = 0`) the imposed functions are
+    /// `g_1` and `g_4` (positions at `u = 0` and `u = 1`): a nudged `g_4` is
+    /// seen. (Choosing the imposed ones by `j / 3` instead of `j % 3`, a
+    /// mutant in sample ode6 4/24, checked `g_1..g_3` and missed it.)
+    #[test]
+    fn the_reduced_boundary_error_sees_the_far_end() {
+        let b = Basis::reduced(Params::new(0.0, 0.0, 1.0)).expect("basis");
+        assert_eq!(b.order, 2);
+        assert!(
+            b.boundary_error() <= crate::check::tol::SOLVE,
+            "{}",
+            b.boundary_error()
+        );
+        let mut off = b.clone();
+        off.coef[3][0] += NUDGE;
+        assert!(off.boundary_error() >= SEEN, "{}", off.boundary_error());
+    }
 }
