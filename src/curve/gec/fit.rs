@@ -185,6 +185,32 @@ mod tests {
         assert_eq!(r.map(|f| f.gec.terms()).ok(), Some(1));
     }
 
+    /// The search raises J until the tolerance is met: a curve of exactly
+    /// three harmonics, sampled evenly, is fitted with J = 3 from a start
+    /// of J = 1. (A mutant fitting every J with the options' own J, in
+    /// sample gec 8/37, was caught only by an integration test outside the
+    /// mutation oracle.)
+    #[test]
+    fn the_search_stops_at_the_first_j_that_meets_the_tolerance() {
+        let n = 40;
+        let pts: Vec<[f64; 3]> = (0..n)
+            .map(|k| {
+                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                [
+                    t.cos() + 0.1 * (2.0 * t).cos() + 0.05 * (3.0 * t).cos(),
+                    t.sin() + 0.05 * (3.0 * t).sin(),
+                    0.0,
+                ]
+            })
+            .collect();
+        let opts = FitOptions::new(1).with_param(super::super::Param::Uniform);
+        // the relative ErM target of `gec fit --tol` in the CLI's examples
+        const TARGET: f64 = 1e-6;
+        let r = fit_auto(&pts, TARGET, 10, &opts).expect("three harmonics fit");
+        assert_eq!(r.gec.terms(), 3);
+        assert!(r.errors.erm_rel <= TARGET, "{}", r.errors.erm_rel);
+    }
+
     /// 2J + 1 points are interpolated by every parameter rule, so their
     /// ErMs differ only by rounding, which grows with the section's size:
     /// the given rule's fit is kept unless another is better by more than
