@@ -12,7 +12,7 @@ use pdesculpt::pipeline::corpus::{
 use pdesculpt::pipeline::{build_document, BuildError, Built};
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
-use pdesculpt::sketch::quality::{warnings, Bounds};
+use pdesculpt::sketch::quality::{warnings, Bounds, Quality};
 use pdesculpt::sketch::SketchError;
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
@@ -465,6 +465,13 @@ fn corpus_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("data/sketch/corpus")
 }
 
+/// A row's measures; a row that did not build fails the test, naming it.
+fn built(r: &Row) -> &Quality {
+    r.quality
+        .as_ref()
+        .unwrap_or_else(|| panic!("{}: {:?}", r.name, r.error))
+}
+
 /// Builds and measures the corpus entries `keep` selects; prints the table
 /// (stderr) and returns the rows.
 fn measure_corpus(keep: impl Fn(&Entry) -> bool) -> Vec<Row> {
@@ -523,10 +530,7 @@ fn a_torso_s_steps_do_not_zigzag_it() {
     let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
     assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
     for r in &rows {
-        let q = r
-            .quality
-            .as_ref()
-            .unwrap_or_else(|| panic!("{}: {:?}", r.name, r.error));
+        let q = built(r);
         let torso = q.parts.iter().find(|p| p.part == "torso").expect("a torso");
         let front = torso.view("front").expect("the front view is measured");
         assert!(
@@ -556,10 +560,7 @@ fn drawn_feet_are_followed_in_the_side_view() {
     assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
     let bound = Bounds::ISSUE.profile_side;
     for r in &rows {
-        let q = r
-            .quality
-            .as_ref()
-            .unwrap_or_else(|| panic!("{}: {:?}", r.name, r.error));
+        let q = built(r);
         for p in q.parts.iter().filter(|p| p.part.starts_with("leg_")) {
             let side = p.view("side").expect("side view");
             assert!(
@@ -585,10 +586,7 @@ fn the_shoulders_do_not_crease_beside_the_neck() {
     let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
     assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
     for r in &rows {
-        let q = r
-            .quality
-            .as_ref()
-            .unwrap_or_else(|| panic!("{}: {:?}", r.name, r.error));
+        let q = built(r);
         assert!(
             q.whole.creased_rel <= Bounds::ISSUE.creased_rel,
             "{}: creased length {:.2} heights",

@@ -137,6 +137,20 @@ pub fn fit_auto(
 mod tests {
     use super::*;
 
+    /// `n` points evenly around the unit circle, and `fit_auto`'s priced
+    /// work for them at cap = (n - 1) / 2.
+    fn circle_search(n: usize) -> (Vec<[f64; 3]>, usize, f64) {
+        let pts: Vec<[f64; 3]> = (0..n)
+            .map(|k| {
+                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+                [t.cos(), t.sin(), 0.0]
+            })
+            .collect();
+        let cap = (n - 1) / 2;
+        let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
+        (pts, cap, estimate)
+    }
+
     /// `fit_auto`'s search over J = 1..=cap is priced before any fit, at
     /// about `2 n (4/3) cap^3` operations (a least-squares fit per J), and
     /// refused over [`crate::limits::WORK_FLOPS`]. 529 points on a circle
@@ -146,15 +160,7 @@ mod tests {
     /// budget and the search ran.)
     #[test]
     fn a_search_over_the_work_budget_is_refused_before_fitting() {
-        let n = 529;
-        let pts: Vec<[f64; 3]> = (0..n)
-            .map(|k| {
-                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
-                [t.cos(), t.sin(), 0.0]
-            })
-            .collect();
-        let cap = (n - 1) / 2;
-        let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
+        let (pts, cap, estimate) = circle_search(529);
         assert!(estimate > crate::limits::WORK_FLOPS, "{estimate}");
         let r = fit_auto(&pts, 1.0, cap, &FitOptions::new(1));
         assert!(
@@ -170,15 +176,7 @@ mod tests {
     /// sample gec 7/37, it was 4.7 times the budget and refused.)
     #[test]
     fn a_search_under_the_work_budget_runs() {
-        let n = 421;
-        let pts: Vec<[f64; 3]> = (0..n)
-            .map(|k| {
-                let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
-                [t.cos(), t.sin(), 0.0]
-            })
-            .collect();
-        let cap = (n - 1) / 2;
-        let estimate = 2.0 * n as f64 * (4.0 / 3.0) * (cap as f64).powi(3);
+        let (pts, cap, estimate) = circle_search(421);
         assert!(9.0 * estimate > crate::limits::WORK_FLOPS, "{estimate}");
         assert!(estimate < crate::limits::WORK_FLOPS, "{estimate}");
         let r = fit_auto(&pts, 1.0, cap, &FitOptions::new(1));
