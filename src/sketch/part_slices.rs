@@ -7,7 +7,7 @@
 
 use super::poly::slice;
 use super::section_place::{
-    centre_line, direction, on_centre_line, place, samples, Sample, SECTIONS_PER_PART,
+    centre_slope, direction, on_centre_line, place, samples, Sample, SECTIONS_PER_PART,
 };
 use super::segment::{Region, SidePick};
 use super::SketchError;
@@ -190,7 +190,7 @@ struct SliceCtx<'a> {
 }
 
 /// One key section per index of `idx`: perpendicular to the centre line as
-/// seen at its own scale (`centre_line`), an ellipse with the side's depth
+/// seen at its own scale (`centre_slope`), an ellipse with the side's depth
 /// or a circle; returns them and the last one's `u`.
 fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSpec>, f64) {
     let r = ctx.r;
@@ -200,12 +200,11 @@ fn slice_sections(s: &[Sample], idx: &[usize], ctx: &SliceCtx) -> (Vec<SectionSp
     let follows_depth = !r.horizontal && r.side == SidePick::Whole;
     for (j, &i) in idx.iter().enumerate() {
         let dir = direction(s, i);
-        let slope = if r.horizontal {
-            0.0
+        let t = if r.horizontal {
+            [0.0, dir, 0.0]
         } else {
-            centre_line(s, i).1
+            [dir * centre_slope(s, i), dir, 0.0]
         };
-        let t = [dir * slope, dir, 0.0];
         let tn = t[0].hypot(t[1]);
         let t = [t[0] / tn, t[1] / tn, 0.0];
         let e1 = [t[1], -t[0], 0.0];

@@ -201,7 +201,7 @@ mod tests {
                 ]
             })
             .collect();
-        let opts = FitOptions::new(1).with_param(super::super::Param::Uniform);
+        let opts = FitOptions::new(1).with_param(crate::curve::gec::Param::Uniform);
         // the relative ErM target of `gec fit --tol` in the CLI's examples
         const TARGET: f64 = 1e-6;
         let r = fit_auto(&pts, TARGET, 10, &opts).expect("three harmonics fit");
