@@ -21,6 +21,13 @@ use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
 use pdesculpt::sketch::figure_animal::{Quadruped, Tail};
 use std::path::Path;
 
+/// The corpus's seed and number of random humanoids (`write`'s defaults:
+/// the committed corpus). Other seeds draw humanoids no one tuned on.
+const CORPUS_SEED: u64 = 0x5EED_2028;
+const CORPUS_RANDOM: usize = 9;
+/// More random drawings than this is refused (each is two SVG files).
+const MAX_RANDOM: usize = 1000;
+
 /// splitmix64: a fixed-seed generator without a dependency.
 struct Rng(u64);
 
@@ -238,9 +245,9 @@ fn drawn_height(style: Style, rng: &mut Rng) -> f64 {
     }
 }
 
-fn write(dir: &Path) -> Result<(), String> {
+fn write(dir: &Path, seed: u64, random: usize) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
-    let mut rng = Rng(0x5EED_2028);
+    let mut rng = Rng(seed);
     let mut entries = Vec::new();
     let mut figures: Vec<(
         String,
@@ -251,7 +258,7 @@ fn write(dir: &Path) -> Result<(), String> {
     for (name, h) in named_humanoids() {
         figures.push((name.into(), describe(&h), h.outlines(), 0.6));
     }
-    for k in 0..9 {
+    for k in 0..random {
         let u: [f64; 16] = std::array::from_fn(|_| rng.next());
         let h = HumanoidRanges::WIDE.at(&u, 1.0);
         figures.push((format!("random_{k}"), describe(&h), h.outlines(), 0.6));
@@ -460,7 +467,26 @@ fn landmarks(front: &Path) -> Result<(), String> {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let r = match args.first().map(String::as_str) {
-        Some("write") if args.len() >= 2 => write(Path::new(&args[1])),
+        Some("write") if args.len() >= 2 => {
+            let flag = |name: &str, default: u64| -> Result<u64, String> {
+                match args.iter().position(|a| a == name) {
+                    None => Ok(default),
+                    Some(i) => {
+                        let v = args.get(i + 1).ok_or(format!("{name} needs a value"))?;
+                        v.parse::<u64>().map_err(|e| format!("{name} {v}: {e}"))
+                    }
+                }
+            };
+            let seed = flag("--seed", CORPUS_SEED);
+            let random = flag("--random", CORPUS_RANDOM as u64).and_then(|k| {
+                if k <= MAX_RANDOM as u64 {
+                    Ok(k as usize)
+                } else {
+                    Err(format!("--random {k}: at most {MAX_RANDOM} drawings"))
+                }
+            });
+            seed.and_then(|s| random.and_then(|k| write(Path::new(&args[1]), s, k)))
+        }
         Some("measure") if args.len() >= 2 => {
             let all = args.iter().any(|a| a == "--all");
             let sheet = args
@@ -477,7 +503,7 @@ fn main() {
             stretch.and_then(|stretch| measure(Path::new(&args[1]), all, sheet, stretch))
         }
         Some("landmarks") if args.len() >= 2 => landmarks(Path::new(&args[1])),
-        _ => Err("usage: sketch_corpus write DIR | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
+        _ => Err("usage: sketch_corpus write DIR [--seed N] [--random K] | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
     };
     if let Err(e) = r {
         eprintln!("error: {e}");
