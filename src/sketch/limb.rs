@@ -94,13 +94,22 @@ pub fn trace_arm(
             (ia + n - k % n) % n
         }
     };
+    // the walk stops where it comes back to the neck's side from outside
+    // it: an armpit within the neck's x (a neck as wide as the chest) is
+    // left first along the arm's underside
     let mut walk = vec![armpit];
+    let mut been_out = side * (armpit[0] - neck_x) > 0.0;
     for k in 1..n {
         let p = front[step(k)];
-        if side * (p[0] - neck_x) <= 0.0 {
+        let out = side * (p[0] - neck_x) > 0.0;
+        if !out && been_out {
             break;
         }
+        been_out |= out;
         walk.push(p);
+    }
+    if !been_out {
+        walk.truncate(1);
     }
     let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
     let it = (0..walk.len())
