@@ -42,6 +42,7 @@ mod sasm;
 mod sketch;
 mod sketch_animal;
 mod sketch_draw;
+mod sketch_segment;
 mod speedups;
 mod template;
 mod template_belly;

@@ -29,7 +29,7 @@ const PLACEMENT_REL: f64 = 1e-5;
 /// moves the figure by a large fraction of it.
 const ENCODING_REL: f64 = 5e-3;
 
-fn write_pair(
+pub(crate) fn write_pair(
     dir: &Path,
     name: &str,
     h: &Humanoid,
@@ -47,7 +47,7 @@ fn write_pair(
     (f, s)
 }
 
-fn build(front: &Path, side: &Path, height: Option<f64>) -> Result<Built, BuildError> {
+pub(crate) fn build(front: &Path, side: &Path, height: Option<f64>) -> Result<Built, BuildError> {
     let doc = CharacterDoc::from_inputs(
         Inputs {
             front: ProfileInput::Path(front.display().to_string()),
