@@ -245,7 +245,7 @@ fn drawn_height(style: Style, rng: &mut Rng) -> f64 {
     }
 }
 
-fn write(dir: &Path, seed: u64, random: usize) -> Result<(), String> {
+fn write(dir: &Path, seed: u64, random: usize, ranges: &HumanoidRanges) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| e.to_string())?;
     let mut rng = Rng(seed);
     let mut entries = Vec::new();
@@ -260,7 +260,7 @@ fn write(dir: &Path, seed: u64, random: usize) -> Result<(), String> {
     }
     for k in 0..random {
         let u: [f64; 16] = std::array::from_fn(|_| rng.next());
-        let h = HumanoidRanges::WIDE.at(&u, 1.0);
+        let h = ranges.at(&u, 1.0);
         figures.push((format!("random_{k}"), describe(&h), h.outlines(), 0.6));
     }
     for (name, q) in animals() {
@@ -449,6 +449,12 @@ fn landmarks(front: &Path) -> Result<(), String> {
     );
     let lm = pdesculpt::sketch::segment::landmarks(p.front.points()).map_err(|e| e.to_string())?;
     println!("{lm:?}");
+    match pdesculpt::sketch::segment::regions(p.front.points(), &lm, &Default::default()) {
+        Ok(rs) => rs
+            .iter()
+            .for_each(|r| println!("region {} y {:.4}..{:.4} {:?}", r.name, r.y0, r.y1, r.pick)),
+        Err(e) => println!("regions: {e}"),
+    }
     let neck = pdesculpt::sketch::segment::neck_interval(p.front.points(), &lm);
     println!("neck {neck:?}");
     for (a, side) in [(lm.armpit_l, -1.0), (lm.armpit_r, 1.0)] {
@@ -485,7 +491,17 @@ fn main() {
                     Err(format!("--random {k}: at most {MAX_RANDOM} drawings"))
                 }
             });
-            seed.and_then(|s| random.and_then(|k| write(Path::new(&args[1]), s, k)))
+            let ranges = match args.iter().position(|a| a == "--ranges") {
+                None => Ok(&HumanoidRanges::WIDE),
+                Some(i) => match args.get(i + 1).map(String::as_str) {
+                    Some("wide") => Ok(&HumanoidRanges::WIDE),
+                    Some("issue") => Ok(&HumanoidRanges::ISSUE),
+                    other => Err(format!("--ranges {other:?}: expected wide or issue")),
+                },
+            };
+            seed.and_then(|s| {
+                random.and_then(|k| ranges.and_then(|r| write(Path::new(&args[1]), s, k, r)))
+            })
         }
         Some("measure") if args.len() >= 2 => {
             let all = args.iter().any(|a| a == "--all");
@@ -503,7 +519,7 @@ fn main() {
             stretch.and_then(|stretch| measure(Path::new(&args[1]), all, sheet, stretch))
         }
         Some("landmarks") if args.len() >= 2 => landmarks(Path::new(&args[1])),
-        _ => Err("usage: sketch_corpus write DIR [--seed N] [--random K] | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
+        _ => Err("usage: sketch_corpus write DIR [--seed N] [--random K] [--ranges wide|issue] | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
     };
     if let Err(e) = r {
         eprintln!("error: {e}");
