@@ -268,9 +268,9 @@ pub enum Pick {
     /// A leg beside the crotch: `Beside(x, side)` is the interval whose
     /// centre lies on `side` (-1 left, +1 right) of `x`, the nearest to
     /// `x` (an arm hanging beside a thin leg is farther out, and may be
-    /// wider). Where one interval holds `x` and none lies wholly on the
-    /// other side (the legs touch), it is clipped at `x`: each leg keeps
-    /// its side of the merged interval instead of one leg taking both.
+    /// wider). Below the crotch the legs are apart down to the ground (a
+    /// simple outline whose legs touched would enclose the gap above them:
+    /// no crotch there).
     Beside(f64, f64),
 }
 
@@ -324,27 +324,14 @@ pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
                 c > lo && c < hi
             })
             .max_by(widest),
-        Pick::Beside(x, side) => {
-            let s = slice(front, y);
-            let touch = s.iter().any(|iv| iv[0] < x && x < iv[1])
-                && !s.iter().any(|iv| {
-                    -side * (0.5 * (iv[0] + iv[1]) - x) > 0.0 && !(iv[0] < x && x < iv[1])
-                });
-            s.into_iter()
-                .filter_map(|iv| {
-                    let held = iv[0] < x && x < iv[1];
-                    match (held && touch, side > 0.0) {
-                        (true, true) => Some([x, iv[1]]),
-                        (true, false) => Some([iv[0], x]),
-                        (false, _) => (side * (0.5 * (iv[0] + iv[1]) - x) > 0.0).then_some(iv),
-                    }
-                })
-                .min_by(|a, b| {
-                    (0.5 * (a[0] + a[1]) - x)
-                        .abs()
-                        .total_cmp(&(0.5 * (b[0] + b[1]) - x).abs())
-                })
-        }
+        Pick::Beside(x, side) => slice(front, y)
+            .into_iter()
+            .filter(|iv| side * (0.5 * (iv[0] + iv[1]) - x) > 0.0)
+            .min_by(|a, b| {
+                (0.5 * (a[0] + a[1]) - x)
+                    .abs()
+                    .total_cmp(&(0.5 * (b[0] + b[1]) - x).abs())
+            }),
     }
 }
 
