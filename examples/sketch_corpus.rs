@@ -12,6 +12,9 @@
 //! The humanoids: named poses and proportions covering issue 28 item 3,
 //! then figures drawn at random (fixed seed) from `HumanoidRanges::WIDE`,
 //! wider than the item's ranges. Every third generated drawing is held out.
+//! `write DIR --seed N --random K [--ranges issue]` draws other humanoids
+//! (from the item's own ranges with `--ranges issue`); `landmarks
+//! FRONT.svg` prints one drawing's landmarks, regions and traced arms.
 
 use pdesculpt::pipeline::corpus::{
     build_entry, build_entry_stretched, measure_entry, read_manifest, table, Entry, Manifest,
