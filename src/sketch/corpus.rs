@@ -201,9 +201,10 @@ fn path_data(style: Style, k: &[[f64; 2]]) -> String {
         match style {
             Style::InkscapeMm | Style::Inkscape092 | Style::Cm => {
                 let (c1, c2) = ctrl(i);
-                let p = at(i + 1);
-                cubic_command(&mut d, style, i, [c1, c2, p], cur);
-                cur = p;
+                // relative commands from the position as written (rounded):
+                // from the exact one, 500 rounded steps drifted by up to
+                // 4e-4 units and the path's end crossed its start
+                cur = cubic_command(&mut d, style, i, [c1, c2, at(i + 1)], cur);
                 i += 1;
             }
             Style::PxNoViewBox | Style::Inches => {
@@ -243,8 +244,11 @@ fn cubic_command(
     i: usize,
     [c1, c2, p]: [[f64; 2]; 3],
     cur: [f64; 2],
-) {
+) -> [f64; 2] {
     let rel = |q: [f64; 2]| [q[0] - cur[0], q[1] - cur[1]];
+    // where the reader ends up: the written relative step or absolute point
+    let moved = |q: [f64; 2]| [cur[0] + written(q[0]), cur[1] + written(q[1])];
+    let absolute = [written(p[0]), written(p[1])];
     match (style, i % 4) {
         (Style::InkscapeMm, _) => {
             let (a, b, q) = (rel(c1), rel(c2), rel(p));
@@ -258,9 +262,11 @@ fn cubic_command(
                 num(q[0]),
                 num(q[1])
             );
+            moved(q)
         }
         (Style::Inkscape092, 3) => {
             let _ = write!(d, " L {} {}", num(p[0]), num(p[1]));
+            absolute
         }
         (Style::Inkscape092, _) => {
             let _ = write!(
@@ -273,10 +279,12 @@ fn cubic_command(
                 num(p[0]),
                 num(p[1])
             );
+            absolute
         }
         (_, 0) | (_, 2) => {
             let q = rel(p);
             let _ = write!(d, " l {} {}", num(q[0]), num(q[1]));
+            moved(q)
         }
         _ => {
             // smooth cubic: its first control point mirrors the previous
@@ -290,8 +298,14 @@ fn cubic_command(
                 num(q[0]),
                 num(q[1])
             );
+            moved(q)
         }
     }
+}
+
+/// The value `num(x)` writes, as a reader parses it.
+fn written(x: f64) -> f64 {
+    num(x).parse().unwrap_or(x)
 }
 
 /// An arc through the current point `cur` and knots `p1`, `p2`, or a line

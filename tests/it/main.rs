@@ -43,6 +43,7 @@ mod sketch;
 mod sketch_animal;
 mod sketch_draw;
 mod sketch_segment;
+mod sketch_writer;
 mod speedups;
 mod template;
 mod template_belly;
