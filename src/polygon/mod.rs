@@ -251,18 +251,28 @@ pub fn hausdorff(a: &[[f64; 2]], b: &[[f64; 2]], step: f64) -> f64 {
     one(a, b).max(one(b, a))
 }
 
-/// The smallest and largest crossing of the horizontal line at height `y`
-/// with the closed polygon `p` (first coordinate), if it crosses.
-pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
+/// Every crossing (first coordinate) of the horizontal line at height `y`
+/// with the closed polygon `p`, sorted. An edge counts when its ends are
+/// not on one side of the line and it is not horizontal, so a vertex on
+/// the line is counted by both its edges (unlike `sketch::poly`'s slices,
+/// whose half-open rule counts it once for the even-odd intervals).
+pub fn line_crossings(p: &[[f64; 2]], y: f64) -> Vec<f64> {
     let n = p.len();
-    let mut span: Option<(f64, f64)> = None;
+    let mut out = Vec::new();
     for i in 0..n {
         let (a, b) = (p[i], p[(i + 1) % n]);
         if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
             continue;
         }
-        let x = a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-        span = Some(span.map_or((x, x), |(l, h)| (l.min(x), h.max(x))));
+        out.push(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
     }
-    span
+    out.sort_by(f64::total_cmp);
+    out
+}
+
+/// The smallest and largest crossing of the horizontal line at height `y`
+/// with the closed polygon `p` (first coordinate), if it crosses.
+pub fn depth_span(p: &[[f64; 2]], y: f64) -> Option<(f64, f64)> {
+    let c = line_crossings(p, y);
+    Some((*c.first()?, *c.last()?))
 }

@@ -8,21 +8,7 @@ pub const SMOOTH_ROWS: usize = 2;
 /// fraction of the height beyond the trunk.
 pub const ARM_EPS: f64 = 1e-3;
 
-/// Every crossing (first coordinate) of the horizontal line at height `y`
-/// with the closed polygon `p`, sorted.
-pub fn crossings(p: &[[f64; 2]], y: f64) -> Vec<f64> {
-    let n = p.len();
-    let mut out = Vec::new();
-    for i in 0..n {
-        let (a, b) = (p[i], p[(i + 1) % n]);
-        if (a[1] - y) * (b[1] - y) > 0.0 || a[1] == b[1] {
-            continue;
-        }
-        out.push(a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0]));
-    }
-    out.sort_by(f64::total_cmp);
-    out
-}
+pub use crate::polygon::line_crossings as crossings;
 
 pub(super) fn smooth(v: &mut [f64], known: &[bool]) {
     let src = v.to_vec();
