@@ -366,13 +366,10 @@ pub(super) fn reach(front: &[[f64; 2]], pick: Pick, from: f64, to: f64) -> f64 {
 /// the crotch.
 ///
 /// A leg is the slice interval nearest the crotch's x on its side
-/// ([`Pick::Beside`]): bounding it by the armpit's x (as before) cut a leg
-/// drawn in a wide stance where its centre passed under the armpit (a stub
-/// closed at the knee, and a hips transition metres long); taking the
-/// widest (as next) took a hand hanging beside a thinner thigh, and
-/// `section_place::connected_run` then cut the leg at the first such slice
-/// (corpus random_5: a leg ending at the knee, its sections crowded into
-/// its top 13 %, and an ill-conditioned chain).
+/// ([`Pick::Beside`]). Bounded by the armpit's x (once), a wide stance's
+/// leg became a stub; the widest interval (next) was a hand beside a thin
+/// thigh, and `section_place::connected_run` cut the leg at the knee
+/// (corpus random_5: its sections crowded, its chain ill-conditioned).
 pub fn regions(
     front: &[[f64; 2]],
     lm: &Landmarks,

@@ -15,7 +15,7 @@ fn relative_end(d: &str) -> ([f64; 2], [f64; 2]) {
     let mut toks = d.split([' ', ',']).filter(|t| !t.is_empty()).peekable();
     let (mut start, mut at) = ([0.0; 2], [0.0; 2]);
     let mut cmd = "";
-    let mut num = |t: &mut std::iter::Peekable<_>| -> f64 {
+    let num = |t: &mut std::iter::Peekable<_>| -> f64 {
         let s: &str = Iterator::next(t).expect("a number");
         s.parse().expect("a number")
     };
