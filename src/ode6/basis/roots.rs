@@ -174,3 +174,35 @@ fn series_coefficients(p: &Params) -> Vec<[f64; N_SERIES]> {
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::tol;
+
+    /// The complex case's square root `r = alpha + i beta` of `q = a + i b`
+    /// takes the branch without cancellation: for `a > 0` and `b` about
+    /// 1e-7 of it, the other branch's `m - a` (m = |q|, about 5e-15 a)
+    /// keeps 1 or 2 of 16 digits and `alpha^2 - beta^2` misses `a` (a
+    /// mutant swapping the branches survived every check: the cases the
+    /// checks use have `b` comparable to `a`).
+    #[test]
+    fn a_complex_root_near_the_real_axis_keeps_its_digits() {
+        let p = Params::new(1.0, -2.0, 1.0 + 1e-14);
+        let [(a, b), _] = p.q_roots();
+        assert!(a > 0.0 && b > 0.0 && b < 1e-6 * a, "q = {a} + {b} i");
+        let RootCase::Complex { alpha, beta } = classify_closed(&p) else {
+            panic!("complex roots: {:?}", classify_closed(&p));
+        };
+        let re = alpha * alpha - beta * beta;
+        let im = 2.0 * alpha * beta;
+        assert!(
+            (re - a).abs() <= tol::ROUNDING * a,
+            "alpha^2 - beta^2 = {re}, a = {a}"
+        );
+        assert!(
+            (im - b).abs() <= tol::ROUNDING * b,
+            "2 alpha beta = {im}, b = {b}"
+        );
+    }
+}
