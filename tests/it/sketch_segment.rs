@@ -75,6 +75,14 @@ fn a_hand_wider_than_the_thigh_beside_it_is_not_the_leg() {
     closed(&h, "thin_legs");
 }
 
+/// How far the armpits (the lower) are above the crotch, relative to the
+/// height.
+fn torso_fraction(h: &Humanoid) -> f64 {
+    let (front, _) = h.outlines().expect("an outline");
+    let lm = landmarks(&front).expect("landmarks");
+    (lm.armpit_l[1].min(lm.armpit_r[1]) - lm.crotch[1]) / lm.height()
+}
+
 /// A head half the height: the arms leave the body a few percent of the
 /// height above the crotch. Refused before ("torso: too short to build":
 /// a part needed two join bands, 3 % of the height, between its bands);
@@ -86,9 +94,7 @@ fn a_torso_a_few_percent_long_builds() {
         crotch: 0.345,
         ..Humanoid::default()
     };
-    let (front, _) = h.outlines().expect("an outline");
-    let lm = landmarks(&front).expect("landmarks");
-    let t = (lm.armpit_l[1].min(lm.armpit_r[1]) - lm.crotch[1]) / lm.height();
+    let t = torso_fraction(&h);
     assert!(
         t > 2.5 * GAP_FRACTION && t < 4.0 * GAP_FRACTION,
         "armpits {:.2} % of the height above the crotch",
@@ -116,9 +122,7 @@ fn armpits_at_the_crotch_are_refused_naming_both_heights() {
         crotch: 0.41,
         ..Humanoid::default()
     };
-    let (front, _) = h.outlines().expect("an outline");
-    let lm = landmarks(&front).expect("landmarks");
-    let t = (lm.armpit_l[1].min(lm.armpit_r[1]) - lm.crotch[1]) / lm.height();
+    let t = torso_fraction(&h);
     assert!(
         t < 2.5 * GAP_FRACTION,
         "armpits {:.2} % above the crotch",
