@@ -499,7 +499,8 @@ fn main() {
                 Some(i) => match args.get(i + 1).map(String::as_str) {
                     Some("wide") => Ok(&HumanoidRanges::WIDE),
                     Some("issue") => Ok(&HumanoidRanges::ISSUE),
-                    other => Err(format!("--ranges {other:?}: expected wide or issue")),
+                    Some(other) => Err(format!("--ranges {other}: expected wide or issue")),
+                    None => Err("--ranges needs a value (wide or issue)".into()),
                 },
             };
             seed.and_then(|s| {
