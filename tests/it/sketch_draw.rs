@@ -12,7 +12,7 @@ use pdesculpt::pipeline::corpus::{
 use pdesculpt::pipeline::{build_document, BuildError, Built};
 use pdesculpt::sketch::corpus::{document, page_position, Style};
 use pdesculpt::sketch::figure::{Humanoid, HumanoidRanges};
-use pdesculpt::sketch::quality::{warnings, Bounds, Quality};
+use pdesculpt::sketch::quality::{warnings, Bounds, Quality, CREASED_EDGE_DEG};
 use pdesculpt::sketch::SketchError;
 use proptest::prelude::*;
 use std::path::{Path, PathBuf};
@@ -569,6 +569,38 @@ fn drawn_feet_are_followed_in_the_side_view() {
                 r.name,
                 p.part,
                 100.0 * side.max_rel
+            );
+        }
+    }
+}
+
+/// A leg does not fold where its sections turn into the foot: the bend's
+/// radius is 1.5 times the ankle's half depth (`sketch::foot::BEND_RADIUS`),
+/// so the last leg section and the first bend section no longer meet at
+/// the instep. Before (radius = the half depth) these legs turned by
+/// 175-180 degrees there (chubby 176.7, random_3 175.1, the cartoon's
+/// 139.2); no edge of a leg may now turn by more than the crease
+/// angle.
+#[test]
+fn feet_do_not_fold_at_the_instep() {
+    let names = ["chubby", "cartoon_head_half", "random_3"];
+    let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
+    assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
+    for r in &rows {
+        let q = built(r);
+        let legs: Vec<_> = q
+            .parts
+            .iter()
+            .filter(|p| p.part.starts_with("leg_"))
+            .collect();
+        assert_eq!(legs.len(), 2, "{}: two legs", r.name);
+        for p in legs {
+            assert!(
+                p.dihedral_deg <= CREASED_EDGE_DEG,
+                "{} {}: an edge turns by {:.1} degrees",
+                r.name,
+                p.part,
+                p.dihedral_deg
             );
         }
     }
