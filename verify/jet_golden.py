@@ -19,6 +19,10 @@ FUNCTIONS = {
     "atan2_steep": (sp.atan2(v, u), ("0.1", "1.3")),
     "hyperbolic_tan": (sp.sinh(u - v) * sp.cosh(2 * u * v) + sp.tan(u / 2), ("0.5", "0.25")),
     "powers_atan": (u**5 * v**-2 + sp.atan(u * v) * (u + v)**sp.Rational(3, 2), ("1.1", "0.9")),
+    # cos on its own and the paired sin_cos: the f64 side of Real has an
+    # impl of each that no other form calls (a mutant returning 0 from
+    # f64's cos survived: docs/verification.md, jet 2/16)
+    "cos_sincos": (sp.cos(u) * v + sp.sin(u * v) * sp.cos(u * v), ("0.6", "1.7")),
 }
 
 ORDER = 6

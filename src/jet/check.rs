@@ -29,6 +29,10 @@ pub fn golden_function<T: Real>(name: &str, u: T, v: T) -> Option<T> {
         "atan2_steep" => v.atan2(u),
         "hyperbolic_tan" => (u - v).sinh() * (u * v * 2.0).cosh() + (u / 2.0).tan(),
         "powers_atan" => u.powi(5) * v.powi(-2) + (u * v).atan() * (u + v).powf(1.5),
+        "cos_sincos" => {
+            let (s, c) = (u * v).sin_cos();
+            u.cos() * v + s * c
+        }
         _ => return None,
     })
 }
