@@ -413,16 +413,17 @@ mod tests {
     }
 
     #[test]
-    fn a_boot_has_a_foot_toward_its_toe_with_the_bend_of_its_larger_half_size() {
+    fn a_boot_has_a_foot_toward_its_toe_with_a_bend_scaled_from_its_larger_half_size() {
         let side = boot();
         let (s, d) = leg_samples(&side);
         let f = find(&side, [0.0, 1.0], &s, &d, 10).expect("a foot");
         assert_eq!(f.dir, 1.0);
         // ankle half depth 0.05, foot half height 0.05
-        assert!((f.radius - 0.05).abs() < 1e-9, "{}", f.radius);
+        let r = BEND_RADIUS * 0.05;
+        assert!((f.radius - r).abs() < 1e-9, "{}", f.radius);
         assert_eq!(f.toe[0], 0.3);
         // the bend starts one radius above the foot's centre line (y 0.05)
-        assert!((f.start[1] - 0.1).abs() < 1e-9, "{:?}", f.start);
+        assert!((f.start[1] - (0.05 + r)).abs() < 1e-9, "{:?}", f.start);
         let mirrored: Vec<[f64; 2]> = side.iter().map(|p| [-p[0], p[1]]).collect();
         let (s, d) = leg_samples(&mirrored);
         assert_eq!(

@@ -64,6 +64,7 @@ pub mod place;
 pub mod poly;
 pub mod quadruped;
 pub mod quality;
+pub mod refusal;
 pub mod removed;
 pub mod report;
 pub mod section_place;

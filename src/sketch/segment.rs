@@ -31,6 +31,12 @@ pub const NECK_FLARE: f64 = 1.3;
 /// margin over "positive", set on seed 4242's issue-range humanoids (4-6 %
 /// torsos), checked on seed 9191 (docs/drawing-corpus.md, eighth).
 pub const MIN_PART_BANDS: f64 = 0.5;
+/// The least torso, crotch to armpits, of a model of height `h`: a join
+/// band at each end and [`MIN_PART_BANDS`] between them.
+pub fn torso_min(h: f64) -> f64 {
+    (2.0 + MIN_PART_BANDS) * GAP_FRACTION * h
+}
+
 /// Slices used to find the landmarks.
 pub const LANDMARK_SLICES: usize = 600;
 
@@ -122,8 +128,8 @@ pub const GROUND_FRACTION: f64 = 0.15;
 /// Whether the gap below `t` runs down to the ground ([`GROUND_FRACTION`])
 /// between two intervals (the legs) at every height: the crotch's gap
 /// does, a gap between a hanging arm and the torso opens to the outside
-/// below the hand.
-fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> bool {
+/// below the hand. Returns the gap's middle at the ground.
+fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> Option<[f64; 2]> {
     let n = LANDMARK_SLICES / 4;
     let ground = y_min + GROUND_FRACTION * (t.y - y_min);
     let mut x = t.x;
@@ -142,40 +148,33 @@ fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> bool {
             .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.min(v))));
         match (left, right) {
             (Some(a), Some(b)) => x = 0.5 * (a + b),
-            _ => return false,
+            _ => return None,
         }
     }
-    true
+    Some([x, ground])
 }
 
-/// When no armpit is found on `side`: a gap top on that side lower than
-/// the crotch (an arm whose gap with the body closes at the hip or the
-/// thigh, below where the torso starts) names the drawing's problem.
-fn below_crotch(
-    front: &[[f64; 2]],
-    tops: &[GapTop],
-    crotch: GapTop,
-    side: f64,
-) -> Option<SketchError> {
-    let which = if side < 0.0 { "left" } else { "right" };
-    let y_min = crate::polygon::span(front, 1)[0];
-    tops.iter()
-        .filter(|t| side * (t.x - crotch.x) > 0.0 && t.y < crotch.y)
-        // the crotch's own gap found again beside it runs to the ground
-        .filter(|t| !reaches_ground(front, t, y_min))
-        .max_by(|a, b| a.y.total_cmp(&b.y))
-        .map(|t| {
-            SketchError::Segmentation(format!(
-                "the {which} arm's gap with the body closes at y = {:.4}, below the crotch (y = {:.4}): \
-                 an arm must leave the torso above the crotch; draw the {which} arm apart from the hip and leg up to its armpit",
-                t.y, crotch.y
-            ))
+/// The crotch among the gap tops (highest first) whose gaps reach the
+/// ground: the gap between the two legs, whose sides both run down to the
+/// feet. An arm hanging nearly to the ground beside a leg also leaves a
+/// gap that reaches it ([`GROUND_FRACTION`]), but one of its sides is the
+/// hand, which ends above the feet: of the gaps whose higher-ending side
+/// ends lowest (within a join band `g`), the highest top.
+fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], y_min: f64, g: f64) -> Option<GapTop> {
+    let ends: Vec<(GapTop, f64)> = tops
+        .iter()
+        .filter_map(|t| {
+            let [x, ground] = reaches_ground(front, t, y_min)?;
+            let end = |side: f64| reach(front, Pick::Beside(x, side), ground, y_min - g);
+            Some((*t, end(-1.0).max(end(1.0))))
         })
+        .collect();
+    let lowest = ends.iter().map(|e| e.1).fold(f64::INFINITY, f64::min);
+    ends.into_iter().find(|e| e.1 <= lowest + g).map(|e| e.0)
 }
 
 /// Finds the crotch, armpits and neck. The crotch is the highest gap top
-/// whose gap runs down to the ground between the legs
-/// ([`reaches_ground`]); each armpit is where the torso's side, followed
+/// whose gap runs down to the ground between the legs ([`crotch_of`]); each armpit is where the torso's side, followed
 /// up from the crotch, meets its arm ([`armpit`]): for arms hanging apart
 /// the gap top between arm and torso, for a T-pose the arm's underside.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
@@ -184,11 +183,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let mut tops: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
     merge_repeats(&mut tops, GAP_FRACTION * h);
     tops.sort_by(|a, b| b.y.total_cmp(&a.y));
-    let crotch = tops
-        .iter()
-        .find(|t| reaches_ground(front, t, yr[0]))
-        .copied()
-        .ok_or_else(|| {
+    let crotch = crotch_of(front, &tops, yr[0], GAP_FRACTION * h).ok_or_else(|| {
             SketchError::Segmentation(
                 "no crotch found (no gap between the legs running down to the ground): draw the legs apart, \
                  or add a cut path across each leg"
@@ -209,8 +204,9 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             .unwrap_or(a)
     };
     let find = |side: f64| {
-        armpit(front, crotch, yr[1], side)
-            .map_err(|e| below_crotch(front, &tops, crotch, side).unwrap_or(e))
+        armpit(front, crotch, yr[1], side).map_err(|e| {
+            super::refusal::arm_too_low(front, &tops, crotch, [h, torso_min(h)], side).unwrap_or(e)
+        })
     };
     let a0 = at_gap(find(-1.0)?);
     let a1 = at_gap(find(1.0)?);
@@ -441,16 +437,14 @@ pub fn regions(
         });
     }
     // the torso lies between a band above the crotch and one below the armpits
-    let torso_min = (2.0 + MIN_PART_BANDS) * g;
-    if ya - lm.crotch[1] <= torso_min {
-        return Err(SketchError::Segmentation(format!(
-            "the torso is too short: the arms leave the body at y = {:.4}, {:.1} % of the height above the crotch (y = {:.4}); \
-             it needs more than {:.2} %: draw the armpits higher (the arms leaving the body nearer the shoulders) or the crotch lower",
+    let least = torso_min(lm.height());
+    if ya - lm.crotch[1] <= least {
+        return Err(super::refusal::torso_too_short(
             ya,
-            100.0 * (ya - lm.crotch[1]) / lm.height(),
             lm.crotch[1],
-            100.0 * torso_min / lm.height()
-        )));
+            lm.height(),
+            least,
+        ));
     }
     for r in &out {
         if (r.y1 - r.y0).partial_cmp(&(MIN_PART_BANDS * g)) != Some(std::cmp::Ordering::Greater) {

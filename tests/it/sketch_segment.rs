@@ -8,7 +8,9 @@ use crate::sketch_draw::{build, write_pair};
 use pdesculpt::sketch::corpus::Style;
 use pdesculpt::sketch::figure::Humanoid;
 use pdesculpt::sketch::poly::slice;
-use pdesculpt::sketch::segment::{landmarks, neck_interval, regions, JoinHeights, GAP_FRACTION};
+use pdesculpt::sketch::segment::{
+    landmarks, neck_interval, regions, JoinHeights, GAP_FRACTION, GROUND_FRACTION,
+};
 
 fn closed(h: &Humanoid, name: &str) {
     let dir = tmpdir("segment");
@@ -146,5 +148,85 @@ fn armpits_at_the_crotch_are_refused_naming_both_heights() {
             && e.contains("above the crotch (y = ")
             && e.contains("draw the armpits higher"),
         "{e}"
+    );
+}
+
+/// Arms hanging nearly to the ground, their gap with the body closing
+/// below the crotch (seed 4242's issue-range random_0, no torso between
+/// the arms and the legs). The gap between each arm and its leg runs down
+/// past the level the crotch's gap is followed to, so the refusal took it
+/// for the crotch's own gap and said "no right armpit found ... draw the
+/// right arm reaching out from the shoulder" (it is drawn). A leg between
+/// two gaps makes them two (`sketch::poly::same_gap`): the refusal now
+/// names where the arm joins and the crotch.
+#[test]
+fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
+    let h = Humanoid {
+        head: 0.44,
+        shoulder: 0.119,
+        waist: 0.103,
+        hip: 0.086,
+        arm_angle_deg: [57.0, 62.0],
+        arm_radius: 0.029,
+        leg_gap: 0.092,
+        crotch: 0.38,
+        ..Humanoid::default()
+    };
+    let (front, _) = h.outlines().expect("an outline");
+    let y = pdesculpt::polygon::span(&front, 1);
+    let low = y[0] + GROUND_FRACTION * (y[1] - y[0]);
+    assert_eq!(
+        slice(&front, low).len(),
+        4,
+        "the hands hang beside the legs at y = {low:.4}"
+    );
+    let e = landmarks(&front).expect_err("refused").to_string();
+    assert!(
+        e.contains("arm's gap with the body closes at y = ")
+            && e.contains("below the crotch (y = "),
+        "{e}"
+    );
+}
+
+/// Long arms hanging beside the legs to near the ground (seed 9191's
+/// issue-range random_29): the gap between an arm and the torso and leg
+/// also runs down to the ground ([`GROUND_FRACTION`]), and being higher
+/// than the legs' gap it was taken for the crotch ("no left armpit
+/// found"). The crotch is now the gap whose two sides both run down to the
+/// feet (`segment::crotch_of`): a hand ends above them.
+#[test]
+fn arms_hanging_beside_the_legs_are_not_the_crotch() {
+    let h = Humanoid {
+        head: 0.432,
+        shoulder: 0.139,
+        waist: 0.077,
+        hip: 0.105,
+        arm_angle_deg: [67.0, 51.0],
+        arm_length: 0.42,
+        arm_radius: 0.021,
+        leg_gap: 0.047,
+        crotch: 0.37,
+        ..Humanoid::default()
+    };
+    let (front, _) = h.outlines().expect("an outline");
+    let y = pdesculpt::polygon::span(&front, 1);
+    let low = y[0] + GROUND_FRACTION * (h.crotch * (y[1] - y[0]));
+    assert!(
+        slice(&front, low).len() >= 3,
+        "a hand hangs beside the legs at y = {low:.4}"
+    );
+    let lm = landmarks(&front).expect("landmarks");
+    assert!(
+        lm.armpit_l[0] < lm.crotch[0] && lm.crotch[0] < lm.armpit_r[0],
+        "the crotch {:?} lies between the armpits {:?} {:?}",
+        lm.crotch,
+        lm.armpit_l,
+        lm.armpit_r
+    );
+    let legs = slice(&front, lm.crotch[1] - GAP_FRACTION * (y[1] - y[0]));
+    assert!(
+        legs.iter().any(|iv| iv[1] < lm.crotch[0]) && legs.iter().any(|iv| iv[0] > lm.crotch[0]),
+        "a leg on each side of the crotch {:?}: {legs:?}",
+        lm.crotch
     );
 }
