@@ -218,15 +218,17 @@ pub fn field_matrix(segments: &[Segment], points: &[[f64; 3]], s: f64) -> DMatri
     })
 }
 
-/// Relative residuals (max, rms) of `lambda`.
+/// Relative residuals (max, rms) of `lambda`; NaN in a field value or a
+/// weight makes both NaN (`check::Worst`), never a perfect fit.
 pub fn fit_errors(f: &DMatrix<f64>, lambda: &DVector<f64>, threshold: f64) -> (f64, f64) {
+    use crate::check::Worst;
     let r = f * lambda;
     let m = r.len().max(1) as f64;
     let mut mx: f64 = 0.0;
     let mut ss = 0.0;
     for v in r.iter() {
         let e = (v - threshold) / threshold;
-        mx = mx.max(e.abs());
+        mx = mx.worst(e.abs());
         ss += e * e;
     }
     (mx, (ss / m).sqrt())
@@ -285,4 +287,26 @@ pub fn global_fit(
         converged,
         seconds,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Field values 1.1 and 0.9 against a threshold of 1: relative
+    /// residuals +-0.1, so max and RMS are both 0.1 (worked by hand); a
+    /// NaN weight makes both NaN. (A mutant reporting (0, -1) survived
+    /// every conv check: docs/verification.md, conv 3/48.)
+    #[test]
+    fn fit_errors_are_the_relative_residuals_and_keep_nan() {
+        let f = DMatrix::from_row_slice(2, 2, &[1.0, 0.0, 0.0, 2.0]);
+        let (mx, rms) = fit_errors(&f, &DVector::from_vec(vec![1.1, 0.45]), 1.0);
+        let eps = crate::check::tol::ROUNDING;
+        assert!(
+            (mx - 0.1).abs() < eps && (rms - 0.1).abs() < eps,
+            "{mx} {rms}"
+        );
+        let (mx, rms) = fit_errors(&f, &DVector::from_vec(vec![f64::NAN, 0.5]), 1.0);
+        assert!(mx.is_nan() && rms.is_nan(), "{mx} {rms}");
+    }
 }

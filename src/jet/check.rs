@@ -128,14 +128,17 @@ fn f64_path_check(g: &Golden) -> Check {
     .note("the golden functions evaluated in f64 against SymPy's values, and (u + cst 1/2) recip(u + one) + zero in f64 against its closed form and the jet's value")
 }
 
-/// sin^2 + cos^2 = 1 and exp(ln x) = x hold as jets: every derivative of the
-/// identity is zero.
+/// sin^2 + cos^2 = 1 and exp(ln x) = x hold as jets, and `Sum` adds: every
+/// derivative of each identity is zero.
 fn identity_check() -> Check {
     let u = Jet6x6::var_u(0.37);
     let v = Jet6x6::var_v(1.9);
     let x = u * v + u.sin() * 0.5 + 2.0;
     let one = x.sin() * x.sin() + x.cos() * x.cos();
     let back = x.ln().exp();
+    // `Sum` over jets adds them term by term
+    let summed: Jet6x6 = [x, one, back].into_iter().sum();
+    let added = x + one + back;
     let mut worst: f64 = (one.value() - 1.0).abs();
     for i in 0..7 {
         for j in 0..7 {
@@ -144,6 +147,7 @@ fn identity_check() -> Check {
             }
             let rel = (back.deriv(i, j) - x.deriv(i, j)).abs() / x.deriv(i, j).abs().worst(1.0);
             worst = worst.worst(rel);
+            worst = worst.worst((summed.deriv(i, j) - added.deriv(i, j)).abs());
         }
     }
     Check::new(
@@ -155,5 +159,5 @@ fn identity_check() -> Check {
         worst,
         tol::SOLVE,
     )
-    .note("sin^2+cos^2-1 and exp(ln x)-x vanish in every derivative up to (6,6)")
+    .note("sin^2+cos^2-1, exp(ln x)-x and a Sum of jets minus the same jets added vanish in every derivative up to (6,6)")
 }
