@@ -151,6 +151,16 @@ fn armpits_at_the_crotch_are_refused_naming_both_heights() {
     );
 }
 
+/// The figure's front outline and how many slice intervals it has at
+/// `level` of its height above its lowest point (two legs, and each hand
+/// hanging below that level).
+fn intervals_at(h: &Humanoid, level: f64) -> (Vec<[f64; 2]>, usize) {
+    let (front, _) = h.outlines().expect("an outline");
+    let y = pdesculpt::polygon::span(&front, 1);
+    let n = slice(&front, y[0] + level * (y[1] - y[0])).len();
+    (front, n)
+}
+
 /// Arms hanging nearly to the ground, their gap with the body closing
 /// below the crotch (seed 4242's issue-range random_0, no torso between
 /// the arms and the legs). The gap between each arm and its leg runs down
@@ -172,14 +182,8 @@ fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
         crotch: 0.38,
         ..Humanoid::default()
     };
-    let (front, _) = h.outlines().expect("an outline");
-    let y = pdesculpt::polygon::span(&front, 1);
-    let low = y[0] + GROUND_FRACTION * (y[1] - y[0]);
-    assert_eq!(
-        slice(&front, low).len(),
-        4,
-        "the hands hang beside the legs at y = {low:.4}"
-    );
+    let (front, n) = intervals_at(&h, GROUND_FRACTION);
+    assert_eq!(n, 4, "both hands hang beside the legs");
     let e = landmarks(&front).expect_err("refused").to_string();
     assert!(
         e.contains("arm's gap with the body closes at y = ")
@@ -208,13 +212,9 @@ fn arms_hanging_beside_the_legs_are_not_the_crotch() {
         crotch: 0.37,
         ..Humanoid::default()
     };
-    let (front, _) = h.outlines().expect("an outline");
-    let y = pdesculpt::polygon::span(&front, 1);
-    let low = y[0] + GROUND_FRACTION * (h.crotch * (y[1] - y[0]));
-    assert!(
-        slice(&front, low).len() >= 3,
-        "a hand hangs beside the legs at y = {low:.4}"
-    );
+    // below the level the legs' gap is followed to
+    let (front, n) = intervals_at(&h, GROUND_FRACTION * h.crotch);
+    assert!(n >= 3, "a hand hangs beside the legs");
     let lm = landmarks(&front).expect("landmarks");
     assert!(
         lm.armpit_l[0] < lm.crotch[0] && lm.crotch[0] < lm.armpit_r[0],
@@ -223,7 +223,7 @@ fn arms_hanging_beside_the_legs_are_not_the_crotch() {
         lm.armpit_l,
         lm.armpit_r
     );
-    let legs = slice(&front, lm.crotch[1] - GAP_FRACTION * (y[1] - y[0]));
+    let legs = slice(&front, lm.crotch[1] - GAP_FRACTION * lm.height());
     assert!(
         legs.iter().any(|iv| iv[1] < lm.crotch[0]) && legs.iter().any(|iv| iv[0] > lm.crotch[0]),
         "a leg on each side of the crotch {:?}: {legs:?}",
