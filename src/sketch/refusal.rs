@@ -20,11 +20,12 @@ pub fn torso_too_short(ya: f64, crotch_y: f64, h: f64, least: f64) -> SketchErro
 }
 
 /// When no armpit is found on `side` (-1 left, +1 right) of a model of
-/// height `h` whose torso must be longer than `least`: the highest gap top
-/// on that side below the torso's least top (an arm whose gap with the body closes at the hip or the thigh, or
-/// just above the crotch) names the drawing's problem. Gap tops of the
-/// crotch's own gap (its repeats, a square crotch's corners) are not an
-/// arm's; a gap between a leg and an arm hanging to the ground is.
+/// height `h` whose torso must be longer than `least`: the highest gap
+/// top on that side below the torso's least top (an arm whose gap with
+/// the body closes at the hip or the thigh, or just above the crotch)
+/// names the drawing's problem. Gap tops of the crotch's own gap (its
+/// repeats, a square crotch's corners) are not an arm's; a gap between a
+/// leg and an arm hanging to the ground is.
 pub fn arm_too_low(
     front: &[[f64; 2]],
     tops: &[GapTop],

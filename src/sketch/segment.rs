@@ -173,10 +173,11 @@ fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], y_min: f64, g: f64) -> Option<
     ends.into_iter().find(|e| e.1 <= lowest + g).map(|e| e.0)
 }
 
-/// Finds the crotch, armpits and neck. The crotch is the highest gap top
-/// whose gap runs down to the ground between the legs ([`crotch_of`]); each armpit is where the torso's side, followed
-/// up from the crotch, meets its arm ([`armpit`]): for arms hanging apart
-/// the gap top between arm and torso, for a T-pose the arm's underside.
+/// Finds the crotch, armpits and neck. The crotch is the top of the gap
+/// between the legs, which runs down to the ground ([`crotch_of`]); each
+/// armpit is where the torso's side, followed up from the crotch, meets
+/// its arm ([`armpit`]): for arms hanging apart the gap top between arm
+/// and torso, for a T-pose the arm's underside.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let yr = crate::polygon::span(front, 1);
     let h = yr[1] - yr[0];
