@@ -159,14 +159,20 @@ fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> Option<[f64; 2]
 /// feet. An arm hanging nearly to the ground beside a leg also leaves a
 /// gap that reaches it ([`GROUND_FRACTION`]), but one of its sides is the
 /// hand, which ends above the feet: of the gaps whose higher-ending side
-/// ends lowest (within a join band `g`), the highest top.
+/// ends lowest (within a join band `g`), the highest top (one gap: it).
 fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], y_min: f64, g: f64) -> Option<GapTop> {
-    let ends: Vec<(GapTop, f64)> = tops
+    let grounded: Vec<(GapTop, [f64; 2])> = tops
         .iter()
-        .filter_map(|t| {
-            let [x, ground] = reaches_ground(front, t, y_min)?;
+        .filter_map(|t| Some((*t, reaches_ground(front, t, y_min)?)))
+        .collect();
+    if grounded.len() < 2 {
+        return grounded.first().map(|c| c.0);
+    }
+    let ends: Vec<(GapTop, f64)> = grounded
+        .into_iter()
+        .map(|(t, [x, ground])| {
             let end = |side: f64| reach(front, Pick::Beside(x, side), ground, y_min - g);
-            Some((*t, end(-1.0).max(end(1.0))))
+            (t, end(-1.0).max(end(1.0)))
         })
         .collect();
     let lowest = ends.iter().map(|e| e.1).fold(f64::INFINITY, f64::min);

@@ -59,9 +59,10 @@ use super::outlines::side_outlines;
 use super::polygon::depth_span;
 use super::polygon::{bbox, boundary_distance};
 use super::rows::{at, fill_nearest, nearest_paired, remap_near, smooth};
-pub use super::rows::{crossings, remap, ARM_EPS, PAIR_REACH, PAIR_ROWS, SMOOTH_ROWS};
+pub use super::rows::{remap, ARM_EPS, PAIR_REACH, PAIR_ROWS, SMOOTH_ROWS};
 use super::weights::{relative_depth, SpanProfile, SPAN_SMOOTH};
 use super::{OutlineFn, TemplateError};
+use crate::polygon::line_crossings as crossings;
 
 /// Rows per height of the correction profile.
 pub const ROWS: usize = 1024;

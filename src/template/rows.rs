@@ -8,8 +8,6 @@ pub const SMOOTH_ROWS: usize = 2;
 /// fraction of the height beyond the trunk.
 pub const ARM_EPS: f64 = 1e-3;
 
-pub use crate::polygon::line_crossings as crossings;
-
 pub(super) fn smooth(v: &mut [f64], known: &[bool]) {
     let src = v.to_vec();
     let n = v.len();

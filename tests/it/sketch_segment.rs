@@ -7,9 +7,9 @@ use crate::cli::tmpdir;
 use crate::sketch_draw::{build, write_pair};
 use pdesculpt::sketch::corpus::Style;
 use pdesculpt::sketch::figure::Humanoid;
-use pdesculpt::sketch::poly::slice;
+use pdesculpt::sketch::poly::{gap_tops, slice};
 use pdesculpt::sketch::segment::{
-    landmarks, neck_interval, regions, JoinHeights, GAP_FRACTION, GROUND_FRACTION,
+    landmarks, neck_interval, regions, JoinHeights, GAP_FRACTION, GROUND_FRACTION, LANDMARK_SLICES,
 };
 
 fn closed(h: &Humanoid, name: &str) {
@@ -164,11 +164,13 @@ fn intervals_at(h: &Humanoid, level: f64) -> (Vec<[f64; 2]>, usize) {
 /// Arms hanging nearly to the ground, their gap with the body closing
 /// below the crotch (seed 4242's issue-range random_0, no torso between
 /// the arms and the legs). The gap between each arm and its leg runs down
-/// past the level the crotch's gap is followed to, so the refusal took it
-/// for the crotch's own gap and said "no right armpit found ... draw the
-/// right arm reaching out from the shoulder" (it is drawn). A leg between
-/// two gaps makes them two (`sketch::poly::same_gap`): the refusal now
-/// names where the arm joins and the crotch.
+/// past the level a gap is followed to ([`GROUND_FRACTION`] of its top's
+/// height), so the refusal took it for the crotch's own gap and said "no
+/// left armpit found ... draw the left arm reaching out from the shoulder"
+/// (it is drawn). A leg between two gaps makes them two
+/// (`sketch::poly::same_gap`): the refusal now names where the arm joins
+/// and the crotch. (Fails on the code before; with arms of 0.36 instead of
+/// 0.44 the hands end above that level and the old code named it too.)
 #[test]
 fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
     let h = Humanoid {
@@ -177,12 +179,21 @@ fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
         waist: 0.103,
         hip: 0.086,
         arm_angle_deg: [57.0, 62.0],
+        arm_length: 0.44,
         arm_radius: 0.029,
         leg_gap: 0.092,
         crotch: 0.38,
         ..Humanoid::default()
     };
-    let (front, n) = intervals_at(&h, GROUND_FRACTION);
+    // the lowest gap top (an arm's, below the crotch) and the level its gap
+    // is followed down to
+    let (front, _) = h.outlines().expect("an outline");
+    let y = pdesculpt::polygon::span(&front, 1);
+    let lowest = gap_tops(&front, LANDMARK_SLICES)
+        .iter()
+        .map(|t| t.y)
+        .fold(f64::INFINITY, f64::min);
+    let (front, n) = intervals_at(&h, GROUND_FRACTION * (lowest - y[0]) / (y[1] - y[0]));
     assert_eq!(n, 4, "both hands hang beside the legs");
     let e = landmarks(&front).expect_err("refused").to_string();
     assert!(

@@ -423,12 +423,12 @@ fn eight_percent_perturbation_without_passes_is_an_error() {
     assert!(!v.within && v.max_rel > PROFILE_REL, "{v:?}");
 }
 
-/// `envelope::crossings` lists every crossing of a row, sorted: a U shape
-/// (two prongs) is crossed four times between its prongs' heights, twice
-/// below.
+/// `polygon::line_crossings` (the envelope's row crossings) lists every
+/// crossing of a row, sorted: a U shape (two prongs) is crossed four times
+/// between its prongs' heights, twice below.
 #[test]
 fn envelope_crossings_of_a_u_shape() {
-    use pdesculpt::template::envelope::crossings;
+    use pdesculpt::polygon::line_crossings as crossings;
     let u = [
         [0.0, 0.0],
         [3.0, 0.0],
