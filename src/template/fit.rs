@@ -106,6 +106,45 @@ pub fn fit(
     let t0 = Instant::now();
     let memo = super::memo::OutlineMemo::new(outline); // passes re-ask unchanged skins
     let outline: &OutlineFn = &|m: &Mesh, v: View| memo.outline(m, v);
+    check_options(opts)?;
+    let front = validated("the sketched front profile", &sketch.front)?;
+    let side_of = |s: &Vec<[f64; 2]>| validated("the sketched side profile", s);
+    let side = sketch.side.as_ref().map(side_of).transpose()?;
+    if !sketch.sections.is_empty() && side.is_none() {
+        return Err(TemplateError::BadProfile {
+            what: "the sketch".into(),
+            problem: "key cross-sections (high level) need a side profile (medium level)".into(),
+        });
+    }
+    let fitter = Fitter {
+        template,
+        front: &front,
+        opts,
+        outline,
+    };
+    let (alignment, depth_centre, low) = fitter.low(t0)?;
+    let mut levels = vec![low];
+    let done = |levels: Vec<(LevelReport, Vec<[f64; 3]>)>| FitResult {
+        alignment,
+        depth_centre,
+        levels,
+    };
+    let Some(side) = side else {
+        return Ok(done(levels));
+    };
+    let medium = fitter.medium(&levels[0], &side)?;
+    levels.push(medium);
+    if sketch.sections.is_empty() {
+        return Ok(done(levels));
+    }
+    let high = fitter.high(&levels[1].1, &side, &sketch.sections)?;
+    levels.push(high);
+    Ok(done(levels))
+}
+
+/// The fit options' own bounds: a finite positive tolerance, the envelope
+/// falloff and passes within their maxima.
+fn check_options(opts: &FitOptions) -> Result<(), TemplateError> {
     if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
         return Err(TemplateError::BadProfile {
             what: "the fit options".into(),
@@ -126,61 +165,73 @@ pub fn fit(
             ),
         });
     }
-    let front = validated("the sketched front profile", &sketch.front)?;
-    let side_of = |s: &Vec<[f64; 2]>| validated("the sketched side profile", s);
-    let side = sketch.side.as_ref().map(side_of).transpose()?;
-    if !sketch.sections.is_empty() && side.is_none() {
-        return Err(TemplateError::BadProfile {
-            what: "the sketch".into(),
-            problem: "key cross-sections (high level) need a side profile (medium level)".into(),
-        });
-    }
-    let t_front = outline_of(outline, &template.skin, View::Front)?;
-    let (lt, ls) = matched_landmarks(View::Front, opts.front_scheme, &t_front, &front)?;
-    let ta: Vec<[f64; 2]> = lt.iter().map(|&i| t_front[i]).collect();
-    let sa: Vec<[f64; 2]> = ls.iter().map(|&i| front[i]).collect();
-    let sim = Similarity::fit(&ta, &sa);
-    let (blo, bhi) = {
-        let zs: Vec<[f64; 2]> = template
-            .skin
+    Ok(())
+}
+
+/// One fit's inputs shared by its levels: the template, the validated
+/// front profile, the options and the (memoised) outline function.
+struct Fitter<'a> {
+    template: &'a Template,
+    front: &'a [[f64; 2]],
+    opts: &'a FitOptions,
+    outline: &'a OutlineFn<'a>,
+}
+
+/// A level's report and its fitted vertex positions.
+type LevelFit = (LevelReport, Vec<[f64; 3]>);
+
+impl Fitter<'_> {
+    /// The low level (000 sec 4.2.1): the template aligned to the front
+    /// profile by a similarity on matched landmarks, warped and corrected
+    /// in the front view. Returns the similarity, the depth centre it
+    /// scales about, and the level. `t0`: when the fit started.
+    fn low(&self, t0: Instant) -> Result<(Similarity, f64, LevelFit), TemplateError> {
+        let (template, front, opts, outline) = (self.template, self.front, self.opts, self.outline);
+        let t_front = outline_of(outline, &template.skin, View::Front)?;
+        let (lt, ls) = matched_landmarks(View::Front, opts.front_scheme, &t_front, front)?;
+        let ta: Vec<[f64; 2]> = lt.iter().map(|&i| t_front[i]).collect();
+        let sa: Vec<[f64; 2]> = ls.iter().map(|&i| front[i]).collect();
+        let sim = Similarity::fit(&ta, &sa);
+        let (blo, bhi) = {
+            let zs: Vec<[f64; 2]> = template
+                .skin
+                .positions
+                .iter()
+                .map(|p| [p[2], p[1]])
+                .collect();
+            bbox(&zs)
+        };
+        let zc = 0.5 * (blo[0] + bhi[0]);
+        let aligned_outline: Vec<[f64; 2]> = t_front.iter().map(|&p| sim.apply(p)).collect();
+        let (ca, cb) = correspond(&aligned_outline, &lt, front, &ls, opts.front_centres);
+        let before: Vec<[f64; 3]> = template
+            .mesh
             .positions
             .iter()
-            .map(|p| [p[2], p[1]])
+            .map(|p| {
+                let q = sim.apply([p[0], p[1]]);
+                [q[0], q[1], sim.scale * (p[2] - zc) + zc]
+            })
             .collect();
-        bbox(&zs)
-    };
-    let zc = 0.5 * (blo[0] + bhi[0]);
-    let aligned_outline: Vec<[f64; 2]> = t_front.iter().map(|&p| sim.apply(p)).collect();
-    let (ca, cb) = correspond(&aligned_outline, &lt, &front, &ls, opts.front_centres);
-    let before: Vec<[f64; 3]> = template
-        .mesh
-        .positions
-        .iter()
-        .map(|p| {
-            let q = sim.apply([p[0], p[1]]);
-            [q[0], q[1], sim.scale * (p[2] - zc) + zc]
-        })
-        .collect();
-    let mut low = before.clone();
-    let mut stats = WarpStats::default();
-    refine::front_warp(&mut low, &ca, &cb, opts, &mut stats)?;
-    let mut front_err = refine::measure(template, &low, View::Front, &front, outline)?;
-    let mut passes = 0;
-    // correction passes while off; a pass that does not improve is undone
-    while front_err > opts.tolerance && passes < opts.passes {
-        let mut next = low.clone();
-        refine::front_pass(template, &mut next, &front, opts, outline, &mut stats)?;
-        let err = refine::measure(template, &next, View::Front, &front, outline)?;
-        if err >= front_err {
-            break;
+        let mut low = before.clone();
+        let mut stats = WarpStats::default();
+        refine::front_warp(&mut low, &ca, &cb, opts, &mut stats)?;
+        let mut front_err = refine::measure(template, &low, View::Front, front, outline)?;
+        let mut passes = 0;
+        // correction passes while off; a pass that does not improve is undone
+        while front_err > opts.tolerance && passes < opts.passes {
+            let mut next = low.clone();
+            refine::front_pass(template, &mut next, front, opts, outline, &mut stats)?;
+            let err = refine::measure(template, &next, View::Front, front, outline)?;
+            if err >= front_err {
+                break;
+            }
+            (low, front_err) = (next, err);
+            passes += 1;
         }
-        (low, front_err) = (next, err);
-        passes += 1;
-    }
-    let front_fit = refine::view_fit(View::Front, front_err, opts);
-    refine::enforce(Level::Low, &[front_fit], passes, opts)?;
-    let mut levels = vec![(
-        LevelReport {
+        let front_fit = refine::view_fit(View::Front, front_err, opts);
+        refine::enforce(Level::Low, &[front_fit], passes, opts)?;
+        let rep = LevelReport {
             level: Level::Low,
             centres: stats.centres,
             condition: stats.condition,
@@ -189,100 +240,101 @@ pub fn fit(
             passes,
             profiles: vec![front_fit],
             seconds: t0.elapsed().as_secs_f64(),
-        },
-        low,
-    )];
-    let done = |levels: Vec<(LevelReport, Vec<[f64; 3]>)>| FitResult {
-        alignment: sim,
-        depth_centre: zc,
-        levels,
-    };
-    let Some(side) = side else {
-        return Ok(done(levels));
-    };
-    // medium: depth (the envelope passes' hand features and shelves, and
-    // the head's remap, also heights: the front view is measured again)
-    let t1 = Instant::now();
-    let low = &levels[0].1;
-    let mut medium = low.clone();
-    let mut stats = WarpStats::default();
-    refine::side_pass(template, &mut medium, &side, opts, outline, &mut stats)?;
-    let mut side_err = refine::measure(template, &medium, View::Side, &side, outline)?;
-    let mut passes = 0;
-    while side_err > opts.tolerance && passes < opts.passes {
-        let mut next = medium.clone();
-        refine::side_pass(template, &mut next, &side, opts, outline, &mut stats)?;
-        let err = refine::measure(template, &next, View::Side, &side, outline)?;
-        if err >= side_err {
-            break;
+        };
+        Ok((sim, zc, (rep, low)))
+    }
+
+    /// The medium level (000 sec 4.2.2): depth from the side profile (the
+    /// envelope passes' hand features and shelves, and the head's remap,
+    /// also move heights: the front view is measured again).
+    fn medium(&self, low: &LevelFit, side: &[[f64; 2]]) -> Result<LevelFit, TemplateError> {
+        let (template, front, opts, outline) = (self.template, self.front, self.opts, self.outline);
+        let t1 = Instant::now();
+        let (low_rep, low) = low;
+        let mut medium = low.clone();
+        let mut stats = WarpStats::default();
+        refine::side_pass(template, &mut medium, side, opts, outline, &mut stats)?;
+        let mut side_err = refine::measure(template, &medium, View::Side, side, outline)?;
+        let mut passes = 0;
+        while side_err > opts.tolerance && passes < opts.passes {
+            let mut next = medium.clone();
+            refine::side_pass(template, &mut next, side, opts, outline, &mut stats)?;
+            let err = refine::measure(template, &next, View::Side, side, outline)?;
+            if err >= side_err {
+                break;
+            }
+            (medium, side_err) = (next, err);
+            passes += 1;
         }
-        (medium, side_err) = (next, err);
-        passes += 1;
-    }
-    passes += envelope_passes(
-        template,
-        &mut medium,
-        &mut side_err,
-        &front,
-        &side,
-        opts,
-        outline,
-    )?;
-    // the side landmarks, hand features and shelves move heights: the
-    // front view again
-    let front_fit = if opts.side_landmarks || opts.envelope_features || opts.envelope_shelves {
-        let err = refine::measure(template, &medium, View::Front, &front, outline)?;
-        refine::view_fit(View::Front, err, opts)
-    } else {
-        front_fit
-    };
-    let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
-    refine::enforce(Level::Medium, &fits, passes, opts)?;
-    let rep = LevelReport {
-        level: Level::Medium,
-        centres: stats.centres,
-        condition: stats.condition,
-        residual: stats.residual,
-        max_displacement: max_norm(low, &medium),
-        passes,
-        profiles: fits,
-        seconds: t1.elapsed().as_secs_f64(),
-    };
-    levels.push((rep, medium));
-    if sketch.sections.is_empty() {
-        return Ok(done(levels));
-    }
-    let t2 = Instant::now();
-    let medium = &levels[1].1;
-    let (rep, mut high) =
-        sections::fit_sections(template, medium, &front, &side, &sketch.sections, opts)?;
-    let mut side_err = refine::measure(template, &high, View::Side, &side, outline)?;
-    let passes = envelope_passes(
-        template,
-        &mut high,
-        &mut side_err,
-        &front,
-        &side,
-        opts,
-        outline,
-    )?;
-    let fits = vec![
-        refine::view_fit(
-            View::Front,
-            refine::measure(template, &high, View::Front, &front, outline)?,
+        passes += envelope_passes(
+            template,
+            &mut medium,
+            &mut side_err,
+            front,
+            side,
             opts,
-        ),
-        refine::view_fit(View::Side, side_err, opts),
-    ];
-    refine::enforce(Level::High, &fits, passes, opts)?;
-    levels.push((
-        LevelReport {
+            outline,
+        )?;
+        // the side landmarks, hand features and shelves move heights: the
+        // front view again
+        let front_fit = if opts.side_landmarks || opts.envelope_features || opts.envelope_shelves {
+            let err = refine::measure(template, &medium, View::Front, front, outline)?;
+            refine::view_fit(View::Front, err, opts)
+        } else {
+            low_rep.profiles[0]
+        };
+        let fits = vec![front_fit, refine::view_fit(View::Side, side_err, opts)];
+        refine::enforce(Level::Medium, &fits, passes, opts)?;
+        let rep = LevelReport {
+            level: Level::Medium,
+            centres: stats.centres,
+            condition: stats.condition,
+            residual: stats.residual,
+            max_displacement: max_norm(low, &medium),
+            passes,
+            profiles: fits,
+            seconds: t1.elapsed().as_secs_f64(),
+        };
+        Ok((rep, medium))
+    }
+
+    /// The high level (000 sec 4.2.3): the key cross-sections, then the
+    /// envelope passes again.
+    fn high(
+        &self,
+        medium: &[[f64; 3]],
+        side: &[[f64; 2]],
+        sections: &[super::options::SectionSketch],
+    ) -> Result<LevelFit, TemplateError> {
+        let (template, front, opts, outline) = (self.template, self.front, self.opts, self.outline);
+        let t2 = Instant::now();
+        let (rep, mut high) =
+            sections::fit_sections(template, medium, front, side, sections, opts)?;
+        let mut side_err = refine::measure(template, &high, View::Side, side, outline)?;
+        let passes = envelope_passes(
+            template,
+            &mut high,
+            &mut side_err,
+            front,
+            side,
+            opts,
+            outline,
+        )?;
+        let fits = vec![
+            refine::view_fit(
+                View::Front,
+                refine::measure(template, &high, View::Front, front, outline)?,
+                opts,
+            ),
+            refine::view_fit(View::Side, side_err, opts),
+        ];
+        refine::enforce(Level::High, &fits, passes, opts)?;
+        let rep = LevelReport {
             passes,
             profiles: fits,
             seconds: t2.elapsed().as_secs_f64(),
             ..rep
-        },
-        high,
-    ));
-    Ok(done(levels))
+        };
+        Ok((rep, high))
+    }
 }

@@ -41,6 +41,7 @@ pub mod fit;
 pub mod landmarks;
 pub mod measure;
 pub mod memo;
+pub mod occlusion;
 pub mod options;
 pub mod outlines;
 pub mod polygon;

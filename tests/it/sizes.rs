@@ -21,8 +21,6 @@ const FUNCTIONS_OVER: &[(&str, &str, usize)] = &[
     ("src/character/log/validate.rs", "validate_params", 147),
     ("src/conv/silhouette.rs", "silhouette_error_union", 121),
     ("src/conv/skeleton.rs", "prune_and_link", 121),
-    ("src/template/envelope.rs", "envelope_pass", 279),
-    ("src/template/fit.rs", "fit", 189),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
