@@ -77,53 +77,7 @@ pub fn silhouette_error_union(
     let pad = 0.05 * size;
     lo = [lo[0] - pad, lo[1] - pad];
     hi = [hi[0] + pad, hi[1] + pad];
-    let px = ((hi[0] - lo[0]).max(hi[1] - lo[1])) / RASTER as f64;
-    let (w, h) = (
-        ((hi[0] - lo[0]) / px).ceil() as usize + 1,
-        ((hi[1] - lo[1]) / px).ceil() as usize + 1,
-    );
-    let mut cov = vec![false; w * h];
-    for t in &mesh.triangles {
-        let [a, b, c] = t.map(|i| proj[i as usize]);
-        let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        if area.abs() <= 0.0 {
-            continue;
-        }
-        let x0 = ((a[0].min(b[0]).min(c[0]) - lo[0]) / px).floor().max(0.0) as usize;
-        let x1 = (((a[0].max(b[0]).max(c[0]) - lo[0]) / px).ceil() as usize).min(w - 1);
-        let y0 = ((a[1].min(b[1]).min(c[1]) - lo[1]) / px).floor().max(0.0) as usize;
-        let y1 = (((a[1].max(b[1]).max(c[1]) - lo[1]) / px).ceil() as usize).min(h - 1);
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                let p = [lo[0] + (x as f64 + 0.5) * px, lo[1] + (y as f64 + 0.5) * px];
-                let e = |u: [f64; 2], v: [f64; 2]| {
-                    ((v[0] - u[0]) * (p[1] - u[1]) - (v[1] - u[1]) * (p[0] - u[0])) * area.signum()
-                };
-                if e(a, b) >= 0.0 && e(b, c) >= 0.0 && e(c, a) >= 0.0 {
-                    cov[x + w * y] = true;
-                }
-            }
-        }
-    }
-    let mut outline = Vec::new();
-    for y in 0..h {
-        for x in 0..w {
-            if !cov[x + w * y] {
-                continue;
-            }
-            let edge = x == 0
-                || y == 0
-                || x + 1 == w
-                || y + 1 == h
-                || !cov[x - 1 + w * y]
-                || !cov[x + 1 + w * y]
-                || !cov[x + w * (y - 1)]
-                || !cov[x + w * (y + 1)];
-            if edge {
-                outline.push([lo[0] + (x as f64 + 0.5) * px, lo[1] + (y as f64 + 0.5) * px]);
-            }
-        }
-    }
+    let (outline, px) = outline_pixels(&proj, &mesh.triangles, lo, hi);
     if outline.is_empty() || size <= 0.0 {
         return SilhouetteError {
             max_rel: f64::INFINITY,
@@ -164,4 +118,64 @@ pub fn silhouette_error_union(
         mean_rel: mean / size,
         pixel_rel: px / size,
     }
+}
+
+/// The outline pixels (pixel centres, plane coordinates) of the projected
+/// mesh `proj` with `triangles`, rasterised over the box `lo`..`hi` at
+/// [`RASTER`] pixels along its longer side: covered pixels with an
+/// uncovered or missing 4-neighbour. Also returns the pixel size.
+fn outline_pixels(
+    proj: &[[f64; 2]],
+    triangles: &[[u32; 3]],
+    lo: [f64; 2],
+    hi: [f64; 2],
+) -> (Vec<[f64; 2]>, f64) {
+    let px = ((hi[0] - lo[0]).max(hi[1] - lo[1])) / RASTER as f64;
+    let (w, h) = (
+        ((hi[0] - lo[0]) / px).ceil() as usize + 1,
+        ((hi[1] - lo[1]) / px).ceil() as usize + 1,
+    );
+    let mut cov = vec![false; w * h];
+    for t in triangles {
+        let [a, b, c] = t.map(|i| proj[i as usize]);
+        let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        if area.abs() <= 0.0 {
+            continue;
+        }
+        let x0 = ((a[0].min(b[0]).min(c[0]) - lo[0]) / px).floor().max(0.0) as usize;
+        let x1 = (((a[0].max(b[0]).max(c[0]) - lo[0]) / px).ceil() as usize).min(w - 1);
+        let y0 = ((a[1].min(b[1]).min(c[1]) - lo[1]) / px).floor().max(0.0) as usize;
+        let y1 = (((a[1].max(b[1]).max(c[1]) - lo[1]) / px).ceil() as usize).min(h - 1);
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let p = [lo[0] + (x as f64 + 0.5) * px, lo[1] + (y as f64 + 0.5) * px];
+                let e = |u: [f64; 2], v: [f64; 2]| {
+                    ((v[0] - u[0]) * (p[1] - u[1]) - (v[1] - u[1]) * (p[0] - u[0])) * area.signum()
+                };
+                if e(a, b) >= 0.0 && e(b, c) >= 0.0 && e(c, a) >= 0.0 {
+                    cov[x + w * y] = true;
+                }
+            }
+        }
+    }
+    let mut outline = Vec::new();
+    for y in 0..h {
+        for x in 0..w {
+            if !cov[x + w * y] {
+                continue;
+            }
+            let edge = x == 0
+                || y == 0
+                || x + 1 == w
+                || y + 1 == h
+                || !cov[x - 1 + w * y]
+                || !cov[x + 1 + w * y]
+                || !cov[x + w * (y - 1)]
+                || !cov[x + w * (y + 1)];
+            if edge {
+                outline.push([lo[0] + (x as f64 + 0.5) * px, lo[1] + (y as f64 + 0.5) * px]);
+            }
+        }
+    }
+    (outline, px)
 }

@@ -344,64 +344,8 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
     let mut pruned = vec![false; nt];
     // chains from terminals
     for start in 0..nt {
-        if triangles[start].kind != TriangleKind::Terminal {
-            continue;
-        }
-        let mut chain = vec![start];
-        let mut prev = usize::MAX;
-        let mut cur = start;
-        loop {
-            let next = triangles[cur]
-                .neighbours
-                .iter()
-                .copied()
-                .find(|&o| o != prev && !chain.contains(&o));
-            match next {
-                Some(o) => {
-                    chain.push(o);
-                    if triangles[o].kind != TriangleKind::Sleeve {
-                        break;
-                    }
-                    prev = cur;
-                    cur = o;
-                }
-                None => break,
-            }
-        }
-        let last = *chain.last().unwrap_or(&start);
-        // walk from the terminal: the current end circle (and every circle
-        // it already absorbed) is pruned when mostly inside the next one,
-        // so tapering runs are not pruned away in a cascade
-        // a terminal-to-terminal chain is walked from each end to its middle
-        let ends_in_junction = triangles[last].kind == TriangleKind::Junction;
-        let walk = if ends_in_junction {
-            chain.len().saturating_sub(1)
-        } else {
-            chain.len() / 2
-        };
-        let mut cluster: Vec<usize> = vec![chain[0]];
-        for i in 0..walk {
-            let t = chain[i];
-            let next = chain[i + 1];
-            let b = (triangles[next].centre, triangles[next].radius);
-            let kept = chain.iter().filter(|&&c| !pruned[c]).count();
-            let absorbed = cluster.iter().all(|&k| {
-                let a = (triangles[k].centre, triangles[k].radius);
-                mostly_inside(a, b, opts.overlap)
-                    || (triangles[k].kind == TriangleKind::Terminal
-                        && a.1 < opts.tiny * b.1
-                        && super::stroke::dist2(a.0, b.0) <= b.1)
-            });
-            if triangles[t].kind != TriangleKind::Junction
-                && t != last
-                && (ends_in_junction || kept > 2)
-                && absorbed
-            {
-                pruned[t] = true;
-                cluster.push(next);
-            } else {
-                cluster = vec![next];
-            }
+        if triangles[start].kind == TriangleKind::Terminal {
+            prune_chain(&triangles, start, opts, &mut pruned);
         }
     }
     // a sleeve sliver along a straight run of the stroke (its apex within
@@ -429,6 +373,87 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
     }
     // link: a kept triangle connects to the nearest kept triangle along each
     // neighbour direction (walking through pruned ones)
+    let edges = link(&triangles, &node_of_triangle);
+    Skeleton {
+        triangles,
+        node_of_triangle,
+        nodes,
+        radii,
+        edges,
+    }
+}
+
+/// Prunes along the chain of sleeves from terminal triangle `start` (to a
+/// junction, or to another terminal: then to the chain's middle): the
+/// current end circle (and every circle it already absorbed) is pruned
+/// when mostly inside the next one, so tapering runs are not pruned away
+/// in a cascade.
+fn prune_chain(
+    triangles: &[SkeletonTriangle],
+    start: usize,
+    opts: &SkeletonOptions,
+    pruned: &mut [bool],
+) {
+    let mut chain = vec![start];
+    let mut prev = usize::MAX;
+    let mut cur = start;
+    loop {
+        let next = triangles[cur]
+            .neighbours
+            .iter()
+            .copied()
+            .find(|&o| o != prev && !chain.contains(&o));
+        match next {
+            Some(o) => {
+                chain.push(o);
+                if triangles[o].kind != TriangleKind::Sleeve {
+                    break;
+                }
+                prev = cur;
+                cur = o;
+            }
+            None => break,
+        }
+    }
+    let last = *chain.last().unwrap_or(&start);
+    // a terminal-to-terminal chain is walked from each end to its middle
+    let ends_in_junction = triangles[last].kind == TriangleKind::Junction;
+    let walk = if ends_in_junction {
+        chain.len().saturating_sub(1)
+    } else {
+        chain.len() / 2
+    };
+    let mut cluster: Vec<usize> = vec![chain[0]];
+    for i in 0..walk {
+        let t = chain[i];
+        let next = chain[i + 1];
+        let b = (triangles[next].centre, triangles[next].radius);
+        let kept = chain.iter().filter(|&&c| !pruned[c]).count();
+        let absorbed = cluster.iter().all(|&k| {
+            let a = (triangles[k].centre, triangles[k].radius);
+            mostly_inside(a, b, opts.overlap)
+                || (triangles[k].kind == TriangleKind::Terminal
+                    && a.1 < opts.tiny * b.1
+                    && super::stroke::dist2(a.0, b.0) <= b.1)
+        });
+        if triangles[t].kind != TriangleKind::Junction
+            && t != last
+            && (ends_in_junction || kept > 2)
+            && absorbed
+        {
+            pruned[t] = true;
+            cluster.push(next);
+        } else {
+            cluster = vec![next];
+        }
+    }
+}
+
+/// The skeleton's edges: each kept triangle (`node_of_triangle`) linked to
+/// the nearest kept triangle along each neighbour direction (walking
+/// through pruned ones).
+fn link(triangles: &[SkeletonTriangle], node_of_triangle: &[Option<usize>]) -> Vec<[usize; 2]> {
+    let nt = triangles.len();
     let mut edges: Vec<[usize; 2]> = Vec::new();
     for t in 0..nt {
         let Some(a) = node_of_triangle[t] else {
@@ -452,11 +477,5 @@ fn prune_and_link(triangles: Vec<SkeletonTriangle>, opts: &SkeletonOptions) -> S
             }
         }
     }
-    Skeleton {
-        triangles,
-        node_of_triangle,
-        nodes,
-        radii,
-        edges,
-    }
+    edges
 }

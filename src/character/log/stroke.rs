@@ -110,92 +110,146 @@ fn len(a: [f64; 2], b: [f64; 2]) -> f64 {
     (b[0] - a[0]).hypot(b[1] - a[1])
 }
 
+/// The bounding box of a stroke whose points are finite and within the
+/// counts, spanning less than a whole ring in angle, a finite positive
+/// width in `u` and a positive one in angle.
+fn bounds(stroke: &[[f64; 2]]) -> Result<([f64; 2], [f64; 2]), StrokeError> {
+    if stroke.len() > STROKE_POINTS_MAX {
+        return Err(StrokeError::TooManyPoints {
+            count: stroke.len(),
+        });
+    }
+    if let Some((i, p)) = stroke
+        .iter()
+        .enumerate()
+        .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
+    {
+        return Err(StrokeError::NotFinite {
+            index: i,
+            u: p[0],
+            theta: p[1],
+        });
+    }
+    if stroke.len() < STROKE_POINTS_MIN {
+        return Err(StrokeError::TooFewPoints {
+            count: stroke.len(),
+        });
+    }
+    let (lo, hi) = polygon::bbox(stroke);
+    if hi[1] - lo[1] >= 2.0 * PI {
+        return Err(StrokeError::TooWide {
+            span: hi[1] - lo[1],
+        });
+    }
+    let ext = [hi[0] - lo[0], hi[1] - lo[1]];
+    if !ext[0].is_finite() {
+        return Err(StrokeError::UnboundedU {
+            lo: lo[0],
+            hi: hi[0],
+        });
+    }
+    if !(ext[0] > 0.0 && ext[1] > 0.0) {
+        return Err(StrokeError::Degenerate {
+            area: 0.0,
+            bbox: ext[0] * ext[1],
+        });
+    }
+    Ok((lo, hi))
+}
+
+/// The stroke in box coordinates (`lo`, `ext`: its bounding box's corner
+/// and extent) with repeated points dropped (keeping the first of a run)
+/// and a last point that repeats the first; `index[k]` is the kept point
+/// of stroke point `k`. Refused when open, with too few points left, or
+/// crossing itself.
+fn boxed_polygon(
+    stroke: &[[f64; 2]],
+    lo: [f64; 2],
+    ext: [f64; 2],
+) -> Result<(Vec<[f64; 2]>, Vec<usize>), StrokeError> {
+    let boxed = |p: &[f64; 2]| [(p[0] - lo[0]) / ext[0], (p[1] - lo[1]) / ext[1]];
+    let mut poly: Vec<[f64; 2]> = Vec::with_capacity(stroke.len());
+    let mut index = Vec::with_capacity(stroke.len());
+    for p in stroke {
+        let q = boxed(p);
+        if poly.last().is_some_and(|&l| len(l, q) <= SAME_POINT) {
+            index.push(poly.len() - 1);
+        } else {
+            index.push(poly.len());
+            poly.push(q);
+        }
+    }
+    let length: f64 = (1..poly.len()).map(|i| len(poly[i - 1], poly[i])).sum();
+    // closed: the last point repeats the first (then dropped), or ends
+    // within the allowed gap of it (the gap is the closing edge)
+    let gap = len(poly[poly.len() - 1], poly[0]);
+    if poly.len() > 1 && gap <= SAME_POINT {
+        poly.pop();
+        let last = poly.len();
+        index
+            .iter_mut()
+            .filter(|k| **k == last)
+            .for_each(|k| *k = 0);
+    } else if gap > CLOSE_GAP_MAX * (length + gap) {
+        return Err(StrokeError::Open {
+            gap,
+            length: length + gap,
+        });
+    }
+    if poly.len() < STROKE_POINTS_MIN {
+        return Err(StrokeError::TooFewPoints { count: poly.len() });
+    }
+    if let Some((a, b, _)) = polygon::self_intersection(&poly) {
+        return Err(StrokeError::SelfIntersecting {
+            first: a,
+            second: b,
+        });
+    }
+    Ok((poly, index))
+}
+
+/// The default corners: the vertices extremal in the directions
+/// `(-1,-1), (1,-1), (1,1), (-1,1)` (a rectangle's own corners).
+fn extreme_corners(poly: &[[f64; 2]]) -> [usize; 4] {
+    let dirs = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+    dirs.map(|d| {
+        let f = |k: usize| d[0] * poly[k][0] + d[1] * poly[k][1];
+        (0..poly.len())
+            .max_by(|&i, &j| f(i).total_cmp(&f(j)))
+            .unwrap_or(0)
+    })
+}
+
+/// Each vertex's image on the unit square's boundary: side `k` (from
+/// corner `k` to corner `k + 1`) onto the square's side `k` by arc length.
+fn square_images(poly: &[[f64; 2]], corners: [usize; 4]) -> Vec<[f64; 2]> {
+    let n = poly.len();
+    let square_corner = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+    let mut square = vec![[0.0; 2]; n];
+    for k in 0..4 {
+        let (a, b) = (corners[k], corners[(k + 1) % 4]);
+        let count = (b + n - a) % n;
+        let mut s = vec![0.0; count + 1];
+        for j in 1..=count {
+            s[j] = s[j - 1] + len(poly[(a + j - 1) % n], poly[(a + j) % n]);
+        }
+        let (c0, c1) = (square_corner[k], square_corner[(k + 1) % 4]);
+        for j in 0..count {
+            let t = s[j] / s[count];
+            square[(a + j) % n] = [c0[0] + t * (c1[0] - c0[0]), c0[1] + t * (c1[1] - c0[1])];
+        }
+    }
+    square
+}
+
 impl StrokeMap {
     /// The map of `stroke` (points `(u, theta)`, closed: the last point
     /// returns to the first within [`CLOSE_GAP_MAX`] of the length) with
     /// optional `corners` (four indices into `stroke`, in order along it).
     pub fn new(stroke: &[[f64; 2]], corners: Option<[usize; 4]>) -> Result<StrokeMap, StrokeError> {
-        if stroke.len() > STROKE_POINTS_MAX {
-            return Err(StrokeError::TooManyPoints {
-                count: stroke.len(),
-            });
-        }
-        if let Some((i, p)) = stroke
-            .iter()
-            .enumerate()
-            .find(|(_, p)| !(p[0].is_finite() && p[1].is_finite()))
-        {
-            return Err(StrokeError::NotFinite {
-                index: i,
-                u: p[0],
-                theta: p[1],
-            });
-        }
-        if stroke.len() < STROKE_POINTS_MIN {
-            return Err(StrokeError::TooFewPoints {
-                count: stroke.len(),
-            });
-        }
-        let (lo, hi) = polygon::bbox(stroke);
-        if hi[1] - lo[1] >= 2.0 * PI {
-            return Err(StrokeError::TooWide {
-                span: hi[1] - lo[1],
-            });
-        }
+        let (lo, hi) = bounds(stroke)?;
         let ext = [hi[0] - lo[0], hi[1] - lo[1]];
-        if !ext[0].is_finite() {
-            return Err(StrokeError::UnboundedU {
-                lo: lo[0],
-                hi: hi[0],
-            });
-        }
-        if !(ext[0] > 0.0 && ext[1] > 0.0) {
-            return Err(StrokeError::Degenerate {
-                area: 0.0,
-                bbox: ext[0] * ext[1],
-            });
-        }
-        let boxed = |p: &[f64; 2]| [(p[0] - lo[0]) / ext[0], (p[1] - lo[1]) / ext[1]];
-        // drop repeated points (keeping the first of a run) and a last
-        // point that repeats the first; `index[k]` is the kept point of
-        // stroke point k
-        let mut poly: Vec<[f64; 2]> = Vec::with_capacity(stroke.len());
-        let mut index = Vec::with_capacity(stroke.len());
-        for p in stroke {
-            let q = boxed(p);
-            if poly.last().is_some_and(|&l| len(l, q) <= SAME_POINT) {
-                index.push(poly.len() - 1);
-            } else {
-                index.push(poly.len());
-                poly.push(q);
-            }
-        }
-        let length: f64 = (1..poly.len()).map(|i| len(poly[i - 1], poly[i])).sum();
-        // closed: the last point repeats the first (then dropped), or ends
-        // within the allowed gap of it (the gap is the closing edge)
-        let gap = len(poly[poly.len() - 1], poly[0]);
-        if poly.len() > 1 && gap <= SAME_POINT {
-            poly.pop();
-            let last = poly.len();
-            index
-                .iter_mut()
-                .filter(|k| **k == last)
-                .for_each(|k| *k = 0);
-        } else if gap > CLOSE_GAP_MAX * (length + gap) {
-            return Err(StrokeError::Open {
-                gap,
-                length: length + gap,
-            });
-        }
-        if poly.len() < STROKE_POINTS_MIN {
-            return Err(StrokeError::TooFewPoints { count: poly.len() });
-        }
-        if let Some((a, b, _)) = polygon::self_intersection(&poly) {
-            return Err(StrokeError::SelfIntersecting {
-                first: a,
-                second: b,
-            });
-        }
+        let (mut poly, index) = boxed_polygon(stroke, lo, ext)?;
         let signed = polygon::signed_area(&poly);
         if signed.abs() < FILL_MIN {
             return Err(StrokeError::Degenerate {
@@ -226,13 +280,7 @@ impl StrokeMap {
             // reverse order
             corners = corners.map(|c| [c[0], c[3], c[2], c[1]].map(|k| n - 1 - k));
         }
-        let corners = corners.unwrap_or_else(|| {
-            let dirs = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
-            dirs.map(|d| {
-                let f = |k: usize| d[0] * poly[k][0] + d[1] * poly[k][1];
-                (0..n).max_by(|&i, &j| f(i).total_cmp(&f(j))).unwrap_or(0)
-            })
-        });
+        let corners = corners.unwrap_or_else(|| extreme_corners(&poly));
         let off = |k: usize| (corners[k] + n - corners[0]) % n;
         if !(off(1) > 0 && off(2) > off(1) && off(3) > off(2)) {
             return Err(StrokeError::BadCorners {
@@ -243,21 +291,7 @@ impl StrokeMap {
                 },
             });
         }
-        let square_corner = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-        let mut square = vec![[0.0; 2]; n];
-        for k in 0..4 {
-            let (a, b) = (corners[k], corners[(k + 1) % 4]);
-            let count = (b + n - a) % n;
-            let mut s = vec![0.0; count + 1];
-            for j in 1..=count {
-                s[j] = s[j - 1] + len(poly[(a + j - 1) % n], poly[(a + j) % n]);
-            }
-            let (c0, c1) = (square_corner[k], square_corner[(k + 1) % 4]);
-            for j in 0..count {
-                let t = s[j] / s[count];
-                square[(a + j) % n] = [c0[0] + t * (c1[0] - c0[0]), c0[1] + t * (c1[1] - c0[1])];
-            }
-        }
+        let square = square_images(&poly, corners);
         let map = StrokeMap {
             u: [lo[0], hi[0]],
             theta: [lo[1], hi[1]],

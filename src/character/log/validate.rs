@@ -111,38 +111,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
                 crate::pde6::A_MAX
             ),
         ),
-        Edit::GecTransform { transform, .. } => match transform {
-            SectionTransform::Translate { d } => {
-                for (k, name) in ["d[0]", "d[1]", "d[2]"].into_iter().enumerate() {
-                    length(e, name, d[k])?;
-                }
-                Ok(())
-            }
-            SectionTransform::Scale { sx, sy } => {
-                let exp = format!("a factor in (0, {SCALE_MAX}]");
-                param(e, "sx", *sx, *sx > 0.0 && *sx <= SCALE_MAX, &exp)?;
-                param(e, "sy", *sy, *sy > 0.0 && *sy <= SCALE_MAX, &exp)
-            }
-            SectionTransform::Rotate { angle } => param(e, "angle", *angle, true, "finite"),
-            SectionTransform::Bend { kappa, axis } => {
-                param(e, "kappa", *kappa, true, "finite")?;
-                for (k, name) in ["axis[0]", "axis[1]", "axis[2]"].into_iter().enumerate() {
-                    param(e, name, axis[k], true, "finite")?;
-                }
-                Ok(())
-            }
-            SectionTransform::Bump { h, theta, sigma } => {
-                length(e, "h", *h)?;
-                param(e, "theta", *theta, true, "finite")?;
-                param(
-                    e,
-                    "sigma",
-                    *sigma,
-                    *sigma > 0.0 && *sigma <= SIGMA_MAX,
-                    &format!("a width in (0, {SIGMA_MAX}]"),
-                )
-            }
-        },
+        Edit::GecTransform { transform, .. } => check_transform(e, transform),
         Edit::Force { u, force, a, .. } => check_force(e, u, *a, force),
         Edit::ForceRegion {
             u, theta, force, a, ..
@@ -182,51 +151,7 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
             tangent,
             reach,
             ..
-        } => {
-            param(
-                e,
-                "reach",
-                *reach,
-                *reach > 0.0 && *reach <= 1.0,
-                "in (0, 1]",
-            )?;
-            if curve.is_none() && tangent.is_none() {
-                return Err(EditError::Invalid {
-                    op: e.op(),
-                    part: e.part().unwrap_or("").into(),
-                    message: "give a new \"curve\", a \"tangent\" change, or both".into(),
-                });
-            }
-            if let Some(t) = tangent {
-                for (k, name) in ["tangent[0]", "tangent[1]", "tangent[2]"]
-                    .into_iter()
-                    .enumerate()
-                {
-                    length(e, name, t[k])?;
-                }
-            }
-            if let Some(c) = curve {
-                let ok = match c {
-                    SectionShape::Circle { r } => r.is_finite() && *r > 0.0,
-                    SectionShape::Ellipse { a, b, offset } => {
-                        a.is_finite() && b.is_finite() && offset.is_finite() && *a > 0.0 && *b > 0.0
-                    }
-                    SectionShape::Gec { centre, x, y } => centre
-                        .iter()
-                        .chain(x.iter().flatten())
-                        .chain(y.iter().flatten())
-                        .all(|v| v.is_finite()),
-                };
-                if !ok {
-                    return Err(EditError::Invalid {
-                        op: e.op(),
-                        part: e.part().unwrap_or("").into(),
-                        message: "the new curve needs finite numbers and positive radii".into(),
-                    });
-                }
-            }
-            Ok(())
-        }
+        } => check_boundary(e, curve.as_ref(), tangent.as_ref(), *reach),
         Edit::Plate {
             centre, radius, d, ..
         } => {
@@ -240,6 +165,89 @@ pub fn validate_params(e: &Edit) -> Result<(), EditError> {
         // strokes are validated against the built part in `check_builds`
         Edit::Sasm(_) | Edit::SasmAux(_) => Ok(()),
     }
+}
+
+/// A section transform's parameters: finite, and within their ranges.
+fn check_transform(e: &Edit, transform: &SectionTransform) -> Result<(), EditError> {
+    match transform {
+        SectionTransform::Translate { d } => {
+            for (k, name) in ["d[0]", "d[1]", "d[2]"].into_iter().enumerate() {
+                length(e, name, d[k])?;
+            }
+            Ok(())
+        }
+        SectionTransform::Scale { sx, sy } => {
+            let exp = format!("a factor in (0, {SCALE_MAX}]");
+            param(e, "sx", *sx, *sx > 0.0 && *sx <= SCALE_MAX, &exp)?;
+            param(e, "sy", *sy, *sy > 0.0 && *sy <= SCALE_MAX, &exp)
+        }
+        SectionTransform::Rotate { angle } => param(e, "angle", *angle, true, "finite"),
+        SectionTransform::Bend { kappa, axis } => {
+            param(e, "kappa", *kappa, true, "finite")?;
+            for (k, name) in ["axis[0]", "axis[1]", "axis[2]"].into_iter().enumerate() {
+                param(e, name, axis[k], true, "finite")?;
+            }
+            Ok(())
+        }
+        SectionTransform::Bump { h, theta, sigma } => {
+            length(e, "h", *h)?;
+            param(e, "theta", *theta, true, "finite")?;
+            param(
+                e,
+                "sigma",
+                *sigma,
+                *sigma > 0.0 && *sigma <= SIGMA_MAX,
+                &format!("a width in (0, {SIGMA_MAX}]"),
+            )
+        }
+    }
+}
+
+/// A boundary edit's reach in (0, 1], a new curve with finite numbers and
+/// positive radii, a finite tangent change; one of the two given.
+fn check_boundary(
+    e: &Edit,
+    curve: Option<&SectionShape>,
+    tangent: Option<&[f64; 3]>,
+    reach: f64,
+) -> Result<(), EditError> {
+    param(e, "reach", reach, reach > 0.0 && reach <= 1.0, "in (0, 1]")?;
+    if curve.is_none() && tangent.is_none() {
+        return Err(EditError::Invalid {
+            op: e.op(),
+            part: e.part().unwrap_or("").into(),
+            message: "give a new \"curve\", a \"tangent\" change, or both".into(),
+        });
+    }
+    if let Some(t) = tangent {
+        for (k, name) in ["tangent[0]", "tangent[1]", "tangent[2]"]
+            .into_iter()
+            .enumerate()
+        {
+            length(e, name, t[k])?;
+        }
+    }
+    if let Some(c) = curve {
+        let ok = match c {
+            SectionShape::Circle { r } => r.is_finite() && *r > 0.0,
+            SectionShape::Ellipse { a, b, offset } => {
+                a.is_finite() && b.is_finite() && offset.is_finite() && *a > 0.0 && *b > 0.0
+            }
+            SectionShape::Gec { centre, x, y } => centre
+                .iter()
+                .chain(x.iter().flatten())
+                .chain(y.iter().flatten())
+                .all(|v| v.is_finite()),
+        };
+        if !ok {
+            return Err(EditError::Invalid {
+                op: e.op(),
+                part: e.part().unwrap_or("").into(),
+                message: "the new curve needs finite numbers and positive radii".into(),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Smallest shape parameter of a force edit.
