@@ -304,6 +304,22 @@ pub fn printed_four_sided(kind: &ForceKind, m: usize, n: usize) -> Option<f64> {
 mod tests {
     use super::*;
 
+    /// Below its switch, `sinc` is the series `1 - x^2/6`: it agrees with
+    /// `sin x / x` (accurate to a few ulp there) to rounding. A sign slip in
+    /// the series term is off by `x^2/3` (1.3e-10 to 3.3e-9 here), far above
+    /// it.
+    #[test]
+    fn sinc_near_zero_is_sin_x_over_x() {
+        for x in [2e-5f64, -5e-5, 9e-5, 9.9e-5] {
+            let want = x.sin() / x;
+            assert!(
+                (sinc(x) - want).abs() <= crate::check::tol::ROUNDING,
+                "x = {x:e}: {} against {want}",
+                sinc(x)
+            );
+        }
+    }
+
     /// The bump is the half sine on `[a, b]` and zero on either side of it.
     #[test]
     fn bump_is_a_half_sine_inside_and_zero_outside() {
