@@ -65,6 +65,7 @@ pub mod poly;
 pub mod quadruped;
 pub mod quality;
 pub mod refusal;
+pub mod region;
 pub mod removed;
 pub mod report;
 pub mod section_place;

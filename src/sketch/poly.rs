@@ -74,20 +74,17 @@ pub fn gap_tops(points: &[[f64; 2]], n: usize) -> Vec<GapTop> {
     out
 }
 
-/// Whether the gap tops `a` and `b` top one gap: just below the lower of
-/// them, no slice interval lies between their x (a gap's repeated tops,
+/// Whether the gap tops `a` and `b` top one gap: `depth` below the lower
+/// of them, no slice interval lies between their x (a gap's repeated tops,
 /// the corners of a square crotch). A leg between them (the crotch and the
-/// gap between that leg and a hanging arm) makes two gaps.
-pub fn same_gap(points: &[[f64; 2]], a: GapTop, b: GapTop) -> bool {
-    let h = crate::polygon::span(points, 1);
-    let y = a.y.min(b.y) - SAME_GAP_BELOW * (h[1] - h[0]);
+/// gap between that leg and a hanging arm) makes two gaps; a tooth of the
+/// outline shallower than `depth` between two tops of one wavy crotch
+/// (corpus random_0 of seed 4242: 1e-4 of the height) does not.
+pub fn same_gap(points: &[[f64; 2]], a: GapTop, b: GapTop, depth: f64) -> bool {
+    let y = a.y.min(b.y) - depth;
     let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
     !slice(points, y).iter().any(|iv| lo < iv[0] && iv[1] < hi)
 }
-
-/// How far below the lower top [`same_gap`] slices, as a fraction of the
-/// height: below the bisection's precision (`gap_tops`), above rounding.
-const SAME_GAP_BELOW: f64 = 1e-6;
 
 /// Merges the repeated tops of one leaning gap ([`gap_tops`]): sorted by
 /// x, a run of tops each closer than `g` to the one before is one gap,

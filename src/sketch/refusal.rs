@@ -20,7 +20,8 @@ pub fn torso_too_short(ya: f64, crotch_y: f64, h: f64, least: f64) -> SketchErro
 }
 
 /// When no armpit is found on `side` (-1 left, +1 right) of a model of
-/// height `h` whose torso must be longer than `least`: the highest gap
+/// height `h` whose torso must be longer than `least` (`g`: a join band,
+/// the depth [`same_gap`] looks below two tops): the highest gap
 /// top on that side below the torso's least top (an arm whose gap with
 /// the body closes at the hip or the thigh, or just above the crotch)
 /// names the drawing's problem. Gap tops of the crotch's own gap (its
@@ -30,14 +31,14 @@ pub fn arm_too_low(
     front: &[[f64; 2]],
     tops: &[GapTop],
     crotch: GapTop,
-    [h, least]: [f64; 2],
+    [h, least, g]: [f64; 3],
     side: f64,
 ) -> Option<SketchError> {
     let which = if side < 0.0 { "left" } else { "right" };
     let t = tops
         .iter()
         .filter(|t| side * (t.x - crotch.x) > 0.0 && t.y <= crotch.y + least)
-        .filter(|t| !same_gap(front, **t, crotch))
+        .filter(|t| !same_gap(front, **t, crotch, g))
         .max_by(|a, b| a.y.total_cmp(&b.y))?;
     Some(if t.y < crotch.y {
         SketchError::Segmentation(format!(

@@ -21,6 +21,8 @@
 //! half-width times the cosine of the curve's tilt.
 
 use super::poly::{gap_tops, merge_repeats, neck_base, slice, GapTop};
+pub(crate) use super::region::reach;
+pub use super::region::{interval, Pick, Region, SidePick};
 use super::SketchError;
 
 /// Half-height of a join band, as a fraction of the model height.
@@ -158,9 +160,15 @@ fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> Option<[f64; 2]
 /// ground: the gap between the two legs, whose sides both run down to the
 /// feet. An arm hanging nearly to the ground beside a leg also leaves a
 /// gap that reaches it ([`GROUND_FRACTION`]), but one of its sides is the
-/// hand, which ends above the feet: of the gaps whose higher-ending side
-/// ends lowest (within a join band `g`), the highest top (one gap: it).
-fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], y_min: f64, g: f64) -> Option<GapTop> {
+/// hand, which mostly ends above the feet: the gaps whose higher-ending
+/// side ends lowest (within a join band `g`) are kept (one gap: it). A hand
+/// that reaches the feet ties with them; the legs' gap lies under the
+/// head, an arm's beside the body: of the kept gaps, those nearest the
+/// figure's axis (the middle of the widest interval of the outline's slice
+/// a join band below its top `yr[1]`, within a band `g`), and of these the highest top (a gap
+/// between the ankles of legs touching at the knees lies under the crotch).
+fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], yr: [f64; 2], g: f64) -> Option<GapTop> {
+    let y_min = yr[0];
     let grounded: Vec<(GapTop, [f64; 2])> = tops
         .iter()
         .filter_map(|t| Some((*t, reaches_ground(front, t, y_min)?)))
@@ -176,7 +184,18 @@ fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], y_min: f64, g: f64) -> Option<
         })
         .collect();
     let lowest = ends.iter().map(|e| e.1).fold(f64::INFINITY, f64::min);
-    ends.into_iter().find(|e| e.1 <= lowest + g).map(|e| e.0)
+    let tied: Vec<GapTop> = ends
+        .into_iter()
+        .filter(|e| e.1 <= lowest + g)
+        .map(|e| e.0)
+        .collect();
+    let axis = slice(front, yr[1] - g)
+        .into_iter()
+        .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
+        .map(|iv| 0.5 * (iv[0] + iv[1]));
+    let off = |t: &GapTop| axis.map_or(0.0, |a| (t.x - a).abs());
+    let nearest = tied.iter().map(off).fold(f64::INFINITY, f64::min);
+    tied.into_iter().find(|t| off(t) <= nearest + g)
 }
 
 /// Finds the crotch, armpits and neck. The crotch is the top of the gap
@@ -190,7 +209,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let mut tops: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
     merge_repeats(&mut tops, GAP_FRACTION * h);
     tops.sort_by(|a, b| b.y.total_cmp(&a.y));
-    let crotch = crotch_of(front, &tops, yr[0], GAP_FRACTION * h).ok_or_else(|| {
+    let crotch = crotch_of(front, &tops, yr, GAP_FRACTION * h).ok_or_else(|| {
             SketchError::Segmentation(
                 "no crotch found (no gap between the legs running down to the ground): draw the legs apart, \
                  or add a cut path across each leg"
@@ -212,7 +231,14 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     };
     let find = |side: f64| {
         armpit(front, crotch, yr[1], side).map_err(|e| {
-            super::refusal::arm_too_low(front, &tops, crotch, [h, torso_min(h)], side).unwrap_or(e)
+            super::refusal::arm_too_low(
+                front,
+                &tops,
+                crotch,
+                [h, torso_min(h), GAP_FRACTION * h],
+                side,
+            )
+            .unwrap_or(e)
         })
     };
     let a0 = at_gap(find(-1.0)?);
@@ -265,107 +291,6 @@ pub fn neck_interval(front: &[[f64; 2]], lm: &Landmarks) -> Option<[f64; 2]> {
     slice(front, lm.neck_base)
         .into_iter()
         .find(|iv| iv[0] <= axis && axis <= iv[1])
-}
-
-/// Which slice interval belongs to a part at height y.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Pick {
-    /// The interval whose centre lies in `(lo, hi)`; the widest if several.
-    CentreIn(f64, f64),
-    /// A leg beside the crotch: `Beside(x, side)` is the interval whose
-    /// centre lies on `side` (-1 left, +1 right) of `x`, the nearest to
-    /// `x` (an arm hanging beside a thin leg is farther out, and may be
-    /// wider). Below the crotch the legs are apart down to the ground (a
-    /// simple outline whose legs touched would enclose the gap above them:
-    /// no crotch there).
-    Beside(f64, f64),
-}
-
-/// A region of the outline: the part's slices between two heights.
-#[derive(Clone, Debug)]
-pub struct Region {
-    pub name: String,
-    pub y0: f64,
-    pub y1: f64,
-    pub pick: Pick,
-    /// The part is traversed from y1 down to y0 (limbs hang from the join).
-    pub downward: bool,
-    /// Free (closed) end at the far side.
-    pub tip: bool,
-    /// A limb hanging from a shoulder: its top section is tilted up toward
-    /// the outline's outer side (sign of the outward x direction).
-    pub shoulder: Option<f64>,
-    /// Which part of the side profile gives the region's depth.
-    pub side: SidePick,
-    /// Sections stay horizontal whatever the central curve's tilt (an
-    /// animal's long body, whose slice centres drift with its two ends).
-    pub horizontal: bool,
-}
-
-/// Which part of the side profile's slice gives a region's depth and its
-/// centre's z.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SidePick {
-    /// Hidden in the side view (a humanoid's arms, an animal's tail): the
-    /// sections stay circles.
-    Hidden,
-    /// The slice's widest interval (torso, head, legs of a humanoid: a hand
-    /// hanging apart in the side view is left out).
-    Whole,
-    /// The slice's extent from its first interval to its last (an animal's
-    /// body seen head-on, where its legs are still apart at the belly).
-    Span,
-    /// The widest slice interval whose centre z lies in `(lo, hi)` (one leg
-    /// of an animal's pair, seen apart in the view from its front).
-    CentreIn(f64, f64),
-}
-
-/// The interval of a region at height y.
-pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
-    let widest = |a: &[f64; 2], b: &[f64; 2]| (a[1] - a[0]).total_cmp(&(b[1] - b[0]));
-    match pick {
-        Pick::CentreIn(lo, hi) => slice(front, y)
-            .into_iter()
-            .filter(|iv| {
-                let c = 0.5 * (iv[0] + iv[1]);
-                c > lo && c < hi
-            })
-            .max_by(widest),
-        Pick::Beside(x, side) => slice(front, y)
-            .into_iter()
-            .filter(|iv| side * (0.5 * (iv[0] + iv[1]) - x) > 0.0)
-            .min_by(|a, b| {
-                (0.5 * (a[0] + a[1]) - x)
-                    .abs()
-                    .total_cmp(&(0.5 * (b[0] + b[1]) - x).abs())
-            }),
-    }
-}
-
-/// The farthest height from `from` toward `to` where the region still has
-/// an interval (scan, then bisection).
-pub(super) fn reach(front: &[[f64; 2]], pick: Pick, from: f64, to: f64) -> f64 {
-    let n = 400;
-    let (mut out, mut inside) = (to, from);
-    let mut last = from;
-    for k in 1..=n {
-        let y = from + (to - from) * k as f64 / n as f64;
-        if interval(front, pick, y).is_none() {
-            out = y;
-            inside = last;
-            break;
-        }
-        last = y;
-    }
-    for _ in 0..40 {
-        let m = 0.5 * (out + inside);
-        if interval(front, pick, m).is_some() {
-            inside = m;
-        } else {
-            out = m;
-        }
-    }
-    inside
 }
 
 /// The six regions of a standing humanoid; a limb starts at its cut when

@@ -241,3 +241,74 @@ fn arms_hanging_beside_the_legs_are_not_the_crotch() {
         lm.crotch
     );
 }
+
+/// A hand hanging as low as the feet (seed 5150's issue-range random_20,
+/// held out: arms 56 and 65 degrees below horizontal, head 0.48 of the
+/// height, no torso to speak of). The right arm's gap with the leg reaches
+/// the ground and its hand ends as low as the feet, so it tied with the
+/// legs' gap at the ground and, being higher, was taken for the crotch: the
+/// refusal said "no right armpit found ... draw the right arm reaching out"
+/// of a drawn arm. The crotch is now the tied gap nearest the figure's
+/// axis (under the head), and the refusal names the short torso.
+#[test]
+fn a_hand_as_low_as_the_feet_is_not_the_crotch() {
+    for arm_length in [0.40, 0.43, 0.45] {
+        let h = Humanoid {
+            head: 0.484,
+            shoulder: 0.164,
+            waist: 0.091,
+            hip: 0.138,
+            arm_angle_deg: [56.0, 65.0],
+            arm_length,
+            arm_radius: 0.031,
+            leg_gap: 0.058,
+            crotch: 0.34,
+            ..Humanoid::default()
+        };
+        let (front, _) = h.outlines().expect("an outline");
+        match landmarks(&front) {
+            Ok(lm) => assert!(
+                lm.armpit_l[0] < lm.crotch[0] && lm.crotch[0] < lm.armpit_r[0],
+                "arm length {arm_length}: the crotch {:?} lies between the armpits {:?} {:?}",
+                lm.crotch,
+                lm.armpit_l,
+                lm.armpit_r
+            ),
+            Err(e) => assert!(
+                !e.to_string().contains("armpit found"),
+                "arm length {arm_length}: {e}"
+            ),
+        }
+    }
+}
+
+/// The same figure as drawn by the corpus writer (seed 4242's random_0:
+/// US Letter in inches, 16 cm tall; `tests/data/sketch/wavy_crotch_*.svg`):
+/// the writer's arcs leave the crotch's edge wavy by 1e-4 of the height,
+/// so its gap has three tops a few mm apart. A slice just below them
+/// (`sketch::poly::same_gap`) met the outline's teeth between them and
+/// took them for three gaps: the refusal named one of the crotch's own
+/// tops as the arm's and said the arm's gap "closes at y = 0.0574, below
+/// the crotch (y = 0.0574)". Two tops are now one gap unless a part runs a
+/// join band below them; the arm's own top (y = 0.0550) is named.
+#[test]
+fn a_wavy_crotch_is_one_gap_in_the_refusal() {
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
+    let (f, s) = (
+        data.join("wavy_crotch_front.svg"),
+        data.join("wavy_crotch_side.svg"),
+    );
+    let e = build(&f, &s, None).expect_err("refused").to_string();
+    let y = |key: &str| -> f64 {
+        let at = e.find(key).unwrap_or_else(|| panic!("{key} in {e}")) + key.len();
+        e[at..]
+            .split(|c: char| !(c.is_ascii_digit() || c == '.'))
+            .next()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or_else(|| panic!("a height after {key} in {e}"))
+    };
+    assert!(
+        y("closes at y = ") < y("below the crotch (y = "),
+        "the arm's gap closes below the crotch as named: {e}"
+    );
+}
