@@ -180,7 +180,46 @@ struct Fitter<'a> {
 /// A level's report and its fitted vertex positions.
 type LevelFit = (LevelReport, Vec<[f64; 3]>);
 
+/// One correction pass of the fitted positions toward a profile
+/// ([`refine::front_pass`], [`refine::side_pass`]).
+type CorrectionPass = fn(
+    &Template,
+    &mut [[f64; 3]],
+    &[[f64; 2]],
+    &FitOptions,
+    &OutlineFn,
+    &mut WarpStats,
+) -> Result<(), TemplateError>;
+
 impl Fitter<'_> {
+    /// Correction passes (`pass`: [`refine::front_pass`] or
+    /// [`refine::side_pass`]) of `positions` toward `profile` in `view`
+    /// while its error `err` is over the tolerance, at most
+    /// [`FitOptions::passes`]; a pass that does not reduce the error is
+    /// undone and ends them. Returns the passes kept.
+    fn corrections(
+        &self,
+        pass: CorrectionPass,
+        (view, profile): (View, &[[f64; 2]]),
+        positions: &mut Vec<[f64; 3]>,
+        err: &mut f64,
+        stats: &mut WarpStats,
+    ) -> Result<usize, TemplateError> {
+        let (template, opts, outline) = (self.template, self.opts, self.outline);
+        let mut passes = 0;
+        while *err > opts.tolerance && passes < opts.passes {
+            let mut next = positions.clone();
+            pass(template, &mut next, profile, opts, outline, stats)?;
+            let e = refine::measure(template, &next, view, profile, outline)?;
+            if e >= *err {
+                break;
+            }
+            (*positions, *err) = (next, e);
+            passes += 1;
+        }
+        Ok(passes)
+    }
+
     /// The low level (000 sec 4.2.1): the template aligned to the front
     /// profile by a similarity on matched landmarks, warped and corrected
     /// in the front view. Returns the similarity, the depth centre it
@@ -217,18 +256,13 @@ impl Fitter<'_> {
         let mut stats = WarpStats::default();
         refine::front_warp(&mut low, &ca, &cb, opts, &mut stats)?;
         let mut front_err = refine::measure(template, &low, View::Front, front, outline)?;
-        let mut passes = 0;
-        // correction passes while off; a pass that does not improve is undone
-        while front_err > opts.tolerance && passes < opts.passes {
-            let mut next = low.clone();
-            refine::front_pass(template, &mut next, front, opts, outline, &mut stats)?;
-            let err = refine::measure(template, &next, View::Front, front, outline)?;
-            if err >= front_err {
-                break;
-            }
-            (low, front_err) = (next, err);
-            passes += 1;
-        }
+        let passes = self.corrections(
+            refine::front_pass,
+            (View::Front, front),
+            &mut low,
+            &mut front_err,
+            &mut stats,
+        )?;
         let front_fit = refine::view_fit(View::Front, front_err, opts);
         refine::enforce(Level::Low, &[front_fit], passes, opts)?;
         let rep = LevelReport {
@@ -255,17 +289,13 @@ impl Fitter<'_> {
         let mut stats = WarpStats::default();
         refine::side_pass(template, &mut medium, side, opts, outline, &mut stats)?;
         let mut side_err = refine::measure(template, &medium, View::Side, side, outline)?;
-        let mut passes = 0;
-        while side_err > opts.tolerance && passes < opts.passes {
-            let mut next = medium.clone();
-            refine::side_pass(template, &mut next, side, opts, outline, &mut stats)?;
-            let err = refine::measure(template, &next, View::Side, side, outline)?;
-            if err >= side_err {
-                break;
-            }
-            (medium, side_err) = (next, err);
-            passes += 1;
-        }
+        let mut passes = self.corrections(
+            refine::side_pass,
+            (View::Side, side),
+            &mut medium,
+            &mut side_err,
+            &mut stats,
+        )?;
         passes += envelope_passes(
             template,
             &mut medium,
