@@ -174,3 +174,43 @@ impl<const U: usize, const V: usize> Jet<U, V> {
         out
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::Jet;
+    use crate::check::tol;
+
+    /// A jet in one variable (`V = 1`) carries its derivatives through an
+    /// elementary function: sin's are cos, -sin, -cos. The series' length
+    /// is `max_total_order() + 1` with the order `(U - 1) + (V - 1)`; a
+    /// product in place of the sum is 0 here and keeps only the value.
+    #[test]
+    fn one_variable_jets_carry_derivatives_through_sin() {
+        let x = 0.7f64;
+        let s = Jet::<4, 1>::var_u(x).sin();
+        let want = [x.sin(), x.cos(), -x.sin(), -x.cos()];
+        for (k, w) in want.iter().enumerate() {
+            let got = s.deriv(k, 0);
+            assert!(
+                (got - w).abs() <= tol::ROUNDING,
+                "d^{k}/du^{k}: {got} against {w}"
+            );
+        }
+    }
+
+    /// `powf` at a non-negative integer power is `powi`'s exact expansion,
+    /// also at `x0 = 0`, where the general series' `x0^(p - k)` is
+    /// infinite for `k > p` (and `0 * inf` is NaN): `(u + v)^2` at 0 has
+    /// every second derivative 2 and nothing else.
+    #[test]
+    fn powf_at_an_integer_power_is_exact_at_zero() {
+        let p = (Jet::<4, 4>::var_u(0.0) + Jet::var_v(0.0)).powf(2.0);
+        for i in 0..4 {
+            for j in 0..4 {
+                let want = if i + j == 2 { 2.0 } else { 0.0 };
+                let got = p.deriv(i, j);
+                assert!((got - want).abs() <= tol::ROUNDING, "d^({i},{j}): {got}");
+            }
+        }
+    }
+}
