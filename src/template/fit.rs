@@ -220,6 +220,18 @@ impl Fitter<'_> {
         Ok(passes)
     }
 
+    /// [`envelope_passes`] with this fit's template, front, options and
+    /// outline function.
+    fn envelope(
+        &self,
+        positions: &mut Vec<[f64; 3]>,
+        side_err: &mut f64,
+        side: &[[f64; 2]],
+    ) -> Result<usize, TemplateError> {
+        let (template, front, opts, outline) = (self.template, self.front, self.opts, self.outline);
+        envelope_passes(template, positions, side_err, front, side, opts, outline)
+    }
+
     /// The low level (000 sec 4.2.1): the template aligned to the front
     /// profile by a similarity on matched landmarks, warped and corrected
     /// in the front view. Returns the similarity, the depth centre it
@@ -296,15 +308,7 @@ impl Fitter<'_> {
             &mut side_err,
             &mut stats,
         )?;
-        passes += envelope_passes(
-            template,
-            &mut medium,
-            &mut side_err,
-            front,
-            side,
-            opts,
-            outline,
-        )?;
+        passes += self.envelope(&mut medium, &mut side_err, side)?;
         // the side landmarks, hand features and shelves move heights: the
         // front view again
         let front_fit = if opts.side_landmarks || opts.envelope_features || opts.envelope_shelves {
@@ -341,15 +345,7 @@ impl Fitter<'_> {
         let (rep, mut high) =
             sections::fit_sections(template, medium, front, side, sections, opts)?;
         let mut side_err = refine::measure(template, &high, View::Side, side, outline)?;
-        let passes = envelope_passes(
-            template,
-            &mut high,
-            &mut side_err,
-            front,
-            side,
-            opts,
-            outline,
-        )?;
+        let passes = self.envelope(&mut high, &mut side_err, side)?;
         let fits = vec![
             refine::view_fit(
                 View::Front,
