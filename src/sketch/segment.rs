@@ -189,10 +189,8 @@ fn crotch_of(front: &[[f64; 2]], tops: &[GapTop], yr: [f64; 2], g: f64) -> Optio
         .filter(|e| e.1 <= lowest + g)
         .map(|e| e.0)
         .collect();
-    let axis = slice(front, yr[1] - g)
-        .into_iter()
-        .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
-        .map(|iv| 0.5 * (iv[0] + iv[1]));
+    let anywhere = Pick::CentreIn(f64::NEG_INFINITY, f64::INFINITY);
+    let axis = interval(front, anywhere, yr[1] - g).map(|iv| 0.5 * (iv[0] + iv[1]));
     let off = |t: &GapTop| axis.map_or(0.0, |a| (t.x - a).abs());
     let nearest = tied.iter().map(off).fold(f64::INFINITY, f64::min);
     tied.into_iter().find(|t| off(t) <= nearest + g)

@@ -35,52 +35,6 @@ pub const ENVELOPE_FALLOFF_MAX: i32 = 8;
 /// outlines; the study's cases keep at most 4).
 pub const ENVELOPE_PASSES_MAX: usize = 64;
 
-/// Envelope correction passes ([`super::envelope::envelope_pass`]) while
-/// the side view misses the tolerance, at most
-/// [`FitOptions::envelope_passes`]; a pass that does not reduce the miss
-/// is undone and ends them. Returns the passes kept.
-fn envelope_passes(
-    template: &Template,
-    positions: &mut Vec<[f64; 3]>,
-    side_err: &mut f64,
-    front: &[[f64; 2]],
-    side: &[[f64; 2]],
-    opts: &FitOptions,
-    outline: &OutlineFn,
-) -> Result<usize, TemplateError> {
-    let mut kept = 0;
-    let mut front_err = None;
-    while *side_err > opts.tolerance && kept < opts.envelope_passes {
-        let mut next = positions.clone();
-        let features = opts.envelope_features
-            && super::envelope::feature_warp(template, &mut next, side, opts, outline)? > 0;
-        let shelves = opts.envelope_shelves
-            && super::envelope::shelf_warp(template, &mut next, side, opts, outline)? > 0;
-        let features = features || shelves;
-        super::envelope::envelope_pass(template, &mut next, side, opts, outline)?;
-        let err = refine::measure(template, &next, View::Side, side, outline)?;
-        if err >= *side_err {
-            break;
-        }
-        if features {
-            // heights moved: the front view must stay within the tolerance
-            // (or no worse than it was)
-            let before = match front_err {
-                Some(e) => e,
-                None => refine::measure(template, positions, View::Front, front, outline)?,
-            };
-            let after = refine::measure(template, &next, View::Front, front, outline)?;
-            if after > before.max(opts.tolerance) {
-                break;
-            }
-            front_err = Some(after);
-        }
-        (*positions, *side_err) = (next, err);
-        kept += 1;
-    }
-    Ok(kept)
-}
-
 pub(crate) fn max_norm(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
     a.iter()
         .zip(b)
@@ -220,8 +174,10 @@ impl Fitter<'_> {
         Ok(passes)
     }
 
-    /// [`envelope_passes`] with this fit's template, front, options and
-    /// outline function.
+    /// Envelope correction passes ([`super::envelope::envelope_pass`])
+    /// while the side view misses the tolerance, at most
+    /// [`FitOptions::envelope_passes`]; a pass that does not reduce the
+    /// miss is undone and ends them. Returns the passes kept.
     fn envelope(
         &self,
         positions: &mut Vec<[f64; 3]>,
@@ -229,7 +185,37 @@ impl Fitter<'_> {
         side: &[[f64; 2]],
     ) -> Result<usize, TemplateError> {
         let (template, front, opts, outline) = (self.template, self.front, self.opts, self.outline);
-        envelope_passes(template, positions, side_err, front, side, opts, outline)
+        let mut kept = 0;
+        let mut front_err = None;
+        while *side_err > opts.tolerance && kept < opts.envelope_passes {
+            let mut next = positions.clone();
+            let features = opts.envelope_features
+                && super::envelope::feature_warp(template, &mut next, side, opts, outline)? > 0;
+            let shelves = opts.envelope_shelves
+                && super::envelope::shelf_warp(template, &mut next, side, opts, outline)? > 0;
+            let features = features || shelves;
+            super::envelope::envelope_pass(template, &mut next, side, opts, outline)?;
+            let err = refine::measure(template, &next, View::Side, side, outline)?;
+            if err >= *side_err {
+                break;
+            }
+            if features {
+                // heights moved: the front view must stay within the tolerance
+                // (or no worse than it was)
+                let before = match front_err {
+                    Some(e) => e,
+                    None => refine::measure(template, positions, View::Front, front, outline)?,
+                };
+                let after = refine::measure(template, &next, View::Front, front, outline)?;
+                if after > before.max(opts.tolerance) {
+                    break;
+                }
+                front_err = Some(after);
+            }
+            (*positions, *side_err) = (next, err);
+            kept += 1;
+        }
+        Ok(kept)
     }
 
     /// The low level (000 sec 4.2.1): the template aligned to the front
