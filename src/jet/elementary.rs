@@ -213,4 +213,40 @@ mod tests {
             }
         }
     }
+
+    /// Subtracting a constant moves the value and nothing else: `x - c`
+    /// at `x0` has the value `x0 - c`, the first derivative 1, the rest 0
+    /// (as `x + (-c)`).
+    #[test]
+    fn subtracting_a_constant_moves_only_the_value() {
+        let (x0, c) = (0.7f64, 2.5f64);
+        let d = Jet::<3, 3>::var_u(x0) - c;
+        let e = Jet::<3, 3>::var_u(x0) + (-c);
+        for i in 0..3 {
+            for j in 0..3 {
+                let want = match (i, j) {
+                    (0, 0) => x0 - c,
+                    (1, 0) => 1.0,
+                    _ => 0.0,
+                };
+                let (got, sum) = (d.deriv(i, j), e.deriv(i, j));
+                assert!((got - want).abs() <= tol::ROUNDING, "d^({i},{j}): {got}");
+                assert!(
+                    (got - sum).abs() <= tol::ROUNDING,
+                    "d^({i},{j}): {got} against {sum}"
+                );
+            }
+        }
+    }
+
+    /// The f64 side of `Real` reads its value as itself (code generic over
+    /// `Real` picks a chain's piece by it: `pde6::Chain::eval`).
+    #[test]
+    fn an_f64_is_its_own_value() {
+        use super::super::Real;
+        for x in [-3.25f64, 0.0, 1e-300, 7.5e12] {
+            assert_eq!(Real::value(&x), x);
+        }
+        assert!(Real::value(&f64::NAN).is_nan());
+    }
 }
