@@ -36,6 +36,11 @@ pub enum Sub {
         /// Also save the document with its derived parts filled in.
         #[arg(long)]
         save_doc: Option<PathBuf>,
+        /// Also write a picture (SVG) of where the model misses its
+        /// drawings: per view, the drawn outline in red, the model's in
+        /// blue, the largest miss circled.
+        #[arg(long)]
+        overlay: Option<PathBuf>,
     },
     /// Append one edit to the document's log, dropping the redo tail: the
     /// document with the edit is built once and kept only when that build
@@ -125,10 +130,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             output,
             layout,
             save_doc,
+            overlay,
         } => {
             io::Format::from_path(&output)?;
             if let Some(p) = &save_doc {
                 outputs::doc_output("--save-doc", p)?;
+            }
+            if let Some(p) = &overlay {
+                outputs::svg_output("--overlay", p)?;
             }
             // saving the derived parts into the document itself is the
             // documented way to store them: that one file is locked, read
@@ -150,6 +159,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
             if let Some(p) = &save_doc {
                 outs.push(("--save-doc", p));
             }
+            if let Some(p) = &overlay {
+                outs.push(("--overlay", p));
+            }
             outputs::check(&inputs, &outs)?;
             let base = doc.parent().map(PathBuf::from).unwrap_or_default();
             let progress = pdesculpt::progress::Progress::spinner("character build", json);
@@ -161,7 +173,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
                 }
             }
             let with_doc = save_doc.as_deref().map(|p| (&built.doc, p));
-            outputs::write_mesh_and_doc(&built.model.mesh, &output, layout.layout(), with_doc)?;
+            let overlay = overlay.as_deref().map(|p| (p, built.overlay_svg()));
+            outputs::write_mesh_and_doc(
+                &built.model.mesh,
+                &output,
+                layout.layout(),
+                with_doc,
+                overlay,
+            )?;
             super::sketch::report(&built, &output, json)
         }
         Sub::Edit { doc, op, drawn } => {

@@ -39,23 +39,44 @@ pub fn doc_output(role: &str, path: &Path) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Writes the mesh (format by extension) and, when given, the document,
-/// as one step: both files complete, or neither replaced.
+/// An overlay (`--overlay`) is SVG: refuses another extension.
+pub fn svg_output(role: &str, path: &Path) -> anyhow::Result<()> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if ext != "svg" {
+        anyhow::bail!(
+            "{role} {}: the overlay is an SVG picture; give a path ending in .svg",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// Writes the mesh (format by extension) and, when given, the document and
+/// the overlay picture, as one step: every file complete, or none replaced.
 pub fn write_mesh_and_doc(
     mesh: &pdesculpt::mesh::Mesh,
     output: &Path,
     layout: io::Layout,
     doc: Option<(&CharacterDoc, &Path)>,
+    overlay: Option<(&Path, String)>,
 ) -> anyhow::Result<()> {
     let scene = io::Scene::single(&io::model_name(output), mesh.clone());
     let mesh_bytes = io::encode_scene(&scene, io::Format::from_path(output)?, layout)?;
-    match doc {
-        Some((d, p)) => {
-            let doc_bytes = d.to_bytes()?;
-            io::write_all_atomic(&[(output, &mesh_bytes), (p, &doc_bytes)])?;
-            eprintln!("wrote {}", p.display());
-        }
-        None => io::write_atomic(output, &mesh_bytes)?,
+    let doc_bytes = doc.map(|(d, _)| d.to_bytes()).transpose()?;
+    let mut files: Vec<(&Path, &[u8])> = vec![(output, &mesh_bytes)];
+    if let (Some((_, p)), Some(b)) = (doc, &doc_bytes) {
+        files.push((p, b));
+    }
+    if let Some((p, svg)) = &overlay {
+        files.push((p, svg.as_bytes()));
+    }
+    io::write_all_atomic(&files)?;
+    for (p, _) in &files[1..] {
+        eprintln!("wrote {}", p.display());
     }
     Ok(())
 }

@@ -85,6 +85,11 @@ pub struct BuildArgs {
     /// Also save the character document (with the derived parts).
     #[arg(long)]
     pub save_doc: Option<PathBuf>,
+    /// Also write a picture (SVG) of where the model misses the drawing:
+    /// per view, the drawn outline in red, the model's in blue, the
+    /// largest miss circled.
+    #[arg(long)]
+    pub overlay: Option<PathBuf>,
 }
 
 /// A length with a unit (`m`, `dm`, `cm`, `mm`; bare: metres), in metres.
@@ -129,6 +134,10 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     if let Some(p) = &a.save_doc {
         super::outputs::doc_output("--save-doc", p)?;
         outs.push(("--save-doc", p));
+    }
+    if let Some(p) = &a.overlay {
+        super::outputs::svg_output("--overlay", p)?;
+        outs.push(("--overlay", p));
     }
     super::outputs::check(&inputs, &outs)?;
     let sections: Vec<KeySection> = match &a.sections {
@@ -178,7 +187,14 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     let built = build_document(&doc, Path::new("."), Resolution::default(), true)?;
     progress.finish();
     let with_doc = a.save_doc.as_deref().map(|p| (&built.doc, p));
-    super::outputs::write_mesh_and_doc(&built.model.mesh, &a.output, a.layout.layout(), with_doc)?;
+    let overlay = a.overlay.as_deref().map(|p| (p, built.overlay_svg()));
+    super::outputs::write_mesh_and_doc(
+        &built.model.mesh,
+        &a.output,
+        a.layout.layout(),
+        with_doc,
+        overlay,
+    )?;
     report(&built, &a.output, json)
 }
 

@@ -35,6 +35,28 @@ pub struct Built {
     pub side: Option<Outline>,
 }
 
+impl Built {
+    /// Where the model misses its drawing (`sketch::overlay`): the body
+    /// (without removed parts and props, as the report measures it)
+    /// against the placed drawn outlines, as SVG.
+    pub fn overlay_svg(&self) -> String {
+        let mut names: Vec<&str> = self
+            .report
+            .removed
+            .iter()
+            .map(|r| r.name.as_str())
+            .collect();
+        names.extend(self.report.props.iter().map(|p| p.name.as_str()));
+        let body = crate::sketch::report::without_groups(&self.model.mesh, &names);
+        let views = crate::sketch::overlay::views(
+            &body,
+            &self.front.profile,
+            self.side.as_ref().map(|s| &s.profile),
+        );
+        crate::sketch::overlay::svg(&views, self.report.height)
+    }
+}
+
 /// Errors of a build, by step.
 #[derive(Debug, thiserror::Error)]
 pub enum BuildError {

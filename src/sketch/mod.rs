@@ -59,6 +59,7 @@ mod foot;
 pub mod input;
 pub mod keysection;
 pub mod limb;
+pub mod overlay;
 pub mod part_slices;
 pub mod place;
 pub mod poly;
