@@ -363,6 +363,19 @@ mod tests {
         }
     }
 
+    /// The corrections' stable names (`Correction::name`), each parsing
+    /// back to its own choice (`FromStr`); a mutation sample found nothing
+    /// reading a name (`name` -> `""` survived).
+    #[test]
+    fn each_correction_parses_back_from_its_name() {
+        let names: Vec<&str> = Correction::ALL.iter().map(|c| c.name()).collect();
+        assert_eq!(names, ["none", "project", "best"]);
+        for c in Correction::ALL {
+            assert_eq!(c.name().parse::<Correction>().ok(), Some(c));
+        }
+        assert!("".parse::<Correction>().is_err());
+    }
+
     /// The counts a fit needs before any matrix is built: J >= 1 and
     /// 2J + 1 points (a mutation sample found that nothing else noticed
     /// `check_counts` doing nothing: the least squares then reports a rank
