@@ -31,8 +31,9 @@ pub use assembly::{build_model, Model, Resolution};
 /// Errors of assembling a document's parts and transitions into one model.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
+    /// A GEC key section's frame or curve is invalid.
     #[error("key section: {0}")]
-    Section(String),
+    Section(#[from] crate::curve::gec::GecError),
     #[error("part '{part}': {message}")]
     Part { part: String, message: String },
     #[error("document: {0}")]

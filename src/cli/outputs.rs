@@ -22,37 +22,28 @@ pub fn check(inputs: &[(&str, &Path)], outputs: &[(&str, &Path)]) -> anyhow::Res
     Ok(())
 }
 
-/// A character document is written as JSON: refuses another extension
-/// (`--save-doc x.obj` would put JSON into a mesh file name).
-pub fn doc_output(role: &str, path: &Path) -> anyhow::Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    if ext != "json" {
+/// Refuses `path` (the output of option `role`) unless it ends in `.ext`
+/// (any case); `what` says what the file holds.
+fn require_extension(role: &str, path: &Path, ext: &str, what: &str) -> anyhow::Result<()> {
+    let got = path.extension().and_then(|e| e.to_str()).unwrap_or("");
+    if !got.eq_ignore_ascii_case(ext) {
         anyhow::bail!(
-            "{role} {}: a character document is JSON; give a path ending in .json",
+            "{role} {}: {what}; give a path ending in .{ext}",
             path.display()
         );
     }
     Ok(())
 }
 
+/// A character document is written as JSON: refuses another extension
+/// (`--save-doc x.obj` would put JSON into a mesh file name).
+pub fn doc_output(role: &str, path: &Path) -> anyhow::Result<()> {
+    require_extension(role, path, "json", "a character document is JSON")
+}
+
 /// An overlay (`--overlay`) is SVG: refuses another extension.
 pub fn svg_output(role: &str, path: &Path) -> anyhow::Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    if ext != "svg" {
-        anyhow::bail!(
-            "{role} {}: the overlay is an SVG picture; give a path ending in .svg",
-            path.display()
-        );
-    }
-    Ok(())
+    require_extension(role, path, "svg", "the overlay is an SVG picture")
 }
 
 /// Writes the mesh (format by extension) and, when given, the document and

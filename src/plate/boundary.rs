@@ -97,8 +97,7 @@ pub fn alpha_shape(points: &[[f64; 2]], alpha0: f64) -> Result<Boundary, PlateEr
         .enumerate()
         .map(|(index, &p)| Site { p, index })
         .collect();
-    let dt = DelaunayTriangulation::<Site>::bulk_load(sites)
-        .map_err(|e| PlateError::DegenerateProjection(format!("Delaunay triangulation: {e:?}")))?;
+    let dt = DelaunayTriangulation::<Site>::bulk_load(sites).map_err(PlateError::Insertion)?;
     if dt.num_vertices() != points.len() {
         return Err(PlateError::DegenerateProjection(format!(
             "{} region vertices project onto the same points as others",

@@ -167,7 +167,7 @@ pub fn female_fig10() -> Result<Fig10, SasmError> {
     let doc = bundled("female", Level::Final)
         .ok_or_else(|| SasmError::Mesh("the bundled female does not parse".into()))?;
     let b = build_document(&doc, std::path::Path::new("."), Resolution::default(), true)
-        .map_err(|e| SasmError::Mesh(e.to_string()))?;
+        .map_err(|e| SasmError::Build(Box::new(e)))?;
     let part = |n: &str| {
         b.model
             .parts

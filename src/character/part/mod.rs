@@ -82,10 +82,8 @@ fn curve_of(s: &SectionSpec) -> Result<Fourier3, ModelError> {
             }
         }
         SectionShape::Gec { centre, x, y } => {
-            let frame = Frame::new(c, e1, e2).map_err(|e| ModelError::Section(e.to_string()))?;
-            Gec::new(frame, *centre, x.clone(), y.clone())
-                .map_err(|e| ModelError::Section(e.to_string()))?
-                .to_fourier3()
+            let frame = Frame::new(c, e1, e2)?;
+            Gec::new(frame, *centre, x.clone(), y.clone())?.to_fourier3()
         }
     })
 }
