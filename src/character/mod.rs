@@ -31,11 +31,18 @@ pub use assembly::{build_model, Model, Resolution};
 /// Errors of assembling a document's parts and transitions into one model.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelError {
-    /// A GEC key section's frame or curve is invalid.
+    /// A GEC key section's frame or curve is invalid (boxed: the GEC
+    /// error is large and this error travels inside edit errors).
     #[error("key section: {0}")]
-    Section(#[from] crate::curve::gec::GecError),
+    Section(#[source] Box<crate::curve::gec::GecError>),
     #[error("part '{part}': {message}")]
     Part { part: String, message: String },
     #[error("document: {0}")]
     Document(String),
+}
+
+impl From<crate::curve::gec::GecError> for ModelError {
+    fn from(e: crate::curve::gec::GecError) -> ModelError {
+        ModelError::Section(Box::new(e))
+    }
 }
