@@ -363,6 +363,34 @@ mod tests {
         }
     }
 
+    /// Chord-length angles grow with the distance between neighbours, and
+    /// centripetal ones with its square root; uniform ones do not look at
+    /// the points (a mutation sample found nothing telling them apart:
+    /// `dist2` -> 1.0 survived, every rule then uniform). A square of side
+    /// 2 with a point added halfway up one side: chords 2, 1, 1, 2, 2.
+    #[test]
+    fn chord_length_and_centripetal_angles_follow_the_distances() {
+        let p = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [2.0, 2.0], [0.0, 2.0]];
+        let chords = [2.0f64, 1.0, 1.0, 2.0, 2.0];
+        for (param, step) in [
+            (Param::ChordLength, chords),
+            (Param::Centripetal, chords.map(f64::sqrt)),
+            (Param::Uniform, [1.0; 5]),
+        ] {
+            let total: f64 = step.iter().sum();
+            let got = parameters(&p, param, Some(0.0));
+            let mut s = 0.0;
+            for (i, t) in got.iter().enumerate() {
+                let want = 2.0 * PI * s / total;
+                assert!(
+                    (t - want).abs() <= crate::check::tol::ROUNDING,
+                    "{param:?} point {i}: {t} against {want}"
+                );
+                s += step[i];
+            }
+        }
+    }
+
     /// The corrections' stable names (`Correction::name`), each parsing
     /// back to its own choice (`FromStr`); a mutation sample found nothing
     /// reading a name (`name` -> `""` survived).
