@@ -126,10 +126,7 @@ fn extract(a: ExtractArgs, json: bool) -> anyhow::Result<i32> {
     super::outputs::check(&[("MESH", &a.mesh)], &[("-o", &a.output)])?;
     let mesh = select_groups(io::read(&a.mesh)?, &a.groups)
         .with_context(|| format!("{}", a.mesh.display()))?;
-    let opts = OutlineOptions {
-        resolution: a.resolution,
-        ..OutlineOptions::default()
-    };
+    let opts = OutlineOptions::default().resolution(a.resolution);
     let p = outline_of_mesh(&mesh, view, &opts)
         .with_context(|| format!("{}: {view} outline", a.mesh.display()))?;
     write_svg(&a.output, &[&p], a.input_unit.metres())?;

@@ -10,9 +10,11 @@
 use super::ConvError;
 use crate::polygon::{self_intersection, signed_area};
 
-/// Options of the stroke filter.
+/// Options of the stroke filter: `StrokeOptions::default()` or
+/// [`StrokeOptions::new`].
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 #[serde(default, deny_unknown_fields)]
+#[non_exhaustive]
 pub struct StrokeOptions {
     /// Douglas-Peucker tolerance as a fraction of the bounding-box diagonal.
     pub dp_tolerance: f64,
@@ -26,6 +28,17 @@ impl Default for StrokeOptions {
         StrokeOptions {
             dp_tolerance: 0.004,
             spacing: 1.0 / 64.0,
+        }
+    }
+}
+
+impl StrokeOptions {
+    /// The Douglas-Peucker tolerance and the re-inserted points' spacing
+    /// (fractions of the diagonal and of the perimeter).
+    pub fn new(dp_tolerance: f64, spacing: f64) -> StrokeOptions {
+        StrokeOptions {
+            dp_tolerance,
+            spacing,
         }
     }
 }

@@ -62,8 +62,10 @@ pub const MAX_RESOLUTION: usize = 8192;
 /// Samples of margin around the projection.
 const PAD: usize = 2;
 
-/// Options of [`outline_of_mesh`].
+/// Options of [`outline_of_mesh`]: `OutlineOptions::default()` and the
+/// builders.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct OutlineOptions {
     /// Pixels (grid cells) along the larger extent of the projection;
     /// 1..=[`MAX_RESOLUTION`]. Default 1536 (0.11 cm on a 1.7 m figure).
@@ -84,6 +86,26 @@ impl Default for OutlineOptions {
             simplify_px: 0.25,
             max_dropped_fraction: 0.01,
         }
+    }
+}
+
+impl OutlineOptions {
+    /// Sets the grid's pixels along the larger extent.
+    pub fn resolution(mut self, resolution: usize) -> Self {
+        self.resolution = resolution;
+        self
+    }
+
+    /// Sets the Douglas-Peucker tolerance in pixels.
+    pub fn simplify_px(mut self, px: f64) -> Self {
+        self.simplify_px = px;
+        self
+    }
+
+    /// Sets the largest fraction of a dropped separate part.
+    pub fn max_dropped_fraction(mut self, f: f64) -> Self {
+        self.max_dropped_fraction = f;
+        self
     }
 }
 

@@ -948,7 +948,7 @@ proptest! {
     ) {
         let mut raw = if star { shapes::star(arms, 0.5 * a.min(b), a.max(b) + 0.5, 300) } else { shapes::ellipse(a, b, 200) };
         if reverse { raw.reverse(); }
-        let o = stroke::StrokeOptions { dp_tolerance: dp, spacing };
+        let o = stroke::StrokeOptions::new(dp, spacing);
         let p = stroke::filter_stroke(&raw, &o).expect("filter");
         prop_assert!(p.iter().all(|q| q[0].is_finite() && q[1].is_finite()));
         prop_assert!(pdesculpt::polygon::signed_area(&p) > 0.0);
@@ -1028,10 +1028,7 @@ proptest! {
 fn sliver_sleeves_get_no_node() {
     use pdesculpt::conv::skeleton::extract;
     let raw = shapes::ellipse(1.992807772364267, 0.5693002556800587, 200);
-    let o = stroke::StrokeOptions {
-        dp_tolerance: 0.01737680236299407,
-        spacing: 0.01355085684409124,
-    };
+    let o = stroke::StrokeOptions::new(0.01737680236299407, 0.01355085684409124);
     let p = stroke::filter_stroke(&raw, &o).expect("filter");
     let sk = extract(&p, &Default::default()).expect("skeleton");
     let slivers: Vec<usize> = (0..sk.triangles.len())

@@ -486,10 +486,7 @@ fn outlines_of_known_meshes_match_exact_outlines() {
 #[test]
 fn outline_errors() {
     let b = box_mesh([0.0; 3], [1.0; 3]);
-    let bad = |resolution| OutlineOptions {
-        resolution,
-        ..OutlineOptions::default()
-    };
+    let bad = |resolution| OutlineOptions::default().resolution(resolution);
     assert!(matches!(
         outline_of_mesh(&b, View::Front, &bad(0)),
         Err(ProfileError::InvalidParameter { .. })
