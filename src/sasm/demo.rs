@@ -161,13 +161,24 @@ pub fn nose(head: &PartSurface, lift: f64) -> Result<AuxSpec, SasmError> {
     })
 }
 
+/// Why [`female_fig10`] failed: the bundled female did not build, or a
+/// SASM step failed.
+#[derive(Debug, thiserror::Error)]
+pub enum Fig10Error {
+    #[error("the bundled female does not parse")]
+    Bundled,
+    #[error("building the bundled female: {0}")]
+    Build(#[source] Box<crate::pipeline::BuildError>),
+    #[error(transparent)]
+    Sasm(#[from] SasmError),
+}
+
 /// Builds the female (final level), applies the breast and the nose, and
 /// measures both.
-pub fn female_fig10() -> Result<Fig10, SasmError> {
-    let doc = bundled("female", Level::Final)
-        .ok_or_else(|| SasmError::Mesh("the bundled female does not parse".into()))?;
+pub fn female_fig10() -> Result<Fig10, Fig10Error> {
+    let doc = bundled("female", Level::Final).ok_or(Fig10Error::Bundled)?;
     let b = build_document(&doc, std::path::Path::new("."), Resolution::default(), true)
-        .map_err(|e| SasmError::Build(Box::new(e)))?;
+        .map_err(|e| Fig10Error::Build(Box::new(e)))?;
     let part = |n: &str| {
         b.model
             .parts

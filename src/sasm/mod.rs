@@ -124,9 +124,6 @@ pub enum SasmError {
     },
     #[error("mesh: {0}")]
     Mesh(String),
-    /// Building the bundled character a demo edits failed.
-    #[error("building the bundled character: {0}")]
-    Build(#[source] Box<crate::pipeline::BuildError>),
 }
 
 fn axis_name(a: usize) -> &'static str {
