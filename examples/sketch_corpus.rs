@@ -4,10 +4,12 @@
 //! writes the generated drawings (front and side SVG per figure) and
 //! `corpus.json`; the hand-made drawings (`hand_*.svg`) already in the
 //! directory are kept and listed. `... -- measure data/sketch/corpus
-//! [--all] [--sheet OUT.png]` builds every drawing at the intermediate
-//! level, prints the Markdown table (stdout) and optionally a contact sheet
-//! (front and side renders of each model); without `--all` the held-out
-//! drawings are skipped (the development loop never sees them).
+//! [--all] [--sheet OUT.png] [--overlays DIR]` builds every drawing at the
+//! intermediate level, prints the Markdown table (stdout) and optionally a
+//! contact sheet (front and side renders of each model) and each built
+//! drawing's `--overlay` picture (`DIR/NAME.svg`: where the model misses
+//! it); without `--all` the held-out drawings are skipped (the development
+//! loop never sees them).
 //!
 //! The humanoids: named poses and proportions covering issue 28 item 3,
 //! then figures drawn at random (fixed seed) from `HumanoidRanges::WIDE`,
@@ -312,9 +314,13 @@ fn measure(
     dir: &Path,
     all: bool,
     sheet: Option<&Path>,
+    overlays: Option<&Path>,
     stretch: Option<f64>,
 ) -> Result<(), String> {
     let m = read_manifest(dir)?;
+    if let Some(o) = overlays {
+        std::fs::create_dir_all(o).map_err(|e| format!("--overlays {}: {e}", o.display()))?;
+    }
     let mut rows = Vec::new();
     let mut images = Vec::new();
     for e in m.entries.iter().filter(|e| all || !e.held_out) {
@@ -335,6 +341,11 @@ fn measure(
         );
         if sheet.is_some() {
             images.push(contact(&built));
+        }
+        if let (Some(o), Ok(b)) = (overlays, &built) {
+            let path = o.join(format!("{}.svg", e.name));
+            pdesculpt::mesh::io::write_atomic(&path, b.overlay_svg().as_bytes())
+                .map_err(|e| format!("{}: {e}", path.display()))?;
         }
         rows.push(row);
     }
@@ -514,16 +525,21 @@ fn main() {
                 .position(|a| a == "--sheet")
                 .and_then(|i| args.get(i + 1))
                 .map(Path::new);
+            let overlays = args
+                .iter()
+                .position(|a| a == "--overlays")
+                .and_then(|i| args.get(i + 1))
+                .map(Path::new);
             let stretch = args
                 .iter()
                 .position(|a| a == "--stretch-x")
                 .and_then(|i| args.get(i + 1))
                 .map(|v| v.parse::<f64>().map_err(|e| format!("--stretch-x {v}: {e}")))
                 .transpose();
-            stretch.and_then(|stretch| measure(Path::new(&args[1]), all, sheet, stretch))
+            stretch.and_then(|stretch| measure(Path::new(&args[1]), all, sheet, overlays, stretch))
         }
         Some("landmarks") if args.len() >= 2 => landmarks(Path::new(&args[1])),
-        _ => Err("usage: sketch_corpus write DIR [--seed N] [--random K] [--ranges wide|issue] | measure DIR [--all] [--sheet OUT.png] [--stretch-x EPS] | landmarks FRONT.svg".into()),
+        _ => Err("usage: sketch_corpus write DIR [--seed N] [--random K] [--ranges wide|issue] | measure DIR [--all] [--sheet OUT.png] [--overlays OUT_DIR] [--stretch-x EPS] | landmarks FRONT.svg".into()),
     };
     if let Err(e) = r {
         eprintln!("error: {e}");
