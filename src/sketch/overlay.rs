@@ -10,13 +10,11 @@
 //! the other (so the marked number is the report's `max_rel` for the
 //! view, up to the sampling).
 
-use super::quality::model_outline;
+use super::quality::{model_outline, SAMPLES};
 use crate::mesh::Mesh;
 use crate::profile::{Profile, ProfileIndex, View};
 use std::fmt::Write;
 
-/// Arc-length samples per outline (as [`super::quality`]).
-const SAMPLES: usize = 4000;
 /// Panel size in pixels (the model's extent fills it, with a margin).
 const PANEL: f64 = 420.0;
 const MARGIN: f64 = 24.0;

@@ -32,7 +32,7 @@ use serde::Serialize;
 pub const CREASED_EDGE_DEG: f64 = 60.0;
 
 /// Arc-length samples per outline (as `profile::distance::MIN_SAMPLES`).
-const SAMPLES: usize = 4000;
+pub(crate) const SAMPLES: usize = 4000;
 
 /// Upper bounds of the measures (relative to the height where lengths).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
