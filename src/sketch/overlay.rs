@@ -5,12 +5,11 @@
 //! error marked, with its value. SVG, made without a GPU; `sketch build
 //! --overlay` and `character build --overlay` write it.
 //!
-//! The marked place is found as [`super::quality`] measures the profile
-//! error: the largest distance from arc-length samples of either outline to
-//! the other (so the marked number is the report's `max_rel` for the
-//! view, up to the sampling).
+//! The marked place is found over the samples [`super::quality`] measures
+//! the profile error on ([`super::quality::miss_samples`]), so the marked
+//! number is the report's `max_rel` for the view.
 
-use super::quality::{model_outline, SAMPLES};
+use super::quality::{miss_samples, model_outline};
 use crate::mesh::Mesh;
 use crate::profile::{Profile, ProfileIndex, View};
 use std::fmt::Write;
@@ -33,21 +32,16 @@ pub struct ViewOverlay {
     pub miss: Option<Miss>,
 }
 
-/// The largest miss between `drawn` and `model` (arc-length samples of
-/// both, each to its nearest point on the other; the points of a
-/// [`Profile`] are finite).
+/// The largest miss between `drawn` and `model`: over the samples the
+/// report's profile error takes ([`miss_samples`]), each to its nearest
+/// point on the other outline (the points of a [`Profile`] are finite).
 pub fn largest_miss(drawn: &Profile, model: &Profile) -> Option<Miss> {
     let (id, im) = (ProfileIndex::new(drawn), ProfileIndex::new(model));
-    let samples = model
-        .resample_arclength(SAMPLES)
+    let (from_model, from_drawn) = miss_samples(drawn, model);
+    let samples = from_model
         .into_iter()
         .map(|q| (q, &id))
-        .chain(
-            drawn
-                .resample_arclength(SAMPLES)
-                .into_iter()
-                .map(|q| (q, &im)),
-        );
+        .chain(from_drawn.into_iter().map(|q| (q, &im)));
     let mut best: Option<Miss> = None;
     for (q, idx) in samples {
         let (d, _, _, near) = idx.nearest(q);
@@ -77,27 +71,10 @@ pub fn views(body: &Mesh, front: &Profile, side: Option<&Profile>) -> Vec<ViewOv
 }
 
 fn bounds(v: &ViewOverlay) -> [f64; 4] {
-    let mut b = [
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    ];
-    let model = v.model.as_deref().unwrap_or(&[]);
-    for p in v
-        .drawn
-        .iter()
-        .chain(model)
-        .filter(|p| p[0].is_finite() && p[1].is_finite())
-    {
-        b = [
-            b[0].min(p[0]),
-            b[1].min(p[1]),
-            b[2].max(p[0]),
-            b[3].max(p[1]),
-        ];
-    }
-    b
+    let mut pts = v.drawn.clone();
+    pts.extend_from_slice(v.model.as_deref().unwrap_or(&[]));
+    let (lo, hi) = crate::polygon::bbox(&pts);
+    [lo[0], lo[1], hi[0], hi[1]]
 }
 
 fn polyline(out: &mut String, pts: &[[f64; 2]], map: &dyn Fn([f64; 2]) -> [f64; 2], colour: &str) {

@@ -32,7 +32,18 @@ use serde::Serialize;
 pub const CREASED_EDGE_DEG: f64 = 60.0;
 
 /// Arc-length samples per outline (as `profile::distance::MIN_SAMPLES`).
-pub(crate) const SAMPLES: usize = 4000;
+const SAMPLES: usize = 4000;
+
+/// The samples a view's profile error is taken over: the model outline's
+/// arc-length samples and vertices (each measured to the drawn outline),
+/// and the drawn outline's arc-length samples (each measured to the
+/// model's). Shared with [`super::overlay`], so its largest miss is the
+/// report's.
+pub(crate) fn miss_samples(sketch: &Profile, model: &Profile) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    let mut from_model = model.resample_arclength(SAMPLES);
+    from_model.extend_from_slice(model.points());
+    (from_model, sketch.resample_arclength(SAMPLES))
+}
 
 /// Upper bounds of the measures (relative to the height where lengths).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -212,18 +223,18 @@ fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Op
     let (model, pieces) = model_outline(mesh, view)?;
     let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
     let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(&model));
-    let ms = model.resample_arclength(SAMPLES);
+    let (ms, ss) = miss_samples(sketch, &model);
     let part_of = |q: [f64; 2]| grid.nearest(q).map_or(u32::MAX, |i| groups[i]);
     let mut out = Vec::with_capacity(2 * SAMPLES);
     let mut model_parts = Vec::with_capacity(ms.len());
-    for &q in ms.iter().chain(model.points()) {
+    for &q in &ms {
         let d = isk.distance(q);
         let outside = if sketch.contains(q) { 0.0 } else { d };
         let g = part_of(q);
         model_parts.push(g);
         out.push((g, d, outside));
     }
-    for q in sketch.resample_arclength(SAMPLES) {
+    for q in ss {
         let (d, _, _, near) = imo.nearest(q);
         out.push((part_of(near), d, 0.0));
     }

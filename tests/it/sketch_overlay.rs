@@ -5,9 +5,8 @@ use crate::cli::{assert_clear_error, pdesculpt, tmpdir};
 
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/data/sketch/corpus");
 
-/// The report's max profile error takes the model outline's vertices as
-/// samples too; the overlay only arc-length samples: they agree to this
-/// (percent of the height), a sample spacing of the outline.
+/// The overlay measures over the report's own samples and prints its
+/// number to two decimals (percent of the height): they agree to this.
 const SAMPLING_PERCENT: f64 = 0.05;
 
 /// The miss each panel states, in percent of the height.
