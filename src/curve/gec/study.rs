@@ -183,11 +183,20 @@ pub fn sections(mesh: &Mesh) -> Result<Vec<BodySection>, GecError> {
     SECTIONS.iter().map(|(n, l)| cut(mesh, n, *l)).collect()
 }
 
+/// Why the base body's sections could not be taken: the bundled body did
+/// not load, or a section could not be cut from it.
+#[derive(Debug, thiserror::Error)]
+pub enum BaseSectionsError {
+    #[error("the bundled MakeHuman body: {0}")]
+    Body(#[from] crate::mesh::MeshError),
+    #[error(transparent)]
+    Section(#[from] GecError),
+}
+
 /// The study's sections of the base body.
-pub fn base_sections() -> Result<Vec<BodySection>, GecError> {
-    let body = crate::makehuman::base_body()
-        .map_err(|e| GecError::InvalidParameter(format!("MakeHuman body: {e}")))?;
-    sections(&body.mesh)
+pub fn base_sections() -> Result<Vec<BodySection>, BaseSectionsError> {
+    let body = crate::makehuman::base_body()?;
+    Ok(sections(&body.mesh)?)
 }
 
 /// The term counts of paper 002 Table 1.
