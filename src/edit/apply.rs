@@ -5,7 +5,7 @@ use crate::character::log::{
 };
 use crate::character::spec::{End, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 use crate::curve::gec::transform::Bend;
-use crate::curve::gec::{Frame, Gec};
+use crate::curve::gec::{Frame, Gec, GecError};
 use crate::mesh::{add, dist, dot, scale, sub};
 use std::f64::consts::PI;
 
@@ -36,8 +36,8 @@ fn find<'a>(parts: &'a mut [PartSpec], name: &str) -> Result<&'a mut PartSpec, E
 }
 
 /// A section as a GEC in its frame (circles and ellipses converted exactly).
-pub fn section_gec(s: &SectionSpec) -> Result<Gec, String> {
-    let frame = Frame::new(s.centre, s.e1, s.e2).map_err(|e| e.to_string())?;
+pub fn section_gec(s: &SectionSpec) -> Result<Gec, GecError> {
+    let frame = Frame::new(s.centre, s.e1, s.e2)?;
     let (centre, x, y) = match &s.shape {
         SectionShape::Circle { r } => ([0.0, 0.0], vec![[*r, 0.0]], vec![[*r, 0.0]]),
         SectionShape::Ellipse { a, b, offset } => {
@@ -45,7 +45,7 @@ pub fn section_gec(s: &SectionSpec) -> Result<Gec, String> {
         }
         SectionShape::Gec { centre, x, y } => (*centre, x.clone(), y.clone()),
     };
-    Gec::new(frame, centre, x, y).map_err(|e| e.to_string())
+    Gec::new(frame, centre, x, y)
 }
 
 fn collapsed(s: &SectionSpec) -> bool {
@@ -168,7 +168,12 @@ fn boundary(
         }
         let mut s = p.sections[ie].clone();
         s.shape = c.clone();
-        let g = section_gec(&s).map_err(invalid)?;
+        let g = section_gec(&s).map_err(|source| EditError::Section {
+            op: e.op(),
+            part: p.name.clone(),
+            section: ie,
+            source: Box::new(source),
+        })?;
         if let Some((a, b, _)) = crate::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
         {
             return Err(EditError::SelfIntersecting {
@@ -263,8 +268,14 @@ fn transform_section(
         part: p.name.clone(),
         message: format!("section {i}: {m}"),
     };
+    let section = |source| EditError::Section {
+        op: e.op(),
+        part: p.name.clone(),
+        section: i,
+        source: Box::new(source),
+    };
     let s = &p.sections[i];
-    let g = section_gec(s).map_err(invalid)?;
+    let g = section_gec(s).map_err(section)?;
     let point = collapsed(s);
     let c = g.centre;
     let out = match t {
@@ -281,8 +292,7 @@ fn transform_section(
                     "a bump needs a section with a size (this one is a collapsed end)".into(),
                 ));
             }
-            g.with_bump(*h, *theta, *sigma)
-                .map_err(|err| invalid(err.to_string()))?
+            g.with_bump(*h, *theta, *sigma).map_err(section)?
         }
     };
     if !out.is_finite() {
@@ -343,5 +353,49 @@ mod tests {
         parts[0].surface = SurfaceSpec::Pde6C2 { a: 0.0 };
         apply_one(&mut parts, &e).unwrap();
         assert_eq!(parts[0].surface, SurfaceSpec::Pde6C2 { a: 0.5 });
+    }
+    /// A section the document holds but that is no GEC (its frame's axes
+    /// are parallel) refuses a transform with the gec error as its typed
+    /// source, naming the section.
+    #[test]
+    fn a_section_with_a_broken_frame_is_refused_with_its_gec_error() {
+        let good = SectionSpec {
+            u: 0.0,
+            centre: [0.0; 3],
+            e1: [1.0, 0.0, 0.0],
+            e2: [0.0, 1.0, 0.0],
+            shape: SectionShape::Circle { r: 1.0 },
+        };
+        let bad = SectionSpec {
+            u: 1.0,
+            e2: [1.0, 0.0, 0.0],
+            ..good.clone()
+        };
+        let mut parts = vec![PartSpec {
+            name: "arm".into(),
+            surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+            sections: vec![good, bad],
+            closed_start: false,
+            closed_end: false,
+        }];
+        let e = Edit::GecTransform {
+            part: "arm".into(),
+            section: Some(1),
+            transform: SectionTransform::Scale { sx: 1.1, sy: 1.1 },
+        };
+        let err = apply_one(&mut parts, &e).unwrap_err();
+        match &err {
+            EditError::Section {
+                section, source, ..
+            } => {
+                assert_eq!(*section, 1);
+                assert!(matches!(**source, GecError::InvalidFrame(_)), "{source:?}");
+            }
+            other => panic!("not a section error: {other:?}"),
+        }
+        assert!(
+            err.to_string().contains("section 1: invalid frame"),
+            "{err}"
+        );
     }
 }

@@ -52,10 +52,11 @@ pub fn force_field(e: &Edit) -> Result<TwoSided, EditError> {
         Method::Exact,
         None,
     )
-    .map_err(|err| EditError::Invalid {
+    .map_err(|source| EditError::Patch {
         op: e.op(),
         part: e.part().unwrap_or("").into(),
-        message: format!("force patch: {err}"),
+        what: "force patch",
+        source: Box::new(source),
     })
 }
 
@@ -130,10 +131,11 @@ pub fn force_region_field(e: &Edit) -> Result<FourSided, EditError> {
         FORCE4_TERMS.1,
         Method4::Galerkin,
     )
-    .map_err(|err| EditError::Invalid {
+    .map_err(|source| EditError::Patch {
         op: e.op(),
         part: e.part().unwrap_or("").into(),
-        message: format!("4-sided force patch: {err}"),
+        what: "4-sided force patch",
+        source: Box::new(source),
     })
 }
 

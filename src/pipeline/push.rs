@@ -111,7 +111,11 @@ pub fn project_force_stroke(
         .iter()
         .find(|p| &p.name == part)
         .ok_or_else(|| unknown_part(&parts, part))?;
-    let surf = crate::character::part::build_part(spec).map_err(|err| invalid(err.to_string()))?;
+    let surf = crate::character::part::build_part(spec).map_err(|source| EditError::Build {
+        op,
+        part: part.clone(),
+        source,
+    })?;
     let pr = crate::sasm::project::Projector::new(&surf, drawn.view);
     let hits = crate::sasm::project::project_stroke(&pr, "force stroke", &drawn.points)
         .map_err(|err| invalid(err.to_string()))?;

@@ -257,6 +257,23 @@ pub enum EditError {
         first: usize,
         second: usize,
     },
+    #[error("{op} on part '{part}': section {section}: {source}")]
+    Section {
+        op: &'static str,
+        part: String,
+        section: usize,
+        #[source]
+        source: Box<crate::curve::gec::GecError>,
+    },
+    #[error("{op} on part '{part}': {what}: {source}")]
+    Patch {
+        op: &'static str,
+        part: String,
+        /// Which patch: the 2-sided or the 4-sided force patch.
+        what: &'static str,
+        #[source]
+        source: Box<crate::pde4::Pde4Error>,
+    },
     #[error("{op} on part '{part}': {message}")]
     Invalid {
         op: &'static str,
