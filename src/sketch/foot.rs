@@ -420,10 +420,18 @@ mod tests {
         assert_eq!(f.dir, 1.0);
         // ankle half depth 0.05, foot half height 0.05
         let r = BEND_RADIUS * 0.05;
-        assert!((f.radius - r).abs() < 1e-9, "{}", f.radius);
+        assert!(
+            (f.radius - r).abs() < crate::check::tol::SOLVE,
+            "{}",
+            f.radius
+        );
         assert_eq!(f.toe[0], 0.3);
         // the bend starts one radius above the foot's centre line (y 0.05)
-        assert!((f.start[1] - (0.05 + r)).abs() < 1e-9, "{:?}", f.start);
+        assert!(
+            (f.start[1] - (0.05 + r)).abs() < crate::check::tol::SOLVE,
+            "{:?}",
+            f.start
+        );
         let mirrored: Vec<[f64; 2]> = side.iter().map(|p| [-p[0], p[1]]).collect();
         let (s, d) = leg_samples(&mirrored);
         assert_eq!(
@@ -444,13 +452,15 @@ mod tests {
         let side = boot();
         let iv = extent(&side, [0.0, 0.5], [1.0, 0.0]).expect("inside");
         assert!(
-            (iv[0] + 0.05).abs() < 1e-12 && (iv[1] - 0.05).abs() < 1e-12,
+            (iv[0] + 0.05).abs() < crate::check::tol::ROUNDING
+                && (iv[1] - 0.05).abs() < crate::check::tol::ROUNDING,
             "{iv:?}"
         );
         // from outside: the nearest crossing interval
         let iv = extent(&side, [-0.2, 0.05], [1.0, 0.0]).expect("ahead");
         assert!(
-            (iv[0] - 0.15).abs() < 1e-12 && (iv[1] - 0.5).abs() < 1e-12,
+            (iv[0] - 0.15).abs() < crate::check::tol::ROUNDING
+                && (iv[1] - 0.5).abs() < crate::check::tol::ROUNDING,
             "{iv:?}"
         );
     }
@@ -462,10 +472,13 @@ mod tests {
         let f = find(&side, [0.0, 1.0], &s, &d, 10).expect("a foot");
         let p = path(&side, &f, 3);
         assert_eq!(p.len(), 6);
-        assert!(p[2].n[0].abs() < 1e-12 && (p[2].n[1] - 1.0).abs() < 1e-12);
+        assert!(
+            p[2].n[0].abs() < crate::check::tol::ROUNDING
+                && (p[2].n[1] - 1.0).abs() < crate::check::tol::ROUNDING
+        );
         assert_eq!(p[5].p, f.toe);
         for w in p.windows(2) {
-            assert!(w[1].p[0] > w[0].p[0] && w[1].p[1] <= w[0].p[1] + 1e-12);
+            assert!(w[1].p[0] > w[0].p[0] && w[1].p[1] <= w[0].p[1] + crate::check::tol::ROUNDING);
         }
     }
 }

@@ -395,10 +395,14 @@ mod tests {
             [6.0, 2.0],
             [0.0, 2.0],
         ];
+        // the x of the gaps' bottoms between the fingers
+        let gap_bottom = 5.5;
         let mitten = bridge_notches(&hand, true, 1.0);
         assert!(mitten.len() < hand.len(), "{mitten:?}");
         assert!(
-            mitten[1..mitten.len() - 1].iter().all(|p| p[0] >= 5.5),
+            mitten[1..mitten.len() - 1]
+                .iter()
+                .all(|p| p[0] >= gap_bottom),
             "a gap's bottom is left: {mitten:?}"
         );
         assert_eq!(
@@ -421,7 +425,7 @@ mod tests {
         assert_eq!(mitten_back.len(), mitten.len(), "{mitten_back:?}");
         assert!(mitten_back[1..mitten_back.len() - 1]
             .iter()
-            .all(|p| p[0] >= 5.5));
+            .all(|p| p[0] >= gap_bottom));
         // a mouth narrower than the gaps closes nothing
         assert_eq!(bridge_notches(&hand, true, 0.3), hand.to_vec());
         let strip = [[0.0, 0.0], [6.0, 0.0], [6.0, 0.4], [0.0, 0.4]];

@@ -245,8 +245,9 @@ mod tests {
             );
         }
         // no crossing above the floor: the base stops at the floor
-        let base = neck_base(|_| true, 1.0, 0.5, d);
-        assert!(base > 0.5 && base - 0.5 <= step, "{base}");
+        let floor = 0.5;
+        let base = neck_base(|_| true, 1.0, floor, d);
+        assert!(base > floor && base - floor <= step, "{base}");
     }
 
     /// A body 2 wide and 1 tall with a head 1.5 wide on a neck 0.5 wide

@@ -134,8 +134,10 @@ fn face_marks_find_a_known_chin_nose_and_neck() {
             f.chin
         );
         assert!(off(f.nose, 9.2) < FOUND, "nose found at {}", f.nose);
+        // the drawn neck runs between these heights
+        let (neck_low, neck_high) = (7.8, 8.5);
         assert!(
-            f.neck > 7.8 - FOUND * HEIGHT && f.neck < 8.5 + FOUND * HEIGHT,
+            f.neck > neck_low - FOUND * HEIGHT && f.neck < neck_high + FOUND * HEIGHT,
             "neck found at {}",
             f.neck
         );
@@ -186,7 +188,9 @@ fn remap_moves_a_templates_chin_to_the_sketched_chins_height() {
     let before = face_marks(&mesh_outline(&template.skin, View::Side).unwrap(), "t").unwrap();
     assert!((before.chin - (from + 0.5 * SHELF)).abs() / HEIGHT < FOUND);
     let moved = weights::remap_heights(&template, &mut pos, &sketch, &opts, &mesh_outline).unwrap();
-    assert!(moved > 0.5 * (from - to), "largest shift {moved}");
+    // at least half of the drawn chin's shift
+    let half_shift = 0.5 * (from - to);
+    assert!(moved > half_shift, "largest shift {moved}");
     let after = face_marks(
         &mesh_outline(&template.skin_at(&pos), View::Side).unwrap(),
         "remapped",
@@ -248,10 +252,9 @@ fn shelf_warp_moves_a_chins_underside_to_the_sketched_height() {
     let centres = envelope::shelf_warp(&template, &mut pos, &sketch, &opts, &mesh_outline).unwrap();
     assert!(centres > 0, "no shelf found");
     let after = near_chin(&side_of(&pos));
-    assert!(
-        after < 0.8 * before,
-        "side miss near the chin {before} -> {after}"
-    );
+    // the warp removes at least a fifth of the miss
+    let kept = 0.8 * before;
+    assert!(after < kept, "side miss near the chin {before} -> {after}");
     let chin = |p: &[[f64; 2]]| face_marks(p, "side").unwrap().chin;
     let c0 = chin(&side_of(&template.mesh.positions));
     let c1 = chin(&side_of(&pos));
@@ -277,5 +280,8 @@ fn shelf_warp_moves_a_chins_underside_to_the_sketched_height() {
         .zip(&template.mesh.positions)
         .map(|(a, b)| (a[1] - b[1]).abs())
         .fold(0.0, f64::max);
-    assert!(moved < 1e-9, "equal outlines moved {moved}");
+    assert!(
+        moved < pdesculpt::check::tol::SOLVE,
+        "equal outlines moved {moved}"
+    );
 }

@@ -151,9 +151,8 @@ fn features_pair_only_within_reach() {
     let all = |_: [f64; 2]| true;
     let near = paired_features(&comb(1.0), &comb(1.0 + 0.8 * FEATURE_PAIR * h), &all, h);
     assert_eq!(near.len(), 3);
-    assert!(near
-        .iter()
-        .any(|(f, s)| f == &[1.5, 1.0] && (s[1] - 1.0 - 0.8 * FEATURE_PAIR * h).abs() < 1e-12));
+    assert!(near.iter().any(|(f, s)| f == &[1.5, 1.0]
+        && (s[1] - 1.0 - 0.8 * FEATURE_PAIR * h).abs() < pdesculpt::check::tol::ROUNDING));
     let far = paired_features(&comb(1.0), &comb(1.0 + 1.5 * FEATURE_PAIR * h), &all, h);
     assert_eq!(far.len(), 2, "only the tips: {far:?}");
     assert!(far.iter().all(|(f, s)| f == s));

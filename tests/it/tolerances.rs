@@ -20,37 +20,6 @@
 
 use std::path::{Path, PathBuf};
 
-/// Test files other developers are editing this session, by path prefix
-/// (template5: the template tests; sketch5: the sketch tests; body3: the
-/// body tests and `src/body`; local5: the
-/// edit and sasm tests; tui3: the TUI tests and `src/tui`; conv4: the conv
-/// tests). Left out of the scan until their work lands; `conv.rs` is
-/// scanned for literal upper bounds (it was clean before this session) but
-/// not yet for lower bounds (`knob.depth > 0.5` and the polygon slacks).
-const NOT_YET: &[&str] = &[
-    "tests/it/template",
-    "tests/it/sketch",
-    "tests/it/body",
-    "tests/it/edit",
-    "tests/it/sasm",
-    "tests/it/tui",
-    "tests/it/conv",
-    "benches/tui.rs",
-    "benches/template.rs",
-    "benches/body",
-    "benches/conv",
-    "src/template/",
-    "src/sketch/",
-    "src/character/edit/",
-    "src/sasm/",
-    "src/tui/",
-    "src/conv/",
-    "src/body/",
-];
-
-/// Files of [`NOT_YET`] still scanned for literal upper bounds.
-const UPPER_ONLY: &[&str] = &["tests/it/conv.rs"];
-
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
     if dir.extension().is_some_and(|e| e == "rs") {
         out.push(dir.to_path_buf());
@@ -301,10 +270,6 @@ fn test_files_name_their_tolerances() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let (mut bad, mut scanned) = (Vec::new(), 0);
     for f in test_files() {
-        let upper_only = UPPER_ONLY.contains(&f.as_str());
-        if NOT_YET.iter().any(|p| f.starts_with(p)) && !upper_only {
-            continue;
-        }
         let text = std::fs::read_to_string(root.join(&f)).unwrap_or_else(|e| panic!("{f}: {e}"));
         let Some(code) = test_code(&f, &text) else {
             continue;
@@ -312,11 +277,7 @@ fn test_files_name_their_tolerances() {
         let offset = text[..text.len() - code.len()].matches('\n').count();
         scanned += 1;
         for (line, cond) in assertion_conditions(code) {
-            let found: Vec<String> = if upper_only {
-                bare_upper_bounds(&cond)
-            } else {
-                bare_bounds(&cond)
-            };
+            let found = bare_bounds(&cond);
             if !found.is_empty() {
                 bad.push(format!(
                     "{f}:{}: {cond}  ({})",
@@ -328,24 +289,6 @@ fn test_files_name_their_tolerances() {
     }
     assert!(scanned >= 20, "the scan found only {scanned} test files");
     assert!(bad.is_empty(), "bare tolerances:\n{}", bad.join("\n"));
-}
-
-/// [`bare_bounds`] restricted to literal upper bounds (for [`UPPER_ONLY`]).
-fn bare_upper_bounds(cond: &str) -> Vec<String> {
-    let t = tokens(cond);
-    let mut bad = Vec::new();
-    for (k, tok) in t.iter().enumerate() {
-        if let Tok::Num(lit, true) = tok {
-            let mut j = k;
-            while j > 0 && matches!(t[j - 1], Tok::Punct('(') | Tok::Punct('-')) {
-                j -= 1;
-            }
-            if j > 0 && t[j - 1] == Tok::Cmp('<') {
-                bad.push(format!("bound {lit}"));
-            }
-        }
-    }
-    bad
 }
 
 #[test]
@@ -387,9 +330,6 @@ fn the_scan_sees_a_bare_tolerance() {
         let found = bare_bounds(&conds[0].1);
         assert_eq!(!found.is_empty(), want, "{text}: {:?} {found:?}", conds[0]);
     }
-    // the upper-only scan keeps its old reach
-    let upper = assertion_conditions(&format!("assert!(a {lt} 0.5 && b {gt} 0.5);"));
-    assert_eq!(bare_upper_bounds(&upper[0].1).len(), 1, "{upper:?}");
 }
 
 #[test]
