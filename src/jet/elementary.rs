@@ -214,6 +214,32 @@ mod tests {
         }
     }
 
+    /// `x^0` is the constant 1 (every derivative 0), at `x0 = 0` too (the
+    /// expansion's `0^0 = 1`), and `x^-2` is `1 / x^2`.
+    #[test]
+    fn the_zeroth_power_is_one_and_a_negative_power_a_reciprocal() {
+        for x0 in [0.0f64, 0.7] {
+            let p = (Jet::<3, 3>::var_u(x0) + Jet::var_v(x0)).powi(0);
+            for i in 0..3 {
+                for j in 0..3 {
+                    let want = if (i, j) == (0, 0) { 1.0 } else { 0.0 };
+                    assert_eq!(p.deriv(i, j), want, "x0 = {x0}, d^({i},{j})");
+                }
+            }
+        }
+        let x = Jet::<3, 3>::var_u(0.7) + Jet::var_v(0.3);
+        let (neg, recip) = (x.powi(-2), x.powi(2).recip());
+        for i in 0..3 {
+            for j in 0..3 {
+                let (a, b) = (neg.deriv(i, j), recip.deriv(i, j));
+                assert!(
+                    (a - b).abs() <= tol::ROUNDING * b.abs().max(1.0),
+                    "d^({i},{j}): {a} against {b}"
+                );
+            }
+        }
+    }
+
     /// Subtracting a constant moves the value and nothing else: `x - c`
     /// at `x0` has the value `x0 - c`, the first derivative 1, the rest 0
     /// (as `x + (-c)`).
