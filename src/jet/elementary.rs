@@ -275,4 +275,16 @@ mod tests {
         }
         assert!(Real::value(&f64::NAN).is_nan());
     }
+
+    /// Through the `Real` trait a jet's value is its value part, as an
+    /// `f64`'s is itself: closed forms written against `Real` branch on it.
+    #[test]
+    fn a_jets_real_value_is_its_value_part() {
+        use super::super::Real;
+        for x0 in [-3.25f64, 0.7, 7.5e12] {
+            let x = Jet::<2, 2>::var_u(x0) * 2.0 + Jet::var_v(1.0);
+            assert_eq!(Real::value(&x), 2.0 * x0 + 1.0);
+            assert_eq!(Real::value(&<Jet<2, 2> as Real>::cst(x0)), x0);
+        }
+    }
 }
