@@ -17,7 +17,8 @@ coefficients).
      the printed A2 f3 reduces to sin(2 k pi c)/(k^2 L^2 - 1). Golden: both f3
      and the integral (mpmath quadrature, 30 digits) for three forces, k = 1..4,
      and A2's f1, f2 as printed (same r constants); eq 9's f_mn, eq 15's
-     dbar_mn and A1's area-force coefficients as printed, to pin the
+     dbar_mn and A1's area-force, A3-A4's line-force and A5's concentrated-force
+     coefficients as printed, to pin the
      paper-literal implementations.
 
 Run: python3 verify/printed_forms.py  (writes verify/golden/printed_forms.json)
@@ -147,7 +148,25 @@ for mv in range(1, 4):
         trip = [-c0 * f1u, -c0 * f3u * f2v, c0 * f3u * f3v]
         printed["area"].append({"m": mv, "n": nv, "p": [float(sp.N(t, 30)) for t in trip]})
 printed["area_force"] = [float(u0), float(u1), float(v0), float(v1)]
-print("000: eq 9, eq 15 and A1 evaluated as printed")
+# A3 with A4's c1 (line force on [u0, u1] at v0) and A5 (concentrated force
+# at (u0, v0)), as printed
+lu0, lu1, lv0 = sp.Rational(1, 5), sp.Rational(3, 5), sp.Rational(3, 10)
+cu0, cv0 = sp.Rational(3, 10), sp.Rational(2, 5)
+c1 = -2 * (lu1 - lu0) / sp.pi
+printed["line"], printed["concentrated"] = [], []
+for mv in range(1, 4):
+    for nv in range(1, 4):
+        _, _, f3u = a2_fns(lu0, lu1, mv)
+        w = 2 * nv * sp.pi * lv0
+        trip = [c1 * f3u, 2 * c1 * f3u * sp.cos(w), 2 * c1 * f3u * sp.sin(w)]
+        printed["line"].append({"m": mv, "n": nv, "p": [float(sp.N(t, 30)) for t in trip]})
+        s_ = sp.sin(mv * sp.pi * cu0)
+        w = 2 * nv * sp.pi * cv0
+        trip = [2 * s_, 4 * s_ * sp.cos(w), 4 * s_ * sp.sin(w)]
+        printed["concentrated"].append({"m": mv, "n": nv, "p": [float(sp.N(t, 30)) for t in trip]})
+printed["line_force"] = [float(lu0), float(lu1), float(lv0)]
+printed["concentrated_force"] = [float(cu0), float(cv0)]
+print("000: eq 9, eq 15 and A1, A3-A5 evaluated as printed")
 
 out = {"pde6_basis_derivatives": samples, "ode6_xi": xi_cases, "pde4_line_f3": forces, "pde4_printed": printed}
 path = os.path.join(os.path.dirname(__file__), "golden", "printed_forms.json")

@@ -103,7 +103,8 @@ fn f3_vs_sympy() -> (f64, f64) {
     (right, printed)
 }
 
-/// Eq 9's `f_mn`, eq 15's `dbar_mn` and A1's area-force coefficients as
+/// Eq 9's `f_mn`, eq 15's `dbar_mn` and the force coefficients of A1, A3-A4
+/// and A5 as
 /// implemented for the paper-literal checks, against SymPy's evaluation of
 /// the printed text (`verify/printed_forms.py`): the largest relative
 /// difference, NaN when the golden is missing.
@@ -149,15 +150,32 @@ fn printed_vs_sympy() -> f64 {
         v0: num(&a[2]),
         v1: num(&a[3]),
     };
-    for r in p["area"].as_array().into_iter().flatten() {
-        let (m, n) = (num(&r["m"]) as usize, num(&r["n"]) as usize);
-        match printed_two_sided(&kind, m, n) {
-            Some((x, y, z)) => {
-                for (got, k) in [(x, 0), (y, 1), (z, 2)] {
-                    seen(rel(got, num(&r["p"][k])));
+    let (l, c) = (&p["line_force"], &p["concentrated_force"]);
+    let line = ForceKind::Line {
+        u0: num(&l[0]),
+        u1: num(&l[1]),
+        v0: num(&l[2]),
+    };
+    let conc = ForceKind::Concentrated {
+        u0: num(&c[0]),
+        v0: num(&c[1]),
+    };
+    // A1 (area), A3-A4 (line), A5 (concentrated); a missing table is NaN
+    for (rows, kind) in [("area", kind), ("line", line), ("concentrated", conc)] {
+        let rows = p[rows].as_array().filter(|r| !r.is_empty());
+        if rows.is_none() {
+            seen(f64::NAN);
+        }
+        for r in rows.into_iter().flatten() {
+            let (m, n) = (num(&r["m"]) as usize, num(&r["n"]) as usize);
+            match printed_two_sided(&kind, m, n) {
+                Some((x, y, z)) => {
+                    for (got, k) in [(x, 0), (y, 1), (z, 2)] {
+                        seen(rel(got, num(&r["p"][k])));
+                    }
                 }
+                None => seen(f64::NAN),
             }
-            None => seen(f64::NAN),
         }
     }
     e
@@ -167,7 +185,7 @@ pub(super) fn appendix_checks(out: &mut Vec<Check>) {
     let (sym_right, sym_printed) = f3_vs_sympy();
     out.push(
         Check::new(F, P, "eqs 9, 15, app A1", "pde4.printed_forms_vs_sympy", Kind::Reference, printed_vs_sympy(), tol::scaled(tol::ROUNDING, 10.0))
-            .note("eq 9's f_mn, eq 15's dbar_mn (3 shape parameters, 3 (m, n)) and A1's area-force coefficients (m, n <= 3) as implemented for the paper-literal checks against SymPy's evaluation of the printed text (verify/printed_forms.py), relative: pins the printed forms the paper-literal checks measure"),
+            .note("eq 9's f_mn, eq 15's dbar_mn (3 shape parameters, 3 (m, n)) and the area (A1), line (A3-A4) and concentrated (A5) force coefficients (m, n <= 3) as implemented for the paper-literal checks against SymPy's evaluation of the printed text (verify/printed_forms.py), relative: pins the printed forms the paper-literal checks measure"),
     );
     out.push(
         Check::new(F, P, "app A3, A4", "pde4.force.line_f3_vs_sympy", Kind::Reference, sym_right, tol::scaled(tol::ROUNDING, 10.0))
