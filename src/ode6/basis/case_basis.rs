@@ -152,4 +152,33 @@ mod tests {
             }
         }
     }
+    /// The close-root cases divide their second function by the half gap
+    /// `tau` (`sin(tau u)/tau`, `sinh(tau u)/tau`), so as the two roots meet
+    /// the basis tends to the double root's `{cos, sin}(sigma u) u`, not to
+    /// zero: at `tau = 0.3` the functions are exactly that quotient, at
+    /// `tau = 1e-10` the limit to rounding.
+    #[test]
+    fn the_close_cases_tend_to_the_double_roots_basis() {
+        let sigma = 1.5;
+        let tol = crate::check::tol::ROUNDING;
+        for u in [0.25f64, 0.7, 1.0] {
+            let (c, s) = ((sigma * u).cos(), (sigma * u).sin());
+            let tau = 0.3;
+            let b = case_basis(&RootCase::CloseOscillatory { sigma, tau }, u);
+            let st = (tau * u).sin() / tau;
+            assert!((b[4] - c * st).abs() <= tol, "{b:?}");
+            assert!((b[5] - s * st).abs() <= tol, "{b:?}");
+            let g = case_basis(&RootCase::CloseGrowing { sigma, tau }, u);
+            let e0 = (-sigma * u).exp();
+            assert!((g[3] - e0 * (tau * u).sinh() / tau).abs() <= tol, "{g:?}");
+            let tau = 1e-10;
+            let b = case_basis(&RootCase::CloseOscillatory { sigma, tau }, u);
+            assert!(
+                (b[4] - c * u).abs() <= tol && (b[5] - s * u).abs() <= tol,
+                "{b:?}"
+            );
+            let g = case_basis(&RootCase::CloseGrowing { sigma, tau }, u);
+            assert!((g[3] - e0 * u).abs() <= tol, "{g:?}");
+        }
+    }
 }
