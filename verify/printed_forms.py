@@ -1,7 +1,7 @@
 """SymPy re-derivations of printed formulas checked one equation at a time
 (issue 17): paper 002 eqs 11, 13, A20, A22 (derivatives of the eq 8 basis),
-paper 004 eqs 12-16 (roots of the quartic) and paper 000 A3-A4 (line force
-coefficients).
+paper 004 eqs 12-16 (roots of the quartic), paper 000 A3-A4 (line force
+coefficients) and paper 000 eqs 9, 15, A1-A5 as printed.
 
   1. 002: differentiate the eq 8 basis (a < 0, q1 = sqrt3/2 q, q2 = q/2,
      minus of e^(-q1 u) restored) and compare with the printed eq 11 and
@@ -17,9 +17,8 @@ coefficients).
      the printed A2 f3 reduces to sin(2 k pi c)/(k^2 L^2 - 1). Golden: both f3
      and the integral (mpmath quadrature, 30 digits) for three forces, k = 1..4,
      and A2's f1, f2 as printed (same r constants); eq 9's f_mn, eq 15's
-     dbar_mn and A1's area-force, A3-A4's line-force and A5's concentrated-force
-     coefficients as printed, to pin the
-     paper-literal implementations.
+     dbar_mn and the area (A1), line (A3-A4) and concentrated (A5) force
+     coefficients as printed, to pin the paper-literal implementations.
 
 Run: python3 verify/printed_forms.py  (writes verify/golden/printed_forms.json)
 """

@@ -48,6 +48,16 @@ pub fn section_gec(s: &SectionSpec) -> Result<Gec, GecError> {
     Gec::new(frame, centre, x, y)
 }
 
+/// The error of section `i` of `p` that is no GEC, under edit `e`.
+fn not_a_gec<'a>(e: &'a Edit, p: &'a PartSpec, i: usize) -> impl Fn(GecError) -> EditError + 'a {
+    move |source| EditError::Section {
+        op: e.op(),
+        part: p.name.clone(),
+        section: i,
+        source: Box::new(source),
+    }
+}
+
 fn collapsed(s: &SectionSpec) -> bool {
     matches!(s.shape, SectionShape::Circle { r } if r == 0.0)
 }
@@ -168,12 +178,7 @@ fn boundary(
         }
         let mut s = p.sections[ie].clone();
         s.shape = c.clone();
-        let g = section_gec(&s).map_err(|source| EditError::Section {
-            op: e.op(),
-            part: p.name.clone(),
-            section: ie,
-            source: Box::new(source),
-        })?;
+        let g = section_gec(&s).map_err(not_a_gec(e, p, ie))?;
         if let Some((a, b, _)) = crate::polygon::self_intersection(&g.sample_plane(SECTION_SAMPLES))
         {
             return Err(EditError::SelfIntersecting {
@@ -268,14 +273,8 @@ fn transform_section(
         part: p.name.clone(),
         message: format!("section {i}: {m}"),
     };
-    let section = |source| EditError::Section {
-        op: e.op(),
-        part: p.name.clone(),
-        section: i,
-        source: Box::new(source),
-    };
     let s = &p.sections[i];
-    let g = section_gec(s).map_err(section)?;
+    let g = section_gec(s).map_err(not_a_gec(e, p, i))?;
     let point = collapsed(s);
     let c = g.centre;
     let out = match t {
@@ -292,7 +291,8 @@ fn transform_section(
                     "a bump needs a section with a size (this one is a collapsed end)".into(),
                 ));
             }
-            g.with_bump(*h, *theta, *sigma).map_err(section)?
+            g.with_bump(*h, *theta, *sigma)
+                .map_err(not_a_gec(e, p, i))?
         }
     };
     if !out.is_finite() {
@@ -354,6 +354,7 @@ mod tests {
         apply_one(&mut parts, &e).unwrap();
         assert_eq!(parts[0].surface, SurfaceSpec::Pde6C2 { a: 0.5 });
     }
+
     /// A section the document holds but that is no GEC (its frame's axes
     /// are parallel) refuses a transform with the gec error as its typed
     /// source, naming the section.
