@@ -63,6 +63,45 @@ fn write_gallery(ctx: &Ctx, figures: &[Figure]) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Runs every figure, on as many threads as the machine has cores: the
+/// figures are independent (each writes its own files and reads none of
+/// another's), and most of them run on one core, so on CI's two cores this
+/// about halves the step (docs/test-time.md). Progress goes to stderr a
+/// line per figure (their own lines, prefixed with their id, interleave).
+/// Every figure runs even when one fails; the first failure in the
+/// figures' order is the error.
+fn run_all(ctx: &Ctx, figures: &[Figure]) -> anyhow::Result<()> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Mutex;
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .clamp(1, figures.len().max(1));
+    let next = AtomicUsize::new(0);
+    let failed: Mutex<Vec<(usize, anyhow::Error)>> = Mutex::new(Vec::new());
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| loop {
+                let k = next.fetch_add(1, Ordering::Relaxed);
+                let Some(f) = figures.get(k) else { break };
+                eprintln!("== figure {}/{} ({})", k + 1, figures.len(), f.id);
+                if let Err(e) = ctx.run(f) {
+                    eprintln!("[{}] failed: {e:#}", f.id);
+                    failed
+                        .lock()
+                        .unwrap_or_else(|p| p.into_inner())
+                        .push((k, e));
+                }
+            });
+        }
+    });
+    let mut failed = failed.into_inner().unwrap_or_else(|p| p.into_inner());
+    failed.sort_by_key(|(k, _)| *k);
+    match failed.into_iter().next() {
+        Some((_, e)) => Err(e),
+        None => Ok(()),
+    }
+}
+
 fn run() -> anyhow::Result<()> {
     let mut args: Vec<String> = std::env::args().skip(1).collect();
     let mut out = std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/out"));
@@ -86,12 +125,7 @@ fn run() -> anyhow::Result<()> {
             Ok(())
         }
         Some("all") => {
-            // progress: the figures' own lines go to stderr, so the count
-            // is a line per figure rather than a redrawn bar
-            for (k, f) in figures.iter().enumerate() {
-                eprintln!("== figure {}/{}", k + 1, figures.len());
-                ctx.run(f)?;
-            }
+            run_all(&ctx, &figures)?;
             write_gallery(&ctx, &figures)
         }
         Some("gallery") => write_gallery(&ctx, &figures),
