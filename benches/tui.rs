@@ -59,11 +59,7 @@ fn job(app: &mut App, res: Resolution) -> Job {
 fn built_app() -> App {
     let dir = std::env::temp_dir().join(format!("pdesculpt-bench-tui-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
-    let o = Options {
-        path: dir.join("char.json"),
-        bundled: "female".into(),
-        preview: preview_res(),
-    };
+    let o = Options::new(dir.join("char.json"), "female").with_preview(preview_res());
     let mut app = open(&o).expect("opens");
     let j = job(&mut app, preview_res());
     let r = build(&j).expect("builds");

@@ -220,14 +220,7 @@ impl Tracing<'_> {
     /// Options of a trace along a fixed direction, up to `max_len`, its
     /// sections convex hulls when `hull`.
     fn straight(&self, max_len: f64, hull: bool) -> TraceOptions {
-        TraceOptions {
-            step: self.step,
-            max_len,
-            follow: false,
-            hull,
-            skip: 0.0,
-            jump: super::layout::JUMP,
-        }
+        TraceOptions::new(self.step, max_len).with_hull(hull)
     }
 }
 
@@ -310,14 +303,10 @@ fn arm_trace(t: &Tracing, ya: f64, start: [f64; 3]) -> Result<Vec<TraceSample>, 
         c0,
         d,
         r0,
-        TraceOptions {
-            step: t.step,
-            max_len: h,
-            follow: true,
-            hull: true,
-            skip: 0.05 * h,
-            jump: super::layout::JUMP,
-        },
+        TraceOptions::new(t.step, h)
+            .following(true)
+            .with_hull(true)
+            .with_skip(0.05 * h),
     )
 }
 
@@ -428,10 +417,7 @@ fn head_spec(t: &Tracing, lay: &Layout, o: &ClosedOptions) -> Result<PartSpec, B
     let (skin, h) = (t.skin, t.h);
     let yn = lay.neck + NECK_GAP * h;
     let (c, r) = t.centre_at(yn, 0.0)?;
-    let head_trace = TraceOptions {
-        jump: f64::INFINITY,
-        ..t.straight(h, false)
-    };
+    let head_trace = t.straight(h, false).with_jump(f64::INFINITY);
     let tr = trace(skin, c, [0.0, 1.0, 0.0], r, head_trace)?;
     part_from_trace(skin, "head", &tr, 0.0, o.head_sections, true, o, 0.0)
 }

@@ -29,7 +29,7 @@
 //!   with a thumb leaves outside (`pde6.body_closed_thumb_web_*`).
 
 use super::layout::{loops_in_plane, trace_excluding, Loop2, TraceOptions, TraceSample};
-use super::layout::{CAPTURE, JUMP, MIN_AREA};
+use super::layout::{CAPTURE, MIN_AREA};
 use super::BodyError;
 use crate::mesh::{dist, dot, norm, scale, sub, Mesh};
 
@@ -126,17 +126,10 @@ pub fn find_hand(m: &Mesh, arm: &[TraceSample], h: f64, step: f64) -> Result<Han
         f.place(palm0.centroid[0], palm0.centroid[1]),
         arm_dir,
         palm0.radius,
-        TraceOptions {
-            step,
-            max_len: 0.2 * h,
-            // straight: with its planes following the centroids the palm's
-            // trace swung where fingers left the capture, and the mitten
-            // chain through those sections crossed itself (README)
-            follow: false,
-            hull: true,
-            skip: 0.0,
-            jump: JUMP,
-        },
+        // straight: with its planes following the centroids the palm's
+        // trace swung where fingers left the capture, and the mitten
+        // chain through those sections crossed itself (README)
+        TraceOptions::new(step, 0.2 * h).with_hull(true),
         &near_thumb,
     )?;
     Ok(Hand {
@@ -257,14 +250,9 @@ fn thumb_trace(
         c0,
         dir,
         r0,
-        TraceOptions {
-            step: THUMB_STEP * step,
-            max_len: 0.1 * h,
-            follow: true,
-            hull: false,
-            skip: 0.03 * h,
-            jump: JUMP,
-        },
+        TraceOptions::new(THUMB_STEP * step, 0.1 * h)
+            .following(true)
+            .with_skip(0.03 * h),
     )?;
     if thumb.len() < 4 {
         return Err(not_found(format!(

@@ -330,8 +330,10 @@ pub struct TraceSample {
     pub radius: f64,
 }
 
-/// Options of a trace.
+/// Options of a trace: [`TraceOptions::new`] (a step and a length, the
+/// direction fixed, no hull, no skip, [`JUMP`]), then the builders.
 #[derive(Clone, Copy, Debug)]
+#[non_exhaustive]
 pub struct TraceOptions {
     pub step: f64,
     pub max_len: f64,
@@ -345,6 +347,45 @@ pub struct TraceOptions {
     /// ([`JUMP`]; infinite where the section legitimately grows fast, as
     /// from the neck into the jaw).
     pub jump: f64,
+}
+
+impl TraceOptions {
+    /// Sections every `step` up to `max_len` along a fixed direction, each
+    /// the loop itself (no hull), none skipped, a jump stop at [`JUMP`].
+    pub fn new(step: f64, max_len: f64) -> TraceOptions {
+        TraceOptions {
+            step,
+            max_len,
+            follow: false,
+            hull: false,
+            skip: 0.0,
+            jump: JUMP,
+        }
+    }
+
+    /// Updates the direction from the centroids.
+    pub fn following(mut self, follow: bool) -> TraceOptions {
+        self.follow = follow;
+        self
+    }
+
+    /// Takes the convex hull of the captured loops.
+    pub fn with_hull(mut self, hull: bool) -> TraceOptions {
+        self.hull = hull;
+        self
+    }
+
+    /// Keeps marching without a loop up to `skip`.
+    pub fn with_skip(mut self, skip: f64) -> TraceOptions {
+        self.skip = skip;
+        self
+    }
+
+    /// Stops when the radius grows by more than `jump` in one step.
+    pub fn with_jump(mut self, jump: f64) -> TraceOptions {
+        self.jump = jump;
+        self
+    }
 }
 
 /// Traces a limb from `start` in direction `dir` (see the module doc).

@@ -32,10 +32,6 @@ pub fn run(a: Args, _json: bool) -> anyhow::Result<i32> {
         rings_per_height: a.preview_rings,
         ..Resolution::default()
     };
-    tui::run(Options {
-        path: a.doc,
-        bundled: a.bundled,
-        preview,
-    })?;
+    tui::run(Options::new(a.doc, a.bundled).with_preview(preview))?;
     Ok(0)
 }

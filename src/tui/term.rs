@@ -13,8 +13,11 @@ use crossterm::event::{self, Event, KeyEventKind};
 use std::path::PathBuf;
 use std::time::Duration;
 
-/// How the TUI starts.
+/// How the TUI starts: [`Options::new`] (a document path and the bundled
+/// example it starts from when the file does not exist; the preview at
+/// [`PREVIEW_RINGS`] rings per height), then [`Options::with_preview`].
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Options {
     /// The document (created on the first save when it does not exist).
     pub path: PathBuf,
@@ -26,6 +29,27 @@ pub struct Options {
 
 /// The preview's default resolution: rings per model height.
 pub const PREVIEW_RINGS: f64 = 60.0;
+
+impl Options {
+    /// The document at `path`; a new one starts from the bundled example
+    /// `bundled` (`female`, `male`); the preview at [`PREVIEW_RINGS`].
+    pub fn new(path: impl Into<PathBuf>, bundled: impl Into<String>) -> Options {
+        Options {
+            path: path.into(),
+            bundled: bundled.into(),
+            preview: Resolution {
+                rings_per_height: PREVIEW_RINGS,
+                ..Resolution::default()
+            },
+        }
+    }
+
+    /// The preview's resolution.
+    pub fn with_preview(mut self, preview: Resolution) -> Options {
+        self.preview = preview;
+        self
+    }
+}
 
 /// Loads the document (or the bundled example for a new one) and the
 /// recovery offer: the app as it starts.

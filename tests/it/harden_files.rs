@@ -311,11 +311,7 @@ fn the_tui_creates_nothing_before_its_first_save() {
     use pdesculpt::tui::term::{open, Options};
     let d = tmpdir("harden-tui");
     let dir = d.join("nodir").join("sub");
-    let o = Options {
-        path: dir.join("x.json"),
-        bundled: "female".into(),
-        preview: RES,
-    };
+    let o = Options::new(dir.join("x.json"), "female").with_preview(RES);
     let mut app = open(&o).expect("opens");
     settle(&mut app, vec![Effect::Rebuild]);
     key(&mut app, KeyCode::Char('q'));

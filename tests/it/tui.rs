@@ -24,11 +24,7 @@ pub(crate) const RES: Resolution = Resolution {
 };
 
 fn options(name: &str) -> Options {
-    Options {
-        path: tmpdir(&format!("tui-{name}")).join("char.json"),
-        bundled: "female".into(),
-        preview: RES,
-    }
+    Options::new(tmpdir(&format!("tui-{name}")).join("char.json"), "female").with_preview(RES)
 }
 
 pub(crate) fn job(app: &mut App) -> Job {
@@ -272,11 +268,7 @@ fn tui_recovery_is_offered_for_a_newer_sidecar() {
     let edited = app.doc.clone();
     // a new session at the same path: the document does not exist, the
     // sidecar does
-    let o = Options {
-        path: app.path.clone(),
-        bundled: "female".into(),
-        preview: RES,
-    };
+    let o = Options::new(app.path.clone(), "female").with_preview(RES);
     let mut again = open(&o).expect("opens");
     // (the parts go through JSON: compare the log)
     assert!(
@@ -342,11 +334,7 @@ fn message_line(app: &App) -> String {
 #[test]
 fn tui_every_line_keeps_its_point_under_a_long_path() {
     let dir = deep_dir("deep");
-    let o = Options {
-        path: dir.join("char.json"),
-        bundled: "female".into(),
-        preview: RES,
-    };
+    let o = Options::new(dir.join("char.json"), "female").with_preview(RES);
     let mut app = open(&o).expect("opens");
     settle(&mut app, vec![Effect::Rebuild]);
     // the idle line: the document's name and the help key
