@@ -24,7 +24,7 @@ use pdesculpt::character::Resolution;
 use pdesculpt::pipeline::{build, build_document, push_checked, BuildOptions};
 use pdesculpt::sketch::check::bundled;
 use pdesculpt::tui::preview::{self, ViewSet};
-use pdesculpt::tui::term::PREVIEW_RINGS;
+use pdesculpt::tui::term::{preview_resolution, PREVIEW_RINGS};
 use std::hint::black_box;
 use std::path::Path;
 
@@ -60,10 +60,7 @@ fn bench(c: &mut Criterion) {
     let path = dir.join("char.json");
     doc.save(&path).expect("saves");
     let parts: Vec<String> = doc.parts().iter().map(|p| p.name.clone()).collect();
-    let preview_res = Resolution {
-        rings_per_height: PREVIEW_RINGS,
-        ..Resolution::default()
-    };
+    let preview_res = preview_resolution(PREVIEW_RINGS);
     let mut g = c.benchmark_group("pipeline");
     g.sample_size(10);
     let opts = BuildOptions::new(&dir).res(preview_res);

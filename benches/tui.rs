@@ -31,7 +31,7 @@ use pdesculpt::character::log::{Edit, SectionTransform};
 use pdesculpt::character::Resolution;
 use pdesculpt::tui::app::{App, Effect, Focus};
 use pdesculpt::tui::preview::{self, ViewSet};
-use pdesculpt::tui::term::{open, Options, PREVIEW_RINGS};
+use pdesculpt::tui::term::{open, preview_resolution, Options, PREVIEW_RINGS};
 use pdesculpt::tui::view::{draw, PreviewCache};
 use pdesculpt::tui::worker::{build, build_with, Job, Outcome, Task};
 use ratatui::backend::TestBackend;
@@ -40,10 +40,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 fn preview_res() -> Resolution {
-    Resolution {
-        rings_per_height: PREVIEW_RINGS,
-        ..Resolution::default()
-    }
+    preview_resolution(PREVIEW_RINGS)
 }
 
 fn job(app: &mut App, res: Resolution) -> Job {

@@ -1,7 +1,7 @@
 //! `pdesculpt tui [CHAR.json] [--bundled female|male] [--preview-rings N]`.
 
-use pdesculpt::character::Resolution;
-use pdesculpt::tui::{self, term::PREVIEW_RINGS, Options};
+use pdesculpt::tui::term::{preview_resolution, PREVIEW_RINGS};
+use pdesculpt::tui::{self, Options};
 use std::path::PathBuf;
 
 /// Arguments of `pdesculpt tui`.
@@ -28,10 +28,7 @@ pub fn run(a: Args, _json: bool) -> anyhow::Result<i32> {
             a.preview_rings
         );
     }
-    let preview = Resolution {
-        rings_per_height: a.preview_rings,
-        ..Resolution::default()
-    };
+    let preview = preview_resolution(a.preview_rings);
     tui::run(Options::new(a.doc, a.bundled).with_preview(preview))?;
     Ok(0)
 }

@@ -30,6 +30,16 @@ pub struct Options {
 /// The preview's default resolution: rings per model height.
 pub const PREVIEW_RINGS: f64 = 60.0;
 
+/// The preview's resolution at `rings_per_height` (the CLI's
+/// `--preview-rings`, [`PREVIEW_RINGS`] by default), every other setting
+/// the export's.
+pub fn preview_resolution(rings_per_height: f64) -> Resolution {
+    Resolution {
+        rings_per_height,
+        ..Resolution::default()
+    }
+}
+
 impl Options {
     /// The document at `path`; a new one starts from the bundled example
     /// `bundled` (`female`, `male`); the preview at [`PREVIEW_RINGS`].
@@ -37,10 +47,7 @@ impl Options {
         Options {
             path: path.into(),
             bundled: bundled.into(),
-            preview: Resolution {
-                rings_per_height: PREVIEW_RINGS,
-                ..Resolution::default()
-            },
+            preview: preview_resolution(PREVIEW_RINGS),
         }
     }
 
