@@ -406,6 +406,7 @@ fn hand_specs(
         tangent_scale: WRIST_TANGENT_SCALE,
         child_tangent_scales: Vec::new(),
         continuity: Default::default(),
+        cap_tangents: false,
     });
     arms.hands
         .push((hand, arms.wrists[arms.wrists.len() - 1].cut_angles[0]));

@@ -8,6 +8,7 @@
 //! (the versioned document: inputs, derived parts, log, props); [`part`]
 //! (a part's pde6 C2 chain), [`ring`] (the end ring the seams cut),
 //! [`seam`], [`transition`] (Hermite branch transitions, G1 seams),
+//! [`tangent_cap`] (sketched transitions' tangents capped where a ring flares),
 //! [`measure`] (join jumps), [`assembly`] (one shared-vertex mesh, the part
 //! cache, displacement fields), [`crease`], [`props`] (conv models composed
 //! into the mesh). From a document to a model is `crate::pipeline`.
@@ -24,6 +25,7 @@ pub mod props;
 pub mod ring;
 pub mod seam;
 pub mod spec;
+pub mod tangent_cap;
 pub mod transition;
 
 pub use assembly::{build_model, Model, Resolution};

@@ -140,6 +140,12 @@ pub struct TransitionSpec {
     /// `c1` (cubic Hermite, the default) or `c2` (quintic Hermite).
     #[serde(default, skip_serializing_if = "Continuity::is_default")]
     pub continuity: Continuity,
+    /// Caps each loop column's cross tangent at its scale where the
+    /// parent's end ring flares (`character::tangent_cap::cap_tangents`).
+    /// Sketch-guided modeling sets it; false (the default) for documents
+    /// written before it and for the closed body.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub cap_tangents: bool,
 }
 
 /// Cross-tangent scale of the shoulder transition. Measured on the base and
@@ -180,6 +186,7 @@ impl TransitionSpec {
                     tangent_scale,
                     child_tangent_scales,
                     continuity: Continuity::default(),
+                    cap_tangents: false,
                 }
             };
         let (scale, per_child) = if arms == head {
@@ -239,4 +246,8 @@ fn unit_scale() -> f64 {
 
 fn is_unit_scale(x: &f64) -> bool {
     *x == 1.0
+}
+
+fn is_false(x: &bool) -> bool {
+    !*x
 }

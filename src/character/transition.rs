@@ -219,7 +219,7 @@ pub fn loop_eval(
 
 /// The run of the loop at continuous parameter `tau` (taken modulo the
 /// loop's length) and the fraction `f` in [0, 1] of the way along it.
-fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
+pub(super) fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
     let tau = tau.rem_euclid(ct.n as f64);
     let mut start = 0.0;
     for r in &ct.runs {

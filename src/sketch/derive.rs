@@ -173,7 +173,6 @@ fn derive_upright(
         }
     }
     let g = super::segment::GAP_FRACTION * lm.height();
-    let ya = lm.armpit_l[1].min(lm.armpit_r[1]) - g;
     let torso = &parts[0];
     let r_top = match torso.sections.last().map(|s| &s.shape) {
         Some(SectionShape::Circle { r }) => *r,
@@ -196,22 +195,33 @@ fn derive_upright(
             None => top_c[0] + sign * 0.5 * r_top,
         };
         // the arm's shoulder point (the upper end of its cut)
-        let out_x = if sign < 0.0 {
-            shoulders[0][0]
+        let out = if sign < 0.0 {
+            shoulders[0]
         } else {
-            shoulders[1][0]
+            shoulders[1]
         };
-        let x = 0.5 * (neck_x + out_x);
-        let y = shoulder_top(front, x, &lm).unwrap_or(ya + 4.0 * g);
+        let x = 0.5 * (neck_x + out[0]);
+        // the outline's top there when it lies between the torso's end ring
+        // and the neck; else (x over a notch or a gap of the drawing, whose
+        // top below the neck can be a leg's: random_6 of the seed-7777
+        // set put an apex near the feet and a sheet hung from it) the
+        // straight shoulder line from the neck's base to the shoulder point
+        let line = 0.5 * (lm.neck_base + out[1]);
+        let y = shoulder_top(front, x, &lm)
+            .filter(|y| *y > top_c[1] && *y <= lm.neck)
+            .unwrap_or(line.max(top_c[1] + g));
         [x, y, top_c[2]]
     };
     let bot_c = torso.sections[0].centre;
-    let transitions = TransitionSpec::humanoid(
+    let mut transitions = TransitionSpec::humanoid(
         [lm.crotch[0], lm.crotch[1], bot_c[2]],
         vec![apex(-1.0), apex(1.0)],
         crate::character::spec::SHOULDER_TANGENT_SCALE,
         1.0,
     );
+    for t in &mut transitions {
+        t.cap_tangents = true;
+    }
     Ok(Derived {
         plan: BodyPlan::Humanoid,
         alignment: Alignment::identity(),

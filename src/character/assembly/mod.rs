@@ -279,7 +279,7 @@ fn plan_transition(
                 parts[idx].name, t.name
             )));
         }
-        let ct = child_transition(
+        let mut ct = child_transition(
             c,
             k,
             &parts[pi],
@@ -290,6 +290,9 @@ fn plan_transition(
             t.child_scale(c),
             t.continuity,
         );
+        if t.cap_tangents {
+            crate::character::tangent_cap::cap_tangents(&mut ct, &parts[pi], &seams);
+        }
         if thetas[idx].is_some() {
             return Err(ModelError::Document(format!(
                 "part '{}' is the child of two transitions",

@@ -339,6 +339,7 @@ pub fn derive(
             tangent_scale: TANGENT_SCALE,
             child_tangent_scales: Vec::new(),
             continuity: Default::default(),
+            cap_tangents: true,
         },
         TransitionSpec {
             name: "topside".into(),
@@ -354,6 +355,7 @@ pub fn derive(
             tangent_scale: TANGENT_SCALE,
             child_tangent_scales: Vec::new(),
             continuity: Default::default(),
+            cap_tangents: true,
         },
     ];
     Ok(Derived {
