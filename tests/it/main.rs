@@ -44,6 +44,7 @@ mod sketch_animal;
 mod sketch_draw;
 mod sketch_overlay;
 mod sketch_segment;
+mod sketch_shoulders;
 mod sketch_writer;
 mod speedups;
 mod template;
