@@ -56,7 +56,9 @@
 //! (the arms under the shoulders): [`column_scales`] makes it follow each
 //! column's chord to the child ring, which stops the armpit's corner
 //! columns folding through their neighbours. Everywhere else it is one
-//! scale per child.
+//! scale per child. A transition with `cap_tangents` (sketched ones) then
+//! caps each column's tangent at its scale where the parent's end ring
+//! flares ([`super::tangent_cap`]).
 //!
 //! Nothing here assumes a vertical axis: the cuts are ring angles of the
 //! parent's own section parameter, the seams are built from the parent's
