@@ -4,6 +4,8 @@
 //! --random 40 --ranges issue` as random_9 and random_6).
 
 use crate::sketch_draw::build;
+use pdesculpt::character::spec::TransitionSpec;
+use pdesculpt::pipeline::Built;
 use std::path::PathBuf;
 
 /// The whole model's profile error bound of these checks, relative to the
@@ -25,6 +27,14 @@ fn pair(name: &str) -> (PathBuf, PathBuf) {
     )
 }
 
+fn shoulders(b: &Built) -> &TransitionSpec {
+    b.doc
+        .transitions()
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .expect("a shoulders transition")
+}
+
 /// A torso narrowing in a nearly level shelf under the armpits has an end
 /// ring whose u-speed `|dP/du|` reaches 26: the transition's cross
 /// tangents `ell dP/du` were 26 times the gap they bridge, and the
@@ -34,12 +44,7 @@ fn pair(name: &str) -> (PathBuf, PathBuf) {
 fn a_torso_ending_in_a_shelf_keeps_its_shoulders_under_the_head() {
     let (f, s) = pair("shelf_torso");
     let b = build(&f, &s, None).expect("builds");
-    let shoulders = b
-        .doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("a shoulders transition");
+    let shoulders = shoulders(&b);
     assert!(
         shoulders.cap_tangents,
         "sketched transitions cap their tangents"
@@ -73,12 +78,7 @@ fn a_shoulder_apex_over_a_gap_stays_between_the_torso_and_the_neck() {
     };
     let torso_top = part("torso").sections.last().expect("sections").centre[1];
     let head_base = part("head").sections[0].centre[1];
-    let t = b
-        .doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("a shoulders transition");
+    let t = shoulders(&b);
     for a in &t.seam_apex {
         assert!(
             a[1] > torso_top && a[1] <= head_base,
