@@ -98,7 +98,7 @@ fn armpit(front: &[[f64; 2]], crotch: GapTop, top: f64, side: f64) -> Result<Gap
                 }
                 (Some(f), Some(y2)) if jump && was_apart => {
                     return Err(SketchError::Segmentation(format!(
-                        "the {which} arm touches the body between y = {:.4} and {:.4}: leave a gap between the arm and the body",
+                        "the {which} arm touches the body between y = {:.4} and {:.4}: draw the arm apart from the body there (leave a gap between them)",
                         f.y, y2
                     )));
                 }

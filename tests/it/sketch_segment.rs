@@ -312,3 +312,50 @@ fn a_wavy_crotch_is_one_gap_in_the_refusal() {
         "the arm's gap closes below the crotch as named: {e}"
     );
 }
+
+/// Found by exploration (`PDESCULPT_EXPLORE=1`, 2026-11-29; also in
+/// `tests/proptest-regressions/sketch_draw.txt`): a head a third of the
+/// height with arms 51 and 64 degrees down whose left arm lies on the
+/// hip. Its refusal named the arm and the heights but said only "leave a
+/// gap", not what to draw, so the property test's "says what to change in
+/// the drawing" (its refusal text names drawing or a cut) failed.
+#[test]
+fn an_arm_lying_on_the_body_is_refused_saying_what_to_draw() {
+    let u = [
+        0.5621849869789382,
+        0.3258186562095308,
+        0.973675873360357,
+        0.09649073000934495,
+        0.535656604901991,
+        0.7970117105711004,
+        0.6853536189257698,
+        0.7932760773708001,
+        0.8829057743531518,
+        0.7623156482286035,
+        0.0,
+        0.7526453017920014,
+        0.5311927907119275,
+        0.07506594041444681,
+        0.0,
+        0.0,
+    ];
+    let h = pdesculpt::sketch::figure::HumanoidRanges::ISSUE.at(&u, 1.7);
+    let dir = tmpdir("segment");
+    let (f, s) = write_pair(
+        &dir,
+        "arm_on_hip",
+        &h,
+        Style::InkscapeMm,
+        0.18,
+        [100.0, 260.0],
+    );
+    let e = match build(&f, &s, Some(1.7)) {
+        Err(e) => e.to_string(),
+        Ok(_) => panic!("an arm lying on the hip is refused"),
+    };
+    assert!(
+        e.contains("the left arm touches the body between y = "),
+        "the refusal names the arm and where: {e}"
+    );
+    assert!(e.contains("draw the arm apart"), "and what to draw: {e}");
+}
