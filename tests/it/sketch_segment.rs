@@ -12,10 +12,18 @@ use pdesculpt::sketch::segment::{
     landmarks, neck_interval, regions, JoinHeights, GAP_FRACTION, GROUND_FRACTION, LANDMARK_SLICES,
 };
 
-fn closed(h: &Humanoid, name: &str) {
+/// The figure written as an Inkscape mm page and built at 1.7 m.
+fn built(
+    h: &Humanoid,
+    name: &str,
+) -> Result<pdesculpt::pipeline::Built, pdesculpt::pipeline::BuildError> {
     let dir = tmpdir("segment");
     let (f, s) = write_pair(&dir, name, h, Style::InkscapeMm, 0.18, [100.0, 260.0]);
-    let b = build(&f, &s, Some(1.7)).unwrap_or_else(|e| panic!("{name}: {e}"));
+    build(&f, &s, Some(1.7))
+}
+
+fn closed(h: &Humanoid, name: &str) {
+    let b = built(h, name).unwrap_or_else(|e| panic!("{name}: {e}"));
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
 }
@@ -130,16 +138,7 @@ fn armpits_at_the_crotch_are_refused_naming_both_heights() {
         "armpits {:.2} % above the crotch",
         100.0 * t
     );
-    let dir = tmpdir("segment");
-    let (f, s) = write_pair(
-        &dir,
-        "no_torso",
-        &h,
-        Style::InkscapeMm,
-        0.18,
-        [100.0, 260.0],
-    );
-    let e = build(&f, &s, Some(1.7))
+    let e = built(&h, "no_torso")
         .err()
         .map(|e| e.to_string())
         .unwrap_or_default();
@@ -340,16 +339,7 @@ fn an_arm_lying_on_the_body_is_refused_saying_what_to_draw() {
         0.0,
     ];
     let h = pdesculpt::sketch::figure::HumanoidRanges::ISSUE.at(&u, 1.7);
-    let dir = tmpdir("segment");
-    let (f, s) = write_pair(
-        &dir,
-        "arm_on_hip",
-        &h,
-        Style::InkscapeMm,
-        0.18,
-        [100.0, 260.0],
-    );
-    let e = match build(&f, &s, Some(1.7)) {
+    let e = match built(&h, "arm_on_hip") {
         Err(e) => e.to_string(),
         Ok(_) => panic!("an arm lying on the hip is refused"),
     };
