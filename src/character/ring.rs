@@ -99,3 +99,38 @@ pub fn hermite(s: f64, d: usize) -> [f64; 4] {
         ],
     }
 }
+
+/// Quintic Hermite basis values and derivatives (d = 0, 1, 2) at s:
+/// `[H0, H1, H2, H3, H4, H5]`, the weights of the value, first and second
+/// derivative at s = 0 and at s = 1 (each is 1 in its own condition, 0 in
+/// the other five).
+pub fn quintic(s: f64, d: usize) -> [f64; 6] {
+    let (s2, s3) = (s * s, s * s * s);
+    let (s4, s5) = (s3 * s, s3 * s2);
+    match d {
+        0 => [
+            1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
+            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
+            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
+            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
+            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
+            0.5 * s3 - s4 + 0.5 * s5,
+        ],
+        1 => [
+            -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
+            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
+            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
+            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
+            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
+            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
+        ],
+        _ => [
+            -60.0 * s + 180.0 * s2 - 120.0 * s3,
+            -36.0 * s + 96.0 * s2 - 60.0 * s3,
+            1.0 - 9.0 * s + 18.0 * s2 - 10.0 * s3,
+            60.0 * s - 180.0 * s2 + 120.0 * s3,
+            -24.0 * s + 84.0 * s2 - 60.0 * s3,
+            3.0 * s - 12.0 * s2 + 10.0 * s3,
+        ],
+    }
+}

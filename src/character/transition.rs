@@ -76,6 +76,7 @@ use crate::character::spec::{Continuity, End};
 use crate::mesh::{add, dist, dot, norm, scale, sub};
 use std::f64::consts::PI;
 
+pub use super::ring::quintic;
 use super::ring::{cut_indices, hermite, RING_VERTICES, SEAM_VERTICES};
 use super::seam::{seam_tangent, seam_weight, Seam};
 use crate::character::spec::TransitionSpec;
@@ -237,41 +238,6 @@ pub(super) fn locate(ct: &ChildTransition, tau: f64) -> (Run, f64) {
     unreachable!("tau is reduced into the loop")
 }
 
-/// Quintic Hermite basis values and derivatives (d = 0, 1, 2) at s:
-/// `[H0, H1, H2, H3, H4, H5]`, the weights of the value, first and second
-/// derivative at s = 0 and at s = 1 (each is 1 in its own condition, 0 in
-/// the other five).
-pub fn quintic(s: f64, d: usize) -> [f64; 6] {
-    let (s2, s3) = (s * s, s * s * s);
-    let (s4, s5) = (s3 * s, s3 * s2);
-    match d {
-        0 => [
-            1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5,
-            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
-            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
-            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
-            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
-            0.5 * s3 - s4 + 0.5 * s5,
-        ],
-        1 => [
-            -30.0 * s2 + 60.0 * s3 - 30.0 * s4,
-            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
-            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
-            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
-            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
-            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
-        ],
-        _ => [
-            -60.0 * s + 180.0 * s2 - 120.0 * s3,
-            -36.0 * s + 96.0 * s2 - 60.0 * s3,
-            1.0 - 9.0 * s + 18.0 * s2 - 10.0 * s3,
-            60.0 * s - 180.0 * s2 + 120.0 * s3,
-            -24.0 * s + 84.0 * s2 - 60.0 * s3,
-            3.0 * s - 12.0 * s2 + 10.0 * s3,
-        ],
-    }
-}
-
 /// The loop's second cross derivative at `tau`: `ell^2 d2P/du2` on the
 /// parent's arcs; along a seam the parent's at the two cuts, blended
 /// linearly and faded out by `1 - w` as the cross tangent is.
@@ -309,11 +275,36 @@ pub fn eval(
     tau: f64,
     d: usize,
 ) -> [f64; 3] {
+    blend(ct, &column(ct, parent, child, seams, tau), s, d)
+}
+
+/// The Hermite data of the transition's column at loop parameter `tau`:
+/// `[L, T, A, Q, D, B]` (module docs; `A` and `B` zero for a `c1` blend),
+/// which [`blend`] weighs at any `s`.
+pub fn column(
+    ct: &ChildTransition,
+    parent: &PartSurface,
+    child: &PartSurface,
+    seams: &[Seam],
+    tau: f64,
+) -> [[f64; 3]; 6] {
     let (l, t) = loop_eval(ct, parent, seams, tau);
     let th = ct.theta0 + ct.sigma * 2.0 * PI * tau / ct.n as f64;
     let q = child.section(ct.child_u, 0).eval(th);
     let ell = ct.ell_at(tau);
     let dq = scale(child.section(ct.child_u, 1).eval(th), ell);
+    if ct.continuity == Continuity::C1 {
+        return [l, t, [0.0; 3], q, dq, [0.0; 3]];
+    }
+    let a = loop_second(ct, parent, seams, tau);
+    let b = scale(child.section(ct.child_u, 2).eval(th), ell * ell);
+    [l, t, a, q, dq, b]
+}
+
+/// The d-th s-derivative at `s` of the column with Hermite data `c`
+/// ([`column`]): cubic for `c1`, quintic for `c2`.
+pub fn blend(ct: &ChildTransition, c: &[[f64; 3]; 6], s: f64, d: usize) -> [f64; 3] {
+    let [l, t, a, q, dq, b] = *c;
     if ct.continuity == Continuity::C1 {
         let h = hermite(s, d);
         return add(
@@ -321,8 +312,6 @@ pub fn eval(
             add(scale(q, h[2]), scale(dq, h[3])),
         );
     }
-    let a = loop_second(ct, parent, seams, tau);
-    let b = scale(child.section(ct.child_u, 2).eval(th), ell * ell);
     let h = quintic(s, d);
     [l, t, a, q, dq, b]
         .iter()

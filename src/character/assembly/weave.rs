@@ -6,7 +6,7 @@ use super::{Displacement, Resolution};
 use crate::character::part::PartSurface;
 use crate::character::ring::{RING_VERTICES, SEAM_VERTICES};
 use crate::character::spec::End;
-use crate::character::transition::{eval as teval, Built, Run};
+use crate::character::transition::{blend, column, Built, Run};
 use crate::character::ModelError;
 use crate::mesh::Mesh;
 
@@ -226,16 +226,17 @@ pub(super) fn transition_mesh(
         }
         let mut prev = row0;
         let rows = res.transition_rows;
+        let columns: Vec<_> = (0..ct.n)
+            .map(|i| column(ct, &parts[b.parent], &parts[ci], &b.seams, i as f64))
+            .collect();
         for r in 1..=rows {
             let row: Vec<u32> = if r == rows {
                 tubes[ci].start.clone()
             } else {
                 let s = r as f64 / rows as f64;
-                (0..ct.n)
-                    .map(|i| {
-                        let p = teval(ct, &parts[b.parent], &parts[ci], &b.seams, s, i as f64, 0);
-                        push(mesh, p)
-                    })
+                columns
+                    .iter()
+                    .map(|c| push(mesh, blend(ct, c, s, 0)))
                     .collect()
             };
             band(mesh, g, &prev, &row);
