@@ -223,6 +223,11 @@ pub fn build(
         .map(|r| crate::sketch::removed::removed_part(r, base, tol, &placement))
         .collect::<Result<Vec<_>, _>>()?;
     let mut out = doc.clone();
+    let mut local = PartCache::default();
+    let cache = match cache {
+        Some(c) => c,
+        None => &mut local,
+    };
     let yr = crate::polygon::span(front.points(), 1);
     let height = yr[1] - yr[0];
     if opts.rederive || doc.parts().is_empty() {
@@ -236,9 +241,21 @@ pub fn build(
         )?;
         let mut parts = d.parts;
         parts.extend(removed.iter().map(|r| r.spec.clone()));
-        out.set_derived(parts, d.transitions);
+        let mut transitions = d.transitions;
+        let solved = parts
+            .iter()
+            .map(|p| cache.get(p))
+            .collect::<Result<Vec<_>, _>>()?;
+        crate::sketch::tangent_fit::fit_child_scales(
+            &mut transitions,
+            &solved,
+            &front.profile,
+            side.as_ref().map(|s| &s.profile),
+            height,
+        )?;
+        out.set_derived(parts, transitions);
     }
-    let (edited, model) = replay(&out, height, opts, cache)?;
+    let (edited, model) = replay(&out, height, opts, Some(cache))?;
     let mut model = model;
     let mut props = Vec::with_capacity(doc.props().len());
     let cells = props::resolution(opts.res.rings_per_height);

@@ -71,6 +71,7 @@ pub mod removed;
 pub mod report;
 pub mod section_place;
 pub mod segment;
+pub mod tangent_fit;
 
 pub use report::SketchReport;
 

@@ -45,6 +45,7 @@ mod sketch_draw;
 mod sketch_overlay;
 mod sketch_segment;
 mod sketch_shoulders;
+mod sketch_tangent_fit;
 mod sketch_writer;
 mod speedups;
 mod template;

@@ -9,7 +9,7 @@ use crate::character::part::{build_part, PartSurface};
 use crate::character::ring::{cut_table, RING_VERTICES};
 use crate::character::seam::seams as make_seams;
 use crate::character::spec::{End, PartSpec, TransitionSpec};
-use crate::character::transition::{child_transition, Built};
+use crate::character::transition::{blend, child_transition, column, Built, ChildTransition};
 use crate::character::ModelError;
 use crate::mesh::Mesh;
 use weave::{part_tubes, transition_mesh};
@@ -169,6 +169,68 @@ pub fn build_model_with(
     })
 }
 
+/// The points the mesh of transition `t` holds for its child `child` (an
+/// index into `t.children`) with the child's tangent factor
+/// (`TransitionSpec::child_scale`) times each of `factors`: per factor,
+/// rows `s = r / rows` for `r` in `0..=rows` at every loop vertex (row 0
+/// the loop on the parent, row `rows` the child's ring), as
+/// [`build_model`] places them with `rows` transition rows: `rows + 1`
+/// rows of `points.len() / (rows + 1)` columns. `parts` are the solved
+/// parts the transition joins. Every cross-tangent scale of a child
+/// transition is its factor times a length of the geometry
+/// (`character::transition::child_transition`, `column_scales`,
+/// `tangent_cap`), so each factor scales the one planned child.
+pub fn transition_points(
+    t: &TransitionSpec,
+    parts: &[PartSurface],
+    child: usize,
+    rows: usize,
+    factors: &[f64],
+) -> Result<Vec<Vec<[f64; 3]>>, ModelError> {
+    let pi = find_part(parts, &t.parent)?;
+    let ci: Vec<usize> = t
+        .children
+        .iter()
+        .map(|c| find_part(parts, c))
+        .collect::<Result<_, _>>()?;
+    let Some(&idx) = ci.get(child) else {
+        return Err(ModelError::Document(format!(
+            "transition '{}' has no child {child}",
+            t.name
+        )));
+    };
+    let centres: Vec<[f64; 3]> = ci
+        .iter()
+        .map(|&c| parts[c].section(parts[c].u0, 0).c0)
+        .collect();
+    let cuts = cut_table(ci.len(), &t.cut_angles);
+    check_transition(t, ci.len(), &cuts)?;
+    let seams = make_seams(
+        &parts[pi],
+        t.parent_end,
+        ci.len(),
+        &t.seam_apex,
+        &centres,
+        &cuts,
+    );
+    let planned = plan_child(t, parts, pi, idx, child, &seams, &cuts)?;
+    let points = |f: f64| {
+        let mut ct = planned.clone();
+        ct.ell *= f;
+        ct.ell_vertex.iter_mut().for_each(|e| *e *= f);
+        let columns: Vec<[[f64; 3]; 6]> = (0..ct.n)
+            .map(|i| column(&ct, &parts[pi], &parts[idx], &seams, i as f64))
+            .collect();
+        let mut out = Vec::with_capacity(ct.n * (rows + 1));
+        for r in 0..=rows {
+            let s = r as f64 / rows as f64;
+            out.extend(columns.iter().map(|c| blend(&ct, c, s, 0)));
+        }
+        out
+    };
+    Ok(factors.iter().map(|&f| points(f)).collect())
+}
+
 /// The parts of `specs`, from `cache` when given (solving only the parts
 /// not in it), else each solved.
 fn solve_parts(
@@ -273,26 +335,7 @@ fn plan_transition(
     let seams = make_seams(&parts[pi], t.parent_end, k, &t.seam_apex, &centres, &cuts);
     let mut cts = Vec::new();
     for (c, &idx) in ci.iter().enumerate() {
-        if parts[idx].closed_start {
-            return Err(ModelError::Document(format!(
-                "part '{}' joins transition '{}' at its start, which is closed",
-                parts[idx].name, t.name
-            )));
-        }
-        let mut ct = child_transition(
-            c,
-            k,
-            &parts[pi],
-            t.parent_end,
-            &parts[idx],
-            &seams,
-            &cuts,
-            t.child_scale(c),
-            t.continuity,
-        );
-        if t.cap_tangents {
-            crate::character::tangent_cap::cap_tangents(&mut ct, &parts[pi], &seams);
-        }
+        let ct = plan_child(t, parts, pi, idx, c, &seams, &cuts)?;
         if thetas[idx].is_some() {
             return Err(ModelError::Document(format!(
                 "part '{}' is the child of two transitions",
@@ -313,6 +356,39 @@ fn plan_transition(
         seams,
         cts,
     })
+}
+
+/// Child `c` (part `idx`) of transition `t` on parent part `pi`.
+fn plan_child(
+    t: &TransitionSpec,
+    parts: &[PartSurface],
+    pi: usize,
+    idx: usize,
+    c: usize,
+    seams: &[crate::character::seam::Seam],
+    cuts: &[(usize, usize)],
+) -> Result<ChildTransition, ModelError> {
+    if parts[idx].closed_start {
+        return Err(ModelError::Document(format!(
+            "part '{}' joins transition '{}' at its start, which is closed",
+            parts[idx].name, t.name
+        )));
+    }
+    let mut ct = child_transition(
+        c,
+        t.children.len(),
+        &parts[pi],
+        t.parent_end,
+        &parts[idx],
+        seams,
+        cuts,
+        t.child_scale(c),
+        t.continuity,
+    );
+    if t.cap_tangents {
+        crate::character::tangent_cap::cap_tangents(&mut ct, &parts[pi], seams);
+    }
+    Ok(ct)
 }
 
 /// Which parts switch to the uniform ring halfway along their tube.

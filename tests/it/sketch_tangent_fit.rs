@@ -1,0 +1,84 @@
+//! The sketched transitions' tangent factors fitted to the drawing
+//! (`sketch::tangent_fit`), on the corpus's cartoon (head half the
+//! height), whose shoulders missed the drawn front by 1.66 % of the height
+//! with the derived factors.
+
+use crate::sketch_draw::build;
+use pdesculpt::character::assembly::{transition_points, Resolution};
+use pdesculpt::pipeline::Built;
+use std::path::PathBuf;
+
+/// The cartoon's whole-model front profile error bound, relative to the
+/// height: 1 % (now 0.59 %; 1.66 % with the derived factors, past the
+/// issue's 1.5 %).
+const CARTOON_FRONT_MAX: f64 = 0.01;
+/// How far (relative to the height) a point the fit measures may lie from
+/// the mesh vertex it stands for: the same evaluation, so rounding only.
+const SAME_POINT: f64 = 1e-12;
+
+fn cartoon() -> Built {
+    let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/sketch/corpus");
+    build(
+        &data.join("cartoon_head_half_front.svg"),
+        &data.join("cartoon_head_half_side.svg"),
+        None,
+    )
+    .expect("the cartoon builds")
+}
+
+/// The fit takes the shoulders' factors off the derived ones (arms 0.7,
+/// head 1) and the model follows the drawn front within 1 %.
+#[test]
+fn a_cartoons_shoulders_follow_its_drawn_front_with_fitted_tangents() {
+    let b = cartoon();
+    let shoulders = b
+        .doc
+        .transitions()
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .expect("shoulders");
+    let derived = [0.7, 1.0, 0.7];
+    let fitted: Vec<f64> = (0..3).map(|c| shoulders.child_scale(c)).collect();
+    assert_ne!(fitted, derived, "the fit kept every derived factor");
+    let front = b
+        .report
+        .quality
+        .whole
+        .views
+        .iter()
+        .find(|v| v.view == "front")
+        .expect("front");
+    assert!(
+        front.max_rel <= CARTOON_FRONT_MAX,
+        "front profile error {:.2} % of the height (factors {fitted:?})",
+        100.0 * front.max_rel
+    );
+}
+
+/// What the fit measures is what the mesh holds: every point
+/// `transition_points` gives at the document's factors is a vertex of the
+/// built mesh.
+#[test]
+fn the_fitted_points_are_the_meshs_vertices() {
+    let b = cartoon();
+    let h = b.report.height;
+    let rows = Resolution::default().transition_rows;
+    let verts = &b.model.mesh.positions;
+    for t in b.doc.transitions() {
+        for c in 0..t.children.len() {
+            let pts = transition_points(t, &b.model.parts, c, rows, &[1.0]).expect("planned");
+            for p in &pts[0] {
+                let d = verts
+                    .iter()
+                    .map(|v| pdesculpt::mesh::dist(*v, *p))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    d <= SAME_POINT * h,
+                    "{} child {c}: a point {:.3e} of the height from the mesh",
+                    t.name,
+                    d / h
+                );
+            }
+        }
+    }
+}
