@@ -7,7 +7,7 @@ use crate::character::measure::{measure, measure_seam};
 pub use crate::character::measure::{orient, JoinReport, SeamReport};
 use crate::character::part::{build_part, PartSurface};
 use crate::character::ring::{cut_table, RING_VERTICES};
-use crate::character::seam::seams as make_seams;
+use crate::character::seam::{seams as make_seams, Seam};
 use crate::character::spec::{End, PartSpec, TransitionSpec};
 use crate::character::transition::{blend, child_transition, column, Built, ChildTransition};
 use crate::character::ModelError;
@@ -187,32 +187,13 @@ pub fn transition_points(
     rows: usize,
     factors: &[f64],
 ) -> Result<Vec<Vec<[f64; 3]>>, ModelError> {
-    let pi = find_part(parts, &t.parent)?;
-    let ci: Vec<usize> = t
-        .children
-        .iter()
-        .map(|c| find_part(parts, c))
-        .collect::<Result<_, _>>()?;
+    let (pi, ci, seams, cuts) = plan_frame(t, parts)?;
     let Some(&idx) = ci.get(child) else {
         return Err(ModelError::Document(format!(
             "transition '{}' has no child {child}",
             t.name
         )));
     };
-    let centres: Vec<[f64; 3]> = ci
-        .iter()
-        .map(|&c| parts[c].section(parts[c].u0, 0).c0)
-        .collect();
-    let cuts = cut_table(ci.len(), &t.cut_angles);
-    check_transition(t, ci.len(), &cuts)?;
-    let seams = make_seams(
-        &parts[pi],
-        t.parent_end,
-        ci.len(),
-        &t.seam_apex,
-        &centres,
-        &cuts,
-    );
     let planned = plan_child(t, parts, pi, idx, child, &seams, &cuts)?;
     let points = |f: f64| {
         let mut ct = planned.clone();
@@ -311,14 +292,11 @@ fn check_transition(
     Ok(())
 }
 
-/// A transition laid out over the parts: its seams and each child's
-/// transition surface; each child's ring angles (its loop's) go into
-/// `thetas`, which refuses a child of two transitions.
-fn plan_transition(
-    t: &TransitionSpec,
-    parts: &[PartSurface],
-    thetas: &mut [Option<Vec<f64>>],
-) -> Result<Built, ModelError> {
+/// What every child of transition `t` shares: the parent's index, the
+/// children's indices, the seams and the cut table (checked).
+type Frame = (usize, Vec<usize>, Vec<Seam>, Vec<(usize, usize)>);
+
+fn plan_frame(t: &TransitionSpec, parts: &[PartSurface]) -> Result<Frame, ModelError> {
     let pi = find_part(parts, &t.parent)?;
     let ci: Vec<usize> = t
         .children
@@ -333,6 +311,18 @@ fn plan_transition(
     let cuts = cut_table(k, &t.cut_angles);
     check_transition(t, k, &cuts)?;
     let seams = make_seams(&parts[pi], t.parent_end, k, &t.seam_apex, &centres, &cuts);
+    Ok((pi, ci, seams, cuts))
+}
+
+/// A transition laid out over the parts: its seams and each child's
+/// transition surface; each child's ring angles (its loop's) go into
+/// `thetas`, which refuses a child of two transitions.
+fn plan_transition(
+    t: &TransitionSpec,
+    parts: &[PartSurface],
+    thetas: &mut [Option<Vec<f64>>],
+) -> Result<Built, ModelError> {
+    let (pi, ci, seams, cuts) = plan_frame(t, parts)?;
     let mut cts = Vec::new();
     for (c, &idx) in ci.iter().enumerate() {
         let ct = plan_child(t, parts, pi, idx, c, &seams, &cuts)?;
@@ -365,7 +355,7 @@ fn plan_child(
     pi: usize,
     idx: usize,
     c: usize,
-    seams: &[crate::character::seam::Seam],
+    seams: &[Seam],
     cuts: &[(usize, usize)],
 ) -> Result<ChildTransition, ModelError> {
     if parts[idx].closed_start {
