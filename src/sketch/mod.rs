@@ -72,6 +72,7 @@ pub mod report;
 pub mod section_place;
 pub mod segment;
 pub mod tangent_fit;
+mod vertex_grid;
 
 pub use report::SketchReport;
 

@@ -12,9 +12,10 @@
 //! height off the drawn front).
 //!
 //! So, after the parts are solved (`pipeline::build`, when it derives a
-//! document from its drawings), each child of a transition that caps its
-//! tangents (the sketched ones: `cap_tangents`) tries its derived factor
-//! times each of [`FIT_FACTORS`] and keeps the one whose transition
+//! document from its drawings), each child of every derived transition
+//! is planned once and tries its derived factor times each of
+//! [`FIT_FACTORS`] (`character::assembly::transition_points` scales the
+//! planned child's tangents), and keeps the one whose transition
 //! points (the mesh's own rows and loop vertices) miss the drawing least,
 //! summed over the front and side views. A view's miss is the larger of
 //! - the largest distance of a projected point outside the drawn outline,
@@ -37,6 +38,7 @@ use crate::character::spec::TransitionSpec;
 use crate::character::ModelError;
 use crate::profile::{Profile, ProfileIndex, View};
 use crate::sketch::quality::CREASED_EDGE_DEG;
+use crate::sketch::vertex_grid::VertexGrid;
 
 /// The factors tried on each child's derived tangent factor, nearest 1
 /// first (ties keep the derived blend): 0.4 to 1.3 in steps of 0.15, a
@@ -54,57 +56,11 @@ pub const FIT_TIE: f64 = 1e-3;
 /// (`sketch::quality`, 4,000): the fit compares factors, the report
 /// measures the model.
 const OUTLINE_SAMPLES: usize = 2000;
-/// The nearest-point grid's cell, relative to the height: the issue's
-/// outside bound (a query looks at a few cells around its own).
-const GRID_CELL: f64 = 0.01;
 /// Model points this far (relative to the height) above or below the
 /// candidates' height range are left out of the nearest-point grid: a
 /// sample nearest to one of them misses by more than every bound, and is
 /// reported that far off.
 const NEAR_BAND: f64 = 0.05;
-
-/// Points in a uniform grid of square cells, for nearest-point queries.
-struct Grid {
-    cell: f64,
-    cells: std::collections::HashMap<(i64, i64), Vec<[f64; 2]>>,
-}
-
-impl Grid {
-    fn new(cell: f64, pts: impl IntoIterator<Item = [f64; 2]>) -> Grid {
-        let mut cells: std::collections::HashMap<(i64, i64), Vec<[f64; 2]>> = Default::default();
-        for p in pts {
-            cells.entry(key(cell, p)).or_default().push(p);
-        }
-        Grid { cell, cells }
-    }
-
-    /// Distance to the nearest point, or `cap` when none is nearer.
-    fn nearest(&self, q: [f64; 2], cap: f64) -> f64 {
-        let (kx, ky) = key(self.cell, q);
-        let reach = (cap / self.cell).ceil() as i64;
-        let mut best = cap;
-        for r in 0..=reach {
-            if r as f64 * self.cell - self.cell > best {
-                break;
-            }
-            for dx in -r..=r {
-                for dy in -r..=r {
-                    if dx.abs() != r && dy.abs() != r {
-                        continue;
-                    }
-                    for p in self.cells.get(&(kx + dx, ky + dy)).into_iter().flatten() {
-                        best = best.min(((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt());
-                    }
-                }
-            }
-        }
-        best
-    }
-}
-
-fn key(cell: f64, p: [f64; 2]) -> (i64, i64) {
-    ((p[0] / cell).floor() as i64, (p[1] / cell).floor() as i64)
-}
 
 /// One drawn view: its outline, distance index and samples.
 struct Drawn<'a> {
@@ -119,7 +75,7 @@ impl Drawn<'_> {
     /// largest distance of a point outside it, and of a drawn sample in
     /// the points' height range from the nearest projected point of the
     /// model (`others`: the rest of it, as distances per sample).
-    fn miss(&self, pts: &[[f64; 3]], others: &[f64], cell: f64) -> f64 {
+    fn miss(&self, pts: &[[f64; 3]], others: &[f64]) -> f64 {
         let proj: Vec<[f64; 2]> = pts.iter().map(|p| self.view.project(*p)).collect();
         let mut worst = 0.0f64;
         for q in &proj {
@@ -130,10 +86,10 @@ impl Drawn<'_> {
         let (lo, hi) = proj
             .iter()
             .fold((f64::MAX, f64::MIN), |(a, b), q| (a.min(q[1]), b.max(q[1])));
-        let grid = Grid::new(cell, proj.iter().copied());
+        let grid = VertexGrid::new(proj);
         for (d, &o) in self.samples.iter().zip(others) {
             if d[1] >= lo && d[1] <= hi {
-                worst = worst.max(grid.nearest(*d, o));
+                worst = worst.max(grid.distance(*d).min(o));
             }
         }
         worst
@@ -182,14 +138,14 @@ fn grid_turn(pts: &[[f64; 3]], rows: usize) -> f64 {
 }
 
 /// Per view, each drawn sample's distance to the nearest projected point of
-/// the model but child `me`'s transition (`height` for samples outside
-/// the height range the candidates `tried` span: not used).
+/// the model but child `me`'s transition, at most `height` (`height` for
+/// samples outside the height range the candidates `tried` span: not
+/// used).
 fn others_in_range(
     drawn: &[Drawn],
     all: &[(String, Vec<[f64; 3]>)],
     me: &str,
-    tried: &[(f64, f64, f64, Vec<[f64; 3]>)],
-    cell: f64,
+    tried: &[Vec<[f64; 3]>],
     height: f64,
 ) -> Vec<Vec<f64>> {
     drawn
@@ -197,20 +153,21 @@ fn others_in_range(
         .map(|d| {
             let (lo, hi) = tried
                 .iter()
-                .flat_map(|x| x.3.iter().map(|p| d.view.project(*p)[1]))
+                .flat_map(|pts| pts.iter().map(|p| d.view.project(*p)[1]))
                 .fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
-            let g = Grid::new(
-                cell,
+            let band = NEAR_BAND * height;
+            let g = VertexGrid::new(
                 all.iter()
                     .filter(|(n, _)| n != me)
                     .flat_map(|(_, pts)| pts.iter().map(|p| d.view.project(*p)))
-                    .filter(|q| q[1] >= lo - height * NEAR_BAND && q[1] <= hi + height * NEAR_BAND),
+                    .filter(|q| q[1] >= lo - band && q[1] <= hi + band)
+                    .collect(),
             );
             d.samples
                 .iter()
                 .map(|q| {
                     if q[1] >= lo && q[1] <= hi {
-                        g.nearest(*q, height)
+                        g.distance(*q).min(height)
                     } else {
                         height
                     }
@@ -242,49 +199,44 @@ struct Scene<'a> {
 }
 
 impl Scene<'_> {
-    /// The factor of [`FIT_FACTORS`] child `c` of transition `t` (index
-    /// `ti`) keeps (module docs), with the scene's points of that child
-    /// moved to it.
-    fn fit_child(
-        &mut self,
-        t: &TransitionSpec,
-        ti: usize,
-        c: usize,
-        parts: &[PartSurface],
-    ) -> Result<f64, ModelError> {
-        let me = format!("{ti}/{c}");
-        let (rows, height) = (self.rows, self.height);
-        let cell = GRID_CELL * height;
-        let mut tried: Vec<_> = FIT_FACTORS
+    /// Which of the candidate point sets `tried` (one per factor of
+    /// [`FIT_FACTORS`]) of the child named `me` is kept (module docs); the
+    /// scene's points of that child move to it.
+    fn fit_child(&mut self, me: &str, tried: Vec<Vec<[f64; 3]>>) -> f64 {
+        let others = others_in_range(&self.drawn, &self.all, me, &tried, self.height);
+        let mut scored: Vec<(f64, f64, f64, Vec<[f64; 3]>)> = FIT_FACTORS
             .iter()
-            .zip(transition_points(t, parts, c, rows, &FIT_FACTORS)?)
-            .map(|(&f, pts)| (f, 0.0, grid_turn(&pts, rows), pts))
+            .zip(tried)
+            .map(|(&f, pts)| {
+                let miss = self
+                    .drawn
+                    .iter()
+                    .zip(&others)
+                    .map(|(d, o)| d.miss(&pts, o))
+                    .sum::<f64>()
+                    / self.height;
+                (f, miss, grid_turn(&pts, self.rows), pts)
+            })
             .collect();
-        let others = others_in_range(&self.drawn, &self.all, &me, &tried, cell, height);
-        for (d, view_others) in self.drawn.iter().zip(others) {
-            for x in tried.iter_mut() {
-                x.1 += d.miss(&x.3, &view_others, cell) / height;
-            }
-        }
-        let Some(derived_turn) = tried.first().map(|x| x.2) else {
-            return Ok(1.0);
+        let Some(derived_turn) = scored.first().map(|x| x.2) else {
+            return 1.0;
         };
         let limit = derived_turn.max(CREASED_EDGE_DEG);
-        tried.retain(|x| x.2 <= limit);
-        let least = tried.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-        let Some(pick) = tried.into_iter().find(|x| x.1 <= least + FIT_TIE) else {
-            return Ok(1.0);
+        scored.retain(|x| x.2 <= limit);
+        let least = scored.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+        let Some(pick) = scored.into_iter().find(|x| x.1 <= least + FIT_TIE) else {
+            return 1.0;
         };
-        if let Some(slot) = self.all.iter_mut().find(|(n, _)| *n == me) {
+        if let Some(slot) = self.all.iter_mut().find(|(n, _)| n == me) {
             slot.1 = pick.3;
         }
-        Ok(pick.0)
+        pick.0
     }
 }
 
-/// Fits the child factors of every transition with `cap_tangents` (module
-/// docs). `parts`: the solved parts the transitions join; `front`, `side`:
-/// the placed drawn outlines; `height`: the model height.
+/// Fits the child factors of every transition (module docs). `parts`:
+/// the solved parts the transitions join; `front`, `side`: the placed
+/// drawn outlines; `height`: the model height.
 pub fn fit_child_scales(
     transitions: &mut [TransitionSpec],
     parts: &[PartSurface],
@@ -306,8 +258,15 @@ pub fn fit_child_scales(
         })
         .filter(|d| !d.samples.is_empty())
         .collect();
-    // every part's points as the mesh samples it, then each transition's
-    // children at their derived factors
+    // each child planned once, its points at every factor; the scene holds
+    // every part's points as the mesh samples it and each child's at its
+    // derived factor (the first)
+    let mut candidates = Vec::new();
+    for t in transitions.iter() {
+        for c in 0..t.children.len() {
+            candidates.push(transition_points(t, parts, c, rows, &FIT_FACTORS)?);
+        }
+    }
     let mut all: Vec<(String, Vec<[f64; 3]>)> = parts
         .iter()
         .map(|p| {
@@ -316,30 +275,39 @@ pub fn fit_child_scales(
             (p.name.clone(), part_points(p, rings))
         })
         .collect();
-    for (ti, t) in transitions.iter().enumerate() {
-        for c in 0..t.children.len() {
-            let pts = transition_points(t, parts, c, rows, &[1.0])?;
-            all.push((format!("{ti}/{c}"), pts.into_iter().flatten().collect()));
-        }
-    }
+    let names: Vec<String> = transitions
+        .iter()
+        .enumerate()
+        .flat_map(|(ti, t)| (0..t.children.len()).map(move |c| format!("{ti}/{c}")))
+        .collect();
+    all.extend(
+        names
+            .iter()
+            .zip(&candidates)
+            .map(|(n, pts)| (n.clone(), pts[0].clone())),
+    );
     let mut scene = Scene {
         drawn,
         all,
         rows,
         height,
     };
-    for (ti, t) in transitions.iter_mut().enumerate() {
-        if !t.cap_tangents {
-            continue;
-        }
+    let mut candidates = candidates.into_iter();
+    let mut names = names.iter();
+    for t in transitions.iter_mut() {
         let base: Vec<f64> = (0..t.children.len()).map(|c| t.child_scale(c)).collect();
-        t.child_tangent_scales = base.clone();
-        for (c, b) in base.iter().enumerate() {
-            t.child_tangent_scales[c] = b * scene.fit_child(t, ti, c, parts)?;
+        let mut fitted = Vec::with_capacity(base.len());
+        for b in &base {
+            let (Some(me), Some(tried)) = (names.next(), candidates.next()) else {
+                return Ok(());
+            };
+            fitted.push(b * scene.fit_child(me, tried));
         }
-        if t.child_tangent_scales.iter().all(|&s| s == t.tangent_scale) {
-            t.child_tangent_scales.clear();
-        }
+        t.child_tangent_scales = if fitted.iter().all(|&s| s == t.tangent_scale) {
+            Vec::new()
+        } else {
+            fitted
+        };
     }
     Ok(())
 }
@@ -347,34 +315,6 @@ pub fn fit_child_scales(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn grid_nearest_is_the_brute_force_nearest() {
-        // a deterministic scatter (a low-discrepancy walk) and queries
-        let pts: Vec<[f64; 2]> = (0..500)
-            .map(|i| {
-                let t = i as f64;
-                [
-                    (t * 0.618_033_99).fract() * 3.0 - 1.0,
-                    (t * 0.414_213_56).fract() * 2.0,
-                ]
-            })
-            .collect();
-        let g = Grid::new(0.07, pts.iter().copied());
-        for k in 0..200 {
-            let t = k as f64;
-            let q = [
-                (t * 0.732_050_8).fract() * 4.0 - 1.5,
-                (t * 0.236_068).fract() * 3.0 - 0.5,
-            ];
-            let brute = pts
-                .iter()
-                .map(|p| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt())
-                .fold(f64::INFINITY, f64::min);
-            assert_eq!(g.nearest(q, 10.0), brute, "query {q:?}");
-            assert_eq!(g.nearest(q, brute * 0.5), brute * 0.5, "capped");
-        }
-    }
 
     fn grid(rows: usize, n: usize, fold_at: Option<usize>) -> Vec<[f64; 3]> {
         let mut out = Vec::new();
