@@ -216,7 +216,10 @@ fn bridge_notches(walk: &[[f64; 2]], inside_left: bool, mouth: f64) -> Vec<[f64;
 /// shoulder transition) to the tip, placed where the width and the curve
 /// change ([`super::section_place::place`]), each a circle perpendicular to the
 /// curve (arms are hidden in the side view) at depth `z`; the last one
-/// collapses to the tip.
+/// collapses to the tip. The curve's direction is taken over the arm's
+/// half width ([`super::uncross::tangent`]), and neighbouring sections
+/// that would still cut through each other are turned apart
+/// ([`super::uncross::sections`]).
 pub fn part_from_trace(
     front: &[[f64; 2]],
     name: &str,
@@ -251,13 +254,7 @@ pub fn part_from_trace(
     let mut u = 0.0;
     for (j, &k) in chosen.iter().enumerate() {
         let i = idx_all[k];
-        let (a, b) = (i.saturating_sub(2), (i + 2).min(t.centre.len() - 1));
-        let tg = [
-            t.centre[b][0] - t.centre[a][0],
-            t.centre[b][1] - t.centre[a][1],
-        ];
-        let tn = tg[0].hypot(tg[1]).max(f64::MIN_POSITIVE);
-        let tg = [tg[0] / tn, tg[1] / tn];
+        let tg = super::uncross::tangent(&t.centre, i, t.half_width[i]);
         let e1 = [tg[1], -tg[0], 0.0];
         let cos = (t.chord[i][0] * e1[0] + t.chord[i][1] * e1[1]).abs();
         let last = j + 1 == chosen.len();
@@ -297,6 +294,13 @@ pub fn part_from_trace(
             shape: SectionShape::Circle { r },
         });
     }
+    // sections that cut through each other turned apart; the radius of a
+    // turned one is its chord's projection, as above
+    let at: Vec<usize> = chosen.iter().map(|&k| idx_all[k]).collect();
+    super::uncross::sections(&mut sections, SHOULDER_TILT_SECTIONS, |j, e1| {
+        let i = at[j];
+        t.half_width[i] * (t.chord[i][0] * e1[0] + t.chord[i][1] * e1[1]).abs()
+    });
     Ok(PartSpec {
         name: name.into(),
         surface: SurfaceSpec::Pde6C2 { a: 0.0 },

@@ -72,6 +72,7 @@ pub mod report;
 pub mod section_place;
 pub mod segment;
 pub mod tangent_fit;
+pub mod uncross;
 mod vertex_grid;
 
 pub use report::SketchReport;

@@ -680,14 +680,82 @@ fn the_drawing_template_reads_and_asks_for_an_outline() {
 /// closed at the body's height, and the side view has no fin: the head
 /// chain's parameter once ignored the side depth's move at the jaw, its
 /// start tangent drove the shoulders transition 0.8 m backward (side error
-/// 11.4 % of the height; now 1.9 %). Not yet within the issue's bounds
-/// (front 3.0 %: the hands; docs/drawing-corpus.md).
+/// 11.4 % of the height; now 1.2 %). Its arms do not fold
+/// ([`a_real_body_s_wrists_do_not_fold`]); the whole still misses one of
+/// the issue's bounds (the model leaves the drawn front by 1.1 % of the
+/// height at the thumbs; docs/drawing-corpus.md).
 #[test]
 fn a_real_body_s_silhouettes_build_without_a_fin() {
+    let body = pdesculpt::makehuman::base_body().expect("the base body");
+    let (b, h) = build_real_body(&body.mesh, "draw-real-body");
+    let q = &b.report.quality.whole;
+    let side_err = q.view("side").expect("side").max_rel;
+    assert!(
+        side_err <= REAL_BODY_SIDE,
+        "side error {:.2} % of the height",
+        100.0 * side_err
+    );
+    assert!((b.report.height_m - 0.1 * h).abs() <= HEIGHT_REL * 0.1 * h);
+    // the hands' fingers: their notches closed, the arms follow the hand,
+    // not each finger (`sketch::limb`'s mitten)
+    for part in b
+        .report
+        .quality
+        .parts
+        .iter()
+        .filter(|p| p.part.starts_with("arm"))
+    {
+        let front_err = part.view("front").expect("front").max_rel;
+        assert!(
+            front_err <= REAL_BODY_ARM_FRONT && part.creased_rel <= REAL_BODY_ARM_CREASED,
+            "{}: front error {:.2} % of the height, creased length {:.3} heights",
+            part.part,
+            100.0 * front_err,
+            part.creased_rel
+        );
+    }
+    arms_do_not_fold(&b);
+}
+
+/// A real body's thumb and wrist: the arm's traced central curve turns
+/// within less than the arm's half width there, and sections perpendicular
+/// to it cut through each other (the base body's arms folded by 174 and
+/// 170 degrees, MakeHuman's young caucasian male's by 177 and 173). With
+/// the curve's direction taken over the half width and crossing sections
+/// turned apart (`sketch::uncross`), no arm turns by more than issue 28's
+/// bound. Both bodies: front silhouette and armless side, as the issue's
+/// held-out real bodies are drawn.
+#[test]
+fn a_real_body_s_wrists_do_not_fold() {
+    let t = pdesculpt::makehuman::target("caucasian-male-young").expect("target");
+    let body = pdesculpt::makehuman::body(&[(t, 1.0)]).expect("the morphed body");
+    let (b, _) = build_real_body(&body.mesh, "draw-real-male");
+    arms_do_not_fold(&b);
+}
+
+fn arms_do_not_fold(b: &Built) {
+    for part in b
+        .report
+        .quality
+        .parts
+        .iter()
+        .filter(|p| p.part.starts_with("arm"))
+    {
+        assert!(
+            part.dihedral_deg <= REAL_BODY_ARM_TURN,
+            "{}: adjacent triangles turn by {:.1} degrees",
+            part.part,
+            part.dihedral_deg
+        );
+    }
+}
+
+/// A MakeHuman body's front silhouette and its armless side one (arms
+/// beside the torso dropped), drawn in decimetres as MakeHuman's unit,
+/// built at the intermediate level and checked closed; returns the build
+/// and the body's height in decimetres.
+fn build_real_body(body: &pdesculpt::mesh::Mesh, name: &str) -> (Built, f64) {
     use pdesculpt::profile::{outline_of_mesh, to_svg_physical, OutlineOptions, View};
-    let body = pdesculpt::makehuman::base_body()
-        .expect("the base body")
-        .mesh;
     let ys = pdesculpt::polygon::span(
         &body
             .positions
@@ -713,42 +781,17 @@ fn a_real_body_s_silhouettes_build_without_a_fin() {
         }
     }
     let opts = OutlineOptions::default();
-    let front = outline_of_mesh(&body, View::Front, &opts).expect("front outline");
+    let front = outline_of_mesh(body, View::Front, &opts).expect("front outline");
     let side = outline_of_mesh(&armless, View::Side, &opts).expect("side outline");
-    let dir = tmpdir("draw-real-body");
+    let dir = tmpdir(name);
     let (f, s) = (dir.join("front.svg"), dir.join("side.svg"));
     // MakeHuman's unit is the decimetre
     std::fs::write(&f, to_svg_physical(&[&front], 0.1)).expect("w");
     std::fs::write(&s, to_svg_physical(&[&side], 0.1)).expect("w");
-    let b = build(&f, &s, None).unwrap_or_else(|e| panic!("the real body: {e}"));
+    let b = build(&f, &s, None).unwrap_or_else(|e| panic!("{name}: {e}"));
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
-    assert!((b.report.height_m - 0.1 * h).abs() <= HEIGHT_REL * 0.1 * h);
-    let q = &b.report.quality.whole;
-    let side_err = q.view("side").expect("side").max_rel;
-    assert!(
-        side_err <= REAL_BODY_SIDE,
-        "side error {:.2} % of the height",
-        100.0 * side_err
-    );
-    // the hands' fingers: their notches closed, the arms follow the hand,
-    // not each finger (`sketch::limb`'s mitten)
-    for part in b
-        .report
-        .quality
-        .parts
-        .iter()
-        .filter(|p| p.part.starts_with("arm"))
-    {
-        let front_err = part.view("front").expect("front").max_rel;
-        assert!(
-            front_err <= REAL_BODY_ARM_FRONT && part.creased_rel <= REAL_BODY_ARM_CREASED,
-            "{}: front error {:.2} % of the height, creased length {:.3} heights",
-            part.part,
-            100.0 * front_err,
-            part.creased_rel
-        );
-    }
+    (b, h)
 }
 
 /// Beside the torso: farther from the body's axis than this fraction of
@@ -763,6 +806,10 @@ const REAL_BODY_ARM_FRONT: f64 = 0.015;
 /// Their creased length: 0.17 and 0.19 heights measured, 0.34 and 0.71
 /// with each finger traced (the bound of the sketch report's warnings).
 const REAL_BODY_ARM_CREASED: f64 = 0.3;
+/// Issue 28's bound on the largest turn between adjacent triangles
+/// (degrees). Measured on the real bodies' arms: 51 and 58 (base), 51 and
+/// 69 (caucasian male); 170 to 177 before `sketch::uncross`.
+const REAL_BODY_ARM_TURN: f64 = 120.0;
 
 /// How far a profile error (a fraction of the height) may move when the
 /// front drawing is 0.1 % wider or narrower. Measured since the neck base
