@@ -698,13 +698,7 @@ fn a_real_body_s_silhouettes_build_without_a_fin() {
     assert!((b.report.height_m - 0.1 * h).abs() <= HEIGHT_REL * 0.1 * h);
     // the hands' fingers: their notches closed, the arms follow the hand,
     // not each finger (`sketch::limb`'s mitten)
-    for part in b
-        .report
-        .quality
-        .parts
-        .iter()
-        .filter(|p| p.part.starts_with("arm"))
-    {
+    for part in arms(&b) {
         let front_err = part.view("front").expect("front").max_rel;
         assert!(
             front_err <= REAL_BODY_ARM_FRONT && part.creased_rel <= REAL_BODY_ARM_CREASED,
@@ -733,14 +727,17 @@ fn a_real_body_s_wrists_do_not_fold() {
     arms_do_not_fold(&b);
 }
 
-fn arms_do_not_fold(b: &Built) {
-    for part in b
-        .report
+/// The arms' quality rows of a build's report.
+fn arms(b: &Built) -> impl Iterator<Item = &pdesculpt::sketch::quality::PartQuality> {
+    b.report
         .quality
         .parts
         .iter()
         .filter(|p| p.part.starts_with("arm"))
-    {
+}
+
+fn arms_do_not_fold(b: &Built) {
+    for part in arms(b) {
         assert!(
             part.dihedral_deg <= REAL_BODY_ARM_TURN,
             "{}: adjacent triangles turn by {:.1} degrees",
