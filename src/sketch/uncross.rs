@@ -28,8 +28,10 @@
 /// this margin, and sections already apart are never moved.
 pub const RIM_GAP: f64 = 0.5;
 
-/// Sweeps of [`uncross`] over the pairs (a pair's turn can push its
-/// neighbour's pair over the margin again).
+/// Sweeps of [`uncross`]'s turns over the pairs before it replaces a
+/// section (a pair's turn can push its neighbour's pair under the margin
+/// again). A bound, not a tuned value (no other was tried): a pair still
+/// short after it is parted by the replacement.
 const SWEEPS: usize = 8;
 
 fn unit(v: [f64; 2]) -> Option<[f64; 2]> {
