@@ -15,10 +15,17 @@ import sys
 
 def main(base, target, out):
     offsets = {}
-    for line in gzip.open(target, "rt"):
-        p = line.split()
-        if len(p) == 4 and not line.startswith("#"):
-            offsets[int(p[0])] = tuple(map(float, p[1:]))
+    try:
+        for n, line in enumerate(gzip.open(target, "rt"), 1):
+            p = line.split()
+            if p and not line.startswith("#"):
+                if len(p) != 4:
+                    sys.exit(f"{target}:{n}: expected 'vertex dx dy dz', got {line.strip()[:60]!r}")
+                offsets[int(p[0])] = tuple(map(float, p[1:]))
+    except (OSError, EOFError, ValueError) as e:
+        sys.exit(f"{target}: not a readable gzip target file ({e})")
+    if not offsets:
+        sys.exit(f"{target}: no vertex offsets in it")
     index = 0
     with open(out, "w") as f:
         for line in open(base):
