@@ -304,7 +304,10 @@ pub(super) fn part_from_picks(
     }
     Ok(PartSpec {
         name: name.into(),
-        surface: SurfaceSpec::Pde6C2 { a: o.a },
+        surface: SurfaceSpec::Pde6C2 {
+            a: o.a,
+            open_ends: Default::default(),
+        },
         sections,
         closed_start: false,
         closed_end: tip_end,

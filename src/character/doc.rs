@@ -51,7 +51,7 @@ pub use super::inputs::{
     BodyPlan, DocError, Inputs, KeySection, Level, ProfileInput, RemovedPart, VERSION,
 };
 pub use super::spec::{
-    Continuity, End, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
+    Continuity, End, EndCurvature, PartSpec, SectionShape, SectionSpec, SurfaceSpec, TransitionSpec,
 };
 use crate::mesh::io::write_atomic;
 use serde::{Deserialize, Serialize};

@@ -3,6 +3,7 @@
 //! join them (the schema is in [`super::doc`]). Plain data, read by the edit
 //! log, the document and the assembly alike.
 
+pub use crate::pde6::EndCurvature;
 use serde::{Deserialize, Serialize};
 
 /// The curve of one key section in its frame.
@@ -34,13 +35,24 @@ pub struct SectionSpec {
     pub shape: SectionShape,
 }
 
+fn is_six_point(e: &EndCurvature) -> bool {
+    *e == EndCurvature::SixPoint
+}
+
 /// Surface family of a part.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "family", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SurfaceSpec {
     /// The globally solved C2 sixth-order PDE chain (`pde6::Chain::c2_global`)
-    /// with PDE parameter `a`.
-    Pde6C2 { a: f64 },
+    /// with PDE parameter `a`; `open_ends`: the u-curvature condition at an
+    /// end the part leaves open (a join; a closed end keeps the six-point
+    /// curvature). Absent from a document: `six_point`, as before the
+    /// field existed; derived sketch parts take `natural`.
+    Pde6C2 {
+        a: f64,
+        #[serde(default, skip_serializing_if = "is_six_point")]
+        open_ends: EndCurvature,
+    },
     /// Sixth-order ODE patches between consecutive sections, C2 at each
     /// (paper 004 eqs 19, 23-25), with shape parameters rho, eta, lambda
     /// (`ode6::Params`).
@@ -51,7 +63,7 @@ impl SurfaceSpec {
     /// One line for reports and the TUI.
     pub fn describe(&self) -> String {
         match self {
-            SurfaceSpec::Pde6C2 { a } => format!("pde6 C2 chain (a = {a})"),
+            SurfaceSpec::Pde6C2 { a, .. } => format!("pde6 C2 chain (a = {a})"),
             SurfaceSpec::Ode6C2 { rho, eta, lambda } => {
                 format!("ode6 C2 chain (rho = {rho}, eta = {eta}, lambda = {lambda})")
             }
@@ -62,16 +74,15 @@ impl SurfaceSpec {
     /// expected)`.
     pub fn out_of_range(&self) -> Option<(&'static str, f64, String)> {
         match *self {
-            SurfaceSpec::Pde6C2 { a } => {
-                (!(a.is_finite() && a.abs() <= crate::pde6::A_MAX)).then(|| {
+            SurfaceSpec::Pde6C2 { a, .. } => (!(a.is_finite() && a.abs() <= crate::pde6::A_MAX))
+                .then(|| {
                     let m = crate::pde6::A_MAX;
                     (
                         "a",
                         a,
                         format!("|a| <= {m} (the pde6 family's documented range)"),
                     )
-                })
-            }
+                }),
             SurfaceSpec::Ode6C2 { rho, eta, lambda } => {
                 let finite = "a finite number".to_string();
                 if !(rho.is_finite() && rho != 0.0) {

@@ -69,8 +69,8 @@ pub fn apply_one(parts: &mut [PartSpec], e: &Edit) -> Result<(), EditError> {
     let p = find(parts, name).map_err(|_| unknown_part(&known, name))?;
     match e {
         Edit::ShapeParameter { a, .. } => match p.surface {
-            SurfaceSpec::Pde6C2 { .. } => {
-                p.surface = SurfaceSpec::Pde6C2 { a: *a };
+            SurfaceSpec::Pde6C2 { open_ends, .. } => {
+                p.surface = SurfaceSpec::Pde6C2 { a: *a, open_ends };
                 Ok(())
             }
             // the shape parameter a is the pde6 family's (000 sec 5.1)
@@ -350,9 +350,18 @@ mod tests {
         let err = apply_one(&mut parts, &e).unwrap_err().to_string();
         assert!(err.contains("belongs to pde6 surfaces"), "{err}");
         assert!(matches!(parts[0].surface, SurfaceSpec::Ode6C2 { .. }));
-        parts[0].surface = SurfaceSpec::Pde6C2 { a: 0.0 };
+        parts[0].surface = SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: Default::default(),
+        };
         apply_one(&mut parts, &e).unwrap();
-        assert_eq!(parts[0].surface, SurfaceSpec::Pde6C2 { a: 0.5 });
+        assert_eq!(
+            parts[0].surface,
+            SurfaceSpec::Pde6C2 {
+                a: 0.5,
+                open_ends: Default::default()
+            }
+        );
     }
 
     /// A section the document holds but that is no GEC (its frame's axes
@@ -374,7 +383,10 @@ mod tests {
         };
         let mut parts = vec![PartSpec {
             name: "arm".into(),
-            surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+            surface: SurfaceSpec::Pde6C2 {
+                a: 0.0,
+                open_ends: Default::default(),
+            },
             sections: vec![good, bad],
             closed_start: false,
             closed_end: false,

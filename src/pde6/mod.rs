@@ -50,6 +50,7 @@ pub mod spline;
 pub use chain::{Chain, Method, Piece, Section};
 pub use mode::{Mode, ModeBasis, ModeSolver, Regime};
 pub use patch::Patch;
+pub use spline::{EndCurvature, END_TURN_GUARD_DEG};
 
 /// v samples per join in the join-continuity measurement of a chain.
 pub const JOIN_SAMPLES: usize = 16;

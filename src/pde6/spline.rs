@@ -30,18 +30,126 @@ use nalgebra::{DMatrix, DVector};
 /// Largest 1-norm condition number accepted for the global system.
 pub const MAX_GLOBAL_CONDITION: f64 = 1e12;
 
+/// The u-curvature a chain's end is given (the one condition at each end
+/// of the global system).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EndCurvature {
+    /// The curvature of the six-point (method 1) patch through the six end
+    /// sections: a chain through smooth data keeps its shape to the end.
+    #[default]
+    SixPoint,
+    /// None (a natural spline's end): the end section's own curvature is
+    /// zero, so the end tangent follows the last sections' slope. The
+    /// six-point curvature is a quintic's through six sections; where their
+    /// spacing or radii wiggle near the end (a torso's lowest sections,
+    /// whose depth the thighs widen in a side view), it overshoots, and the
+    /// end tangent of the MakeHuman girl's torso leaned 57 degrees forward
+    /// where its last two sections slope 12 (docs/drawing-corpus.md,
+    /// eighteenth measurement).
+    Natural,
+    /// [`EndCurvature::SixPoint`], unless the chain's end tangent then turns
+    /// from the chord to the neighbouring section by more than
+    /// [`END_TURN_GUARD_DEG`] somewhere on the ring: then
+    /// [`EndCurvature::Natural`].
+    Guarded,
+}
+
+/// The largest angle (degrees) between a chain's end tangent and the chord
+/// from its end section to the neighbouring one, over the ring, that
+/// [`EndCurvature::Guarded`] accepts from the six-point curvature. A chain
+/// through sections `h` apart on a surface of curvature `k` turns from its
+/// chord by about `k h / 2`: 30 degrees is a section spacing about as large
+/// as the radius of curvature, where the sections no longer say how the
+/// surface bends. Chosen so, not swept: the MakeHuman girl's torso start
+/// turned 45 degrees (docs/drawing-corpus.md, eighteenth measurement).
+pub const END_TURN_GUARD_DEG: f64 = 30.0;
+
+/// Ring points the guard compares at.
+const GUARD_SAMPLES: usize = 48;
+
+/// The largest angle (degrees) over the ring between the chain's
+/// u-derivative at section `i` (0 or the last) and the chord from it to
+/// its neighbouring section (toward increasing u).
+fn end_turn_deg(chain: &Chain, sections: &[Section], last: bool) -> f64 {
+    let m = sections.len();
+    let (i, j) = if last { (m - 2, m - 1) } else { (0, 1) };
+    let at = if last { sections[j].u } else { sections[i].u };
+    let d = chain.pieces[chain.piece_at(at)].global_section(at, 1);
+    let mut worst = 0.0f64;
+    for k in 0..GUARD_SAMPLES {
+        let th = 2.0 * std::f64::consts::PI * k as f64 / GUARD_SAMPLES as f64;
+        let (a, b) = (sections[i].curve.eval(th), sections[j].curve.eval(th));
+        let chord = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let t = d.eval(th);
+        let (lc, lt) = (crate::mesh::norm(chord), crate::mesh::norm(t));
+        if lc > 0.0 && lt > 0.0 {
+            let c = (crate::mesh::dot(chord, t) / (lc * lt)).clamp(-1.0, 1.0);
+            worst = worst.max(c.acos().to_degrees());
+        }
+    }
+    worst
+}
+
 impl Chain {
-    /// The globally solved C2 chain through `sections` (M = 3P + 1 >= 7).
+    /// The globally solved C2 chain through `sections` (M = 3P + 1 >= 7),
+    /// each end with the six-point curvature.
     pub fn c2_global(a: f64, sections: &[Section]) -> Result<Chain, Pde6Error> {
+        Chain::c2_global_ends(a, sections, [EndCurvature::SixPoint; 2])
+    }
+
+    /// The globally solved C2 chain with the given curvature condition at
+    /// its start and its end.
+    pub fn c2_global_ends(
+        a: f64,
+        sections: &[Section],
+        end_curvature: [EndCurvature; 2],
+    ) -> Result<Chain, Pde6Error> {
+        if end_curvature.contains(&EndCurvature::Guarded) {
+            let six = |e: EndCurvature| match e {
+                EndCurvature::Guarded => EndCurvature::SixPoint,
+                e => e,
+            };
+            let first = Chain::c2_global_ends(a, sections, end_curvature.map(six))?;
+            let guard = |k: usize| match end_curvature[k] {
+                EndCurvature::Guarded
+                    if end_turn_deg(&first, sections, k == 1) > END_TURN_GUARD_DEG =>
+                {
+                    EndCurvature::Natural
+                }
+                e => six(e),
+            };
+            let ends = [guard(0), guard(1)];
+            if ends == end_curvature.map(six) {
+                return Ok(first);
+            }
+            return Chain::c2_global_ends(a, sections, ends);
+        }
         validate_sections(sections, 7, 1)?;
         let m = sections.len();
         let p_count = (m - 1) / 3;
         let big_n = sections[0].curve.harmonics();
-        // end curvatures (global u) from six-point patches at both ends
-        let head = Chain::method1_window(a, &sections[..6])?;
-        let tail = Chain::method1_window(a, &sections[m - 6..])?;
-        let k_start = head.global_section(sections[0].u, 2);
-        let k_end = tail.global_section(sections[m - 1].u, 2);
+        // end curvatures (global u): from six-point patches at the ends, or
+        // zero (the zero curve of the sections' harmonics)
+        let zero = || {
+            let mut z = sections[0].curve.clone();
+            z.c0 = [0.0; 3];
+            z.cos.iter_mut().for_each(|c| *c = [0.0; 3]);
+            z.sin.iter_mut().for_each(|c| *c = [0.0; 3]);
+            z
+        };
+        let k_start = match end_curvature[0] {
+            EndCurvature::SixPoint | EndCurvature::Guarded => {
+                Chain::method1_window(a, &sections[..6])?.global_section(sections[0].u, 2)
+            }
+            EndCurvature::Natural => zero(),
+        };
+        let k_end = match end_curvature[1] {
+            EndCurvature::SixPoint | EndCurvature::Guarded => {
+                Chain::method1_window(a, &sections[m - 6..])?.global_section(sections[m - 1].u, 2)
+            }
+            EndCurvature::Natural => zero(),
+        };
         let ends = [k_start, k_end];
         let geo: Vec<(f64, f64, [f64; 4])> = (0..p_count)
             .map(|p| {

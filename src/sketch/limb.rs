@@ -228,7 +228,7 @@ pub fn part_from_trace(
     z: f64,
 ) -> Result<crate::character::doc::PartSpec, SketchError> {
     use super::section_place::{place, Sample, SECTIONS_PER_PART};
-    use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+    use crate::character::doc::{EndCurvature, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
     let mut s_len = vec![0.0; t.centre.len()];
     for i in 1..t.centre.len() {
         s_len[i] = s_len[i - 1] + dist(t.centre[i - 1], t.centre[i]);
@@ -303,7 +303,10 @@ pub fn part_from_trace(
     });
     Ok(PartSpec {
         name: name.into(),
-        surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+        surface: SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: EndCurvature::Guarded,
+        },
         sections,
         closed_start: false,
         closed_end: true,

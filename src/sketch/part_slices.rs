@@ -11,7 +11,7 @@ use super::section_place::{
 };
 use super::segment::{Region, SidePick};
 use super::SketchError;
-use crate::character::doc::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use crate::character::doc::{EndCurvature, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 
 /// Tilt of an arm's top section (degrees from horizontal, see `tilt_top`).
 pub const SHOULDER_TILT_DEG: f64 = 60.0;
@@ -172,7 +172,10 @@ fn region_part(
     }
     Ok(Some(PartSpec {
         name: r.name.clone(),
-        surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+        surface: SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: EndCurvature::Guarded,
+        },
         sections,
         closed_start: false,
         closed_end: r.tip,

@@ -462,7 +462,10 @@ pub fn round_trip_error(template: &TemplatePart, terms: usize) -> Result<f64, Te
     }
     let part = PartSpec {
         name: "round-trip".into(),
-        surface: crate::character::doc::SurfaceSpec::Pde6C2 { a: 0.0 },
+        surface: crate::character::doc::SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: Default::default(),
+        },
         sections,
         closed_start: false,
         closed_end: false,

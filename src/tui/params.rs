@@ -92,7 +92,7 @@ fn shape_text(s: &SectionShape) -> String {
 /// applied), transforms acting on `section` (None: all sections).
 pub fn part_rows(part: &PartSpec, section: Option<usize>) -> Vec<Row> {
     let mut rows = match part.surface {
-        SurfaceSpec::Pde6C2 { a } => vec![
+        SurfaceSpec::Pde6C2 { a, .. } => vec![
             info("surface", "pde6 C2 chain (paper 002)"),
             Row {
                 label: "a".into(),

@@ -35,6 +35,7 @@ mod ode6;
 mod ode6_network;
 mod pde4;
 mod pde6;
+mod pde6_ends;
 mod pipeline;
 mod plate;
 mod profile;

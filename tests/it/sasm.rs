@@ -24,7 +24,10 @@ const FACETS: f64 = 1e-3;
 fn cylinder() -> PartSpec {
     PartSpec {
         name: "body".into(),
-        surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+        surface: SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: Default::default(),
+        },
         sections: (0..7)
             .map(|i| {
                 let y = 2.0 * i as f64 / 6.0;

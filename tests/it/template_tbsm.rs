@@ -21,7 +21,10 @@ fn foot() -> TemplatePart {
 fn ellipse_part(n: usize, a: f64, b: f64) -> PartSpec {
     PartSpec {
         name: "foot".into(),
-        surface: SurfaceSpec::Pde6C2 { a: 0.0 },
+        surface: SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: Default::default(),
+        },
         sections: (0..n)
             .map(|k| SectionSpec {
                 u: k as f64,

@@ -22,7 +22,7 @@ pub mod ode6;
 pub mod pde6;
 
 use super::ModelError;
-use crate::character::spec::{PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+use crate::character::spec::{EndCurvature, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
 use crate::curve::gec::{Frame, Gec};
 use crate::curve::Fourier3;
 use crate::surface::DynSurface;
@@ -127,12 +127,20 @@ pub fn build_part(p: &PartSpec) -> Result<PartSurface, ModelError> {
         .map(|(s, c)| (s.u, c.with_harmonics(n)))
         .collect();
     let surface: Arc<dyn PartGeometry> = match p.surface {
-        SurfaceSpec::Pde6C2 { a } => {
+        SurfaceSpec::Pde6C2 { a, open_ends } => {
             let sections: Vec<crate::pde6::Section> = sections
                 .into_iter()
                 .map(|(u, curve)| crate::pde6::Section { u, curve })
                 .collect();
-            Arc::new(pde6::build(a, &sections).map_err(|e| bad(e.to_string()))?)
+            let end = |closed: bool| {
+                if closed {
+                    EndCurvature::SixPoint
+                } else {
+                    open_ends
+                }
+            };
+            let ends = [end(p.closed_start), end(p.closed_end)];
+            Arc::new(pde6::build(a, &sections, ends).map_err(|e| bad(e.to_string()))?)
         }
         SurfaceSpec::Ode6C2 { rho, eta, lambda } => {
             if let Some(w) = sections
@@ -229,7 +237,11 @@ mod tests {
 
     #[test]
     fn both_families_interpolate_the_same_sections_and_name_themselves() {
-        let a = build_part(&part(SurfaceSpec::Pde6C2 { a: 0.0 })).unwrap();
+        let a = build_part(&part(SurfaceSpec::Pde6C2 {
+            a: 0.0,
+            open_ends: Default::default(),
+        }))
+        .unwrap();
         let b = build_part(&part(ODE6)).unwrap();
         assert_eq!(a.surface.family(), "pde6_c2");
         assert_eq!(b.surface.family(), "ode6_c2");

@@ -3,12 +3,17 @@
 
 use super::PartGeometry;
 use crate::curve::Fourier3;
-use crate::pde6::{Chain, Section};
+use crate::pde6::{Chain, EndCurvature, Section};
 use crate::surface::Joined;
 
-/// Solves the C2 chain of PDE parameter `a` through `sections`.
-pub(super) fn build(a: f64, sections: &[Section]) -> Result<Chain, crate::pde6::Pde6Error> {
-    Chain::c2_global(a, sections)
+/// Solves the C2 chain of PDE parameter `a` through `sections`, with the
+/// given curvature condition at its start and end.
+pub(super) fn build(
+    a: f64,
+    sections: &[Section],
+    ends: [EndCurvature; 2],
+) -> Result<Chain, crate::pde6::Pde6Error> {
+    Chain::c2_global_ends(a, sections, ends)
 }
 
 impl PartGeometry for Chain {
