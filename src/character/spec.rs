@@ -47,7 +47,7 @@ pub enum SurfaceSpec {
     /// with PDE parameter `a`; `open_ends`: the u-curvature condition at an
     /// end the part leaves open (a join; a closed end keeps the six-point
     /// curvature). Absent from a document: `six_point`, as before the
-    /// field existed; derived sketch parts take `natural`.
+    /// field existed; parts derived from drawings take `guarded`.
     Pde6C2 {
         a: f64,
         #[serde(default, skip_serializing_if = "is_six_point")]

@@ -72,20 +72,24 @@ const GUARD_SAMPLES: usize = 48;
 /// u-derivative at section `i` (0 or the last) and the chord from it to
 /// its neighbouring section (toward increasing u).
 fn end_turn_deg(chain: &Chain, sections: &[Section], last: bool) -> f64 {
+    use crate::mesh::{dot, norm, sub};
     let m = sections.len();
     let (i, j) = if last { (m - 2, m - 1) } else { (0, 1) };
-    let at = if last { sections[j].u } else { sections[i].u };
+    let at = sections[if last { j } else { i }].u;
     let d = chain.pieces[chain.piece_at(at)].global_section(at, 1);
     let mut worst = 0.0f64;
     for k in 0..GUARD_SAMPLES {
         let th = 2.0 * std::f64::consts::PI * k as f64 / GUARD_SAMPLES as f64;
-        let (a, b) = (sections[i].curve.eval(th), sections[j].curve.eval(th));
-        let chord = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+        let chord = sub(sections[j].curve.eval(th), sections[i].curve.eval(th));
         let t = d.eval(th);
-        let (lc, lt) = (crate::mesh::norm(chord), crate::mesh::norm(t));
+        let (lc, lt) = (norm(chord), norm(t));
         if lc > 0.0 && lt > 0.0 {
-            let c = (crate::mesh::dot(chord, t) / (lc * lt)).clamp(-1.0, 1.0);
-            worst = worst.max(c.acos().to_degrees());
+            worst = worst.max(
+                (dot(chord, t) / (lc * lt))
+                    .clamp(-1.0, 1.0)
+                    .acos()
+                    .to_degrees(),
+            );
         }
     }
     worst
@@ -131,13 +135,7 @@ impl Chain {
         let big_n = sections[0].curve.harmonics();
         // end curvatures (global u): from six-point patches at the ends, or
         // zero (the zero curve of the sections' harmonics)
-        let zero = || {
-            let mut z = sections[0].curve.clone();
-            z.c0 = [0.0; 3];
-            z.cos.iter_mut().for_each(|c| *c = [0.0; 3]);
-            z.sin.iter_mut().for_each(|c| *c = [0.0; 3]);
-            z
-        };
+        let zero = || Fourier3::weighted_sum(&[(0.0, &sections[0].curve)]);
         let k_start = match end_curvature[0] {
             EndCurvature::SixPoint | EndCurvature::Guarded => {
                 Chain::method1_window(a, &sections[..6])?.global_section(sections[0].u, 2)
