@@ -219,7 +219,8 @@ fn bridge_notches(walk: &[[f64; 2]], inside_left: bool, mouth: f64) -> Vec<[f64;
 /// collapses to the tip. The curve's direction is taken over the arm's
 /// half width ([`super::uncross::tangent`]), and neighbouring sections
 /// that would still cut through each other are turned apart
-/// ([`super::uncross::sections`]).
+/// ([`super::uncross::sections`]); the chain's parameter runs along the
+/// sections' rims ([`super::uncross::rim_arc_lengths`]).
 pub fn part_from_trace(
     front: &[[f64; 2]],
     name: &str,
@@ -301,6 +302,7 @@ pub fn part_from_trace(
         let i = at[j];
         t.half_width[i] * (t.chord[i][0] * e1[0] + t.chord[i][1] * e1[1]).abs()
     });
+    super::uncross::rim_arc_lengths(&mut sections);
     Ok(PartSpec {
         name: name.into(),
         surface: SurfaceSpec::Pde6C2 {
