@@ -44,8 +44,8 @@ fn is_six_point(e: &EndCurvature) -> bool {
 #[serde(tag = "family", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SurfaceSpec {
     /// The globally solved C2 sixth-order PDE chain (`pde6::Chain::c2_global`)
-    /// with PDE parameter `a`; `open_ends`: the u-curvature condition at an
-    /// end the part leaves open (a join; a closed end keeps the six-point
+    /// with PDE parameter `a`; `open_ends`: the condition at an end the
+    /// part leaves open (a join; a closed end keeps the six-point
     /// curvature). Absent from a document: `six_point`, as before the
     /// field existed; parts derived from drawings take `guarded`.
     Pde6C2 {

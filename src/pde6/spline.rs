@@ -14,7 +14,8 @@
 //! * $M = 3P + 1$ sections, piece $p$ through sections $3p, \dots, 3p+3$;
 //! * C1 and C2 (in the global u) at the $P - 1$ interior joins;
 //! * at each end the u-curvature of the six-point (method 1) patch through the
-//!   six end sections.
+//!   six end sections (or another end condition, [`EndCurvature`]: zero
+//!   curvature, or the u-slope of the chord to the neighbouring section).
 //!
 //! That is $4P + 2(P-1) + 2 = 6P$ conditions for $6P$ coefficients per
 //! harmonic; the matrix is the same for every coefficient of a harmonic, so it
@@ -30,7 +31,7 @@ use nalgebra::{DMatrix, DVector};
 /// Largest 1-norm condition number accepted for the global system.
 pub const MAX_GLOBAL_CONDITION: f64 = 1e12;
 
-/// The u-curvature a chain's end is given (the one condition at each end
+/// The condition a chain's end is given (the one condition at each end
 /// of the global system).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -51,8 +52,17 @@ pub enum EndCurvature {
     /// [`EndCurvature::SixPoint`], unless the chain's end tangent then turns
     /// from the chord to the neighbouring section by more than
     /// [`END_TURN_GUARD_DEG`] somewhere on the ring: then
-    /// [`EndCurvature::Natural`].
+    /// [`EndCurvature::Chord`]. (Until the nineteenth measurement of
+    /// docs/drawing-corpus.md it fell back to [`EndCurvature::Natural`],
+    /// whose end tangent still leaned: the MakeHuman girl's hips folded by
+    /// 125 degrees, 117 with the chord.)
     Guarded,
+    /// No curvature condition: the end's u-slope is the chord's to the
+    /// neighbouring section (a clamped end: the global system's end row is
+    /// the slope, not the curvature), so the chain leaves its end section
+    /// along the sections' own slope there, whatever the sections beyond
+    /// do.
+    Chord,
 }
 
 /// The largest angle (degrees) between a chain's end tangent and the chord
@@ -119,7 +129,7 @@ impl Chain {
                 EndCurvature::Guarded
                     if end_turn_deg(&first, sections, k == 1) > END_TURN_GUARD_DEG =>
                 {
-                    EndCurvature::Natural
+                    EndCurvature::Chord
                 }
                 e => six(e),
             };
@@ -136,19 +146,30 @@ impl Chain {
         // end curvatures (global u): from six-point patches at the ends, or
         // zero (the zero curve of the sections' harmonics)
         let zero = || Fourier3::weighted_sum(&[(0.0, &sections[0].curve)]);
+        // the chord's slope from section i to section j (global u)
+        let chord = |i: usize, j: usize| {
+            let du = sections[j].u - sections[i].u;
+            Fourier3::weighted_sum(&[
+                (1.0 / du, &sections[j].curve),
+                (-1.0 / du, &sections[i].curve),
+            ])
+        };
         let k_start = match end_curvature[0] {
             EndCurvature::SixPoint | EndCurvature::Guarded => {
                 Chain::method1_window(a, &sections[..6])?.global_section(sections[0].u, 2)
             }
             EndCurvature::Natural => zero(),
+            EndCurvature::Chord => chord(0, 1),
         };
         let k_end = match end_curvature[1] {
             EndCurvature::SixPoint | EndCurvature::Guarded => {
                 Chain::method1_window(a, &sections[m - 6..])?.global_section(sections[m - 1].u, 2)
             }
             EndCurvature::Natural => zero(),
+            EndCurvature::Chord => chord(m - 2, m - 1),
         };
         let ends = [k_start, k_end];
+        let slope_ends = end_curvature.map(|e| e == EndCurvature::Chord);
         let geo: Vec<(f64, f64, [f64; 4])> = (0..p_count)
             .map(|p| {
                 let w = &sections[3 * p..3 * p + 4];
@@ -161,7 +182,7 @@ impl Chain {
         let mut worst_condition: f64 = 0.0;
         for n in 0..=big_n {
             let b = ModeBasis::new(a, n);
-            let mat = global_matrix(&b, &geo);
+            let mat = global_matrix(&b, &geo, slope_ends);
             let lu = mat.clone().full_piv_lu();
             let inv = lu.try_inverse().ok_or(Pde6Error::Singular { q: b.q })?;
             let condition = norm1(&mat) * norm1(&inv);
@@ -204,7 +225,7 @@ type Geo = (f64, f64, [f64; 4]);
 /// The global system's matrix for mode basis `b`: the value at each
 /// piece's four sections, C1 and C2 at the interior joins, the curvature
 /// at both ends.
-fn global_matrix(b: &ModeBasis, geo: &[Geo]) -> DMatrix<f64> {
+fn global_matrix(b: &ModeBasis, geo: &[Geo], slope_ends: [bool; 2]) -> DMatrix<f64> {
     let p_count = geo.len();
     let size = 6 * p_count;
     let row = |c: Condition| -> [f64; 6] {
@@ -240,12 +261,21 @@ fn global_matrix(b: &ModeBasis, geo: &[Geo]) -> DMatrix<f64> {
             r += 1;
         }
     }
-    let rs = row(Condition::Curvature(0.0));
-    let re = row(Condition::Curvature(1.0));
-    let (l_first, l_last) = (geo[0].1, geo[p_count - 1].1);
+    // the end rows: the u-curvature, or the u-slope at a chord end (the
+    // local derivative of order d over the piece's length to the d)
+    let end_row = |slope: bool, x: f64, l: f64| -> [f64; 6] {
+        let (c, d) = if slope {
+            (Condition::Slope(x), 1)
+        } else {
+            (Condition::Curvature(x), 2)
+        };
+        row(c).map(|v| v / l.powi(d))
+    };
+    let rs = end_row(slope_ends[0], 0.0, geo[0].1);
+    let re = end_row(slope_ends[1], 1.0, geo[p_count - 1].1);
     for j in 0..6 {
-        mat[(r, j)] = rs[j] / (l_first * l_first);
-        mat[(r + 1, 6 * (p_count - 1) + j)] = re[j] / (l_last * l_last);
+        mat[(r, j)] = rs[j];
+        mat[(r + 1, 6 * (p_count - 1) + j)] = re[j];
     }
     mat
 }
