@@ -9,6 +9,7 @@ pub(super) fn chain_checks(out: &mut Vec<Check>) {
     let sec = synthetic_sections(12, 6);
     patch_checks(&sec, out);
     global_checks(out);
+    end_condition_checks(out);
     method1_checks(&sec, out);
     condition_check(out);
     grid_check(&sec, out);
@@ -154,6 +155,58 @@ fn global_checks(out: &mut Vec<Check>) {
                 .note(format!("chain failed: {e}")),
             ),
         }
+    }
+}
+
+/// The largest size of a Fourier curve's coefficients.
+fn coef_size(f: &Fourier3) -> f64 {
+    f.cos
+        .iter()
+        .chain(&f.sin)
+        .chain(std::iter::once(&f.c0))
+        .flat_map(|c| c.iter())
+        .fold(0.0, |m, x| worst(m, x.abs()))
+}
+
+/// The global chain's other end conditions (`EndCurvature`), each on the
+/// 13 sections: a natural end's u-curvature is zero, a chord end's u-slope
+/// is the chord's to the neighbouring section (relative to the chord
+/// slope's size), at both ends.
+fn end_condition_checks(out: &mut Vec<Check>) {
+    use super::super::EndCurvature;
+    let s = synthetic_sections(13, 6);
+    let m = s.len();
+    let at = |c: &Chain, u: f64, d: usize| {
+        c.pieces[c.piece_at(u).min(c.pieces.len() - 1)].global_section(u, d)
+    };
+    let chord = |i: usize, j: usize| {
+        let du = s[j].u - s[i].u;
+        Fourier3::weighted_sum(&[(1.0 / du, &s[j].curve), (-1.0 / du, &s[i].curve)])
+    };
+    for (name, a) in SIGNS {
+        let natural = Chain::c2_global_ends(a, &s, [EndCurvature::Natural; 2]).map(|c| {
+            [s[0].u, s[m - 1].u]
+                .iter()
+                .map(|&u| coef_size(&at(&c, u, 2)))
+                .fold(0.0, worst)
+        });
+        out.push(
+            Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_natural_ends_{name}"), Kind::Boundary, natural.unwrap_or(f64::NAN), SOLVE_TOL)
+                .note(format!("13-section global C2 chain with natural ends, a = {a}: largest u-curvature coefficient at either end (zero by construction of the end rows)")),
+        );
+        let clamped = Chain::c2_global_ends(a, &s, [EndCurvature::Chord; 2]).map(|c| {
+            [(s[0].u, chord(0, 1)), (s[m - 1].u, chord(m - 2, m - 1))]
+                .iter()
+                .map(|(u, k)| {
+                    coef_size(&Fourier3::weighted_sum(&[(1.0, &at(&c, *u, 1)), (-1.0, k)]))
+                        / coef_size(k)
+                })
+                .fold(0.0, worst)
+        });
+        out.push(
+            Check::new(FAMILY, PAPER, "eqs 24-25 (global)", &format!("pde6.global_chord_ends_{name}"), Kind::Boundary, clamped.unwrap_or(f64::NAN), SOLVE_TOL)
+                .note(format!("13-section global C2 chain with chord (clamped) ends, a = {a}: largest u-slope coefficient's miss of the chord slope to the neighbouring section at either end, relative to the chord slope")),
+        );
     }
 }
 
