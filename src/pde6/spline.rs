@@ -143,32 +143,7 @@ impl Chain {
         let m = sections.len();
         let p_count = (m - 1) / 3;
         let big_n = sections[0].curve.harmonics();
-        // end curvatures (global u): from six-point patches at the ends, or
-        // zero (the zero curve of the sections' harmonics)
-        let zero = || Fourier3::weighted_sum(&[(0.0, &sections[0].curve)]);
-        // the chord's slope from section i to section j (global u)
-        let chord = |i: usize, j: usize| {
-            let du = sections[j].u - sections[i].u;
-            Fourier3::weighted_sum(&[
-                (1.0 / du, &sections[j].curve),
-                (-1.0 / du, &sections[i].curve),
-            ])
-        };
-        let k_start = match end_curvature[0] {
-            EndCurvature::SixPoint | EndCurvature::Guarded => {
-                Chain::method1_window(a, &sections[..6])?.global_section(sections[0].u, 2)
-            }
-            EndCurvature::Natural => zero(),
-            EndCurvature::Chord => chord(0, 1),
-        };
-        let k_end = match end_curvature[1] {
-            EndCurvature::SixPoint | EndCurvature::Guarded => {
-                Chain::method1_window(a, &sections[m - 6..])?.global_section(sections[m - 1].u, 2)
-            }
-            EndCurvature::Natural => zero(),
-            EndCurvature::Chord => chord(m - 2, m - 1),
-        };
-        let ends = [k_start, k_end];
+        let ends = end_values(a, sections, end_curvature)?;
         let slope_ends = end_curvature.map(|e| e == EndCurvature::Chord);
         let geo: Vec<(f64, f64, [f64; 4])> = (0..p_count)
             .map(|p| {
@@ -217,6 +192,41 @@ impl Chain {
             pieces,
         })
     }
+}
+
+/// The right-hand sides of the global system's two end rows (global u):
+/// the six-point patches' end curvatures, zero (the zero curve of the
+/// sections' harmonics), or the chord's slope to the neighbouring section.
+fn end_values(
+    a: f64,
+    sections: &[Section],
+    end_curvature: [EndCurvature; 2],
+) -> Result<[Fourier3; 2], Pde6Error> {
+    let m = sections.len();
+    let zero = || Fourier3::weighted_sum(&[(0.0, &sections[0].curve)]);
+    // the chord's slope from section i to section j
+    let chord = |i: usize, j: usize| {
+        let du = sections[j].u - sections[i].u;
+        Fourier3::weighted_sum(&[
+            (1.0 / du, &sections[j].curve),
+            (-1.0 / du, &sections[i].curve),
+        ])
+    };
+    let k_start = match end_curvature[0] {
+        EndCurvature::SixPoint | EndCurvature::Guarded => {
+            Chain::method1_window(a, &sections[..6])?.global_section(sections[0].u, 2)
+        }
+        EndCurvature::Natural => zero(),
+        EndCurvature::Chord => chord(0, 1),
+    };
+    let k_end = match end_curvature[1] {
+        EndCurvature::SixPoint | EndCurvature::Guarded => {
+            Chain::method1_window(a, &sections[m - 6..])?.global_section(sections[m - 1].u, 2)
+        }
+        EndCurvature::Natural => zero(),
+        EndCurvature::Chord => chord(m - 2, m - 1),
+    };
+    Ok([k_start, k_end])
 }
 
 /// A piece's origin, length and its four sections' local parameters.

@@ -1,36 +1,41 @@
 //! The sketched transitions' tangent factors fitted to the drawing
-//! (`sketch::tangent_fit`), on the corpus's cartoon (head half the
-//! height), whose shoulders missed the drawn front by 1.66 % of the height
-//! with the derived factors.
+//! (`sketch::tangent_fit`), on the corpus's arms_apart (its two arms at
+//! different angles): with the derived factors its model missed the drawn
+//! front by 1.00 % of the height, with the fitted ones 0.74 %. (The test
+//! first used the cartoon with a head half the height, 1.66 % with the
+//! derived factors; since the arms' chains run along their rims and a
+//! guarded end leaves along its chord, docs/drawing-corpus.md nineteenth
+//! and twentieth measurements, its derived factors are already the best
+//! and the fit keeps them.)
 
 use crate::sketch_draw::build;
 use pdesculpt::character::assembly::{transition_points, Resolution};
 use pdesculpt::pipeline::Built;
 use std::path::PathBuf;
 
-/// The cartoon's whole-model front profile error bound, relative to the
-/// height: 1 % (now 0.59 %; 1.66 % with the derived factors, past the
-/// issue's 1.5 %).
-const CARTOON_FRONT_MAX: f64 = 0.01;
+/// The whole-model front profile error bound, relative to the height:
+/// between the fitted factors' 0.74 % and the derived ones' 1.00 %, so
+/// the test fails if the fit does not act.
+const FITTED_FRONT_MAX: f64 = 0.0085;
 /// How far (relative to the height) a point the fit measures may lie from
 /// the mesh vertex it stands for: the same evaluation, so rounding only.
 const SAME_POINT: f64 = 1e-12;
 
-fn cartoon() -> Built {
+fn corpus(name: &str) -> Built {
     let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/sketch/corpus");
     build(
-        &data.join("cartoon_head_half_front.svg"),
-        &data.join("cartoon_head_half_side.svg"),
+        &data.join(format!("{name}_front.svg")),
+        &data.join(format!("{name}_side.svg")),
         None,
     )
-    .expect("the cartoon builds")
+    .unwrap_or_else(|e| panic!("{name} builds: {e}"))
 }
 
 /// The fit takes the shoulders' factors off the derived ones (arms 0.7,
-/// head 1) and the model follows the drawn front within 1 %.
+/// head 1) and the model follows the drawn front closer than with them.
 #[test]
-fn a_cartoons_shoulders_follow_its_drawn_front_with_fitted_tangents() {
-    let b = cartoon();
+fn a_drawings_shoulders_follow_its_drawn_front_with_fitted_tangents() {
+    let b = corpus("arms_apart");
     let shoulders = b
         .doc
         .transitions()
@@ -49,7 +54,7 @@ fn a_cartoons_shoulders_follow_its_drawn_front_with_fitted_tangents() {
         .find(|v| v.view == "front")
         .expect("front");
     assert!(
-        front.max_rel <= CARTOON_FRONT_MAX,
+        front.max_rel <= FITTED_FRONT_MAX,
         "front profile error {:.2} % of the height (factors {fitted:?})",
         100.0 * front.max_rel
     );
@@ -60,7 +65,7 @@ fn a_cartoons_shoulders_follow_its_drawn_front_with_fitted_tangents() {
 /// built mesh.
 #[test]
 fn the_fitted_points_are_the_meshs_vertices() {
-    let b = cartoon();
+    let b = corpus("cartoon_head_half");
     let h = b.report.height;
     let rows = Resolution::default().transition_rows;
     let verts = &b.model.mesh.positions;
