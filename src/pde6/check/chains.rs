@@ -177,7 +177,7 @@ fn end_condition_checks(out: &mut Vec<Check>) {
     let s = synthetic_sections(13, 6);
     let m = s.len();
     let at = |c: &Chain, u: f64, d: usize| {
-        c.pieces[c.piece_at(u).min(c.pieces.len() - 1)].global_section(u, d)
+        c.pieces[usize::min(c.piece_at(u), c.pieces.len() - 1)].global_section(u, d)
     };
     let chord = |i: usize, j: usize| {
         let du = s[j].u - s[i].u;
