@@ -133,6 +133,22 @@ impl Fourier3 {
             .collect()
     }
 
+    /// The largest absolute value of any coefficient (0 for the zero
+    /// curve); NaN if any coefficient is NaN.
+    pub fn max_abs_coef(&self) -> f64 {
+        self.c0
+            .iter()
+            .chain(self.cos.iter().flatten())
+            .chain(self.sin.iter().flatten())
+            .fold(0.0, |m: f64, x| {
+                if m.is_nan() || x.abs() <= m {
+                    m
+                } else {
+                    x.abs()
+                }
+            })
+    }
+
     /// All coefficients finite.
     pub fn is_finite(&self) -> bool {
         self.c0
@@ -140,5 +156,22 @@ impl Fourier3 {
             .chain(self.cos.iter().flatten())
             .chain(self.sin.iter().flatten())
             .all(|x| x.is_finite())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fourier3;
+
+    #[test]
+    fn the_largest_coefficient_is_found_and_nan_is_kept() {
+        let mut f = Fourier3 {
+            c0: [0.5, -0.25, 0.0],
+            cos: vec![[0.0, -2.0, 1.0]],
+            sin: vec![[0.0, 0.0, 1.5]],
+        };
+        assert_eq!(f.max_abs_coef(), 2.0);
+        f.c0[2] = f64::NAN;
+        assert!(f.max_abs_coef().is_nan());
     }
 }

@@ -112,8 +112,9 @@ impl Chain {
         Chain::c2_global_ends(a, sections, [EndCurvature::SixPoint; 2])
     }
 
-    /// The globally solved C2 chain with the given curvature condition at
-    /// its start and its end.
+    /// The globally solved C2 chain with the given end condition at its
+    /// start and its end. A guarded end solves twice where the guard fires
+    /// (the end rows differ, so the first solve's matrices are not reused).
     pub fn c2_global_ends(
         a: f64,
         sections: &[Section],
@@ -233,8 +234,8 @@ fn end_values(
 type Geo = (f64, f64, [f64; 4]);
 
 /// The global system's matrix for mode basis `b`: the value at each
-/// piece's four sections, C1 and C2 at the interior joins, the curvature
-/// at both ends.
+/// piece's four sections, C1 and C2 at the interior joins, at each end the
+/// curvature, or the slope where `slope_ends` says so (a chord end).
 fn global_matrix(b: &ModeBasis, geo: &[Geo], slope_ends: [bool; 2]) -> DMatrix<f64> {
     let p_count = geo.len();
     let size = 6 * p_count;

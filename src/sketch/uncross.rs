@@ -262,8 +262,9 @@ pub fn sections(
 
 /// The sections' arc lengths `u` from how far their rims move: each step
 /// the mean of the chords between corresponding rim points `centre +- r
-/// e1` and `centre +- r e2` of the two sections (circles; another shape
-/// counts as radius 0), not the chord between their centres alone.
+/// e1` and `centre +- r e2` of the two sections (a circle of radius `r`;
+/// an ellipse's semi-axes about its offset centre; a GEC counts as its
+/// centre alone), not the chord between their centres alone.
 ///
 /// The pde6 chain interpolates each rim point as a function of `u`. Where
 /// a section grows, shrinks or turns while its centre hardly moves (a
@@ -339,7 +340,7 @@ mod tests {
     /// Along a straight tube the rims move as far as the centres; a ring
     /// that doubles in place (radius 1 to 2) moves each of its four rim
     /// points by 1, where its centre does not move at all; an ellipse's
-    /// depth offset moves its two depth rim points.
+    /// depth offset of 0.4 moves all four of its rim points by 0.4.
     #[test]
     fn arc_lengths_follow_the_rims_not_only_the_centres() {
         use crate::character::doc::SectionShape;

@@ -7,7 +7,7 @@ use crate::pde6::{Chain, EndCurvature, Section};
 use crate::surface::Joined;
 
 /// Solves the C2 chain of PDE parameter `a` through `sections`, with the
-/// given curvature condition at its start and end.
+/// given end condition at its start and end.
 pub(super) fn build(
     a: f64,
     sections: &[Section],

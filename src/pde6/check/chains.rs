@@ -158,16 +158,6 @@ fn global_checks(out: &mut Vec<Check>) {
     }
 }
 
-/// The largest size of a Fourier curve's coefficients.
-fn coef_size(f: &Fourier3) -> f64 {
-    f.cos
-        .iter()
-        .chain(&f.sin)
-        .chain(std::iter::once(&f.c0))
-        .flat_map(|c| c.iter())
-        .fold(0.0, |m, x| worst(m, x.abs()))
-}
-
 /// The global chain's other end conditions (`EndCurvature`), each on the
 /// 13 sections: a natural end's u-curvature is zero, a chord end's u-slope
 /// is the chord's to the neighbouring section (relative to the chord
@@ -187,7 +177,7 @@ fn end_condition_checks(out: &mut Vec<Check>) {
         let natural = Chain::c2_global_ends(a, &s, [EndCurvature::Natural; 2]).map(|c| {
             [s[0].u, s[m - 1].u]
                 .iter()
-                .map(|&u| coef_size(&at(&c, u, 2)))
+                .map(|&u| at(&c, u, 2).max_abs_coef())
                 .fold(0.0, worst)
         });
         out.push(
@@ -198,8 +188,8 @@ fn end_condition_checks(out: &mut Vec<Check>) {
             [(s[0].u, chord(0, 1)), (s[m - 1].u, chord(m - 2, m - 1))]
                 .iter()
                 .map(|(u, k)| {
-                    coef_size(&Fourier3::weighted_sum(&[(1.0, &at(&c, *u, 1)), (-1.0, k)]))
-                        / coef_size(k)
+                    Fourier3::weighted_sum(&[(1.0, &at(&c, *u, 1)), (-1.0, k)]).max_abs_coef()
+                        / k.max_abs_coef()
                 })
                 .fold(0.0, worst)
         });
