@@ -8,7 +8,7 @@
 //!   (chord length, the old default) and after parameter correction (the
 //!   default) at the same J (`curve::gec::study::correction_study`).
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use pdesculpt::body::closed::ClosedOptions;
 use pdesculpt::body::study::{data_size_study, StudyRow, DENSITIES, METHODS};
 use pdesculpt::curve::gec::study::{base_sections, correction_study, TABLE1_TERMS};
@@ -78,89 +78,93 @@ fn plot(ctx: &Ctx, rows: &[StudyRow]) -> anyhow::Result<()> {
     let body: Vec<&StudyRow> = rows.iter().filter(|r| r.part == "body").collect();
     let mesh = body.first().map_or(1, |r| r.mesh_numbers) as f64;
     {
-        let root = BitMapBackend::new(&path, (1000, 650)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let (xmin, xmax) = (1e3f64, 1e5f64);
-        let (ymin, ymax) = (1e-3f64, 0.2f64);
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "Whole body: numbers stored against error (MakeHuman base body)",
-                ("sans-serif", 22),
-            )
-            .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(75)
-            .build_cartesian_2d((xmin..xmax).log_scale(), (ymin..ymax).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("numbers stored")
-            .y_desc("distance / body height")
-            .label_style(("sans-serif", 14))
-            .draw()?;
-        let styles: [(&str, RGBColor); 4] = [
-            ("pde6-closed", BLACK),
-            ("pde6", RED),
-            ("ode6", BLUE),
-            ("loft", GREEN),
-        ];
-        for (m, c) in styles {
-            let sel: Vec<&&StudyRow> = body.iter().filter(|r| r.method == m).collect();
-            let rms: Vec<(f64, f64)> = sel
-                .iter()
-                .map(|r| (r.stored_numbers as f64, r.recon_to_skin_rms_rel.max(ymin)))
-                .collect();
-            let max: Vec<(f64, f64)> = sel
-                .iter()
-                .map(|r| {
-                    // the tubes leave the armpits and the crotch uncovered:
-                    // their skin -> recon maximum sits there (table), so
-                    // their curve is recon -> skin; the closed body's both ways
-                    let m = if r.method == "pde6-closed" {
-                        r.recon_to_skin_max_rel.max(r.skin_to_recon_max_rel)
+        let mut plot = PlotPng::new((1000, 650));
+        {
+            let root = plot.area();
+            root.fill(&WHITE)?;
+            let (xmin, xmax) = (1e3f64, 1e5f64);
+            let (ymin, ymax) = (1e-3f64, 0.2f64);
+            let mut chart = ChartBuilder::on(&root)
+                .caption(
+                    "Whole body: numbers stored against error (MakeHuman base body)",
+                    ("sans-serif", 22),
+                )
+                .margin(15)
+                .x_label_area_size(45)
+                .y_label_area_size(75)
+                .build_cartesian_2d((xmin..xmax).log_scale(), (ymin..ymax).log_scale())?;
+            chart
+                .configure_mesh()
+                .x_desc("numbers stored")
+                .y_desc("distance / body height")
+                .label_style(("sans-serif", 14))
+                .draw()?;
+            let styles: [(&str, RGBColor); 4] = [
+                ("pde6-closed", BLACK),
+                ("pde6", RED),
+                ("ode6", BLUE),
+                ("loft", GREEN),
+            ];
+            for (m, c) in styles {
+                let sel: Vec<&&StudyRow> = body.iter().filter(|r| r.method == m).collect();
+                let rms: Vec<(f64, f64)> = sel
+                    .iter()
+                    .map(|r| (r.stored_numbers as f64, r.recon_to_skin_rms_rel.max(ymin)))
+                    .collect();
+                let max: Vec<(f64, f64)> = sel
+                    .iter()
+                    .map(|r| {
+                        // the tubes leave the armpits and the crotch uncovered:
+                        // their skin -> recon maximum sits there (table), so
+                        // their curve is recon -> skin; the closed body's both ways
+                        let m = if r.method == "pde6-closed" {
+                            r.recon_to_skin_max_rel.max(r.skin_to_recon_max_rel)
+                        } else {
+                            r.recon_to_skin_max_rel
+                        };
+                        (r.stored_numbers as f64, m.clamp(ymin, ymax))
+                    })
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(rms.clone(), c.stroke_width(2)))?
+                    .label(format!("{m}: RMS recon->skin"))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                    });
+                chart.draw_series(rms.iter().map(|p| Circle::new(*p, 4, c.filled())))?;
+                chart
+                    .draw_series(LineSeries::new(max.clone(), c.stroke_width(1)))?
+                    .label(if m == "pde6-closed" {
+                        format!("{m}: max (both ways)")
                     } else {
-                        r.recon_to_skin_max_rel
-                    };
-                    (r.stored_numbers as f64, m.clamp(ymin, ymax))
-                })
-                .collect();
+                        format!("{m}: max recon->skin")
+                    })
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(1))
+                    });
+                chart.draw_series(max.iter().map(|p| TriangleMarker::new(*p, 5, c.filled())))?;
+            }
+            // the mesh: its vertex coordinates (error 0: a vertical line)
+            let grey = RGBColor(120, 120, 120);
             chart
-                .draw_series(LineSeries::new(rms.clone(), c.stroke_width(2)))?
-                .label(format!("{m}: RMS recon->skin"))
+                .draw_series(LineSeries::new(
+                    vec![(mesh.min(xmax), ymin), (mesh.min(xmax), ymax)],
+                    grey.stroke_width(2),
+                ))?
+                .label(format!("mesh: {mesh} vertex coordinates"))
                 .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                    PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(2))
                 });
-            chart.draw_series(rms.iter().map(|p| Circle::new(*p, 4, c.filled())))?;
             chart
-                .draw_series(LineSeries::new(max.clone(), c.stroke_width(1)))?
-                .label(if m == "pde6-closed" {
-                    format!("{m}: max (both ways)")
-                } else {
-                    format!("{m}: max recon->skin")
-                })
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(1))
-                });
-            chart.draw_series(max.iter().map(|p| TriangleMarker::new(*p, 5, c.filled())))?;
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 13))
+                .position(SeriesLabelPosition::UpperRight)
+                .draw()?;
+            root.present()?;
         }
-        // the mesh: its vertex coordinates (error 0: a vertical line)
-        let grey = RGBColor(120, 120, 120);
-        chart
-            .draw_series(LineSeries::new(
-                vec![(mesh.min(xmax), ymin), (mesh.min(xmax), ymax)],
-                grey.stroke_width(2),
-            ))?
-            .label(format!("mesh: {mesh} vertex coordinates"))
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], grey.stroke_width(2))
-            });
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()?;
-        root.present()?;
+        plot.save(&path)?;
     }
     eprintln!("  wrote {}", path.display());
     let _ = METHODS;

@@ -87,3 +87,57 @@ impl Ctx {
 pub fn workspace_path(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(rel)
 }
+
+/// A plot drawn by plotters' bitmap backend in memory and written as a PNG
+/// by the crate's own encoder (`Image::save_png`: atomic, one PNG crate).
+/// Plotters' file output would build the `image` crate, with a JPEG decoder
+/// and a second PNG crate, for nothing else.
+///
+/// ```ignore
+/// let mut plot = PlotPng::new((900, 600));
+/// {
+///     let root = plot.area();
+///     root.fill(&WHITE)?;
+///     // ... draw ...
+///     root.present()?;
+/// }
+/// plot.save(&path)?;
+/// ```
+pub struct PlotPng {
+    size: (u32, u32),
+    rgb: Vec<u8>,
+}
+
+impl PlotPng {
+    pub fn new(size: (u32, u32)) -> PlotPng {
+        PlotPng {
+            size,
+            rgb: vec![0; size.0 as usize * size.1 as usize * 3],
+        }
+    }
+
+    /// The drawing area over the whole picture (drop it before `save`).
+    pub fn area(
+        &mut self,
+    ) -> plotters::drawing::DrawingArea<plotters::prelude::BitMapBackend<'_>, plotters::coord::Shift>
+    {
+        use plotters::prelude::IntoDrawingArea;
+        plotters::prelude::BitMapBackend::with_buffer(&mut self.rgb, self.size).into_drawing_area()
+    }
+
+    /// Writes the picture (opaque) to `path`.
+    pub fn save(&self, path: &Path) -> anyhow::Result<()> {
+        let rgba = self
+            .rgb
+            .chunks_exact(3)
+            .flat_map(|p| [p[0], p[1], p[2], 255])
+            .collect();
+        let image = pdesculpt::render::Image {
+            width: self.size.0 as usize,
+            height: self.size.1 as usize,
+            rgba,
+        };
+        image.save_png(path)?;
+        Ok(())
+    }
+}

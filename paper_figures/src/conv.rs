@@ -3,7 +3,7 @@
 //! silhouette-following error (surface outline projected onto the stroke
 //! plane vs the stroke, relative to the stroke size).
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use pdesculpt::conv::fit::Solver;
 use pdesculpt::conv::model::{BuiltModel, Component, Model, Polygonizer, View as PlaneView};
 use pdesculpt::conv::silhouette::{silhouette_error, SilhouetteError};
@@ -152,95 +152,103 @@ fn fig2_panels(
     sk: &sketch::Sketch,
 ) -> anyhow::Result<()> {
     let panel = 360u32;
-    let root = BitMapBackend::new(path, (panel * 5, panel + 30)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let areas = root.split_evenly((1, 5));
-    let (x0, x1, y0, y1) = bounds(&sk.polygon);
-    let titles = [
-        "(a) stroke, filtered",
-        "(b) CDT",
-        "(c) T / S / J triangles",
-        "(d) circles",
-        "(e) skeleton",
-    ];
-    let poly = &sk.polygon;
-    for (k, area) in areas.iter().enumerate() {
-        let mut ch = ChartBuilder::on(area)
-            .caption(titles[k], ("sans-serif", 18))
-            .margin(6)
-            .build_cartesian_2d(x0..x1, y0..y1)?;
-        let tri_pts = |t: &pdesculpt::conv::skeleton::SkeletonTriangle| {
-            t.vertices
-                .iter()
-                .map(|&i| (poly[i][0], poly[i][1]))
-                .collect::<Vec<_>>()
-        };
-        match k {
-            0 => {
-                ch.draw_series(LineSeries::new(closed(raw), RGBColor(160, 160, 160)))?;
-                ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
-                ch.draw_series(
-                    poly.iter()
-                        .map(|p| Circle::new((p[0], p[1]), 3, RED.filled())),
-                )?;
-            }
-            1 | 2 => {
-                for t in &sk.skeleton.triangles {
-                    let col = match (k, t.kind) {
-                        (1, _) => RGBColor(235, 235, 235),
-                        (_, TriangleKind::Terminal) => RGBColor(90, 120, 230),
-                        (_, TriangleKind::Sleeve) => RGBColor(90, 200, 110),
-                        (_, TriangleKind::Junction) => RGBColor(230, 80, 80),
-                    };
-                    ch.draw_series(std::iter::once(Polygon::new(
-                        tri_pts(t),
-                        col.mix(0.7).filled(),
-                    )))?;
-                    let mut p = tri_pts(t);
-                    p.push(p[0]);
-                    ch.draw_series(LineSeries::new(p, BLACK.stroke_width(1)))?;
+    let mut plot = PlotPng::new((panel * 5, panel + 30));
+    {
+        let root = plot.area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((1, 5));
+        let (x0, x1, y0, y1) = bounds(&sk.polygon);
+        let titles = [
+            "(a) stroke, filtered",
+            "(b) CDT",
+            "(c) T / S / J triangles",
+            "(d) circles",
+            "(e) skeleton",
+        ];
+        let poly = &sk.polygon;
+        for (k, area) in areas.iter().enumerate() {
+            let mut ch = ChartBuilder::on(area)
+                .caption(titles[k], ("sans-serif", 18))
+                .margin(6)
+                .build_cartesian_2d(x0..x1, y0..y1)?;
+            let tri_pts = |t: &pdesculpt::conv::skeleton::SkeletonTriangle| {
+                t.vertices
+                    .iter()
+                    .map(|&i| (poly[i][0], poly[i][1]))
+                    .collect::<Vec<_>>()
+            };
+            match k {
+                0 => {
+                    ch.draw_series(LineSeries::new(closed(raw), RGBColor(160, 160, 160)))?;
+                    ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
+                    ch.draw_series(
+                        poly.iter()
+                            .map(|p| Circle::new((p[0], p[1]), 3, RED.filled())),
+                    )?;
                 }
-            }
-            3 => {
-                ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
-                for t in &sk.skeleton.triangles {
-                    let col = match t.circle {
-                        pdesculpt::conv::skeleton::CircleKind::Circumcircle => {
-                            RGBColor(230, 80, 80)
-                        }
-                        pdesculpt::conv::skeleton::CircleKind::Incircle => RGBColor(90, 120, 230),
-                        pdesculpt::conv::skeleton::CircleKind::EdgeTangent => RGBColor(40, 160, 60),
-                    };
-                    ch.draw_series(LineSeries::new(
-                        circle_path(t.centre, t.radius),
-                        col.mix(0.6),
-                    ))?;
+                1 | 2 => {
+                    for t in &sk.skeleton.triangles {
+                        let col = match (k, t.kind) {
+                            (1, _) => RGBColor(235, 235, 235),
+                            (_, TriangleKind::Terminal) => RGBColor(90, 120, 230),
+                            (_, TriangleKind::Sleeve) => RGBColor(90, 200, 110),
+                            (_, TriangleKind::Junction) => RGBColor(230, 80, 80),
+                        };
+                        ch.draw_series(std::iter::once(Polygon::new(
+                            tri_pts(t),
+                            col.mix(0.7).filled(),
+                        )))?;
+                        let mut p = tri_pts(t);
+                        p.push(p[0]);
+                        ch.draw_series(LineSeries::new(p, BLACK.stroke_width(1)))?;
+                    }
                 }
-            }
-            _ => {
-                ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
-                for (i, &c) in sk.skeleton.nodes.iter().enumerate() {
-                    ch.draw_series(LineSeries::new(
-                        circle_path(c, sk.skeleton.radii[i]),
-                        RGBColor(180, 180, 180),
-                    ))?;
+                3 => {
+                    ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
+                    for t in &sk.skeleton.triangles {
+                        let col = match t.circle {
+                            pdesculpt::conv::skeleton::CircleKind::Circumcircle => {
+                                RGBColor(230, 80, 80)
+                            }
+                            pdesculpt::conv::skeleton::CircleKind::Incircle => {
+                                RGBColor(90, 120, 230)
+                            }
+                            pdesculpt::conv::skeleton::CircleKind::EdgeTangent => {
+                                RGBColor(40, 160, 60)
+                            }
+                        };
+                        ch.draw_series(LineSeries::new(
+                            circle_path(t.centre, t.radius),
+                            col.mix(0.6),
+                        ))?;
+                    }
                 }
-                for s in &sk.segments {
-                    ch.draw_series(LineSeries::new(
-                        vec![(s.p[0], s.p[1]), (s.q[0], s.q[1])],
-                        RGBColor(200, 40, 40).stroke_width(3),
-                    ))?;
+                _ => {
+                    ch.draw_series(LineSeries::new(closed(poly), BLACK.stroke_width(2)))?;
+                    for (i, &c) in sk.skeleton.nodes.iter().enumerate() {
+                        ch.draw_series(LineSeries::new(
+                            circle_path(c, sk.skeleton.radii[i]),
+                            RGBColor(180, 180, 180),
+                        ))?;
+                    }
+                    for s in &sk.segments {
+                        ch.draw_series(LineSeries::new(
+                            vec![(s.p[0], s.p[1]), (s.q[0], s.q[1])],
+                            RGBColor(200, 40, 40).stroke_width(3),
+                        ))?;
+                    }
+                    ch.draw_series(
+                        sk.skeleton
+                            .nodes
+                            .iter()
+                            .map(|c| Circle::new((c[0], c[1]), 3, BLUE.filled())),
+                    )?;
                 }
-                ch.draw_series(
-                    sk.skeleton
-                        .nodes
-                        .iter()
-                        .map(|c| Circle::new((c[0], c[1]), 3, BLUE.filled())),
-                )?;
             }
         }
+        root.present()?;
     }
-    root.present()?;
+    plot.save(path)?;
     Ok(())
 }
 
@@ -638,53 +646,58 @@ fn fig_polygonizers(ctx: &Ctx) -> anyhow::Result<()> {
     // min-angle histograms (teddy, 64 cells)
     {
         let path = ctx.path("003-polygonizers_angles.png");
-        let root = BitMapBackend::new(&path, (640, 400)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let bins = 30usize;
-        let counts: Vec<Vec<f64>> = hist
-            .iter()
-            .map(|(_, a)| {
-                let mut c = vec![0.0; bins];
-                for &x in a {
-                    c[((x / 60.0 * bins as f64) as usize).min(bins - 1)] += 1.0 / a.len() as f64;
-                }
-                c
-            })
-            .collect();
-        let ymax = counts.iter().flatten().copied().fold(0.0, f64::max) * 1.1;
-        let mut ch = ChartBuilder::on(&root)
-            .caption(
-                "smallest angle per triangle, teddy, 64 cells",
-                ("sans-serif", 18),
-            )
-            .margin(10)
-            .x_label_area_size(35)
-            .y_label_area_size(50)
-            .build_cartesian_2d(0.0..60.0, 0.0..ymax)?;
-        ch.configure_mesh()
-            .x_desc("degrees")
-            .y_desc("fraction of triangles")
-            .draw()?;
-        for (k, ((name, _), c)) in hist.iter().zip(&counts).enumerate() {
-            let col = if k == 0 {
-                RGBColor(200, 60, 60)
-            } else {
-                RGBColor(50, 90, 200)
-            };
-            let pts: Vec<(f64, f64)> = c
+        let mut plot = PlotPng::new((640, 400));
+        {
+            let root = plot.area();
+            root.fill(&WHITE)?;
+            let bins = 30usize;
+            let counts: Vec<Vec<f64>> = hist
                 .iter()
-                .enumerate()
-                .map(|(i, &v)| ((i as f64 + 0.5) * 60.0 / bins as f64, v))
+                .map(|(_, a)| {
+                    let mut c = vec![0.0; bins];
+                    for &x in a {
+                        c[((x / 60.0 * bins as f64) as usize).min(bins - 1)] +=
+                            1.0 / a.len() as f64;
+                    }
+                    c
+                })
                 .collect();
-            ch.draw_series(LineSeries::new(pts, col.stroke_width(2)))?
-                .label(name.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col));
+            let ymax = counts.iter().flatten().copied().fold(0.0, f64::max) * 1.1;
+            let mut ch = ChartBuilder::on(&root)
+                .caption(
+                    "smallest angle per triangle, teddy, 64 cells",
+                    ("sans-serif", 18),
+                )
+                .margin(10)
+                .x_label_area_size(35)
+                .y_label_area_size(50)
+                .build_cartesian_2d(0.0..60.0, 0.0..ymax)?;
+            ch.configure_mesh()
+                .x_desc("degrees")
+                .y_desc("fraction of triangles")
+                .draw()?;
+            for (k, ((name, _), c)) in hist.iter().zip(&counts).enumerate() {
+                let col = if k == 0 {
+                    RGBColor(200, 60, 60)
+                } else {
+                    RGBColor(50, 90, 200)
+                };
+                let pts: Vec<(f64, f64)> = c
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &v)| ((i as f64 + 0.5) * 60.0 / bins as f64, v))
+                    .collect();
+                ch.draw_series(LineSeries::new(pts, col.stroke_width(2)))?
+                    .label(name.as_str())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], col));
+            }
+            ch.configure_series_labels()
+                .border_style(BLACK)
+                .background_style(WHITE)
+                .draw()?;
+            root.present()?;
         }
-        ch.configure_series_labels()
-            .border_style(BLACK)
-            .background_style(WHITE)
-            .draw()?;
-        root.present()?;
+        plot.save(&path)?;
     }
     Image::hstack(&imgs, [255; 4]).save_png(&ctx.path("003-polygonizers_teddy32.png"))?;
     std::fs::write(ctx.path("003-polygonizers.md"), &table)?;

@@ -2,7 +2,7 @@
 //! per J on MakeHuman cross sections, with the parameter-choice study) and
 //! of paper 000 Fig 3 (original section, GEC, standard ellipse).
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use pdesculpt::curve::gec::metrics::errors;
 use pdesculpt::curve::gec::study::{self, BodySection, StudyRow, TABLE1_TERMS};
 use pdesculpt::curve::gec::{fit, FitOptions, Gec, Param};
@@ -123,73 +123,79 @@ fn table1(ctx: &Ctx) -> anyhow::Result<()> {
 fn plot_table1(ctx: &Ctx, rows: &[StudyRow]) -> anyhow::Result<()> {
     let path = ctx.path("002-table1.png");
     {
-        let root = BitMapBackend::new(&path, (900, 600)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "GEC fit errors on MakeHuman sections (relative to section diagonal)",
-                ("sans-serif", 20),
-            )
-            .margin(15)
-            .x_label_area_size(40)
-            .y_label_area_size(70)
-            .build_cartesian_2d(0.5f64..10.5f64, (3e-4f64..0.2f64).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("J (terms)")
-            .y_desc("error / D")
-            .label_style(("sans-serif", 14))
-            .draw()?;
-        let colours = [RED, BLUE, GREEN, MAGENTA];
-        for (i, p) in Param::ALL.iter().enumerate() {
-            let c = colours[i];
-            let erm: Vec<(f64, f64)> = TABLE1_TERMS
+        let mut plot = PlotPng::new((900, 600));
+        {
+            let root = plot.area();
+            root.fill(&WHITE)?;
+            let mut chart = ChartBuilder::on(&root)
+                .caption(
+                    "GEC fit errors on MakeHuman sections (relative to section diagonal)",
+                    ("sans-serif", 20),
+                )
+                .margin(15)
+                .x_label_area_size(40)
+                .y_label_area_size(70)
+                .build_cartesian_2d(0.5f64..10.5f64, (3e-4f64..0.2f64).log_scale())?;
+            chart
+                .configure_mesh()
+                .x_desc("J (terms)")
+                .y_desc("error / D")
+                .label_style(("sans-serif", 14))
+                .draw()?;
+            let colours = [RED, BLUE, GREEN, MAGENTA];
+            for (i, p) in Param::ALL.iter().enumerate() {
+                let c = colours[i];
+                let erm: Vec<(f64, f64)> = TABLE1_TERMS
+                    .iter()
+                    .map(|&j| (j as f64, means(rows, j, p.name()).erm_rel_mean.max(3e-4)))
+                    .collect();
+                let era: Vec<(f64, f64)> = TABLE1_TERMS
+                    .iter()
+                    .map(|&j| (j as f64, means(rows, j, p.name()).era_rel_mean.max(3e-4)))
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(erm.clone(), c.stroke_width(2)))?
+                    .label(format!("ErM/D {}", p.name()))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                    });
+                chart.draw_series(erm.iter().map(|p| Circle::new(*p, 4, c.filled())))?;
+                chart
+                    .draw_series(LineSeries::new(era.clone(), c.stroke_width(1)))?
+                    .label(format!("ErA/D {}", p.name()))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(1))
+                    });
+                chart.draw_series(era.iter().map(|p| TriangleMarker::new(*p, 4, c.filled())))?;
+            }
+            let pm: Vec<(f64, f64)> = PAPER_TABLE1
                 .iter()
-                .map(|&j| (j as f64, means(rows, j, p.name()).erm_rel_mean.max(3e-4)))
+                .map(|(n, m, _)| (*n as f64, *m))
                 .collect();
-            let era: Vec<(f64, f64)> = TABLE1_TERMS
+            let pa: Vec<(f64, f64)> = PAPER_TABLE1
                 .iter()
-                .map(|&j| (j as f64, means(rows, j, p.name()).era_rel_mean.max(3e-4)))
+                .map(|(n, _, a)| (*n as f64, *a))
                 .collect();
             chart
-                .draw_series(LineSeries::new(erm.clone(), c.stroke_width(2)))?
-                .label(format!("ErM/D {}", p.name()))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                .draw_series(LineSeries::new(pm, BLACK.stroke_width(2)))?
+                .label("paper 002 ErM (units unstated)")
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))
                 });
-            chart.draw_series(erm.iter().map(|p| Circle::new(*p, 4, c.filled())))?;
             chart
-                .draw_series(LineSeries::new(era.clone(), c.stroke_width(1)))?
-                .label(format!("ErA/D {}", p.name()))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(1))
-                });
-            chart.draw_series(era.iter().map(|p| TriangleMarker::new(*p, 4, c.filled())))?;
+                .draw_series(LineSeries::new(pa, BLACK.mix(0.5).stroke_width(1)))?
+                .label("paper 002 ErA")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.mix(0.5)));
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 12))
+                .position(SeriesLabelPosition::LowerLeft)
+                .draw()?;
+            root.present()?;
         }
-        let pm: Vec<(f64, f64)> = PAPER_TABLE1
-            .iter()
-            .map(|(n, m, _)| (*n as f64, *m))
-            .collect();
-        let pa: Vec<(f64, f64)> = PAPER_TABLE1
-            .iter()
-            .map(|(n, _, a)| (*n as f64, *a))
-            .collect();
-        chart
-            .draw_series(LineSeries::new(pm, BLACK.stroke_width(2)))?
-            .label("paper 002 ErM (units unstated)")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
-        chart
-            .draw_series(LineSeries::new(pa, BLACK.mix(0.5).stroke_width(1)))?
-            .label("paper 002 ErA")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.mix(0.5)));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 12))
-            .position(SeriesLabelPosition::LowerLeft)
-            .draw()?;
-        root.present()?;
+        plot.save(&path)?;
     }
     eprintln!("  wrote {}", path.display());
     Ok(())
@@ -225,90 +231,97 @@ fn fig3(ctx: &Ctx) -> anyhow::Result<()> {
     let path = ctx.path("000-fig3.png");
     let mut panels = Vec::new();
     {
-        let root = BitMapBackend::new(&path, (1200, 800)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let areas = root.split_evenly((2, 3));
-        for (s, area) in sel.iter().zip(areas.iter()) {
-            let r = fit(&s.points, &FitOptions::new(FIG3_TERMS))?;
-            let r1 = fit(&s.points, &FitOptions::new(1))?;
-            let ell = study::silhouette_ellipse(r.gec.frame, &r.plane_points);
-            let e_ell = errors(&ell, &r.plane_points);
-            panels.push(Fig3Panel {
-                section: s.name.clone(),
-                terms: FIG3_TERMS,
-                gec_erm: r.errors.erm,
-                gec_era: r.errors.era,
-                ellipse_erm: e_ell.erm,
-                ellipse_era: e_ell.era,
-                lsq_ellipse_erm: r1.errors.erm,
-                lsq_ellipse_era: r1.errors.era,
-                gec: r.gec.clone(),
-            });
-            let orig: Vec<(f64, f64)> = r.plane_points.iter().map(|p| (p[0], p[1])).collect();
-            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-            for p in &orig {
-                lo = lo.min(p.0.min(p.1));
-                hi = hi.max(p.0.max(p.1));
-            }
-            let pad = 0.08 * (hi - lo);
-            let (cx, cy) = {
-                let n = orig.len() as f64;
-                (
-                    orig.iter().map(|p| p.0).sum::<f64>() / n,
-                    orig.iter().map(|p| p.1).sum::<f64>() / n,
-                )
-            };
-            let half = 0.5 * (hi - lo) + pad;
-            let mut chart = ChartBuilder::on(area)
-                .caption(
-                    format!("{} (GEC J={FIG3_TERMS})", s.name),
-                    ("sans-serif", 16),
-                )
-                .margin(8)
-                .x_label_area_size(25)
-                .y_label_area_size(35)
-                .build_cartesian_2d(cx - half..cx + half, cy - half..cy + half)?;
-            chart
-                .configure_mesh()
-                .label_style(("sans-serif", 10))
-                .draw()?;
-            let close = |mut v: Vec<(f64, f64)>| {
-                if let Some(f) = v.first().copied() {
-                    v.push(f);
+        let mut plot = PlotPng::new((1200, 800));
+        {
+            let root = plot.area();
+            root.fill(&WHITE)?;
+            let areas = root.split_evenly((2, 3));
+            for (s, area) in sel.iter().zip(areas.iter()) {
+                let r = fit(&s.points, &FitOptions::new(FIG3_TERMS))?;
+                let r1 = fit(&s.points, &FitOptions::new(1))?;
+                let ell = study::silhouette_ellipse(r.gec.frame, &r.plane_points);
+                let e_ell = errors(&ell, &r.plane_points);
+                panels.push(Fig3Panel {
+                    section: s.name.clone(),
+                    terms: FIG3_TERMS,
+                    gec_erm: r.errors.erm,
+                    gec_era: r.errors.era,
+                    ellipse_erm: e_ell.erm,
+                    ellipse_era: e_ell.era,
+                    lsq_ellipse_erm: r1.errors.erm,
+                    lsq_ellipse_era: r1.errors.era,
+                    gec: r.gec.clone(),
+                });
+                let orig: Vec<(f64, f64)> = r.plane_points.iter().map(|p| (p[0], p[1])).collect();
+                let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+                for p in &orig {
+                    lo = lo.min(p.0.min(p.1));
+                    hi = hi.max(p.0.max(p.1));
                 }
-                v
-            };
-            let g: Vec<(f64, f64)> = r
-                .gec
-                .sample_plane(400)
-                .iter()
-                .map(|p| (p[0], p[1]))
-                .collect();
-            let e: Vec<(f64, f64)> = ell.sample_plane(400).iter().map(|p| (p[0], p[1])).collect();
-            let key = |c: RGBColor| {
-                move |(x, y): (i32, i32)| PathElement::new([(x, y), (x + 16, y)], c.stroke_width(2))
-            };
-            chart
-                .draw_series(LineSeries::new(close(e), BLUE.stroke_width(2)))?
-                .label("standard ellipse")
-                .legend(key(BLUE));
-            chart
-                .draw_series(LineSeries::new(close(orig), RED.stroke_width(3)))?
-                .label("MakeHuman section")
-                .legend(key(RED));
-            chart
-                .draw_series(LineSeries::new(close(g), GREEN.stroke_width(2)))?
-                .label(format!("GEC, J = {FIG3_TERMS}"))
-                .legend(key(GREEN));
-            chart
-                .configure_series_labels()
-                .label_font(("sans-serif", 10))
-                .background_style(WHITE.mix(0.8))
-                .border_style(BLACK)
-                .position(SeriesLabelPosition::LowerRight)
-                .draw()?;
+                let pad = 0.08 * (hi - lo);
+                let (cx, cy) = {
+                    let n = orig.len() as f64;
+                    (
+                        orig.iter().map(|p| p.0).sum::<f64>() / n,
+                        orig.iter().map(|p| p.1).sum::<f64>() / n,
+                    )
+                };
+                let half = 0.5 * (hi - lo) + pad;
+                let mut chart = ChartBuilder::on(area)
+                    .caption(
+                        format!("{} (GEC J={FIG3_TERMS})", s.name),
+                        ("sans-serif", 16),
+                    )
+                    .margin(8)
+                    .x_label_area_size(25)
+                    .y_label_area_size(35)
+                    .build_cartesian_2d(cx - half..cx + half, cy - half..cy + half)?;
+                chart
+                    .configure_mesh()
+                    .label_style(("sans-serif", 10))
+                    .draw()?;
+                let close = |mut v: Vec<(f64, f64)>| {
+                    if let Some(f) = v.first().copied() {
+                        v.push(f);
+                    }
+                    v
+                };
+                let g: Vec<(f64, f64)> = r
+                    .gec
+                    .sample_plane(400)
+                    .iter()
+                    .map(|p| (p[0], p[1]))
+                    .collect();
+                let e: Vec<(f64, f64)> =
+                    ell.sample_plane(400).iter().map(|p| (p[0], p[1])).collect();
+                let key = |c: RGBColor| {
+                    move |(x, y): (i32, i32)| {
+                        PathElement::new([(x, y), (x + 16, y)], c.stroke_width(2))
+                    }
+                };
+                chart
+                    .draw_series(LineSeries::new(close(e), BLUE.stroke_width(2)))?
+                    .label("standard ellipse")
+                    .legend(key(BLUE));
+                chart
+                    .draw_series(LineSeries::new(close(orig), RED.stroke_width(3)))?
+                    .label("MakeHuman section")
+                    .legend(key(RED));
+                chart
+                    .draw_series(LineSeries::new(close(g), GREEN.stroke_width(2)))?
+                    .label(format!("GEC, J = {FIG3_TERMS}"))
+                    .legend(key(GREEN));
+                chart
+                    .configure_series_labels()
+                    .label_font(("sans-serif", 10))
+                    .background_style(WHITE.mix(0.8))
+                    .border_style(BLACK)
+                    .position(SeriesLabelPosition::LowerRight)
+                    .draw()?;
+            }
+            root.present()?;
         }
-        root.present()?;
+        plot.save(&path)?;
     }
     eprintln!("  wrote {}", path.display());
     ctx.write_json(

@@ -82,18 +82,17 @@ fn run_all(ctx: &Ctx, figures: &[Figure]) -> anyhow::Result<()> {
     let failed: Mutex<Vec<(usize, anyhow::Error)>> = Mutex::new(Vec::new());
     std::thread::scope(|s| {
         for _ in 0..threads {
-            s.spawn(|| loop {
-                let Some(&k) = order.get(next.fetch_add(1, Ordering::Relaxed)) else {
-                    break;
-                };
-                let f = &figures[k];
-                eprintln!("== figure {}/{} ({})", k + 1, figures.len(), f.id);
-                if let Err(e) = ctx.run(f) {
-                    eprintln!("[{}] failed: {e:#}", f.id);
-                    failed
-                        .lock()
-                        .unwrap_or_else(|p| p.into_inner())
-                        .push((k, e));
+            s.spawn(|| {
+                while let Some(&k) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let f = &figures[k];
+                    eprintln!("== figure {}/{} ({})", k + 1, figures.len(), f.id);
+                    if let Err(e) = ctx.run(f) {
+                        eprintln!("[{}] failed: {e:#}", f.id);
+                        failed
+                            .lock()
+                            .unwrap_or_else(|p| p.into_inner())
+                            .push((k, e));
+                    }
                 }
             });
         }

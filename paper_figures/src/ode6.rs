@@ -7,7 +7,7 @@ mod continuity;
 mod networks;
 mod table;
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use anyhow::Context;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
@@ -647,31 +647,37 @@ pub(crate) fn plot_profiles(
         .flat_map(|s| s.1.iter().map(|p| p.1))
         .fold(0.0, f64::max)
         * 1.1;
-    let root = BitMapBackend::new(path, (900, 420)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut ch = ChartBuilder::on(&root)
-        .caption(caption, ("sans-serif", 20))
-        .margin(10)
-        .x_label_area_size(35)
-        .y_label_area_size(55)
-        .build_cartesian_2d(0.0..x_max, 0.0..ymax)?;
-    ch.configure_mesh()
-        .x_desc(format!("u ({x_max} patches)"))
-        .y_desc("|S_uu|")
-        .draw()?;
-    let colours = [RGBColor(30, 90, 200), RGBColor(200, 40, 40)];
-    for (i, (name, pts)) in series.iter().enumerate() {
-        let c = colours[i % 2];
-        ch.draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))?
-            .label(*name)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
+    let mut plot = PlotPng::new((900, 420));
+    {
+        let root = plot.area();
+        root.fill(&WHITE)?;
+        let mut ch = ChartBuilder::on(&root)
+            .caption(caption, ("sans-serif", 20))
+            .margin(10)
+            .x_label_area_size(35)
+            .y_label_area_size(55)
+            .build_cartesian_2d(0.0..x_max, 0.0..ymax)?;
+        ch.configure_mesh()
+            .x_desc(format!("u ({x_max} patches)"))
+            .y_desc("|S_uu|")
+            .draw()?;
+        let colours = [RGBColor(30, 90, 200), RGBColor(200, 40, 40)];
+        for (i, (name, pts)) in series.iter().enumerate() {
+            let c = colours[i % 2];
+            ch.draw_series(LineSeries::new(pts.iter().copied(), c.stroke_width(2)))?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
+                });
+        }
+        ch.configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()?;
+        root.present().context("writing plot")?;
     }
-    ch.configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
-    root.present().context("writing plot")?;
+    plot.save(path)?;
     Ok(())
 }
 

@@ -14,7 +14,7 @@
 //! * `000-pde4-plate`: printed eqs 14-15 vs the Galerkin solution vs classical
 //!   clamped-plate values, with the Galerkin convergence.
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use anyhow::Context;
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
@@ -456,71 +456,75 @@ fn fig_plate(ctx: &Ctx) -> anyhow::Result<()> {
         "references": "Timoshenko & Woinowsky-Krieger tables 35 (uniform) and the central-load table; 0.00126532 Taylor & Govindjee 2004; sinusoidal loads: pdesculpt::pde4::fd (13-point FD, Richardson-extrapolated; it reproduces 0.00126532 to 1e-6)"}))?;
     let path = ctx.path("000-pde4-plate.png");
     {
-        let root = BitMapBackend::new(&path, (1100, 600)).into_drawing_area();
-        root.fill(&WHITE_RGB)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "clamped plate centre deflection: relative error vs plate theory",
-                ("sans-serif", 20),
-            )
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(60)
-            .build_cartesian_2d((1.5f64..150.0).log_scale(), (1e-5f64..10.0).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("terms M = N")
-            .y_desc("|w - w_ref| / w_ref")
-            .label_style(("sans-serif", 14))
-            .draw()?;
-        let colours = [
-            RED,
-            BLUE,
-            GREEN,
-            MAGENTA,
-            CYAN,
-            RGBColor(230, 140, 0),
-            RGBColor(110, 60, 20),
-        ];
-        for (i, (name, g, p)) in series.iter().enumerate() {
-            let c = colours[i % colours.len()];
-            let pts: Vec<(f64, f64)> = terms
-                .iter()
-                .zip(g)
-                .map(|(t, e)| (*t as f64, e.max(1e-5)))
-                .collect();
+        let mut plot = PlotPng::new((1100, 600));
+        {
+            let root = plot.area();
+            root.fill(&WHITE_RGB)?;
+            let mut chart = ChartBuilder::on(&root)
+                .caption(
+                    "clamped plate centre deflection: relative error vs plate theory",
+                    ("sans-serif", 20),
+                )
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(60)
+                .build_cartesian_2d((1.5f64..150.0).log_scale(), (1e-5f64..10.0).log_scale())?;
             chart
-                .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))?
-                .label(format!("Galerkin, {name}"))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
-                });
-            chart.draw_series(pts.iter().map(|p| Circle::new(*p, 3, c.filled())))?;
-            let pp: Vec<(f64, f64)> = terms
-                .iter()
-                .zip(p)
-                .map(|(t, e)| (*t as f64, e.clamp(1e-5, 10.0)))
-                .collect();
+                .configure_mesh()
+                .x_desc("terms M = N")
+                .y_desc("|w - w_ref| / w_ref")
+                .label_style(("sans-serif", 14))
+                .draw()?;
+            let colours = [
+                RED,
+                BLUE,
+                GREEN,
+                MAGENTA,
+                CYAN,
+                RGBColor(230, 140, 0),
+                RGBColor(110, 60, 20),
+            ];
+            for (i, (name, g, p)) in series.iter().enumerate() {
+                let c = colours[i % colours.len()];
+                let pts: Vec<(f64, f64)> = terms
+                    .iter()
+                    .zip(g)
+                    .map(|(t, e)| (*t as f64, e.max(1e-5)))
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))?
+                    .label(format!("Galerkin, {name}"))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(2))
+                    });
+                chart.draw_series(pts.iter().map(|p| Circle::new(*p, 3, c.filled())))?;
+                let pp: Vec<(f64, f64)> = terms
+                    .iter()
+                    .zip(p)
+                    .map(|(t, e)| (*t as f64, e.clamp(1e-5, 10.0)))
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(pp, c.mix(0.5).stroke_width(1)))?
+                    .label(format!("printed eqs 14-15, {name}"))
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], c.mix(0.5)));
+            }
             chart
-                .draw_series(LineSeries::new(pp, c.mix(0.5).stroke_width(1)))?
-                .label(format!("printed eqs 14-15, {name}"))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], c.mix(0.5)));
+                .draw_series(LineSeries::new(
+                    vec![(1.5, 5e-3), (22.0, 5e-3)],
+                    BLACK.stroke_width(1),
+                ))?
+                .label("0.5 %")
+                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK));
+            chart
+                .configure_series_labels()
+                .background_style(WHITE_RGB.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 12))
+                .position(SeriesLabelPosition::LowerRight)
+                .draw()?;
+            root.present()?;
         }
-        chart
-            .draw_series(LineSeries::new(
-                vec![(1.5, 5e-3), (22.0, 5e-3)],
-                BLACK.stroke_width(1),
-            ))?
-            .label("0.5 %")
-            .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], BLACK));
-        chart
-            .configure_series_labels()
-            .background_style(WHITE_RGB.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 12))
-            .position(SeriesLabelPosition::LowerRight)
-            .draw()?;
-        root.present()?;
+        plot.save(&path)?;
     }
     Ok(())
 }
@@ -583,44 +587,48 @@ fn fig_two_sided(ctx: &Ctx) -> anyhow::Result<()> {
         .iter()
         .flat_map(|c| c.1.iter())
         .fold(0.0f64, |a, b| a.max(*b));
-    let root = BitMapBackend::new(&path, (900, 520)).into_drawing_area();
-    root.fill(&WHITE_RGB)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "2-sided patch, Fourier mode cos 2πv of a line force",
-            ("sans-serif", 20),
-        )
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0f64..1.0, (lo * 1.1)..(hi * 1.1))?;
-    chart
-        .configure_mesh()
-        .x_desc("u")
-        .y_desc("mode amplitude")
-        .label_style(("sans-serif", 14))
-        .draw()?;
-    let colours = [BLACK, RED, BLUE, BLACK, RED, BLUE];
-    for (i, (name, w)) in curves.iter().enumerate() {
-        let c = colours[i];
-        let width = if i < 3 { 2 } else { 1 };
+    let mut plot = PlotPng::new((900, 520));
+    {
+        let root = plot.area();
+        root.fill(&WHITE_RGB)?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(
+                "2-sided patch, Fourier mode cos 2πv of a line force",
+                ("sans-serif", 20),
+            )
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(0.0f64..1.0, (lo * 1.1)..(hi * 1.1))?;
         chart
-            .draw_series(LineSeries::new(
-                us.iter().copied().zip(w.iter().copied()),
-                c.stroke_width(width),
-            ))?
-            .label(name.clone())
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(width))
-            });
+            .configure_mesh()
+            .x_desc("u")
+            .y_desc("mode amplitude")
+            .label_style(("sans-serif", 14))
+            .draw()?;
+        let colours = [BLACK, RED, BLUE, BLACK, RED, BLUE];
+        for (i, (name, w)) in curves.iter().enumerate() {
+            let c = colours[i];
+            let width = if i < 3 { 2 } else { 1 };
+            chart
+                .draw_series(LineSeries::new(
+                    us.iter().copied().zip(w.iter().copied()),
+                    c.stroke_width(width),
+                ))?
+                .label(name.clone())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 18, y)], c.stroke_width(width))
+                });
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE_RGB.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 12))
+            .position(SeriesLabelPosition::LowerLeft)
+            .draw()?;
+        root.present()?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE_RGB.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 12))
-        .position(SeriesLabelPosition::LowerLeft)
-        .draw()?;
-    root.present()?;
+    plot.save(&path)?;
     Ok(())
 }

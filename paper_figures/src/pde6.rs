@@ -2,7 +2,7 @@
 //! sections (Fig 5), the whole body front and side (Fig 6), and a vase from
 //! an analytic profile (Fig 7a) with its convergence study.
 
-use crate::common::{Ctx, Figure};
+use crate::common::{Ctx, Figure, PlotPng};
 use pdesculpt::body::parts::{makehuman_parts, reconstruct, BodyOptions, Part};
 use pdesculpt::curve::Fourier3;
 use pdesculpt::mesh::Mesh;
@@ -291,57 +291,61 @@ fn conditioning(ctx: &Ctx) -> anyhow::Result<()> {
     }
     let path = ctx.path("002-conditioning.png");
     {
-        let root = BitMapBackend::new(&path, (900, 560)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                "method-2 6x6 condition number vs harmonic n",
-                ("sans-serif", 22),
-            )
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(70)
-            .build_cartesian_2d(1f64..20f64, (1f64..1e26f64).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("harmonic n")
-            .y_desc("1-norm condition number")
-            .y_label_formatter(&|y| format!("{y:.0e}"))
-            .x_label_formatter(&|x| format!("{x:.0}"))
-            .label_style(("sans-serif", 14))
-            .draw()?;
-        let styles = [(-1.0, RED), (1.0, BLUE), (10.0, GREEN), (-1e-4, MAGENTA)];
-        for (a, colour) in styles {
-            let sel: Vec<&CondRow> = rows.iter().filter(|r| r.a == a).collect();
+        let mut plot = PlotPng::new((900, 560));
+        {
+            let root = plot.area();
+            root.fill(&WHITE)?;
+            let mut chart = ChartBuilder::on(&root)
+                .caption(
+                    "method-2 6x6 condition number vs harmonic n",
+                    ("sans-serif", 22),
+                )
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(70)
+                .build_cartesian_2d(1f64..20f64, (1f64..1e26f64).log_scale())?;
             chart
-                .draw_series(LineSeries::new(
-                    sel.iter()
-                        .map(|r| (r.n as f64, r.paper_method2.clamp(1.0, 1e26))),
-                    colour.stroke_width(1),
-                ))?
-                .label(format!("paper basis, a = {a}"))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(1))
-                });
+                .configure_mesh()
+                .x_desc("harmonic n")
+                .y_desc("1-norm condition number")
+                .y_label_formatter(&|y| format!("{y:.0e}"))
+                .x_label_formatter(&|x| format!("{x:.0}"))
+                .label_style(("sans-serif", 14))
+                .draw()?;
+            let styles = [(-1.0, RED), (1.0, BLUE), (10.0, GREEN), (-1e-4, MAGENTA)];
+            for (a, colour) in styles {
+                let sel: Vec<&CondRow> = rows.iter().filter(|r| r.a == a).collect();
+                chart
+                    .draw_series(LineSeries::new(
+                        sel.iter()
+                            .map(|r| (r.n as f64, r.paper_method2.clamp(1.0, 1e26))),
+                        colour.stroke_width(1),
+                    ))?
+                    .label(format!("paper basis, a = {a}"))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(1))
+                    });
+                chart
+                    .draw_series(LineSeries::new(
+                        sel.iter()
+                            .map(|r| (r.n as f64, r.stable_method2.clamp(1.0, 1e26))),
+                        colour.stroke_width(3),
+                    ))?
+                    .label(format!("stable basis, a = {a}"))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(3))
+                    });
+            }
             chart
-                .draw_series(LineSeries::new(
-                    sel.iter()
-                        .map(|r| (r.n as f64, r.stable_method2.clamp(1.0, 1e26))),
-                    colour.stroke_width(3),
-                ))?
-                .label(format!("stable basis, a = {a}"))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(3))
-                });
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.8))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 13))
+                .position(SeriesLabelPosition::UpperLeft)
+                .draw()?;
+            root.present()?;
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 13))
-            .position(SeriesLabelPosition::UpperLeft)
-            .draw()?;
-        root.present()?;
+        plot.save(&path)?;
     }
     eprintln!("  wrote {}", path.display());
     ctx.write_json("002-conditioning.json", &rows)?;
