@@ -42,7 +42,9 @@ pub fn register_font() {
 impl Ctx {
     /// Creates the output directory.
     pub fn new(out: PathBuf) -> anyhow::Result<Ctx> {
-        std::fs::create_dir_all(&out)?;
+        std::fs::create_dir_all(&out).map_err(|e| {
+            anyhow::anyhow!("cannot create the output directory {}: {e}", out.display())
+        })?;
         register_font();
         Ok(Ctx { out })
     }
