@@ -112,10 +112,14 @@ pub struct PlotPng {
 
 impl PlotPng {
     pub fn new(size: (u32, u32)) -> PlotPng {
-        PlotPng {
-            size,
-            rgb: vec![0; size.0 as usize * size.1 as usize * 3],
-        }
+        PlotPng::from_rgb(size, vec![0; size.0 as usize * size.1 as usize * 3])
+    }
+
+    /// A picture to draw over: `rgb` holds `size.0 * size.1` pixels, rows
+    /// from the top, three bytes each.
+    pub fn from_rgb(size: (u32, u32), rgb: Vec<u8>) -> PlotPng {
+        debug_assert_eq!(rgb.len(), size.0 as usize * size.1 as usize * 3);
+        PlotPng { size, rgb }
     }
 
     /// The drawing area over the whole picture (drop it before `save`).
@@ -127,19 +131,23 @@ impl PlotPng {
         plotters::prelude::BitMapBackend::with_buffer(&mut self.rgb, self.size).into_drawing_area()
     }
 
-    /// Writes the picture (opaque) to `path`.
-    pub fn save(&self, path: &Path) -> anyhow::Result<()> {
+    /// The picture as an opaque image.
+    pub fn into_image(self) -> pdesculpt::render::Image {
         let rgba = self
             .rgb
             .chunks_exact(3)
             .flat_map(|p| [p[0], p[1], p[2], 255])
             .collect();
-        let image = pdesculpt::render::Image {
+        pdesculpt::render::Image {
             width: self.size.0 as usize,
             height: self.size.1 as usize,
             rgba,
-        };
-        image.save_png(path)?;
+        }
+    }
+
+    /// Writes the picture (opaque) to `path`.
+    pub fn save(self, path: &Path) -> anyhow::Result<()> {
+        self.into_image().save_png(path)?;
         Ok(())
     }
 }

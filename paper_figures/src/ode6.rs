@@ -103,9 +103,7 @@ pub(crate) fn annotate(
     view: View,
     z_up: bool,
 ) -> anyhow::Result<Image> {
-    use plotters::prelude::{
-        BitMapBackend, Color, IntoDrawingArea, IntoFont, PathElement, RGBColor, Text,
-    };
+    use plotters::prelude::{Color, IntoFont, PathElement, RGBColor, Text};
     let lines = captions
         .iter()
         .map(|c| c.lines().count())
@@ -124,8 +122,9 @@ pub(crate) fn annotate(
             }
         }
     }
+    let mut plot = PlotPng::from_rgb((w as u32, h as u32), buf);
     {
-        let root = BitMapBackend::with_buffer(&mut buf, (w as u32, h as u32)).into_drawing_area();
+        let root = plot.area();
         let black = RGBColor(0, 0, 0);
         root.draw(&Text::new(
             title.to_string(),
@@ -185,14 +184,7 @@ pub(crate) fn annotate(
         }
         root.present().context("drawing the annotations")?;
     }
-    let mut out = Image::new(w, h, [255, 255, 255, 255]);
-    for y in 0..h {
-        for x in 0..w {
-            let o = 3 * (y * w + x);
-            out.put(x as i64, y as i64, [buf[o], buf[o + 1], buf[o + 2], 255]);
-        }
-    }
-    Ok(out)
+    Ok(plot.into_image())
 }
 
 fn overlay(c: &Curve, colour: [u8; 4]) -> Overlay {
