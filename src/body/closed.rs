@@ -407,6 +407,7 @@ fn hand_specs(
         child_tangent_scales: Vec::new(),
         continuity: Default::default(),
         cap_tangents: false,
+        child_rises: Vec::new(),
     });
     arms.hands
         .push((hand, arms.wrists[arms.wrists.len() - 1].cut_angles[0]));

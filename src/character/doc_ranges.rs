@@ -15,6 +15,7 @@
 //! | `...shape.gec.x, y` | equal lengths, at most [`SECTION_HARMONICS`] harmonics |
 //! | a collapsed section (circle `r = 0`, ellipse `a = 0` or `b = 0`) | only as the first section of a part with `closed_start` or the last with `closed_end` |
 //! | `transitions[i].cut_angles`, `tangent_scale`, `child_tangent_scales` | checked by name when built (`character::assembly`: front angles in `[0, pi]`, back in `[pi, 2 pi]`; each scale in `(0,` [`crate::character::assembly::TANGENT_SCALE_MAX`]`]`, one per child or none) |
+//! | `transitions[i].child_rises` | checked by name when built (`character::assembly`: each start in `[0,` [`crate::character::rise::RISE_MAX`]`]`, one `[-z, +z]` pair per child or none) |
 //! | `edits` | at most [`LOG_EDITS`]; each its own ranges (`character::edit::validate_params`) |
 //! | `props` | at most [`DOC_PROPS`]; each `PropSpec::validate` |
 //! | names of parts, transitions, removed parts, props | non-empty, unique |

@@ -23,10 +23,12 @@ pub mod measure;
 pub mod part;
 pub mod props;
 pub mod ring;
+pub mod rise;
 pub mod seam;
 pub mod spec;
 pub mod tangent_cap;
 pub mod transition;
+pub mod turn_back;
 
 pub use assembly::{build_model, Model, Resolution};
 

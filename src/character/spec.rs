@@ -157,6 +157,15 @@ pub struct TransitionSpec {
     /// written before it and for the closed body.
     #[serde(default, skip_serializing_if = "is_false")]
     pub cap_tangents: bool,
+    /// Per child, where its blend starts to move in depth (model z, the
+    /// side view's horizontal axis), on the loop's -z and +z sides: `s0`
+    /// in `[0, RISE_MAX]` (`character::transition::late_weight`; 0 is
+    /// the plain Hermite blend). A column first rises along its parent,
+    /// then turns toward the child ring, as a drawn side view does at
+    /// square shoulders (sketch-guided modeling fits them to the drawing,
+    /// `sketch::tangent_fit`). Empty: 0 for every child.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub child_rises: Vec<[f64; 2]>,
 }
 
 /// Cross-tangent scale of the shoulder transition. Measured on the base and
@@ -198,6 +207,7 @@ impl TransitionSpec {
                     child_tangent_scales,
                     continuity: Continuity::default(),
                     cap_tangents: false,
+                    child_rises: Vec::new(),
                 }
             };
         let (scale, per_child) = if arms == head {

@@ -73,12 +73,15 @@
 
 use super::part::PartSurface;
 use crate::character::spec::{Continuity, End};
-use crate::mesh::{add, dist, dot, norm, scale, sub};
+use crate::mesh::{add, dist, dot, scale, sub};
 use std::f64::consts::PI;
 
 pub use super::ring::quintic;
 use super::ring::{cut_indices, hermite, RING_VERTICES, SEAM_VERTICES};
+pub use super::rise::{late_weight, set_rises, RISE_MAX};
 use super::seam::{seam_tangent, seam_weight, Seam};
+use super::turn_back::centroid;
+pub use super::turn_back::{column_scales, TURN_BACK_EXPONENT, TURN_BACK_SCALE_MAX};
 use crate::character::spec::TransitionSpec;
 
 /// A run of a child's loop.
@@ -177,21 +180,35 @@ pub struct ChildTransition {
     pub side: Vec<(usize, f64)>,
     /// Cubic (C1) or quintic (C2) Hermite blend.
     pub continuity: Continuity,
+    /// Per loop vertex start `s0` of the late depth blend
+    /// ([`late_weight`], [`set_rises`]); empty: the plain blend.
+    pub rise_vertex: Vec<f64>,
 }
 
 impl ChildTransition {
     /// The cross-tangent scale at loop parameter `tau`: the per-vertex
     /// scales interpolated linearly (periodic), or `ell` when none.
     pub fn ell_at(&self, tau: f64) -> f64 {
-        let n = self.ell_vertex.len();
-        if n == 0 {
-            return self.ell;
-        }
-        let t = tau.rem_euclid(n as f64);
-        let i = (t.floor() as usize).min(n - 1);
-        let f = t - i as f64;
-        self.ell_vertex[i] * (1.0 - f) + self.ell_vertex[(i + 1) % n] * f
+        periodic_lerp(&self.ell_vertex, tau).unwrap_or(self.ell)
     }
+
+    /// The late depth blend's start at loop parameter `tau` (0 when none).
+    pub fn rise_at(&self, tau: f64) -> f64 {
+        periodic_lerp(&self.rise_vertex, tau).unwrap_or(0.0)
+    }
+}
+
+/// Per-vertex values `v` interpolated linearly at `tau` (periodic); `None`
+/// when there are none.
+fn periodic_lerp(v: &[f64], tau: f64) -> Option<f64> {
+    let n = v.len();
+    if n == 0 {
+        return None;
+    }
+    let t = tau.rem_euclid(n as f64);
+    let i = (t.floor() as usize).min(n - 1);
+    let f = t - i as f64;
+    Some(v[i] * (1.0 - f) + v[(i + 1) % n] * f)
 }
 
 /// Loop point and cross tangent at continuous loop parameter `tau`.
@@ -278,45 +295,70 @@ pub fn eval(
     blend(ct, &column(ct, parent, child, seams, tau), s, d)
 }
 
-/// The Hermite data of the transition's column at loop parameter `tau`:
-/// `[L, T, A, Q, D, B]` (module docs; `A` and `B` zero for a `c1` blend),
-/// which [`blend`] weighs at any `s`.
+/// One column of a transition: its Hermite data `[L, T, A, Q, D, B]`
+/// (module docs; `A` and `B` zero for a `c1` blend) and the start of its
+/// late depth blend ([`late_weight`]), which [`blend`] weighs at any `s`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Column {
+    pub data: [[f64; 3]; 6],
+    pub rise: f64,
+}
+
+/// The column of the transition at loop parameter `tau`.
 pub fn column(
     ct: &ChildTransition,
     parent: &PartSurface,
     child: &PartSurface,
     seams: &[Seam],
     tau: f64,
-) -> [[f64; 3]; 6] {
+) -> Column {
     let (l, t) = loop_eval(ct, parent, seams, tau);
     let th = ct.theta0 + ct.sigma * 2.0 * PI * tau / ct.n as f64;
     let q = child.section(ct.child_u, 0).eval(th);
     let ell = ct.ell_at(tau);
     let dq = scale(child.section(ct.child_u, 1).eval(th), ell);
+    let rise = ct.rise_at(tau);
     if ct.continuity == Continuity::C1 {
-        return [l, t, [0.0; 3], q, dq, [0.0; 3]];
+        let data = [l, t, [0.0; 3], q, dq, [0.0; 3]];
+        return Column { data, rise };
     }
     let a = loop_second(ct, parent, seams, tau);
     let b = scale(child.section(ct.child_u, 2).eval(th), ell * ell);
-    [l, t, a, q, dq, b]
+    Column {
+        data: [l, t, a, q, dq, b],
+        rise,
+    }
 }
 
-/// The d-th s-derivative at `s` of the column with Hermite data `c`
-/// ([`column`]): cubic for `c1`, quintic for `c2`.
-pub fn blend(ct: &ChildTransition, c: &[[f64; 3]; 6], s: f64, d: usize) -> [f64; 3] {
-    let [l, t, a, q, dq, b] = *c;
-    if ct.continuity == Continuity::C1 {
+/// The d-th s-derivative at `s` of column `c`: cubic for `c1`, quintic
+/// for `c2`. With a late depth blend (`c.rise` > 0) the depth (z) part of
+/// the chord `Q - L` is weighed by [`late_weight`] instead of the basis'
+/// own position weight; the tangent terms are unchanged, so the column
+/// still leaves `L` along `T` and enters `Q` along `D` (and for `c2` with
+/// `A`, `B`): the joins keep their order of continuity.
+pub fn blend(ct: &ChildTransition, c: &Column, s: f64, d: usize) -> [f64; 3] {
+    let [l, t, a, q, dq, b] = c.data;
+    let quintic_blend = ct.continuity != Continuity::C1;
+    let (h, pos): ([f64; 6], [f64; 2]) = if quintic_blend {
+        let h = quintic(s, d);
+        (h, [h[0], h[3]])
+    } else {
         let h = hermite(s, d);
-        return add(
-            add(scale(l, h[0]), scale(t, h[1])),
-            add(scale(q, h[2]), scale(dq, h[3])),
-        );
-    }
-    let h = quintic(s, d);
-    [l, t, a, q, dq, b]
+        ([h[0], h[1], 0.0, h[2], h[3], 0.0], [h[0], h[2]])
+    };
+    let tangents = [t, a, dq, b]
         .iter()
-        .zip(h)
-        .fold([0.0; 3], |acc, (v, w)| add(acc, scale(*v, w)))
+        .zip([h[1], h[2], h[4], h[5]])
+        .fold([0.0; 3], |acc, (v, w)| add(acc, scale(*v, w)));
+    let mut out = add(tangents, add(scale(l, pos[0]), scale(q, pos[1])));
+    if c.rise > 0.0 {
+        // the depth part of the chord and of the child's end derivatives
+        // follow the late weights instead
+        let late = late_weight(s, c.rise, d, quintic_blend);
+        out[2] +=
+            (q[2] - l[2]) * (late[0] - pos[1]) + dq[2] * (late[1] - h[4]) + b[2] * (late[2] - h[5]);
+    }
+    out
 }
 
 /// Builds a child transition: loop runs, scale and the angular alignment of
@@ -354,6 +396,7 @@ pub fn child_transition(
         sigma: 1.0,
         side,
         continuity,
+        rise_vertex: Vec::new(),
     };
     let pts: Vec<[f64; 3]> = (0..n)
         .map(|i| loop_eval(&ct, parent, seams, i as f64).0)
@@ -384,87 +427,6 @@ pub fn child_transition(
     ct.sigma = best.2;
     ct.ell_vertex = column_scales(&ct, parent, &pts, &q);
     ct
-}
-
-/// How strongly the per-column cross-tangent scale follows the column's
-/// chord in a child that turns back against its parent
-/// ([`column_scales`]). Measured on the closed body (README): crossing
-/// triangle pairs of the base and the five checked morphs, 703 with one
-/// scale, 249 at 3, 202 at 4.5, 169 at 6 (95 of them in the mitten hands,
-/// which this does not touch); uncapped, 6 raised caucasian-female-young's
-/// max 2.56 -> 3.06 %. With [`TURN_BACK_SCALE_MAX`] 6 leaves no shoulder
-/// crossing on the base and the male bodies (at 4.5 the base kept a fold
-/// at loop columns 2-3, rows 2-4, where the scale fell too slowly from the
-/// back corner) and the error columns within 0.2 % of the height.
-pub const TURN_BACK_EXPONENT: f64 = 6.0;
-
-/// Largest per-column scale of a turning-back child, relative to its
-/// `ell` ([`column_scales`]). At a cut the seam leaves the parent ring
-/// along the parent's u-tangent, which is also the corner column's cross
-/// tangent, so the corner column's first rows run along the seam; with the
-/// corner's long chord the uncapped scale (up to 2.3 `ell`) pushed them
-/// past the neighbouring arc column (caucasian-male-old: loop columns
-/// 15-16, rows 0-1, at the front of the armpit).
-pub const TURN_BACK_SCALE_MAX: f64 = 1.3;
-
-/// Per loop vertex cross-tangent scales of a child that turns back against
-/// its parent (an arm hanging from the shoulder: the parent's end tangent
-/// points up, the child's ring lies below and outside the loop). With one
-/// scale `ell` for every column, the columns at the loop's corners (the
-/// cuts, where the parent's arc turns into a seam: the front and back of
-/// the armpit) have chords to the child ring up to 1.7 times those under
-/// the armpit, and their short Hermite tangents make them sweep flat across
-/// the rising neighbours: the sheet folds through itself at rows 1-5
-/// (`body::diagnose_self_crossings`). Here column i gets
-/// `ell min((c_i / c_mean)^(TURN_BACK_EXPONENT g), TURN_BACK_SCALE_MAX)`, `c_i` its chord
-/// `|Q(theta_i) - L_i|`, `c_mean` the loop's mean chord, `g = max(0, -cos)` of the angle between the parent's end
-/// direction and the loop-centroid-to-ring-centre direction: 0 for a child
-/// that continues the parent (legs, a head, every sketch transition: the
-/// scales are then `ell`, unchanged), growing as the child turns back. The
-/// cross tangents stay parallel to the parts' u-tangents, so the joins stay
-/// C1 with the column's scale (measured with it) and the seams G1 (both
-/// sides' tangents are still opposite modulo the seam's).
-pub fn column_scales(
-    ct: &ChildTransition,
-    parent: &PartSurface,
-    pts: &[[f64; 3]],
-    ring: &crate::curve::Fourier3,
-) -> Vec<f64> {
-    let n = pts.len();
-    let axis = scale(parent.section(ct.parent_u, 1).c0, ct.sgn);
-    let towards = sub(ring.c0, centroid(pts));
-    let c = dot(axis, towards) / (norm(axis) * norm(towards)).max(f64::MIN_POSITIVE);
-    let g = (-c).max(0.0);
-    if n == 0 || g <= 0.0 || !g.is_finite() {
-        return Vec::new();
-    }
-    let chords: Vec<f64> = pts
-        .iter()
-        .enumerate()
-        .map(|(i, p)| {
-            let th = ct.theta0 + ct.sigma * 2.0 * PI * i as f64 / n as f64;
-            dist(*p, ring.eval(th))
-        })
-        .collect();
-    let mean = chords.iter().sum::<f64>() / n as f64;
-    if !(mean.is_finite() && mean > 0.0) {
-        return Vec::new();
-    }
-    chords
-        .iter()
-        .map(|c| {
-            ct.ell
-                * (c / mean)
-                    .max(f64::MIN_POSITIVE)
-                    .powf(TURN_BACK_EXPONENT * g)
-                    .min(TURN_BACK_SCALE_MAX)
-        })
-        .collect()
-}
-
-fn centroid(p: &[[f64; 3]]) -> [f64; 3] {
-    let s = p.iter().fold([0.0; 3], |a, b| add(a, *b));
-    scale(s, 1.0 / p.len().max(1) as f64)
 }
 
 /// A transition with its resolved parts, seams and child transitions.

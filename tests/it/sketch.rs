@@ -466,6 +466,29 @@ fn out_of_range_transition_and_prop_numbers_are_named_errors() {
         e.contains("child_tangent_scales has 2 factors for 3 children"),
         "{e}"
     );
+    // per-child late depth blends: each start in [0, RISE_MAX], one pair
+    // per child
+    let rises = |r: Vec<[f64; 2]>| {
+        let mut d = derived.clone();
+        d.transition_mut("shoulders")
+            .expect("the shoulders")
+            .child_rises = r;
+        build_document(&d, Path::new("."), Resolution::default(), false)
+            .expect_err("refused")
+            .to_string()
+    };
+    let e = rises(vec![[0.0; 2], [0.5, 0.95], [0.0; 2]]);
+    assert!(
+        e.contains("child_rises[1][1] must be in [0, 0.9], got 0.95"),
+        "{e}"
+    );
+    let e = rises(vec![[0.0; 2], [-0.1, 0.0], [0.0; 2]]);
+    assert!(
+        e.contains("child_rises[1][0] must be in [0, 0.9], got -0.1"),
+        "{e}"
+    );
+    let e = rises(vec![[0.5; 2]]);
+    assert!(e.contains("child_rises has 1 pairs for 3 children"), "{e}");
     // likewise a prop translated by 1e300
     let prop = PropSpec {
         name: "p".into(),

@@ -9,7 +9,7 @@
 //! and the fit keeps them.)
 
 use crate::sketch_draw::build;
-use pdesculpt::character::assembly::{transition_points, Resolution};
+use pdesculpt::character::assembly::{transition_points, BlendTry, Resolution};
 use pdesculpt::pipeline::Built;
 use std::path::PathBuf;
 
@@ -60,6 +60,46 @@ fn a_drawings_shoulders_follow_its_drawn_front_with_fitted_tangents() {
     );
 }
 
+/// The side-view bound of issue 28 (relative to the height). The corpus's
+/// chubby figure has square shoulders in its side view; with the plain
+/// blend the head's transition cut the back's corner, 3.00 % of the height
+/// inside the drawing, with the fitted late depth blend 1.74 %.
+const SQUARE_SIDE_MAX: f64 = 0.02;
+
+/// The fit starts the head's depth blend late on the side of the back
+/// (its loop's -z side) and the model follows the drawn square shoulders.
+#[test]
+fn square_shoulders_are_followed_by_a_late_depth_blend() {
+    let b = corpus("chubby");
+    let shoulders = b
+        .doc
+        .transitions()
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .expect("shoulders");
+    let head = shoulders
+        .children
+        .iter()
+        .position(|c| c == "head")
+        .expect("the head is a child");
+    let rise = shoulders.child_rises.get(head).copied().unwrap_or([0.0; 2]);
+    assert!(rise[0] > 0.0, "the head's back blends as before: {rise:?}");
+    let side = b
+        .report
+        .quality
+        .whole
+        .views
+        .iter()
+        .find(|v| v.view == "side")
+        .expect("side");
+    assert!(
+        side.max_rel <= SQUARE_SIDE_MAX,
+        "side profile error {:.2} % of the height (rises {:?})",
+        100.0 * side.max_rel,
+        shoulders.child_rises
+    );
+}
+
 /// What the fit measures is what the mesh holds: every point
 /// `transition_points` gives at the document's factors is a vertex of the
 /// built mesh.
@@ -71,7 +111,8 @@ fn the_fitted_points_are_the_meshs_vertices() {
     let verts = &b.model.mesh.positions;
     for t in b.doc.transitions() {
         for c in 0..t.children.len() {
-            let pts = transition_points(t, &b.model.parts, c, rows, &[1.0]).expect("planned");
+            let pts = transition_points(t, &b.model.parts, c, rows, &[BlendTry::document(t, c)])
+                .expect("planned");
             for p in &pts[0] {
                 let d = verts
                     .iter()

@@ -9,7 +9,9 @@ use crate::character::part::{build_part, PartSurface};
 use crate::character::ring::{cut_table, RING_VERTICES};
 use crate::character::seam::{seams as make_seams, Seam};
 use crate::character::spec::{End, PartSpec, TransitionSpec};
-use crate::character::transition::{blend, child_transition, column, Built, ChildTransition};
+use crate::character::transition::{
+    blend, child_transition, column, Built, ChildTransition, Column,
+};
 use crate::character::ModelError;
 use crate::mesh::Mesh;
 use weave::{part_tubes, transition_mesh};
@@ -169,14 +171,33 @@ pub fn build_model_with(
     })
 }
 
+/// One way to blend a planned child ([`transition_points`]): a factor on
+/// its tangent scale and the starts of its late depth blend
+/// (`TransitionSpec::child_rises`, replacing the document's).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BlendTry {
+    pub factor: f64,
+    pub rise: [f64; 2],
+}
+
+impl BlendTry {
+    /// Child `c` of `t` blended as the document says.
+    pub fn document(t: &TransitionSpec, c: usize) -> Self {
+        BlendTry {
+            factor: 1.0,
+            rise: t.child_rises.get(c).copied().unwrap_or([0.0; 2]),
+        }
+    }
+}
+
 /// The points the mesh of transition `t` holds for its child `child` (an
-/// index into `t.children`) with the child's tangent factor
-/// (`TransitionSpec::child_scale`) times each of `factors`: per factor,
-/// rows `s = r / rows` for `r` in `0..=rows` at every loop vertex (row 0
-/// the loop on the parent, row `rows` the child's ring), as
-/// [`build_model`] places them with `rows` transition rows: `rows + 1`
-/// rows of `points.len() / (rows + 1)` columns. `parts` are the solved
-/// parts the transition joins. Every cross-tangent scale of a child
+/// index into `t.children`) blended each way of `tries` (its tangent factor,
+/// `TransitionSpec::child_scale`, times the try's, with the try's late
+/// depth blend): per try, rows `s = r / rows` for `r` in `0..=rows` at
+/// every loop vertex (row 0 the loop on the parent, row `rows` the child's
+/// ring), as [`build_model`] places them with `rows` transition rows:
+/// `rows + 1` rows of `points.len() / (rows + 1)` columns. `parts` are the
+/// solved parts the transition joins. Every cross-tangent scale of a child
 /// transition is its factor times a length of the geometry
 /// (`character::transition::child_transition`, `column_scales`,
 /// `tangent_cap`), so each factor scales the one planned child.
@@ -185,7 +206,7 @@ pub fn transition_points(
     parts: &[PartSurface],
     child: usize,
     rows: usize,
-    factors: &[f64],
+    tries: &[BlendTry],
 ) -> Result<Vec<Vec<[f64; 3]>>, ModelError> {
     let (pi, ci, seams, cuts) = plan_frame(t, parts)?;
     let Some(&idx) = ci.get(child) else {
@@ -195,11 +216,12 @@ pub fn transition_points(
         )));
     };
     let planned = plan_child(t, parts, pi, idx, child, &seams, &cuts)?;
-    let points = |f: f64| {
+    let points = |b: &BlendTry| {
         let mut ct = planned.clone();
-        ct.ell *= f;
-        ct.ell_vertex.iter_mut().for_each(|e| *e *= f);
-        let columns: Vec<[[f64; 3]; 6]> = (0..ct.n)
+        ct.ell *= b.factor;
+        ct.ell_vertex.iter_mut().for_each(|e| *e *= b.factor);
+        crate::character::rise::set_rises(&mut ct, &parts[pi], &seams, b.rise);
+        let columns: Vec<Column> = (0..ct.n)
             .map(|i| column(&ct, &parts[pi], &parts[idx], &seams, i as f64))
             .collect();
         let mut out = Vec::with_capacity(ct.n * (rows + 1));
@@ -209,7 +231,7 @@ pub fn transition_points(
         }
         out
     };
-    Ok(factors.iter().map(|&f| points(f)).collect())
+    Ok(tries.iter().map(points).collect())
 }
 
 /// The parts of `specs`, from `cache` when given (solving only the parts
@@ -236,6 +258,32 @@ fn find_part(parts: &[PartSurface], n: &str) -> Result<usize, ModelError> {
         .iter()
         .position(|p| p.name == n)
         .ok_or_else(|| ModelError::Document(format!("unknown part '{n}'")))
+}
+
+/// Refuses a transition's late depth blend starts (`child_rises`) outside
+/// `[0, RISE_MAX]` or not one pair per child (`k`).
+fn check_rises(t: &TransitionSpec, k: usize) -> Result<(), ModelError> {
+    use crate::character::rise::RISE_MAX;
+    if !t.child_rises.is_empty() && t.child_rises.len() != k {
+        return Err(ModelError::Document(format!(
+            "transition '{}': child_rises has {} pairs for {k} children (one per child, or none)",
+            t.name,
+            t.child_rises.len()
+        )));
+    }
+    let bad = t.child_rises.iter().enumerate().find_map(|(i, r)| {
+        (0..2)
+            .find(|&j| !(0.0..=RISE_MAX).contains(&r[j]))
+            .map(|j| (i, j, r[j]))
+    });
+    if let Some((i, j, r)) = bad {
+        return Err(ModelError::Document(format!(
+            "transition '{}': child_rises[{i}][{j}] must be in [0, {RISE_MAX}], got {}",
+            t.name,
+            crate::limits::Num(r)
+        )));
+    }
+    Ok(())
 }
 
 /// Refuses a transition's tangent scale outside `(0, TANGENT_SCALE_MAX]`
@@ -269,6 +317,7 @@ fn check_transition(
             t.child_tangent_scales.len()
         )));
     }
+    check_rises(t, k)?;
     let km1 = k.saturating_sub(1);
     let out_of_range = t.cut_angles.iter().enumerate().find(|&(i, &a)| {
         let (lo, hi) = if i < km1 { (0.0, PI) } else { (PI, 2.0 * PI) };
@@ -377,6 +426,9 @@ fn plan_child(
     );
     if t.cap_tangents {
         crate::character::tangent_cap::cap_tangents(&mut ct, &parts[pi], seams);
+    }
+    if let Some(r) = t.child_rises.get(c) {
+        crate::character::rise::set_rises(&mut ct, &parts[pi], seams, *r);
     }
     Ok(ct)
 }

@@ -340,6 +340,7 @@ pub fn derive(
             child_tangent_scales: Vec::new(),
             continuity: Default::default(),
             cap_tangents: true,
+            child_rises: Vec::new(),
         },
         TransitionSpec {
             name: "topside".into(),
@@ -356,6 +357,7 @@ pub fn derive(
             child_tangent_scales: Vec::new(),
             continuity: Default::default(),
             cap_tangents: true,
+            child_rises: Vec::new(),
         },
     ];
     Ok(Derived {
