@@ -24,11 +24,11 @@ pub mod part;
 pub mod props;
 pub mod ring;
 pub mod rise;
+pub mod runs;
 pub mod seam;
 pub mod spec;
 pub mod tangent_cap;
 pub mod transition;
-pub mod turn_back;
 
 pub use assembly::{build_model, Model, Resolution};
 

@@ -19,10 +19,7 @@
 //! their shared tangent planes. Sketch-guided modeling fits `s0` per child
 //! and side to the drawing (`sketch::tangent_fit`).
 
-use super::part::PartSurface;
 use super::ring::{hermite, quintic};
-use super::seam::Seam;
-use super::transition::{loop_eval, ChildTransition};
 
 /// Largest start of a late depth blend ([`late_weight`]): past it the
 /// column turns in depth within a tenth of the transition, about one of
@@ -54,39 +51,6 @@ pub fn late_weight(s: f64, s0: f64, d: usize, quintic_blend: bool) -> [f64; 3] {
         let h = hermite(u, d);
         [h[2] / chain, w * h[3] / chain, 0.0]
     }
-}
-
-/// Sets the per-vertex starts of `ct`'s late depth blend: `rise[0]` on the
-/// loop's -z side, `rise[1]` on its +z side, interpolated by each loop
-/// vertex's depth `zeta` in [-1, 1] (its z from the loop's mid-depth over
-/// half the loop's depth): `s0 = rise[0] max(-zeta, 0) + rise[1] max(zeta, 0)`,
-/// so the columns at the loop's sides (its seams) keep the plain blend and
-/// the start varies smoothly around the loop. Both 0: none.
-pub fn set_rises(ct: &mut ChildTransition, parent: &PartSurface, seams: &[Seam], rise: [f64; 2]) {
-    ct.rise_vertex.clear();
-    if rise.iter().all(|r| *r <= 0.0) {
-        return;
-    }
-    let z: Vec<f64> = (0..ct.n)
-        .map(|i| loop_eval(ct, parent, seams, i as f64).0[2])
-        .collect();
-    let (lo, hi) = z
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(*v), b.max(*v))
-        });
-    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-    if !(half > 0.0 && half.is_finite()) {
-        return;
-    }
-    ct.rise_vertex = z
-        .iter()
-        .map(|v| {
-            let zeta = ((v - mid) / half).clamp(-1.0, 1.0);
-            rise[0].clamp(0.0, RISE_MAX) * (-zeta).max(0.0)
-                + rise[1].clamp(0.0, RISE_MAX) * zeta.max(0.0)
-        })
-        .collect();
 }
 
 #[cfg(test)]

@@ -73,92 +73,15 @@
 
 use super::part::PartSurface;
 use crate::character::spec::{Continuity, End};
-use crate::mesh::{add, dist, dot, scale, sub};
+use crate::mesh::{add, dist, dot, norm, scale, sub};
 use std::f64::consts::PI;
 
 pub use super::ring::quintic;
-use super::ring::{cut_indices, hermite, RING_VERTICES, SEAM_VERTICES};
-pub use super::rise::{late_weight, set_rises, RISE_MAX};
+use super::ring::{hermite, RING_VERTICES, SEAM_VERTICES};
+pub use super::rise::{late_weight, RISE_MAX};
+pub use super::runs::{loop_len, loop_runs, Run};
 use super::seam::{seam_tangent, seam_weight, Seam};
-use super::turn_back::centroid;
-pub use super::turn_back::{column_scales, TURN_BACK_EXPONENT, TURN_BACK_SCALE_MAX};
 use crate::character::spec::TransitionSpec;
-
-/// A run of a child's loop.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Run {
-    /// Parent ring from index `from` for `count` steps (increasing phi).
-    Arc { from: usize, count: usize },
-    /// Seam j traversed front to back (`reversed = false`) or back to front.
-    Seam { j: usize, reversed: bool },
-}
-
-/// The runs of child `c` (0-based) of `k`.
-pub fn loop_runs(c: usize, k: usize, cuts: &[(usize, usize)]) -> Vec<Run> {
-    let n = RING_VERTICES;
-    let cut_indices = |j: usize, k: usize| cut_indices(j, k, cuts);
-    let steps = |a: usize, b: usize| (b + n - a) % n;
-    if k == 1 {
-        return vec![Run::Arc { from: 0, count: n }];
-    }
-    let j = c + 1; // seam to the right of child c is seam j (1-based), left is j - 1
-    if c == 0 {
-        let (f, b) = cut_indices(1, k);
-        vec![
-            Run::Arc {
-                from: f,
-                count: steps(f, b),
-            },
-            Run::Seam {
-                j: 0,
-                reversed: true,
-            },
-        ]
-    } else if c + 1 == k {
-        let (f, b) = cut_indices(k - 1, k);
-        vec![
-            Run::Arc {
-                from: b,
-                count: steps(b, f),
-            },
-            Run::Seam {
-                j: k - 2,
-                reversed: false,
-            },
-        ]
-    } else {
-        let (fl, bl) = cut_indices(j - 1, k);
-        let (fr, br) = cut_indices(j, k);
-        vec![
-            Run::Arc {
-                from: fr,
-                count: steps(fr, fl),
-            },
-            Run::Seam {
-                j: j - 2,
-                reversed: false,
-            },
-            Run::Arc {
-                from: bl,
-                count: steps(bl, br),
-            },
-            Run::Seam {
-                j: j - 1,
-                reversed: true,
-            },
-        ]
-    }
-}
-
-/// Number of loop vertices (each run contributes its steps).
-pub fn loop_len(runs: &[Run]) -> usize {
-    runs.iter()
-        .map(|r| match r {
-            Run::Arc { count, .. } => *count,
-            Run::Seam { .. } => SEAM_VERTICES + 1,
-        })
-        .sum()
-}
 
 /// One child's transition surface.
 #[derive(Clone, Debug)]
@@ -361,6 +284,39 @@ pub fn blend(ct: &ChildTransition, c: &Column, s: f64, d: usize) -> [f64; 3] {
     out
 }
 
+/// Sets the per-vertex starts of `ct`'s late depth blend: `rise[0]` on the
+/// loop's -z side, `rise[1]` on its +z side, interpolated by each loop
+/// vertex's depth `zeta` in [-1, 1] (its z from the loop's mid-depth over
+/// half the loop's depth): `s0 = rise[0] max(-zeta, 0) + rise[1] max(zeta, 0)`,
+/// so the columns at the loop's sides (its seams) keep the plain blend and
+/// the start varies smoothly around the loop. Both 0: none.
+pub fn set_rises(ct: &mut ChildTransition, parent: &PartSurface, seams: &[Seam], rise: [f64; 2]) {
+    ct.rise_vertex.clear();
+    if rise.iter().all(|r| *r <= 0.0) {
+        return;
+    }
+    let z: Vec<f64> = (0..ct.n)
+        .map(|i| loop_eval(ct, parent, seams, i as f64).0[2])
+        .collect();
+    let (lo, hi) = z
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    if !(half > 0.0 && half.is_finite()) {
+        return;
+    }
+    ct.rise_vertex = z
+        .iter()
+        .map(|v| {
+            let zeta = ((v - mid) / half).clamp(-1.0, 1.0);
+            rise[0].clamp(0.0, RISE_MAX) * (-zeta).max(0.0)
+                + rise[1].clamp(0.0, RISE_MAX) * zeta.max(0.0)
+        })
+        .collect();
+}
+
 /// Builds a child transition: loop runs, scale and the angular alignment of
 /// the child ring to the loop (best rigid match of centred points over
 /// 720 start angles and both directions).
@@ -429,6 +385,86 @@ pub fn child_transition(
     ct
 }
 
+/// How strongly the per-column cross-tangent scale follows the column's
+/// chord in a child that turns back against its parent
+/// ([`column_scales`]). Measured on the closed body (README): crossing
+/// triangle pairs of the base and the five checked morphs, 703 with one
+/// scale, 249 at 3, 202 at 4.5, 169 at 6 (95 of them in the mitten hands,
+/// which this does not touch); uncapped, 6 raised caucasian-female-young's
+/// max 2.56 -> 3.06 %. With [`TURN_BACK_SCALE_MAX`] 6 leaves no shoulder
+/// crossing on the base and the male bodies (at 4.5 the base kept a fold
+/// at loop columns 2-3, rows 2-4, where the scale fell too slowly from the
+/// back corner) and the error columns within 0.2 % of the height.
+pub const TURN_BACK_EXPONENT: f64 = 6.0;
+
+/// Largest per-column scale of a turning-back child, relative to its
+/// `ell` ([`column_scales`]). At a cut the seam leaves the parent ring
+/// along the parent's u-tangent, which is also the corner column's cross
+/// tangent, so the corner column's first rows run along the seam; with the
+/// corner's long chord the uncapped scale (up to 2.3 `ell`) pushed them
+/// past the neighbouring arc column (caucasian-male-old: loop columns
+/// 15-16, rows 0-1, at the front of the armpit).
+pub const TURN_BACK_SCALE_MAX: f64 = 1.3;
+
+/// Per loop vertex cross-tangent scales of a child that turns back against
+/// its parent (an arm hanging from the shoulder: the parent's end tangent
+/// points up, the child's ring lies below and outside the loop). With one
+/// scale `ell` for every column, the columns at the loop's corners (the
+/// cuts, where the parent's arc turns into a seam: the front and back of
+/// the armpit) have chords to the child ring up to 1.7 times those under
+/// the armpit, and their short Hermite tangents make them sweep flat across
+/// the rising neighbours: the sheet folds through itself at rows 1-5
+/// (`body::diagnose_self_crossings`). Here column i gets
+/// `ell min((c_i / c_mean)^(TURN_BACK_EXPONENT g), TURN_BACK_SCALE_MAX)`, `c_i` its chord
+/// `|Q(theta_i) - L_i|`, `c_mean` the loop's mean chord, `g = max(0, -cos)` of the angle between the parent's end
+/// direction and the loop-centroid-to-ring-centre direction: 0 for a child
+/// that continues the parent (legs, a head, every sketch transition: the
+/// scales are then `ell`, unchanged), growing as the child turns back. The
+/// cross tangents stay parallel to the parts' u-tangents, so the joins stay
+/// C1 with the column's scale (measured with it) and the seams G1 (both
+/// sides' tangents are still opposite modulo the seam's).
+pub fn column_scales(
+    ct: &ChildTransition,
+    parent: &PartSurface,
+    pts: &[[f64; 3]],
+    ring: &crate::curve::Fourier3,
+) -> Vec<f64> {
+    let n = pts.len();
+    let axis = scale(parent.section(ct.parent_u, 1).c0, ct.sgn);
+    let towards = sub(ring.c0, centroid(pts));
+    let c = dot(axis, towards) / (norm(axis) * norm(towards)).max(f64::MIN_POSITIVE);
+    let g = (-c).max(0.0);
+    if n == 0 || g <= 0.0 || !g.is_finite() {
+        return Vec::new();
+    }
+    let chords: Vec<f64> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let th = ct.theta0 + ct.sigma * 2.0 * PI * i as f64 / n as f64;
+            dist(*p, ring.eval(th))
+        })
+        .collect();
+    let mean = chords.iter().sum::<f64>() / n as f64;
+    if !(mean.is_finite() && mean > 0.0) {
+        return Vec::new();
+    }
+    chords
+        .iter()
+        .map(|c| {
+            ct.ell
+                * (c / mean)
+                    .max(f64::MIN_POSITIVE)
+                    .powf(TURN_BACK_EXPONENT * g)
+                    .min(TURN_BACK_SCALE_MAX)
+        })
+        .collect()
+}
+
+fn centroid(p: &[[f64; 3]]) -> [f64; 3] {
+    let s = p.iter().fold([0.0; 3], |a, b| add(a, *b));
+    scale(s, 1.0 / p.len().max(1) as f64)
+}
 /// A transition with its resolved parts, seams and child transitions.
 pub(super) struct Built {
     pub(super) spec: TransitionSpec,

@@ -220,7 +220,7 @@ pub fn transition_points(
         let mut ct = planned.clone();
         ct.ell *= b.factor;
         ct.ell_vertex.iter_mut().for_each(|e| *e *= b.factor);
-        crate::character::rise::set_rises(&mut ct, &parts[pi], &seams, b.rise);
+        crate::character::transition::set_rises(&mut ct, &parts[pi], &seams, b.rise);
         let columns: Vec<Column> = (0..ct.n)
             .map(|i| column(&ct, &parts[pi], &parts[idx], &seams, i as f64))
             .collect();
@@ -428,7 +428,7 @@ fn plan_child(
         crate::character::tangent_cap::cap_tangents(&mut ct, &parts[pi], seams);
     }
     if let Some(r) = t.child_rises.get(c) {
-        crate::character::rise::set_rises(&mut ct, &parts[pi], seams, *r);
+        crate::character::transition::set_rises(&mut ct, &parts[pi], seams, *r);
     }
     Ok(ct)
 }
