@@ -1,7 +1,8 @@
-//! The sketched transitions' tangent factors fitted to the drawing
-//! (`sketch::tangent_fit`), on the corpus's arms_apart (its two arms at
-//! different angles): with the derived factors its model missed the drawn
-//! front by 1.00 % of the height, with the fitted ones 0.74 %. (The test
+//! The sketched transitions' tangent factors (and late depth blends)
+//! fitted to the drawing (`sketch::tangent_fit`), on the corpus's
+//! arms_apart (its two arms at different angles): with the derived
+//! factors its model missed the drawn front by 1.00 % of the height,
+//! with the fitted ones 0.74 %; and on chubby's square shoulders. (The test
 //! first used the cartoon with a head half the height, 1.66 % with the
 //! derived factors; since the arms' chains run along their rims and a
 //! guarded end leaves along its chord, docs/drawing-corpus.md nineteenth
@@ -10,7 +11,9 @@
 
 use crate::sketch_draw::build;
 use pdesculpt::character::assembly::{transition_points, BlendTry, Resolution};
+use pdesculpt::character::spec::TransitionSpec;
 use pdesculpt::pipeline::Built;
+use pdesculpt::sketch::quality::ViewQuality;
 use std::path::PathBuf;
 
 /// The whole-model front profile error bound, relative to the height:
@@ -31,28 +34,36 @@ fn corpus(name: &str) -> Built {
     .unwrap_or_else(|e| panic!("{name} builds: {e}"))
 }
 
+/// The built document's shoulders transition.
+fn shoulders(b: &Built) -> &TransitionSpec {
+    b.doc
+        .transitions()
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .expect("shoulders")
+}
+
+/// The whole model's profile error in `view` ("front", "side").
+fn whole_view<'a>(b: &'a Built, view: &str) -> &'a ViewQuality {
+    b.report
+        .quality
+        .whole
+        .views
+        .iter()
+        .find(|v| v.view == view)
+        .unwrap_or_else(|| panic!("no {view} view"))
+}
+
 /// The fit takes the shoulders' factors off the derived ones (arms 0.7,
 /// head 1) and the model follows the drawn front closer than with them.
 #[test]
 fn a_drawings_shoulders_follow_its_drawn_front_with_fitted_tangents() {
     let b = corpus("arms_apart");
-    let shoulders = b
-        .doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("shoulders");
+    let shoulders = shoulders(&b);
     let derived = [0.7, 1.0, 0.7];
     let fitted: Vec<f64> = (0..3).map(|c| shoulders.child_scale(c)).collect();
     assert_ne!(fitted, derived, "the fit kept every derived factor");
-    let front = b
-        .report
-        .quality
-        .whole
-        .views
-        .iter()
-        .find(|v| v.view == "front")
-        .expect("front");
+    let front = whole_view(&b, "front");
     assert!(
         front.max_rel <= FITTED_FRONT_MAX,
         "front profile error {:.2} % of the height (factors {fitted:?})",
@@ -71,12 +82,7 @@ const SQUARE_SIDE_MAX: f64 = 0.02;
 #[test]
 fn square_shoulders_are_followed_by_a_late_depth_blend() {
     let b = corpus("chubby");
-    let shoulders = b
-        .doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("shoulders");
+    let shoulders = shoulders(&b);
     let head = shoulders
         .children
         .iter()
@@ -84,14 +90,7 @@ fn square_shoulders_are_followed_by_a_late_depth_blend() {
         .expect("the head is a child");
     let rise = shoulders.child_rises.get(head).copied().unwrap_or([0.0; 2]);
     assert!(rise[0] > 0.0, "the head's back blends as before: {rise:?}");
-    let side = b
-        .report
-        .quality
-        .whole
-        .views
-        .iter()
-        .find(|v| v.view == "side")
-        .expect("side");
+    let side = whole_view(&b, "side");
     assert!(
         side.max_rel <= SQUARE_SIDE_MAX,
         "side profile error {:.2} % of the height (rises {:?})",
