@@ -256,9 +256,12 @@ pub fn column(
 /// The d-th s-derivative at `s` of column `c`: cubic for `c1`, quintic
 /// for `c2`. With a late depth blend (`c.rise` > 0) the depth (z) part of
 /// the chord `Q - L` is weighed by [`late_weight`] instead of the basis'
-/// own position weight; the tangent terms are unchanged, so the column
-/// still leaves `L` along `T` and enters `Q` along `D` (and for `c2` with
-/// `A`, `B`): the joins keep their order of continuity.
+/// own position weight, and the depth parts of the child's end terms `D`
+/// (and `B`) by its squeezed end weights; `T` (and `A`) and the other
+/// coordinates keep the basis' weights. Every late weight has the basis'
+/// own end derivatives, so the column still leaves `L` along `T` and
+/// enters `Q` along `D` (and for `c2` with `A`, `B`): the joins keep their
+/// order of continuity (`tests/it/transition_rise.rs`).
 pub fn blend(ct: &ChildTransition, c: &Column, s: f64, d: usize) -> [f64; 3] {
     let [l, t, a, q, dq, b] = c.data;
     let quintic_blend = ct.continuity != Continuity::C1;

@@ -55,6 +55,7 @@ mod template_jaw;
 mod template_side;
 mod template_study;
 mod template_tbsm;
+mod transition_rise;
 mod tui;
 mod tui_commands;
 mod tui_e2e;
