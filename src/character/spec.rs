@@ -186,7 +186,8 @@ impl TransitionSpec {
     /// both legs, one seam through `crotch`) and `shoulders` (the torso's end
     /// to the left arm, the head and the right arm, seams through
     /// `shoulder_apex`, tangent factors `arms` for both arms and `head` for
-    /// the head), fixed cut angles, C1. Shared by sketch-guided modeling
+    /// the head), fixed cut angles (`sketch::derive` widens the shoulders'
+    /// to a wide neck just above the torso), C1. Shared by sketch-guided modeling
     /// (`sketch::derive`) and the closed body (`body::joins`).
     pub fn humanoid(
         crotch: [f64; 3],

@@ -7,7 +7,10 @@ use super::cuts::{join_heights, CutPath};
 use super::poly::slice;
 use super::segment::{landmarks, regions, shoulder_top, Landmarks};
 use super::SketchError;
-use crate::character::doc::{BodyPlan, KeySection, Level, PartSpec, SectionShape, TransitionSpec};
+use crate::character::doc::{
+    BodyPlan, KeySection, Level, PartSpec, SectionShape, SectionSpec, TransitionSpec,
+};
+use std::f64::consts::{FRAC_PI_3, TAU};
 
 pub(super) use super::derived::{check_side_height, check_side_position};
 pub use super::derived::{Derived, HEIGHT_MISMATCH};
@@ -221,6 +224,11 @@ fn derive_upright(
     );
     for t in &mut transitions {
         t.cap_tangents = true;
+        if t.name == "shoulders" {
+            if let (Some(end), Some(neck)) = (torso.sections.last(), parts[1].sections.first()) {
+                t.cut_angles = neck_cuts(end, neck);
+            }
+        }
     }
     Ok(Derived {
         plan: BodyPlan::Humanoid,
@@ -230,4 +238,114 @@ fn derive_upright(
         parts,
         transitions,
     })
+}
+
+/// The largest |cos| of a shoulders cut on the torso's end ring: an arm
+/// keeps at least the ring's arc within 18 degrees of its side (the
+/// quadruped's cuts are bounded the same way).
+const NECK_CUT_MAX_COS: f64 = 0.95;
+
+/// The shoulders transition's cut angles when a wide neck starts close
+/// above the torso's end ring `end`: the fixed cuts (a third of pi either
+/// side of the ring's middle, at half the torso's width) move toward the
+/// sides of the neck's first ring `neck` by the weight `1 - gap / a`
+/// (`gap`: the distance between the two rings' centres, `a`: the torso
+/// ring's half width), front cuts then the back ones mirrored;
+/// empty (the fixed cuts) when the neck is no wider than they are or
+/// starts a half width or more above. With the fixed cuts a neck as wide
+/// as the torso right above it (a big-headed figure's) got half the
+/// ring: the seams between its arcs and the arms' ran outward up a short
+/// transition and the arms' pieces folded between them (random_33 of the
+/// issue-range seed-4242 set: 175 degrees beside the neck). A neck far
+/// above the ring leaves the transition room to narrow (the corpus's
+/// random_1, 0.36 of the height above: moved cuts folded it more).
+fn neck_cuts(end: &SectionSpec, neck: &SectionSpec) -> Vec<f64> {
+    let half = |s: &SectionSpec| match s.shape {
+        SectionShape::Circle { r } => r,
+        SectionShape::Ellipse { a, .. } => a,
+        SectionShape::Gec { .. } => 0.0,
+    };
+    let (a, a1) = (half(end), half(neck));
+    let gap = crate::mesh::dist(end.centre, neck.centre);
+    let w = (1.0 - gap / a).clamp(0.0, 1.0);
+    let a0 = a * end.e1[0];
+    if !(a0.abs() > 0.0 && a1 > 0.0 && w > 0.0) {
+        return Vec::new();
+    }
+    let cut = |x: f64| {
+        ((x - end.centre[0]) / a0)
+            .clamp(-NECK_CUT_MAX_COS, NECK_CUT_MAX_COS)
+            .acos()
+    };
+    let (l, r) = (cut(neck.centre[0] - a1), cut(neck.centre[0] + a1));
+    let (l, r) = (l.max(r), l.min(r));
+    let (fixed_l, fixed_r) = (2.0 * FRAC_PI_3, FRAC_PI_3);
+    if l <= fixed_l && r >= fixed_r {
+        return Vec::new();
+    }
+    let l = fixed_l + w * (l.max(fixed_l) - fixed_l);
+    let r = fixed_r + w * (r.min(fixed_r) - fixed_r);
+    vec![l, r, TAU - l, TAU - r]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(x: f64, y: f64, a: f64, e1x: f64) -> SectionSpec {
+        SectionSpec {
+            u: 0.0,
+            centre: [x, y, 0.0],
+            e1: [e1x, 0.0, 0.0],
+            e2: [0.0, 0.0, 1.0],
+            shape: SectionShape::Ellipse {
+                a,
+                b: 0.5 * a,
+                offset: 0.0,
+            },
+        }
+    }
+
+    /// A neck narrower than half the torso keeps the fixed cuts (no angles
+    /// written); one 0.8 of the torso's width right above it is cut at its
+    /// sides, the back cuts mirrored; one wider than the torso at the
+    /// bound; one a half width above, halfway from the fixed cuts; one a
+    /// whole width above, not at all.
+    #[test]
+    fn the_shoulders_are_cut_at_a_wide_neck_s_sides_when_it_starts_close() {
+        let torso = ring(0.0, 1.0, 1.0, 1.0);
+        assert!(neck_cuts(&torso, &ring(0.0, 1.0, 0.4, 1.0)).is_empty());
+        assert!(neck_cuts(&torso, &ring(0.0, 1.0, 0.5, 1.0)).is_empty());
+        let tol = crate::check::tol::ROUNDING;
+        let c = neck_cuts(&torso, &ring(0.0, 1.0, 0.8, 1.0));
+        let want = [(-0.8f64).acos(), 0.8f64.acos()];
+        assert_eq!(c.len(), 4, "{c:?}");
+        for (k, w) in want.iter().enumerate() {
+            assert!((c[k] - w).abs() < tol, "{c:?}");
+            assert!((c[2 + k] - (TAU - w)).abs() < tol, "{c:?}");
+        }
+        // a torso ring whose e1 runs along -x sees the same neck
+        let flipped = neck_cuts(&ring(0.0, 1.0, 1.0, -1.0), &ring(0.0, 1.0, 0.8, 1.0));
+        assert!(
+            c.iter().zip(&flipped).all(|(a, b)| (a - b).abs() < tol),
+            "{flipped:?}"
+        );
+        let wide = neck_cuts(&torso, &ring(0.0, 1.0, 1.3, 1.0));
+        assert!((wide[1] - NECK_CUT_MAX_COS.acos()).abs() < tol, "{wide:?}");
+        // a neck off the ring's middle widens only the side it reaches, by
+        // 1 - 0.35 (its centre is 0.35 from the ring's)
+        let off = neck_cuts(&torso, &ring(0.35, 1.0, 0.4, 1.0));
+        let r = FRAC_PI_3 + 0.65 * (0.75f64.acos() - FRAC_PI_3);
+        assert!(
+            (off[0] - 2.0 * FRAC_PI_3).abs() < tol && (off[1] - r).abs() < tol,
+            "{off:?}"
+        );
+        // farther above, less
+        let half = neck_cuts(&torso, &ring(0.0, 1.5, 0.8, 1.0));
+        assert!(
+            (half[1] - 0.5 * (FRAC_PI_3 + want[1])).abs() < tol,
+            "{half:?}"
+        );
+        assert!(neck_cuts(&torso, &ring(0.0, 2.0, 0.8, 1.0)).is_empty());
+    }
 }
