@@ -13,6 +13,7 @@ use crate::character::doc::{
 use std::f64::consts::{FRAC_PI_3, TAU};
 
 pub(super) use super::derived::{check_side_height, check_side_position};
+use super::derived::{e1_half_width, ring_angle};
 pub use super::derived::{Derived, HEIGHT_MISMATCH};
 pub use super::keysection::{GEC_TERMS, SECTION_SLACK};
 pub(super) use super::part_slices::part_from_region;
@@ -240,11 +241,6 @@ fn derive_upright(
     })
 }
 
-/// The largest |cos| of a shoulders cut on the torso's end ring: an arm
-/// keeps at least the ring's arc within 18 degrees of its side (the
-/// quadruped's cuts are bounded the same way).
-const NECK_CUT_MAX_COS: f64 = 0.95;
-
 /// The shoulders transition's cut angles when a wide neck starts close
 /// above the torso's end ring `end`: the fixed cuts (a third of pi either
 /// side of the ring's middle, at half the torso's width) move toward the
@@ -260,23 +256,14 @@ const NECK_CUT_MAX_COS: f64 = 0.95;
 /// above the ring leaves the transition room to narrow (the corpus's
 /// random_1, 0.36 of the height above: moved cuts folded it more).
 fn neck_cuts(end: &SectionSpec, neck: &SectionSpec) -> Vec<f64> {
-    let half = |s: &SectionSpec| match s.shape {
-        SectionShape::Circle { r } => r,
-        SectionShape::Ellipse { a, .. } => a,
-        SectionShape::Gec { .. } => 0.0,
-    };
-    let (a, a1) = (half(end), half(neck));
+    let (a, a1) = (e1_half_width(&end.shape), e1_half_width(&neck.shape));
     let gap = crate::mesh::dist(end.centre, neck.centre);
     let w = (1.0 - gap / a).clamp(0.0, 1.0);
     let a0 = a * end.e1[0];
     if !(a0.abs() > 0.0 && a1 > 0.0 && w > 0.0) {
         return Vec::new();
     }
-    let cut = |x: f64| {
-        ((x - end.centre[0]) / a0)
-            .clamp(-NECK_CUT_MAX_COS, NECK_CUT_MAX_COS)
-            .acos()
-    };
+    let cut = |x: f64| ring_angle(end.centre[0], a0, x);
     let (l, r) = (cut(neck.centre[0] - a1), cut(neck.centre[0] + a1));
     let (l, r) = (l.max(r), l.min(r));
     let (fixed_l, fixed_r) = (2.0 * FRAC_PI_3, FRAC_PI_3);
@@ -309,8 +296,8 @@ mod tests {
     /// A neck narrower than half the torso keeps the fixed cuts (no angles
     /// written); one 0.8 of the torso's width right above it is cut at its
     /// sides, the back cuts mirrored; one wider than the torso at the
-    /// bound; one a half width above, halfway from the fixed cuts; one a
-    /// whole width above, not at all.
+    /// bound; one half a half width above, halfway from the fixed cuts;
+    /// one a half width above, not at all; degenerate rings, not at all.
     #[test]
     fn the_shoulders_are_cut_at_a_wide_neck_s_sides_when_it_starts_close() {
         let torso = ring(0.0, 1.0, 1.0, 1.0);
@@ -331,7 +318,10 @@ mod tests {
             "{flipped:?}"
         );
         let wide = neck_cuts(&torso, &ring(0.0, 1.0, 1.3, 1.0));
-        assert!((wide[1] - NECK_CUT_MAX_COS.acos()).abs() < tol, "{wide:?}");
+        assert!(
+            (wide[1] - crate::sketch::derived::CUT_MAX_COS.acos()).abs() < tol,
+            "{wide:?}"
+        );
         // a neck off the ring's middle widens only the side it reaches, by
         // 1 - 0.35 (its centre is 0.35 from the ring's)
         let off = neck_cuts(&torso, &ring(0.35, 1.0, 0.4, 1.0));
@@ -347,5 +337,9 @@ mod tests {
             "{half:?}"
         );
         assert!(neck_cuts(&torso, &ring(0.0, 2.0, 0.8, 1.0)).is_empty());
+        for bad in [ring(0.0, 1.0, 0.0, 1.0), ring(0.0, f64::NAN, 1.0, 1.0)] {
+            assert!(neck_cuts(&bad, &ring(0.0, 1.0, 0.8, 1.0)).is_empty());
+            assert!(neck_cuts(&torso, &bad).is_empty());
+        }
     }
 }

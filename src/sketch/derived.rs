@@ -7,10 +7,36 @@ use super::align::Alignment;
 use super::quadruped::landmarks::QuadLandmarks;
 use super::segment::Landmarks;
 use super::SketchError;
-use crate::character::doc::{BodyPlan, PartSpec, TransitionSpec};
+use crate::character::doc::{BodyPlan, PartSpec, SectionShape, TransitionSpec};
 
 /// Largest allowed side/front height mismatch (relative).
 pub const HEIGHT_MISMATCH: f64 = 0.05;
+
+/// The largest |cos| of a derived transition's cut on its parent's end
+/// ring (the quadruped's cuts at its seam apexes, the humanoid's shoulders
+/// at a wide neck): the child beside a cut keeps at least the ring's arc
+/// within 18 degrees of its side. Not tuned: the quadruped's first bound,
+/// kept for both.
+pub const CUT_MAX_COS: f64 = 0.95;
+
+/// The angle, in `[0, pi]`, of the end-ring point whose e1 coordinate is
+/// `x` on a ring centred at `centre` with half width `half` along e1
+/// (negative when e1 runs along -x), `|cos|` at most [`CUT_MAX_COS`].
+pub(super) fn ring_angle(centre: f64, half: f64, x: f64) -> f64 {
+    ((x - centre) / half)
+        .clamp(-CUT_MAX_COS, CUT_MAX_COS)
+        .acos()
+}
+
+/// A section's half width along its e1 (0 for a GEC, whose extent is not
+/// one number).
+pub(super) fn e1_half_width(shape: &SectionShape) -> f64 {
+    match shape {
+        SectionShape::Circle { r } => *r,
+        SectionShape::Ellipse { a, .. } => *a,
+        SectionShape::Gec { .. } => 0.0,
+    }
+}
 
 /// Parts and transitions derived from the outlines.
 #[derive(Clone, Debug)]

@@ -47,6 +47,16 @@ pub(crate) fn write_pair(
     (f, s)
 }
 
+/// A sketch-built document's shoulders transition (shared by the sketch
+/// tests that look at it).
+pub(crate) fn shoulders(b: &Built) -> &pdesculpt::character::spec::TransitionSpec {
+    b.doc
+        .transitions()
+        .iter()
+        .find(|t| t.name == "shoulders")
+        .expect("a shoulders transition")
+}
+
 pub(crate) fn build(front: &Path, side: &Path, height: Option<f64>) -> Result<Built, BuildError> {
     let doc = CharacterDoc::from_inputs(
         Inputs {

@@ -3,9 +3,7 @@
 //! by `cargo run --release --example sketch_corpus -- write DIR --seed 7777
 //! --random 40 --ranges issue` as random_9 and random_6).
 
-use crate::sketch_draw::build;
-use pdesculpt::character::spec::TransitionSpec;
-use pdesculpt::pipeline::Built;
+use crate::sketch_draw::{build, shoulders};
 use std::path::PathBuf;
 
 /// The whole model's profile error bound of these checks, relative to the
@@ -25,14 +23,6 @@ fn pair(name: &str) -> (PathBuf, PathBuf) {
         data.join(format!("{name}_front.svg")),
         data.join(format!("{name}_side.svg")),
     )
-}
-
-fn shoulders(b: &Built) -> &TransitionSpec {
-    b.doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("a shoulders transition")
 }
 
 /// A torso narrowing in a nearly level shelf under the armpits has an end

@@ -9,9 +9,8 @@
 //! and twentieth measurements, its derived factors are already the best
 //! and the fit keeps them.)
 
-use crate::sketch_draw::build;
+use crate::sketch_draw::{build, shoulders};
 use pdesculpt::character::assembly::{transition_points, BlendTry, Resolution};
-use pdesculpt::character::spec::TransitionSpec;
 use pdesculpt::pipeline::Built;
 use pdesculpt::sketch::quality::ViewQuality;
 use std::path::PathBuf;
@@ -32,15 +31,6 @@ fn corpus(name: &str) -> Built {
         None,
     )
     .unwrap_or_else(|e| panic!("{name} builds: {e}"))
-}
-
-/// The built document's shoulders transition.
-fn shoulders(b: &Built) -> &TransitionSpec {
-    b.doc
-        .transitions()
-        .iter()
-        .find(|t| t.name == "shoulders")
-        .expect("shoulders")
 }
 
 /// The whole model's profile error in `view` ("front", "side").

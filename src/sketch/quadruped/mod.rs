@@ -54,13 +54,11 @@
 pub mod landmarks;
 pub use landmarks::{landmarks, QuadLandmarks};
 
-use super::derived::{check_side_height, Derived};
+use super::derived::{check_side_height, e1_half_width, ring_angle, Derived};
 use super::part_slices::part_from_region;
 use super::segment::{interval, reach, Pick, Region, SidePick, GAP_FRACTION};
 use super::SketchError;
-use crate::character::doc::{
-    BodyPlan, End, KeySection, Level, PartSpec, SectionShape, TransitionSpec,
-};
+use crate::character::doc::{BodyPlan, End, KeySection, Level, PartSpec, TransitionSpec};
 
 /// Legs start this many join half-bands (`GAP_FRACTION` x height) below
 /// their gap tops: one band leaves the leg's top section in the rounded
@@ -270,8 +268,8 @@ fn leg_regions(
 /// an angle in (0, pi) (front cut; the back cut mirrors it), moved toward
 /// 90 degrees by `1 - blend`.
 fn cut_angle(ring_centre: f64, half_width: f64, x: f64, l: f64) -> f64 {
-    let c = ((x - ring_centre) / half_width.max(f64::MIN_POSITIVE)).clamp(-0.95, 0.95);
-    std::f64::consts::FRAC_PI_2 + l * (c.acos() - std::f64::consts::FRAC_PI_2)
+    let a = ring_angle(ring_centre, half_width.max(f64::MIN_POSITIVE), x);
+    std::f64::consts::FRAC_PI_2 + l * (a - std::f64::consts::FRAC_PI_2)
 }
 
 fn half_width(p: &PartSpec, end: End) -> (f64, f64) {
@@ -279,12 +277,7 @@ fn half_width(p: &PartSpec, end: End) -> (f64, f64) {
         End::Start => &p.sections[0],
         End::End => &p.sections[p.sections.len() - 1],
     };
-    let a = match &s.shape {
-        SectionShape::Circle { r } => *r,
-        SectionShape::Ellipse { a, .. } => *a,
-        SectionShape::Gec { .. } => 0.0,
-    };
-    (s.centre[0], a)
+    (s.centre[0], e1_half_width(&s.shape))
 }
 
 /// Derives a quadruped's parts and transitions from validated,
