@@ -31,6 +31,9 @@ use serde::Serialize;
 
 /// An edge turning by more than this (degrees) is creased (the issue's 60).
 pub const CREASED_EDGE_DEG: f64 = 60.0;
+/// Adjacent triangles turning by more than this (degrees) are a fold (the
+/// issue's bound on the largest dihedral turn, [`Bounds::ISSUE`]).
+pub const FOLD_DEG: f64 = 120.0;
 
 /// Arc-length samples per outline (as `profile::distance::MIN_SAMPLES`).
 const SAMPLES: usize = 4000;
@@ -61,7 +64,7 @@ impl Bounds {
     pub const ISSUE: Bounds = Bounds {
         profile_front: 0.015,
         profile_side: 0.02,
-        dihedral_deg: 120.0,
+        dihedral_deg: FOLD_DEG,
         creased_rel: 0.3,
         outside: 0.01,
     };

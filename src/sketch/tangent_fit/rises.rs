@@ -2,7 +2,7 @@
 //! fitted to the drawings (`character::rise`; module docs of
 //! [`super`]).
 
-use super::Scene;
+use super::{Guard, Scene};
 use crate::character::assembly::{transition_points, BlendTry};
 use crate::character::part::PartSurface;
 use crate::character::spec::TransitionSpec;
@@ -32,7 +32,11 @@ impl Scene<'_> {
     /// tries [`FIT_RISES`] in turn (the -z side with the +z side's plain
     /// blend, then the +z side with the -z side's pick) at each child's
     /// fitted tangent factor (`factors`, by child), kept as
-    /// [`Scene::fit_members`] keeps a factor.
+    /// [`Scene::fit_members`] keeps a factor, but a rise may crease (a
+    /// square shoulder is a drawn corner) as long as it turns no more
+    /// than a fold or the plain blend ([`Guard::NoFold`]; with the
+    /// factors' guard the corpus's side misses grew back,
+    /// docs/drawing-corpus.md, twenty-fourth measurement).
     pub(super) fn fit_rises(
         &mut self,
         t: &TransitionSpec,
@@ -70,7 +74,7 @@ impl Scene<'_> {
                     slot.push(p);
                 }
             }
-            rise[side] = FIT_RISES[self.fit_members(&me, tried)];
+            rise[side] = FIT_RISES[self.fit_members(&me, tried, Guard::NoFold)];
         }
         Ok(rise)
     }
