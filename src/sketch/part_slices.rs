@@ -123,7 +123,7 @@ fn region_part(
         (true, Some(sd), Some(d)) => super::foot::find(sd, map, &s, d, SECTIONS_PER_PART + 3),
         _ => None,
     };
-    let plan = super::foot::plan(&s, foot.as_ref());
+    let plan = super::foot::plan(&s, foot.as_ref(), side.unwrap_or(&[]));
     let upper_depth = depth.as_deref().map(|d| &d[..plan.n_upper]);
     let idx = match &foot {
         // the bend's sections are a sixth of pi of its radius apart (side

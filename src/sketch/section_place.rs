@@ -251,7 +251,7 @@ pub(super) fn direction(s: &[Sample], i: usize) -> f64 {
 /// Chosen between 2 and 1.5 on the corpus's development drawings: at 2 the
 /// chain still rang behind long_legs' ankles (side error 2.26 % of the
 /// height, a dent), at 1.5 no development drawing's leg is over 1.64 %.
-const GRADE_RATIO: f64 = 1.5;
+pub(super) const GRADE_RATIO: f64 = 1.5;
 
 /// The upper leg's section indices among its samples `s` (the last one is
 /// the ankle, where the bend starts), `m` of them: the last sections

@@ -17,8 +17,11 @@
 //! bend's centre, meet outside the tube; each section's extent in the side
 //! view is where its plane's line meets the drawn side outline.
 
-use super::section_place::{Sample, SECTIONS_PER_PART};
+use super::section_place::Sample;
 use crate::character::doc::{SectionShape, SectionSpec};
+
+mod plan;
+pub(super) use plan::{path, plan};
 
 /// A foot found in the side view, in the side view's coordinates
 /// (`[z, y_side]`).
@@ -50,7 +53,7 @@ pub(super) struct PathPoint {
 
 /// The side outline's vertical slice at `z` below `y_max`: the interval
 /// `[y_lo, y_hi]` with the lowest bottom, its top clipped at `y_max`.
-fn vertical_slice(side: &[[f64; 2]], z: f64, y_max: f64) -> Option<[f64; 2]> {
+pub(super) fn vertical_slice(side: &[[f64; 2]], z: f64, y_max: f64) -> Option<[f64; 2]> {
     let t: Vec<[f64; 2]> = side.iter().map(|p| [p[1], p[0]]).collect();
     let iv = super::poly::slice(&t, z)
         .into_iter()
@@ -145,79 +148,6 @@ pub(super) fn leg_with_side(r: &super::segment::Region) -> bool {
     r.downward && r.tip && r.shoulder.is_none() && r.side == super::segment::SidePick::Whole
 }
 
-/// How a leg's sections are shared out: the samples above the bend, the
-/// sections placed on them, and the foot's own (after the bend's three).
-pub(super) struct Plan {
-    pub(super) n_upper: usize,
-    pub(super) m_upper: usize,
-    pub(super) m_foot: usize,
-}
-
-/// The leg above the bend keeps its [`SECTIONS_PER_PART`]; the foot gets its
-/// share of the leg's path length (spaced like the leg's sections, 2 to 4,
-/// the last its toe), and the chain's count stays `3 P + 1`.
-pub(super) fn plan(s: &[Sample], foot: Option<&Foot>) -> Plan {
-    let Some(f) = foot else {
-        return Plan {
-            n_upper: s.len(),
-            m_upper: SECTIONS_PER_PART,
-            m_foot: 0,
-        };
-    };
-    let up: f64 = s[..=f.last_upper]
-        .windows(2)
-        .map(|w| (w[1].y - w[0].y).hypot(w[1].c - w[0].c))
-        .sum();
-    let bend = std::f64::consts::FRAC_PI_2 * f.radius;
-    let along = (f.toe[0] - f.start[0]).abs() - f.radius;
-    let share = (SECTIONS_PER_PART - 1) as f64 * along / (up + bend + along);
-    let m_foot = (share.round() as usize).clamp(2, 4);
-    let lower = 3 + m_foot;
-    Plan {
-        n_upper: f.last_upper + 1,
-        m_upper: (SECTIONS_PER_PART + lower - 1).div_ceil(3) * 3 + 1 - lower,
-        m_foot,
-    }
-}
-
-/// Bend sections (at a sixth, a third and a half of pi) followed by
-/// `m_foot` points along the foot, the last one the toe.
-pub(super) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec<PathPoint> {
-    let (r, d) = (f.radius, f.dir);
-    let c = [f.start[0] + d * r, f.start[1]];
-    let mut out = Vec::with_capacity(3 + m_foot);
-    for k in 1..=3 {
-        let th = k as f64 * std::f64::consts::FRAC_PI_6;
-        let p = [c[0] - d * r * th.cos(), c[1] - r * th.sin()];
-        // e2 turns from +z (down the leg) with the tangent
-        let n = [th.cos(), d * th.sin()];
-        // the bend's centre lies at p + d r n
-        out.push(PathPoint { p, n, inner: d });
-    }
-    let z0 = c[0];
-    let z_last = toe_cap(side, f, z0);
-    for k in 1..=m_foot {
-        let z = if k == m_foot {
-            f.toe[0]
-        } else {
-            z0 + (z_last - z0) * k as f64 / (m_foot - 1) as f64
-        };
-        let y = if k == m_foot {
-            f.toe[1]
-        } else {
-            vertical_slice(side, z, f.ankle_y)
-                .map(|iv| 0.5 * (iv[0] + iv[1]))
-                .unwrap_or(c[1] - r)
-        };
-        out.push(PathPoint {
-            p: [z, y],
-            n: [0.0, d],
-            inner: 0.0,
-        });
-    }
-    out
-}
-
 /// The bend's radius over the larger of the ankle's half depth and the
 /// foot's half height. At 1 the section planes met at the tube's inner
 /// wall: the last leg section's front end and the first bend section's
@@ -310,32 +240,6 @@ pub(super) fn sections(end: &LegEnd, f: &Foot, pts: &[PathPoint]) -> Option<Vec<
     Some(out)
 }
 
-/// Where the foot's last full section goes: as far from the toe as the
-/// foot is half high there, so the chain closes the toe like a round cap
-/// of that radius (a section spaced like the others left a cone, a spike
-/// at the toe). Found by bisection between the bend's end `z0` and the
-/// toe; halfway when the foot is no longer than it is high.
-fn toe_cap(side: &[[f64; 2]], f: &Foot, z0: f64) -> f64 {
-    let d = f.dir;
-    let g = |z: f64| {
-        let h = vertical_slice(side, z, f.ankle_y).map_or(0.0, |iv| 0.5 * (iv[1] - iv[0]));
-        h - d * (f.toe[0] - z)
-    };
-    let (mut a, mut b) = (z0, f.toe[0]);
-    if g(a) >= 0.0 {
-        return 0.5 * (z0 + f.toe[0]);
-    }
-    for _ in 0..48 {
-        let m = 0.5 * (a + b);
-        if g(m) < 0.0 {
-            a = m;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
-}
-
 /// Where the line `p + t n` meets the outline: the crossing interval
 /// `[t_lo, t_hi]` that holds `t = 0`, or the nearest one when `p` is
 /// outside.
@@ -363,12 +267,12 @@ fn gap(iv: [f64; 2]) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// An L-shaped side outline: a leg of depth 0.1 down to y = 0.1, a
     /// foot 0.1 high reaching to z = 0.3 (toe to +z).
-    fn boot() -> Vec<[f64; 2]> {
+    pub(super) fn boot() -> Vec<[f64; 2]> {
         vec![
             [-0.05, 0.0],
             [0.3, 0.0],
@@ -379,26 +283,7 @@ mod tests {
         ]
     }
 
-    /// The last full section sits as far from the toe as the foot is half
-    /// high there: the boot's foot is 0.1 high with its toe at z = 0.3, so
-    /// at z = 0.25; a foot no longer than it is high gets the midpoint.
-    #[test]
-    fn the_toe_cap_is_a_half_height_from_the_toe() {
-        let f = Foot {
-            last_upper: 0,
-            dir: 1.0,
-            radius: 0.05,
-            start: [0.0, 0.15],
-            toe: [0.3, 0.05],
-            ankle_y: 0.2,
-        };
-        let z = toe_cap(&boot(), &f, 0.1);
-        assert!((z - 0.25).abs() < crate::check::tol::SOLVE, "{z}");
-        let near = toe_cap(&boot(), &f, 0.27);
-        assert!((near - 0.285).abs() < crate::check::tol::ROUNDING, "{near}");
-    }
-
-    fn leg_samples(side: &[[f64; 2]]) -> (Vec<Sample>, Vec<(f64, f64)>) {
+    pub(super) fn leg_samples(side: &[[f64; 2]]) -> (Vec<Sample>, Vec<(f64, f64)>) {
         let ys: Vec<f64> = (0..200).map(|k| 0.999 - k as f64 * 0.995 / 199.0).collect();
         let s = ys.iter().map(|&y| Sample { y, c: 0.0, w: 0.05 }).collect();
         let d = ys
@@ -463,22 +348,5 @@ mod tests {
                 && (iv[1] - 0.5).abs() < crate::check::tol::ROUNDING,
             "{iv:?}"
         );
-    }
-
-    #[test]
-    fn the_path_bends_from_down_to_forward_and_ends_at_the_toe() {
-        let side = boot();
-        let (s, d) = leg_samples(&side);
-        let f = find(&side, [0.0, 1.0], &s, &d, 10).expect("a foot");
-        let p = path(&side, &f, 3);
-        assert_eq!(p.len(), 6);
-        assert!(
-            p[2].n[0].abs() < crate::check::tol::ROUNDING
-                && (p[2].n[1] - 1.0).abs() < crate::check::tol::ROUNDING
-        );
-        assert_eq!(p[5].p, f.toe);
-        for w in p.windows(2) {
-            assert!(w[1].p[0] > w[0].p[0] && w[1].p[1] <= w[0].p[1] + crate::check::tol::ROUNDING);
-        }
     }
 }
