@@ -618,6 +618,61 @@ fn feet_do_not_fold_at_the_instep() {
     }
 }
 
+/// How far (relative to the height) a leg may leave the drawn side
+/// outline in `a_foot_does_not_arch_after_its_bend`: between these
+/// drawings' whole models before the foot's sections were graded (t_pose
+/// 0.71 %, near_t 0.70 %, chubby 0.77 %, all at a leg) and after (0.48 %,
+/// 0.48 %, 0.51 %; docs/drawing-corpus.md, twenty-fifth measurement).
+const GRADED_FOOT_SIDE_OUTSIDE: f64 = 0.006;
+
+/// The foot's sections are spaced from the bend's step growing by the
+/// leg's grading ratio (`sketch::foot::plan`): with 2-4 sections spaced
+/// evenly to the toe, a short foot's first span was about four bend steps
+/// long and the C2 chain arched the whole foot above the drawn top and
+/// sole in it.
+#[test]
+fn a_foot_does_not_arch_after_its_bend() {
+    let names = ["t_pose", "near_t", "chubby"];
+    let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
+    assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
+    for r in &rows {
+        let q = built(r);
+        for p in q.parts.iter().filter(|p| p.part.starts_with("leg_")) {
+            let side = p.view("side").expect("side view");
+            assert!(
+                side.outside_rel <= GRADED_FOOT_SIDE_OUTSIDE,
+                "{} {}: {:.2} % of the height outside the drawn side",
+                r.name,
+                p.part,
+                100.0 * side.outside_rel
+            );
+        }
+    }
+}
+
+/// The tangent fit keeps a child's factor from creasing its transition's
+/// grid when some factor does not (`sketch::tangent_fit::turn_limit`),
+/// measuring the grid as the mesh triangulates it: before, it measured the
+/// quads' normals and took any factor turning no more than the derived
+/// one's, and these arms-out figures' shoulders turned by 94.0 (t_pose)
+/// and 95.7 degrees (near_t); now no edge of either model turns by more
+/// than the crease angle (57.4 and 57.9 degrees).
+#[test]
+fn arms_out_figures_do_not_crease_at_the_shoulders() {
+    let names = ["t_pose", "near_t"];
+    let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
+    assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
+    for r in &rows {
+        let q = built(r);
+        assert!(
+            q.whole.dihedral_deg <= CREASED_EDGE_DEG,
+            "{}: an edge turns by {:.1} degrees",
+            r.name,
+            q.whole.dihedral_deg
+        );
+    }
+}
+
 /// The arms' Hermite tangents at the shoulders are shorter than the head's
 /// (`character::spec::SHOULDER_TANGENT_SCALE`, per child): with one factor
 /// of 1 for the whole transition these drawings creased along the seams
