@@ -159,7 +159,7 @@ fn region_part(
             ],
             e1x: sections.last().map_or(-1.0, |q| q.e1[0].signum()),
         };
-        let pts = super::foot::path(sd, f, plan.m_foot);
+        let pts = super::foot::path(sd, f, &plan.stations);
         match super::foot::sections(&end, f, &pts) {
             Some(more) => sections.extend(more),
             None => return Ok(None),

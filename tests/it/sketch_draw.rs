@@ -568,19 +568,31 @@ fn a_torso_s_steps_do_not_zigzag_it() {
 #[test]
 fn drawn_feet_are_followed_in_the_side_view() {
     let names = ["t_pose", "wide_stance", "broad", "child", "long_legs"];
+    legs_side_within(&names, Bounds::ISSUE.profile_side, "side error", |v| {
+        v.max_rel
+    });
+}
+
+/// Asserts that the legs of the corpus drawings `names` measure at most
+/// `bound` (relative to the height) in the side view by `measure`.
+fn legs_side_within(
+    names: &[&str],
+    bound: f64,
+    what: &str,
+    measure: impl Fn(&pdesculpt::sketch::quality::ViewQuality) -> f64,
+) {
     let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
     assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
-    let bound = Bounds::ISSUE.profile_side;
     for r in &rows {
         let q = built(r);
         for p in q.parts.iter().filter(|p| p.part.starts_with("leg_")) {
-            let side = p.view("side").expect("side view");
+            let m = measure(p.view("side").expect("side view"));
             assert!(
-                side.max_rel <= bound,
-                "{} {}: side error {:.2} % of the height",
+                m <= bound,
+                "{} {}: {what} {:.2} % of the height",
                 r.name,
                 p.part,
-                100.0 * side.max_rel
+                100.0 * m
             );
         }
     }
@@ -633,21 +645,12 @@ const GRADED_FOOT_SIDE_OUTSIDE: f64 = 0.006;
 #[test]
 fn a_foot_does_not_arch_after_its_bend() {
     let names = ["t_pose", "near_t", "chubby"];
-    let rows = measure_corpus(|e| names.contains(&e.name.as_str()));
-    assert_eq!(rows.len(), names.len(), "the corpus has these drawings");
-    for r in &rows {
-        let q = built(r);
-        for p in q.parts.iter().filter(|p| p.part.starts_with("leg_")) {
-            let side = p.view("side").expect("side view");
-            assert!(
-                side.outside_rel <= GRADED_FOOT_SIDE_OUTSIDE,
-                "{} {}: {:.2} % of the height outside the drawn side",
-                r.name,
-                p.part,
-                100.0 * side.outside_rel
-            );
-        }
-    }
+    legs_side_within(
+        &names,
+        GRADED_FOOT_SIDE_OUTSIDE,
+        "outside the drawn side by",
+        |v| v.outside_rel,
+    );
 }
 
 /// The tangent fit keeps a child's factor from creasing its transition's

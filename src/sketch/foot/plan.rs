@@ -5,11 +5,13 @@ use super::{vertical_slice, Foot, PathPoint};
 use crate::sketch::section_place::{Sample, GRADE_RATIO, SECTIONS_PER_PART};
 
 /// How a leg's sections are shared out: the samples above the bend, the
-/// sections placed on them, and the foot's own (after the bend's three).
+/// sections placed on them, and the foot's own (after the bend's three):
+/// its full sections' distances from the bend's end along the toe's
+/// direction ([`foot_stations`]), then the toe.
 pub(in crate::sketch) struct Plan {
     pub(in crate::sketch) n_upper: usize,
     pub(in crate::sketch) m_upper: usize,
-    pub(in crate::sketch) m_foot: usize,
+    pub(in crate::sketch) stations: Vec<f64>,
 }
 
 /// The leg above the bend keeps its [`SECTIONS_PER_PART`]; the foot gets its
@@ -23,7 +25,7 @@ pub(in crate::sketch) fn plan(s: &[Sample], foot: Option<&Foot>, side: &[[f64; 2
         return Plan {
             n_upper: s.len(),
             m_upper: SECTIONS_PER_PART,
-            m_foot: 0,
+            stations: Vec::new(),
         };
     };
     let up: f64 = s[..=f.last_upper]
@@ -42,16 +44,16 @@ pub(in crate::sketch) fn plan(s: &[Sample], foot: Option<&Foot>, side: &[[f64; 2
     Plan {
         n_upper: f.last_upper + 1,
         m_upper: (SECTIONS_PER_PART + lower - 1).div_ceil(3) * 3 + 1 - lower,
-        m_foot,
+        stations: foot_stations(len, bend_step(f), m_foot - 1),
     }
 }
 
-/// Bend sections (at a sixth, a third and a half of pi) followed by
-/// `m_foot` points along the foot, the last one the toe.
-pub(in crate::sketch) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec<PathPoint> {
+/// Bend sections (at a sixth, a third and a half of pi) followed by a
+/// point at each of the foot's `stations` ([`Plan`]) and the toe.
+pub(in crate::sketch) fn path(side: &[[f64; 2]], f: &Foot, stations: &[f64]) -> Vec<PathPoint> {
     let (r, d) = (f.radius, f.dir);
     let c = [f.start[0] + d * r, f.start[1]];
-    let mut out = Vec::with_capacity(3 + m_foot);
+    let mut out = Vec::with_capacity(4 + stations.len());
     for k in 1..=3 {
         let th = k as f64 * std::f64::consts::FRAC_PI_6;
         let p = [c[0] - d * r * th.cos(), c[1] - r * th.sin()];
@@ -60,31 +62,22 @@ pub(in crate::sketch) fn path(side: &[[f64; 2]], f: &Foot, m_foot: usize) -> Vec
         // the bend's centre lies at p + d r n
         out.push(PathPoint { p, n, inner: d });
     }
-    let z0 = c[0];
-    let z_last = toe_cap(side, f, z0);
-    let at = foot_stations(d * (z_last - z0), bend_step(f), m_foot.saturating_sub(1))
-        .into_iter()
-        .map(|x| d * x)
-        .collect::<Vec<f64>>();
-    for k in 1..=m_foot {
-        let z = if k == m_foot {
-            f.toe[0]
-        } else {
-            z0 + at[k - 1]
-        };
-        let y = if k == m_foot {
-            f.toe[1]
-        } else {
-            vertical_slice(side, z, f.ankle_y)
-                .map(|iv| 0.5 * (iv[0] + iv[1]))
-                .unwrap_or(c[1] - r)
-        };
+    for &x in stations {
+        let z = c[0] + d * x;
+        let y = vertical_slice(side, z, f.ankle_y)
+            .map(|iv| 0.5 * (iv[0] + iv[1]))
+            .unwrap_or(c[1] - r);
         out.push(PathPoint {
             p: [z, y],
             n: [0.0, d],
             inner: 0.0,
         });
     }
+    out.push(PathPoint {
+        p: f.toe,
+        n: [0.0, d],
+        inner: 0.0,
+    });
     out
 }
 
@@ -113,17 +106,19 @@ fn graded_count(len: f64, step: f64) -> usize {
 /// from the bend's own step, `step q, step q^2, ...`, whose sum is `len`
 /// (so the chain's spacing changes by the same factor from span to span,
 /// as above the bend); uniform when the foot is no longer than `m`
-/// steps.
+/// steps (or not a finite positive length). The ratio is found by
+/// bisection from `[1, GRADE_RATIO]`, widened only when `m` was capped
+/// below [`graded_count`]'s need.
 fn foot_stations(len: f64, step: f64, m: usize) -> Vec<f64> {
     if m == 0 {
         return Vec::new();
     }
     let sum = |q: f64| (1..=m).map(|k| step * q.powi(k as i32)).sum::<f64>();
-    if !(len > 0.0 && step > 0.0) || sum(1.0) >= len {
+    if !(len.is_finite() && len > 0.0 && step > 0.0) || sum(1.0) >= len {
         return (1..=m).map(|k| len * k as f64 / m as f64).collect();
     }
-    let (mut a, mut b) = (1.0, 2.0);
-    while sum(b) < len && b < 1e6 {
+    let (mut a, mut b) = (1.0, GRADE_RATIO);
+    while sum(b) < len {
         b *= 2.0;
     }
     for _ in 0..60 {
@@ -202,13 +197,14 @@ mod tests {
         let side = boot();
         let (s, d) = leg_samples(&side);
         let f = find(&side, [0.0, 1.0], &s, &d, 10).expect("a foot");
-        let p = path(&side, &f, 3);
-        assert_eq!(p.len(), 6);
+        let stations = plan(&s, Some(&f), &side).stations;
+        let p = path(&side, &f, &stations);
+        assert_eq!(p.len(), 4 + stations.len());
         assert!(
             p[2].n[0].abs() < crate::check::tol::ROUNDING
                 && (p[2].n[1] - 1.0).abs() < crate::check::tol::ROUNDING
         );
-        assert_eq!(p[5].p, f.toe);
+        assert_eq!(p[p.len() - 1].p, f.toe);
         for w in p.windows(2) {
             assert!(w[1].p[0] > w[0].p[0] && w[1].p[1] <= w[0].p[1] + crate::check::tol::ROUNDING);
         }

@@ -125,8 +125,9 @@ impl Drawn<'_> {
 /// transition's grid (`rows + 1` rows of periodic columns, as
 /// [`transition_points`] gives them), triangulated as the mesh is
 /// (`character::assembly::weave`: each quad `a_i a_j b_j b_i` split along
-/// its `a_i b_j` diagonal), so a quad folded along that diagonal counts.
-/// Degenerate triangles are left out.
+/// its `a_i b_j` diagonal), so a quad folded along that diagonal counts;
+/// measured as the report measures a group's creases
+/// (`character::crease::creases`).
 fn grid_turn(pts: &[[f64; 3]], rows: usize) -> f64 {
     let n = pts.len() / (rows + 1);
     if n < 3 {
@@ -142,21 +143,9 @@ fn grid_turn(pts: &[[f64; 3]], rows: usize) -> f64 {
         }
     }
     let mesh = crate::mesh::Mesh::new(pts[..n * (rows + 1)].to_vec(), triangles);
-    let normal = |t: usize| {
-        let v = mesh.face_normal_area(t);
-        let l = crate::mesh::norm(v);
-        (l > 0.0).then(|| v.map(|x| x / l))
-    };
-    crate::character::crease::edge_triangles(&mesh)
-        .into_values()
-        .filter_map(|f| match f[..] {
-            [a, b] => normal(a)
-                .zip(normal(b))
-                .map(|(a, b)| crate::mesh::dot(a, b).clamp(-1.0, 1.0).acos()),
-            _ => None,
-        })
-        .fold(0.0f64, f64::max)
-        .to_degrees()
+    crate::character::crease::creases(&mesh)
+        .first()
+        .map_or(0.0, |c| c.interior_deg)
 }
 
 /// What a fit may not make.
