@@ -23,6 +23,7 @@
 //! tip is not farther from the armpit than the shoulder cut is long (no arm
 //! reaches out of the body there).
 
+use super::shoulder_tilt::{section_shape, turned_to_corner, SHOULDER_TILT_SECTIONS};
 use super::SketchError;
 
 /// Samples along a traced arm (pairs of its two sides).
@@ -36,6 +37,9 @@ pub struct TracedArm {
     pub shoulder: [f64; 2],
     /// The hand's farthest point from the armpit.
     pub tip: [f64; 2],
+    /// The shoulder's outer corner ([`super::shoulder_tilt::shoulder_corner`]), where the arm's
+    /// first sections are turned to; None: no corner to reach.
+    pub corner: Option<[f64; 2]>,
     /// Central curve points and half widths, from the cut to the tip.
     pub centre: Vec<[f64; 2]>,
     pub half_width: Vec<f64>,
@@ -126,6 +130,8 @@ pub fn trace_arm(
             armpit[0], armpit[1], reach
         )));
     }
+    let corner =
+        super::shoulder_tilt::shoulder_corner(&walk[is..], 0.5 * (walk[is][0] + neck_x), side);
     // fingers: the notches between them are closed (a mitten), so that
     // the two sides pair hand to hand, not finger to finger
     // the walk follows the outline forward for the right arm (side > 0),
@@ -158,6 +164,7 @@ pub fn trace_arm(
         armpit,
         shoulder: walk[is],
         tip: walk[it],
+        corner,
         centre,
         half_width,
         chord,
@@ -229,7 +236,7 @@ pub fn part_from_trace(
     z: f64,
 ) -> Result<crate::character::doc::PartSpec, SketchError> {
     use super::section_place::{place, Sample, SECTIONS_PER_PART};
-    use crate::character::doc::{EndCurvature, PartSpec, SectionShape, SectionSpec, SurfaceSpec};
+    use crate::character::doc::{EndCurvature, PartSpec, SectionSpec, SurfaceSpec};
     let mut s_len = vec![0.0; t.centre.len()];
     for i in 1..t.centre.len() {
         s_len[i] = s_len[i - 1] + dist(t.centre[i - 1], t.centre[i]);
@@ -266,14 +273,17 @@ pub fn part_from_trace(
         };
         let mut e1 = e1;
         let mut r = if last { 0.0 } else { t.half_width[i] * cos };
+        // a tilted section's depth stays the arm's own (hidden in the side
+        // view: a circle of the untilted radius), however long its tilt
+        let mut depth = None;
         if j < SHOULDER_TILT_SECTIONS && !last {
-            let f = 1.0 - j as f64 / SHOULDER_TILT_SECTIONS as f64;
-            let w = t.half_width[i];
-            let inner = [
-                t.centre[i][0] - w * t.chord[i][0],
-                t.centre[i][1] - w * t.chord[i][1],
-            ];
-            if let Some((c, dir, half)) = tilted(front, inner, t.chord[i], f, w) {
+            if let Some((c, dir, half)) = turned_to_corner(
+                front,
+                [t.centre[i], t.chord[i]],
+                t.half_width[i],
+                t.corner,
+                j,
+            ) {
                 centre = [c[0], c[1], z];
                 // keep the ring's orientation: e1 on the side it was
                 e1 = if dir[0] * e1[0] + dir[1] * e1[1] < 0.0 {
@@ -281,6 +291,7 @@ pub fn part_from_trace(
                 } else {
                     [dir[0], dir[1], 0.0]
                 };
+                depth = Some(r.min(half));
                 r = half;
             }
         }
@@ -292,7 +303,7 @@ pub fn part_from_trace(
             centre,
             e1,
             e2: [0.0, 0.0, 1.0],
-            shape: SectionShape::Circle { r },
+            shape: section_shape(r, depth),
         });
     }
     // sections that cut through each other turned apart; the radius of a
@@ -313,71 +324,6 @@ pub fn part_from_trace(
         closed_start: false,
         closed_end: true,
     })
-}
-
-/// Most tilt of an arm's first section toward its shoulder (degrees), the
-/// next [`SHOULDER_TILT_SECTIONS`] - 1 by linearly less; never past the
-/// vertical. 60 degrees was chosen on the bundled female and male (profile
-/// error 1.03 % -> 0.75 % and 1.41 % -> 0.67 % of the height): it lets the
-/// arm's top section reach the outer top of a hanging arm's shoulder
-/// instead of leaving the shoulder to the transition's arch.
-pub const SHOULDER_TILT_DEG: f64 = 60.0;
-/// Sections of an arm's start that are tilted.
-pub const SHOULDER_TILT_SECTIONS: usize = 2;
-
-/// The section from `inner` (the arm's inner side) turned up toward the
-/// shoulder: the chord direction `chord` (inner to outer side) turned by
-/// `f` [`SHOULDER_TILT_DEG`] toward +y but not past the vertical, to where
-/// it leaves the outline. Returns (centre, unit direction, half length),
-/// or None when the turned chord leaves the outline nearer than `w` or
-/// farther than 8 `w` (not the shoulder: keep the section perpendicular).
-fn tilted(
-    front: &[[f64; 2]],
-    inner: [f64; 2],
-    chord: [f64; 2],
-    f: f64,
-    w: f64,
-) -> Option<([f64; 2], [f64; 2], f64)> {
-    // turn toward +y (the angle pi/2): counter-clockwise when the chord
-    // points to +x (phi in [-pi/2, pi/2]), clockwise when it points to -x
-    // (phi taken in (pi/2, 3 pi/2)), so a mirrored arm turns mirrored
-    let up = if chord[0] >= 0.0 { 1.0 } else { -1.0 };
-    let phi = if up > 0.0 {
-        chord[1].atan2(chord[0])
-    } else {
-        chord[1].atan2(chord[0]).rem_euclid(std::f64::consts::TAU)
-    };
-    let vertical = std::f64::consts::FRAC_PI_2;
-    let mut target = phi + up * f * SHOULDER_TILT_DEG.to_radians();
-    if up * (target - vertical) > 0.0 {
-        target = vertical;
-    }
-    if (target - phi).abs() < 1e-9 {
-        return None;
-    }
-    let d = [target.cos(), target.sin()];
-    let n = front.len();
-    let mut best: Option<f64> = None;
-    for k in 0..n {
-        let (a, b) = (front[k], front[(k + 1) % n]);
-        let e = [b[0] - a[0], b[1] - a[1]];
-        let den = d[0] * e[1] - d[1] * e[0];
-        if den.abs() < f64::MIN_POSITIVE {
-            continue;
-        }
-        let q = [a[0] - inner[0], a[1] - inner[1]];
-        let s = (q[0] * e[1] - q[1] * e[0]) / den;
-        let u = (q[0] * d[1] - q[1] * d[0]) / den;
-        if (0.0..=1.0).contains(&u) && s > 0.5 * w && best.is_none_or(|b| s < b) {
-            best = Some(s);
-        }
-    }
-    let len = best.filter(|&l| l >= w && l <= 8.0 * w)?;
-    Some((
-        [inner[0] + 0.5 * len * d[0], inner[1] + 0.5 * len * d[1]],
-        d,
-        0.5 * len,
-    ))
 }
 
 #[cfg(test)]
@@ -439,36 +385,5 @@ mod tests {
         assert_eq!(bridge_notches(&hand, true, 0.3), hand.to_vec());
         let strip = [[0.0, 0.0], [6.0, 0.0], [6.0, 0.4], [0.0, 0.4]];
         assert_eq!(bridge_notches(&strip, true, 1.0), strip.to_vec());
-    }
-
-    /// A mirrored arm's shoulder section is the mirror image: both chords
-    /// turn toward +y and stop at the vertical (before, a chord pointing
-    /// to -x was measured against -pi/2 and turned past the vertical, so
-    /// the left arm's top ring leaned over its shoulder: the A-pose fold).
-    #[test]
-    fn a_mirrored_chord_turns_to_the_mirrored_section() {
-        let square = [[-3.0, -3.0], [3.0, -3.0], [3.0, 3.0], [-3.0, 3.0]];
-        let mirrored: Vec<[f64; 2]> = square.iter().rev().map(|p| [-p[0], p[1]]).collect();
-        let h = std::f64::consts::FRAC_1_SQRT_2;
-        for chord_y in [h, 0.2, -0.3] {
-            let c = [(1.0f64 - chord_y * chord_y).sqrt(), chord_y];
-            for f in [1.0, 0.5] {
-                let (ca, da, la) = tilted(&square, [0.0, 0.0], c, f, 1.0).expect("right");
-                let (cb, db, lb) =
-                    tilted(&mirrored, [0.0, 0.0], [-c[0], c[1]], f, 1.0).expect("left");
-                let eps = crate::check::tol::ROUNDING;
-                assert!(
-                    (ca[0] + cb[0]).abs() < eps && (ca[1] - cb[1]).abs() < eps,
-                    "{ca:?} {cb:?}"
-                );
-                assert!(
-                    (da[0] + db[0]).abs() < eps && (da[1] - db[1]).abs() < eps,
-                    "{da:?} {db:?}"
-                );
-                assert!((la - lb).abs() < eps);
-                // never past the vertical
-                assert!(da[0] >= -eps && db[0] <= eps, "{da:?} {db:?}");
-            }
-        }
     }
 }

@@ -71,6 +71,7 @@ pub mod removed;
 pub mod report;
 pub mod section_place;
 pub mod segment;
+mod shoulder_tilt;
 pub mod tangent_fit;
 pub mod uncross;
 mod vertex_grid;

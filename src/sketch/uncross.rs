@@ -226,6 +226,8 @@ pub fn sections(
     use crate::character::doc::SectionShape;
     let r_of = |s: &crate::character::doc::SectionSpec| match s.shape {
         SectionShape::Circle { r } => r,
+        // a tilted shoulder section: its extent in the drawing's plane
+        SectionShape::Ellipse { a, .. } => a,
         _ => 0.0,
     };
     let mut discs: Vec<Disc> = sections
