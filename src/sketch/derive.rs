@@ -213,6 +213,7 @@ fn derive_upright(
         let line = 0.5 * (lm.neck_base + out[1]);
         let y = shoulder_top(front, x, &lm)
             .filter(|y| *y > top_c[1] && *y <= lm.neck)
+            .or_else(|| raised_shoulder(front, x, top_c[1], &lm, g))
             .unwrap_or(line.max(top_c[1] + g));
         [x, y, top_c[2]]
     };
@@ -239,6 +240,23 @@ fn derive_upright(
         parts,
         transitions,
     })
+}
+
+/// A shoulder's top that rises above the neck's narrowest height (a
+/// short neck between raised shoulders: seed 4242's chubby, whose drawn
+/// shoulder rose 4.3 % of the height above the straight shoulder line the
+/// apex fell back to): the top of the outline's vertical interval at `x`
+/// that holds the torso's end ring's height `y_ring`, taken only when a
+/// join band `g` below that top the shoulder is apart from the interval on
+/// the torso's axis (the neck): a head resting on the shoulder, or a
+/// shoulder line that runs into the neck, is left to the straight line.
+fn raised_shoulder(front: &[[f64; 2]], x: f64, y_ring: f64, lm: &Landmarks, g: f64) -> Option<f64> {
+    let y = super::poly::top_through(front, x, y_ring).filter(|y| *y > y_ring + g)?;
+    let axis = 0.5 * (lm.armpit_l[0] + lm.armpit_r[0]);
+    let head_over_x = slice(front, y - g)
+        .iter()
+        .any(|iv| iv[0] <= axis && axis <= iv[1] && iv[0] <= x && x <= iv[1]);
+    (!head_over_x).then_some(y)
 }
 
 /// The shoulders transition's cut angles when a wide neck starts close
@@ -291,6 +309,60 @@ mod tests {
                 offset: 0.0,
             },
         }
+    }
+
+    /// A bump of a shoulder rising above a short neck is the apex's
+    /// height; a head resting on the shoulders, and a height outside the
+    /// outline, are not.
+    #[test]
+    fn a_raised_shoulder_is_its_own_top_not_a_head_s() {
+        let lm = Landmarks {
+            y_min: 0.0,
+            y_max: 8.0,
+            crotch: [0.0, 1.0],
+            armpit_l: [-3.0, 3.0],
+            armpit_r: [3.0, 3.0],
+            neck_base: 4.8,
+            neck: 5.0,
+        };
+        let bumps = [
+            [-3.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 4.5],
+            [2.0, 5.5],
+            [1.0, 4.8],
+            [0.5, 4.8],
+            [0.5, 6.0],
+            [1.0, 6.0],
+            [1.0, 8.0],
+            [-1.0, 8.0],
+            [-1.0, 6.0],
+            [-0.5, 6.0],
+            [-0.5, 4.8],
+            [-1.0, 4.8],
+            [-2.0, 5.5],
+            [-3.0, 4.5],
+        ];
+        let tol = crate::check::tol::ROUNDING;
+        let top = raised_shoulder(&bumps, -2.0, 4.0, &lm, 0.1).expect("the bump");
+        assert!((top - 5.5).abs() < tol, "{top}");
+        // under the head, beside the neck: the shoulder line runs into
+        // the neck a band below its top
+        assert_eq!(raised_shoulder(&bumps, -0.8, 4.0, &lm, 0.1), None);
+        // outside the outline at the ring's height
+        assert_eq!(raised_shoulder(&bumps, -3.5, 4.0, &lm, 0.1), None);
+        let resting = [
+            [-3.0, 0.0],
+            [3.0, 0.0],
+            [3.0, 4.5],
+            [2.0, 5.5],
+            [2.0, 8.0],
+            [-2.0, 8.0],
+            [-2.0, 5.5],
+            [-3.0, 4.5],
+        ];
+        assert_eq!(raised_shoulder(&resting, -1.5, 4.0, &lm, 0.1), None);
+        assert_eq!(raised_shoulder(&resting, -2.5, 4.0, &lm, 0.1), None);
     }
 
     /// A neck narrower than half the torso keeps the fixed cuts (no angles

@@ -119,6 +119,15 @@ pub fn top_below(points: &[[f64; 2]], x: f64, y_max: f64) -> Option<f64> {
         .find(|&y| y < y_max)
 }
 
+/// The top of the outline's vertical interval at `x` that holds height
+/// `y` (even-odd rule), or None when `y` is outside the outline there.
+pub fn top_through(points: &[[f64; 2]], x: f64, y: f64) -> Option<f64> {
+    crossings(points, 0, x)
+        .chunks_exact(2)
+        .find(|c| c[0] <= y && y <= c[1])
+        .map(|c| c[1])
+}
+
 /// The top of the outline above `x` (largest y inside), if any.
 pub fn top_at(points: &[[f64; 2]], x: f64) -> Option<f64> {
     crossings(points, 0, x).last().copied()
