@@ -222,8 +222,10 @@ fn bridge_notches(walk: &[[f64; 2]], inside_left: bool, mouth: f64) -> Vec<[f64;
 /// `start` (arc length from the cut's midpoint, the join band left to the
 /// shoulder transition) to the tip, placed where the width and the curve
 /// change ([`super::section_place::place`]), each a circle perpendicular to the
-/// curve (arms are hidden in the side view) at depth `z`; the last one
-/// collapses to the tip. The curve's direction is taken over the arm's
+/// curve (arms are hidden in the side view) at depth `z` but the first
+/// [`SHOULDER_TILT_SECTIONS`], turned toward the shoulder's corner when
+/// the drawing has one ([`turned_to_corner`]: ellipses of the arm's own
+/// depth); the last one collapses to the tip. The curve's direction is taken over the arm's
 /// half width ([`super::uncross::tangent`]), and neighbouring sections
 /// that would still cut through each other are turned apart
 /// ([`super::uncross::sections`]); the chain's parameter runs along the

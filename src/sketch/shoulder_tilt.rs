@@ -84,9 +84,12 @@ fn tilted(
         return None;
     }
     let mut target = phi + f * to_aim;
-    if up * (target - vertical) > 0.0 {
+    let past_vertical = up * (target - vertical) > 0.0;
+    if past_vertical {
         target = vertical;
     }
+    // turned all the way to the aim (a vertex of the outline)
+    let at_aim = f >= 1.0 && !past_vertical;
     if (target - phi).abs() < 1e-9 {
         return None;
     }
@@ -107,10 +110,10 @@ fn tilted(
             best = Some(s);
         }
     }
-    // turned all the way to the aim (a vertex of the outline), the ray
-    // leaves the outline there at the latest: a ray through a vertex can
-    // miss both of its edges by rounding and find a crossing beyond it
-    if (target - (phi + to_aim)).abs() < 1e-12 {
+    // turned all the way to the aim, the ray leaves the outline there at
+    // the latest: a ray through a vertex can miss both of its edges by
+    // rounding and find a crossing beyond it
+    if at_aim {
         let reach = dist(aim, inner);
         best = Some(best.map_or(reach, |b| b.min(reach)));
     }
