@@ -23,6 +23,7 @@
 //! tip is not farther from the armpit than the shoulder cut is long (no arm
 //! reaches out of the body there).
 
+use super::poly::dist;
 use super::shoulder_tilt::{section_shape, turned_to_corner, SHOULDER_TILT_SECTIONS};
 use super::SketchError;
 
@@ -45,10 +46,6 @@ pub struct TracedArm {
     pub half_width: Vec<f64>,
     /// Unit direction of each pair's chord (inner side to outer side).
     pub chord: Vec<[f64; 2]>,
-}
-
-fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
 /// `n` points equally spaced by arc length along an open polyline.

@@ -119,6 +119,11 @@ pub fn top_below(points: &[[f64; 2]], x: f64, y_max: f64) -> Option<f64> {
         .find(|&y| y < y_max)
 }
 
+/// The distance between two points of a drawing.
+pub fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
 /// The top of the outline's vertical interval at `x` that holds height
 /// `y` (even-odd rule), or None when `y` is outside the outline there.
 pub fn top_through(points: &[[f64; 2]], x: f64, y: f64) -> Option<f64> {

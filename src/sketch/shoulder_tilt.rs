@@ -5,6 +5,8 @@
 //! [`SHOULDER_TILT_SECTIONS`] are turned from the armpit's side toward the
 //! corner of the drawn shoulder ([`shoulder_corner`]) instead.
 
+use super::poly::dist;
+
 /// The shoulder's outer corner: on the outline from the shoulder point
 /// `rest[0]` (the cut's upper end) toward the neck, up to `mid_x` (halfway
 /// to the neck's side, where the shoulders transition's seam apex lies:
@@ -157,10 +159,6 @@ pub fn section_shape(r: f64, depth: Option<f64>) -> crate::character::doc::Secti
         },
         None => SectionShape::Circle { r },
     }
-}
-
-fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
 #[cfg(test)]
