@@ -5,7 +5,7 @@
 use super::align::{alignment, Alignment};
 use super::cuts::{join_heights, CutPath};
 use super::poly::slice;
-use super::segment::{landmarks, regions, shoulder_top, Landmarks};
+use super::segment::{landmarks, regions, Landmarks};
 use super::SketchError;
 use crate::character::doc::{
     BodyPlan, KeySection, Level, PartSpec, SectionShape, SectionSpec, TransitionSpec,
@@ -14,7 +14,7 @@ use std::f64::consts::{FRAC_PI_3, TAU};
 
 pub(super) use super::derived::{check_side_height, check_side_position};
 use super::derived::{e1_half_width, ring_angle};
-pub use super::derived::{Derived, HEIGHT_MISMATCH};
+pub use super::derived::{ApexAlternative, Derived, HEIGHT_MISMATCH};
 pub use super::keysection::{GEC_TERMS, SECTION_SLACK};
 pub(super) use super::part_slices::part_from_region;
 pub use super::part_slices::{SHOULDER_TILT_DEG, SHOULDER_TILT_SECTIONS};
@@ -79,6 +79,9 @@ pub fn derive(
         for a in &mut t.seam_apex {
             *a = al.point_back(*a);
         }
+    }
+    for a in &mut d.apex_alternatives {
+        a.apex = al.point_back(a.apex);
     }
     d.alignment = al;
     Ok(d)
@@ -184,43 +187,19 @@ fn derive_upright(
         _ => g,
     };
     let top_c = torso.sections.last().map(|s| s.centre).unwrap_or([0.0; 3]);
-    // shoulder apex: the top of the outline halfway between the neck's side
-    // and the shoulder's outer side (at the armpits' height)
-    let neck_iv = super::segment::neck_interval(front, &lm);
-    let apex = |sign: f64| -> [f64; 3] {
-        let neck_x = match neck_iv {
-            Some(iv) => {
-                if sign < 0.0 {
-                    iv[0]
-                } else {
-                    iv[1]
-                }
-            }
-            None => top_c[0] + sign * 0.5 * r_top,
-        };
-        // the arm's shoulder point (the upper end of its cut)
-        let out = if sign < 0.0 {
-            shoulders[0]
-        } else {
-            shoulders[1]
-        };
-        let x = 0.5 * (neck_x + out[0]);
-        // the outline's top there when it lies between the torso's end ring
-        // and the neck; else (x over a notch or a gap of the drawing, whose
-        // top below the neck can be a leg's: random_6 of the seed-7777
-        // set put an apex near the feet and a sheet hung from it) the
-        // straight shoulder line from the neck's base to the shoulder point
-        let line = 0.5 * (lm.neck_base + out[1]);
-        let y = shoulder_top(front, x, &lm)
-            .filter(|y| *y > top_c[1] && *y <= lm.neck)
-            .or_else(|| raised_shoulder(front, x, top_c[1], &lm, g))
-            .unwrap_or(line.max(top_c[1] + g));
-        [x, y, top_c[2]]
-    };
+    // the shoulders' seam apexes and their alternatives (`super::apex`)
+    let neck_x = super::segment::neck_interval(front, &lm)
+        .map_or([top_c[0] - 0.5 * r_top, top_c[0] + 0.5 * r_top], |iv| iv);
+    let neck_y = parts[1]
+        .sections
+        .first()
+        .map_or(lm.neck_base, |s| s.centre[1]);
+    let apexes =
+        super::apex::shoulder_apexes(front, &lm, [top_c, [0.0, neck_y, g]], neck_x, shoulders);
     let bot_c = torso.sections[0].centre;
     let mut transitions = TransitionSpec::humanoid(
         [lm.crotch[0], lm.crotch[1], bot_c[2]],
-        vec![apex(-1.0), apex(1.0)],
+        vec![apexes[0].0, apexes[1].0],
         crate::character::spec::SHOULDER_TANGENT_SCALE,
         1.0,
     );
@@ -232,6 +211,17 @@ fn derive_upright(
             }
         }
     }
+    let apex_alternatives = apexes
+        .iter()
+        .enumerate()
+        .filter_map(|(seam, a)| {
+            Some(ApexAlternative {
+                transition: transitions.iter().position(|t| t.name == "shoulders")?,
+                seam,
+                apex: a.1?,
+            })
+        })
+        .collect();
     Ok(Derived {
         plan: BodyPlan::Humanoid,
         alignment: Alignment::identity(),
@@ -239,24 +229,8 @@ fn derive_upright(
         quadruped: None,
         parts,
         transitions,
+        apex_alternatives,
     })
-}
-
-/// A shoulder's top that rises above the neck's narrowest height (a
-/// short neck between raised shoulders: seed 4242's chubby, whose drawn
-/// shoulder rose 4.3 % of the height above the straight shoulder line the
-/// apex fell back to): the top of the outline's vertical interval at `x`
-/// that holds the torso's end ring's height `y_ring`, taken only when a
-/// join band `g` below that top the shoulder is apart from the interval on
-/// the torso's axis (the neck): a head resting on the shoulder, or a
-/// shoulder line that runs into the neck, is left to the straight line.
-fn raised_shoulder(front: &[[f64; 2]], x: f64, y_ring: f64, lm: &Landmarks, g: f64) -> Option<f64> {
-    let y = super::poly::top_through(front, x, y_ring).filter(|y| *y > y_ring + g)?;
-    let axis = 0.5 * (lm.armpit_l[0] + lm.armpit_r[0]);
-    let head_over_x = slice(front, y - g)
-        .iter()
-        .any(|iv| iv[0] <= axis && axis <= iv[1] && iv[0] <= x && x <= iv[1]);
-    (!head_over_x).then_some(y)
 }
 
 /// The shoulders transition's cut angles when a wide neck starts close
@@ -309,60 +283,6 @@ mod tests {
                 offset: 0.0,
             },
         }
-    }
-
-    /// A bump of a shoulder rising above a short neck is the apex's
-    /// height; a head resting on the shoulders, and a height outside the
-    /// outline, are not.
-    #[test]
-    fn a_raised_shoulder_is_its_own_top_not_a_head_s() {
-        let lm = Landmarks {
-            y_min: 0.0,
-            y_max: 8.0,
-            crotch: [0.0, 1.0],
-            armpit_l: [-3.0, 3.0],
-            armpit_r: [3.0, 3.0],
-            neck_base: 4.8,
-            neck: 5.0,
-        };
-        let bumps = [
-            [-3.0, 0.0],
-            [3.0, 0.0],
-            [3.0, 4.5],
-            [2.0, 5.5],
-            [1.0, 4.8],
-            [0.5, 4.8],
-            [0.5, 6.0],
-            [1.0, 6.0],
-            [1.0, 8.0],
-            [-1.0, 8.0],
-            [-1.0, 6.0],
-            [-0.5, 6.0],
-            [-0.5, 4.8],
-            [-1.0, 4.8],
-            [-2.0, 5.5],
-            [-3.0, 4.5],
-        ];
-        let tol = crate::check::tol::ROUNDING;
-        let top = raised_shoulder(&bumps, -2.0, 4.0, &lm, 0.1).expect("the bump");
-        assert!((top - 5.5).abs() < tol, "{top}");
-        // under the head, beside the neck: the shoulder line runs into
-        // the neck a band below its top
-        assert_eq!(raised_shoulder(&bumps, -0.8, 4.0, &lm, 0.1), None);
-        // outside the outline at the ring's height
-        assert_eq!(raised_shoulder(&bumps, -3.5, 4.0, &lm, 0.1), None);
-        let resting = [
-            [-3.0, 0.0],
-            [3.0, 0.0],
-            [3.0, 4.5],
-            [2.0, 5.5],
-            [2.0, 8.0],
-            [-2.0, 8.0],
-            [-2.0, 5.5],
-            [-3.0, 4.5],
-        ];
-        assert_eq!(raised_shoulder(&resting, -1.5, 4.0, &lm, 0.1), None);
-        assert_eq!(raised_shoulder(&resting, -2.5, 4.0, &lm, 0.1), None);
     }
 
     /// A neck narrower than half the torso keeps the fixed cuts (no angles

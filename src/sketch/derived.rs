@@ -51,6 +51,19 @@ pub struct Derived {
     pub quadruped: Option<QuadLandmarks>,
     pub parts: Vec<PartSpec>,
     pub transitions: Vec<TransitionSpec>,
+    /// Seam apexes the transition fit may take instead of the derived
+    /// ones (`sketch::apex`, `tangent_fit::fit_apexes`).
+    pub apex_alternatives: Vec<ApexAlternative>,
+}
+
+/// A seam apex the transition fit tries beside the derived one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ApexAlternative {
+    /// Index of the transition in `Derived::transitions`.
+    pub transition: usize,
+    /// Its seam (between children `seam` and `seam + 1`).
+    pub seam: usize,
+    pub apex: [f64; 3],
 }
 
 /// The side profile must be drawn at the front's heights: its lowest point

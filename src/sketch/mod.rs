@@ -46,6 +46,7 @@
 //! profile error per view by [`report`].
 
 pub mod align;
+pub mod apex;
 pub mod check;
 pub mod check_ode6;
 pub mod corpus;

@@ -360,5 +360,6 @@ pub fn derive(
         quadruped: Some(lm),
         parts,
         transitions,
+        apex_alternatives: Vec::new(),
     })
 }

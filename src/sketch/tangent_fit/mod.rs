@@ -59,7 +59,9 @@ use crate::profile::{Profile, ProfileIndex, View};
 use crate::sketch::quality::{CREASED_EDGE_DEG, FOLD_DEG};
 use crate::sketch::vertex_grid::VertexGrid;
 
+mod apexes;
 mod rises;
+pub use apexes::fit_apexes;
 
 /// One candidate's points: those of each child it blends, in order.
 type Sets = Vec<Vec<[f64; 3]>>;
@@ -221,6 +223,19 @@ fn others_in_range(
         .collect()
 }
 
+/// Every solved part's sample points by name, as the mesh samples it
+/// (`res.rings_per_height` rings per model height `height`).
+fn part_sets(parts: &[PartSurface], height: f64, res: &Resolution) -> Vec<(String, Vec<[f64; 3]>)> {
+    parts
+        .iter()
+        .map(|p| {
+            let len = (p.u1 - p.u0).abs();
+            let rings = ((res.rings_per_height * len / height).ceil() as usize).max(2);
+            (p.name.clone(), part_points(p, rings))
+        })
+        .collect()
+}
+
 /// Sample points of a solved part's surface.
 fn part_points(p: &PartSurface, rings: usize) -> Vec<[f64; 3]> {
     let n = crate::character::ring::RING_VERTICES;
@@ -329,14 +344,7 @@ pub fn fit_child_scales(
             candidates.push(transition_points(t, parts, c, rows, &tries)?);
         }
     }
-    let mut all: Vec<(String, Vec<[f64; 3]>)> = parts
-        .iter()
-        .map(|p| {
-            let len = (p.u1 - p.u0).abs();
-            let rings = ((res.rings_per_height * len / height).ceil() as usize).max(2);
-            (p.name.clone(), part_points(p, rings))
-        })
-        .collect();
+    let mut all = part_sets(parts, height, &res);
     let names: Vec<String> = transitions
         .iter()
         .enumerate()

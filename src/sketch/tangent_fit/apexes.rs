@@ -1,0 +1,83 @@
+//! The seam apexes of sketched transitions fitted to the drawing: each
+//! alternative apex `sketch::apex` derives (a raised shoulder's peak
+//! nearer the neck than halfway) is tried against the derived apex on
+//! the two children whose loops share the seam, by the factors' rules
+//! ([`Scene::fit_members`] with [`Guard::NoCrease`]): taken only when it
+//! misses the drawn views by less (beyond [`super::FIT_TIE`]) without a
+//! crease or fold the derived apex avoids.
+
+use super::{drawn_views, part_sets, Guard, Scene};
+use crate::character::assembly::{transition_points, BlendTry, Resolution};
+use crate::character::part::PartSurface;
+use crate::character::spec::TransitionSpec;
+use crate::character::ModelError;
+use crate::profile::Profile;
+use crate::sketch::derived::ApexAlternative;
+
+/// The plain blend at the derived tangent factor: the apexes are fitted
+/// before the factors and rises (`fit_child_scales`).
+const PLAIN: [BlendTry; 1] = [BlendTry {
+    factor: 1.0,
+    rise: [0.0; 2],
+}];
+
+/// Fits the seam apexes of `transitions` among `alts` (module docs);
+/// `parts`: the solved parts; `front`, `side`: the placed drawn outlines;
+/// `height`: the model height.
+pub fn fit_apexes(
+    transitions: &mut [TransitionSpec],
+    alts: &[ApexAlternative],
+    parts: &[PartSurface],
+    front: &Profile,
+    side: Option<&Profile>,
+    height: f64,
+) -> Result<(), ModelError> {
+    if alts.is_empty() {
+        return Ok(());
+    }
+    let res = Resolution::default();
+    let rows = res.transition_rows;
+    let mut all = part_sets(parts, height, &res);
+    for (ti, t) in transitions.iter().enumerate() {
+        for c in 0..t.children.len() {
+            let pts = transition_points(t, parts, c, rows, &PLAIN)?;
+            all.push((
+                format!("{ti}/{c}"),
+                pts.into_iter().next().unwrap_or_default(),
+            ));
+        }
+    }
+    let mut scene = Scene {
+        drawn: drawn_views(front, side),
+        all,
+        rows,
+        height,
+    };
+    for a in alts {
+        let Some(t) = transitions.get(a.transition) else {
+            continue;
+        };
+        if a.seam + 1 >= t.children.len() || a.seam >= t.seam_apex.len() {
+            continue;
+        }
+        let mut tried = Vec::with_capacity(2);
+        for apex in [t.seam_apex[a.seam], a.apex] {
+            let mut tc = t.clone();
+            tc.seam_apex[a.seam] = apex;
+            let mut sets = Vec::with_capacity(2);
+            for c in [a.seam, a.seam + 1] {
+                let pts = transition_points(&tc, parts, c, rows, &PLAIN)?;
+                sets.push(pts.into_iter().next().unwrap_or_default());
+            }
+            tried.push(sets);
+        }
+        let me = [
+            format!("{}/{}", a.transition, a.seam),
+            format!("{}/{}", a.transition, a.seam + 1),
+        ];
+        if scene.fit_members(&[me[0].as_str(), me[1].as_str()], tried, Guard::NoCrease) == 1 {
+            transitions[a.transition].seam_apex[a.seam] = a.apex;
+        }
+    }
+    Ok(())
+}
