@@ -246,16 +246,9 @@ pub fn build(
             .iter()
             .map(|p| cache.get(p))
             .collect::<Result<Vec<_>, _>>()?;
-        crate::sketch::tangent_fit::fit_apexes(
+        crate::sketch::tangent_fit::fit_transitions(
             &mut transitions,
             &d.apex_alternatives,
-            &solved,
-            &front.profile,
-            side.as_ref().map(|s| &s.profile),
-            height,
-        )?;
-        crate::sketch::tangent_fit::fit_child_scales(
-            &mut transitions,
             &solved,
             &front.profile,
             side.as_ref().map(|s| &s.profile),

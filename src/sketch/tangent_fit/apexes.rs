@@ -21,6 +21,21 @@ const PLAIN: [BlendTry; 1] = [BlendTry {
     rise: [0.0; 2],
 }];
 
+/// Fits the seam apexes of `transitions` among `alts` ([`fit_apexes`]),
+/// then each child's tangent factor and late depth blend
+/// ([`super::fit_child_scales`]), with the same arguments.
+pub fn fit_transitions(
+    transitions: &mut [TransitionSpec],
+    alts: &[ApexAlternative],
+    parts: &[PartSurface],
+    front: &Profile,
+    side: Option<&Profile>,
+    height: f64,
+) -> Result<(), ModelError> {
+    fit_apexes(transitions, alts, parts, front, side, height)?;
+    super::fit_child_scales(transitions, parts, front, side, height)
+}
+
 /// Fits the seam apexes of `transitions` among `alts` (module docs);
 /// `parts`: the solved parts; `front`, `side`: the placed drawn outlines;
 /// `height`: the model height.
