@@ -124,6 +124,29 @@ pub fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
+/// How far the ray from `origin` along the unit direction `d` runs before
+/// it first crosses an edge of the closed outline `points` farther than
+/// `min`; None when it crosses none.
+pub fn ray_exit(points: &[[f64; 2]], origin: [f64; 2], d: [f64; 2], min: f64) -> Option<f64> {
+    let n = points.len();
+    let mut best: Option<f64> = None;
+    for k in 0..n {
+        let (a, b) = (points[k], points[(k + 1) % n]);
+        let e = [b[0] - a[0], b[1] - a[1]];
+        let den = d[0] * e[1] - d[1] * e[0];
+        if den.abs() < f64::MIN_POSITIVE {
+            continue;
+        }
+        let q = [a[0] - origin[0], a[1] - origin[1]];
+        let s = (q[0] * e[1] - q[1] * e[0]) / den;
+        let u = (q[0] * d[1] - q[1] * d[0]) / den;
+        if (0.0..=1.0).contains(&u) && s > min && best.is_none_or(|b| s < b) {
+            best = Some(s);
+        }
+    }
+    best
+}
+
 /// The top of the outline's vertical interval at `x` that holds height
 /// `y` (even-odd rule), or None when `y` is outside the outline there.
 pub fn top_through(points: &[[f64; 2]], x: f64, y: f64) -> Option<f64> {

@@ -96,22 +96,7 @@ fn tilted(
         return None;
     }
     let d = [target.cos(), target.sin()];
-    let n = front.len();
-    let mut best: Option<f64> = None;
-    for k in 0..n {
-        let (a, b) = (front[k], front[(k + 1) % n]);
-        let e = [b[0] - a[0], b[1] - a[1]];
-        let den = d[0] * e[1] - d[1] * e[0];
-        if den.abs() < f64::MIN_POSITIVE {
-            continue;
-        }
-        let q = [a[0] - inner[0], a[1] - inner[1]];
-        let s = (q[0] * e[1] - q[1] * e[0]) / den;
-        let u = (q[0] * d[1] - q[1] * d[0]) / den;
-        if (0.0..=1.0).contains(&u) && s > 0.5 * w && best.is_none_or(|b| s < b) {
-            best = Some(s);
-        }
-    }
+    let mut best = super::poly::ray_exit(front, inner, d, 0.5 * w);
     // turned all the way to the aim, the ray leaves the outline there at
     // the latest: a ray through a vertex can miss both of its edges by
     // rounding and find a crossing beyond it
