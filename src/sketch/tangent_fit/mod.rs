@@ -61,7 +61,7 @@ use crate::sketch::vertex_grid::VertexGrid;
 
 mod apexes;
 mod rises;
-pub use apexes::{fit_apexes, fit_transitions};
+pub use apexes::fit_transitions;
 
 /// One candidate's points: those of each child it blends, in order.
 type Sets = Vec<Vec<[f64; 3]>>;
