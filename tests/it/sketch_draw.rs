@@ -694,6 +694,16 @@ fn arm_sections_turn_to_the_drawn_shoulder_s_corner() {
     );
 }
 
+/// The humanoid of issue 28's ranges at draws `u` (a random drawing of
+/// `sketch_corpus write DIR --seed N --random 48 --ranges issue`, named
+/// `name` there), drawn on an Inkscape mm page and built at 1.7 m.
+fn issue_draws(u: &[f64; 16], name: &str) -> Built {
+    let h = HumanoidRanges::ISSUE.at(u, 1.7);
+    let dir = tmpdir(name);
+    let (f, s) = write_pair(&dir, name, &h, Style::InkscapeMm, 0.18, [100.0, 260.0]);
+    build(&f, &s, Some(1.7)).unwrap_or_else(|e| panic!("{name} builds: {e:?}"))
+}
+
 /// A raised shoulder whose peak lies nearer the neck than halfway to the
 /// arm (seed 4242's random_46 of the issue's ranges, `sketch_corpus write
 /// DIR --seed 4242 --random 48 --ranges issue`: its draws) is followed by
@@ -721,10 +731,7 @@ fn a_raised_shoulder_s_peak_is_the_seam_s_apex() {
         0.4431529616099813,
         0.2822846223426868,
     ];
-    let h = HumanoidRanges::ISSUE.at(&u, 1.7);
-    let dir = tmpdir("raised-shoulder");
-    let (f, s) = write_pair(&dir, "r46", &h, Style::InkscapeMm, 0.18, [100.0, 260.0]);
-    let b = build(&f, &s, Some(1.7)).expect("random_46 builds");
+    let b = issue_draws(&u, "random_46");
     let q = &b.report.quality;
     let front = q.whole.view("front").expect("a front view");
     assert!(
@@ -765,10 +772,7 @@ fn a_ledge_at_the_hips_does_not_ring_through_the_torso() {
         0.12072023167945722,
         0.8898247387535202,
     ];
-    let h = HumanoidRanges::ISSUE.at(&u, 1.7);
-    let dir = tmpdir("hip-ledge");
-    let (f, s) = write_pair(&dir, "r40", &h, Style::InkscapeMm, 0.18, [100.0, 260.0]);
-    let b = build(&f, &s, Some(1.7)).expect("random_40 builds");
+    let b = issue_draws(&u, "random_40");
     let q = &b.report.quality;
     let front = q.whole.view("front").expect("a front view");
     assert!(
