@@ -34,7 +34,9 @@ pub const SHOULDER_TILT_SECTIONS: usize = 2;
 /// 1 % outside). Not for a leg turned into a foot (its foot's sections
 /// keep the centres' distance) nor for an animal's horizontal slices
 /// (its parts bend within their own width: the bundled animal 0.85 ->
-/// 1.6 % of the height).
+/// 1.6 % of the height). On a seed chosen after it (7777, issue ranges)
+/// passes 27 -> 28. A traced arm's parameter follows its rims instead
+/// (`uncross::rim_arc_lengths`, about k = 1).
 pub const RADIUS_WEIGHT: f64 = 0.5;
 /// Side-profile depth at height y: `(centre z, half depth)` of the slice
 /// part `pick` names (None when hidden or when there is none).
