@@ -29,8 +29,9 @@
 //! `GAP_FRACTION` x height); the legs below the belly (hanging, closed at the
 //! foot); above the body the tail, the `back` (a dome between tail and neck,
 //! when the outline has one) and `head` (neck and head, closed at the top of
-//! the skull). The head is the higher of the two end parts above the body:
-//! it says which way the animal faces and so which legs are front legs.
+//! the skull). The head is the larger of the two end parts above the body
+//! (a raised tail may reach higher): it says which way the animal faces
+//! and so which legs are front legs.
 //! **Legs**: with 4, the outer leg of each pair (farthest from the body's
 //! middle) is the near one, seen from +z (the right when the animal faces
 //! +x: `leg_fr`, `leg_br`), the inner one the far one (`leg_fl`, `leg_bl`);
@@ -149,7 +150,7 @@ pub fn regions(
 }
 
 /// The parts above an animal's body (tail, back, head), by x; sets
-/// `lm.facing` from which end part reaches higher (the head).
+/// `lm.facing` from which end part is the larger (the head, [`region_area`]).
 fn above_regions(
     front: &[[f64; 2]],
     lm: &mut QuadLandmarks,
@@ -179,7 +180,8 @@ fn above_regions(
         let y1 = reach(front, pick, y0, lm.y_max + g);
         above.push((pick, y0, y1));
     }
-    let (first, last) = (above[0].2, above[above.len() - 1].2);
+    let area = |(pick, y0, y1): (Pick, f64, f64)| region_area(front, pick, y0, y1);
+    let (first, last) = (area(above[0]), area(above[above.len() - 1]));
     lm.facing = if last >= first { 1.0 } else { -1.0 };
     let mut names = match above.len() {
         2 => vec!["tail", "head"],
@@ -206,6 +208,18 @@ fn above_regions(
         });
     }
     Ok(())
+}
+
+/// The area of a region's slices between two heights (64 slices): the
+/// neck and head outweigh a tail, however high the tail is raised (the
+/// corpus dog's tail tip is above its head).
+fn region_area(front: &[[f64; 2]], pick: Pick, y0: f64, y1: f64) -> f64 {
+    let n = 64;
+    let dy = (y1 - y0) / n as f64;
+    (0..n)
+        .filter_map(|k| interval(front, pick, y0 + (k as f64 + 0.5) * dy))
+        .map(|iv| (iv[1] - iv[0]) * dy)
+        .sum()
 }
 
 /// An animal's legs below its body, by x, named by `lm.facing`.
