@@ -2,7 +2,7 @@
 //! and the corners where tail, back and neck join the body (see the parent
 //! module's docs).
 
-use super::super::poly::{gap_tops, merge_repeats, GapTop};
+use super::super::poly::{gap_tops, merge_repeats, slice, GapTop};
 use super::super::segment::{interval, Pick, GAP_FRACTION, LANDMARK_SLICES};
 use super::super::SketchError;
 
@@ -40,6 +40,11 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     merge_repeats(&mut top, g);
     let mut top: Vec<[f64; 2]> = top.iter().map(|t| [t.x, -t.y]).collect();
     prune_notches(front, &mut top, g);
+    if top.is_empty() {
+        // one part above the body (a neck, the tail hanging or absent): no
+        // corner between two rising parts, but the back line under it
+        top.extend(back_line(front, mid));
+    }
     if legs.len() != 1 && legs.len() != 3 {
         return Err(SketchError::Segmentation(format!(
             "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
@@ -49,7 +54,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     }
     if top.is_empty() || top.len() > 2 {
         return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} corner(s) where parts above the body join it; expected a tail and a neck rising above the back (1 corner, or 2 with a domed back between them): draw the neck and the tail rising above the back line (a tail hanging down or level with the back is not recognised yet)",
+            "quadruped: found {} corner(s) where parts above the body join it; expected a neck rising above the back line, with a tail rising beside it or not (1 corner, or 2 with a domed back between them): draw the neck rising above the back (a head level with the back, in front of the body, is not recognised yet)",
             top.len()
         )));
     }
@@ -60,6 +65,41 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         top_gaps: top,
         facing: 1.0,
     })
+}
+
+/// The smallest rise of the widest slice interval's width, going down one
+/// landmark slice, that marks the back line under a lone neck, as a
+/// fraction of the outline's length: the corpus dog with its tail down
+/// steps from its neck's width to its body's, 0.58 of its length; a
+/// rounded back or head widens by a few thousandths of it per slice.
+pub const BACK_STEP: f64 = 0.25;
+
+/// Where a lone part above the body (a neck) rises from the back line:
+/// the highest step down (in the upper half, above `mid`) where the widest
+/// slice interval widens by at least [`BACK_STEP`] of the outline's
+/// length between two landmark slices, as the neck's centre x over the
+/// height of the step. None when no such step exists.
+fn back_line(front: &[[f64; 2]], mid: f64) -> Option<[f64; 2]> {
+    let xr = crate::polygon::span(front, 0);
+    let yr = crate::polygon::span(front, 1);
+    let n = LANDMARK_SLICES;
+    let widest = |y: f64| {
+        slice(front, y)
+            .into_iter()
+            .max_by(|a, b| (a[1] - a[0]).total_cmp(&(b[1] - b[0])))
+    };
+    let step = BACK_STEP * (xr[1] - xr[0]);
+    let dy = (yr[1] - mid) / n as f64;
+    let mut above = widest(yr[1] - 0.5 * dy)?;
+    for k in 1..n {
+        let y = yr[1] - (k as f64 + 0.5) * dy;
+        let Some(iv) = widest(y) else { continue };
+        if (iv[1] - iv[0]) - (above[1] - above[0]) >= step {
+            return Some([0.5 * (above[0] + above[1]), y + 0.5 * dy]);
+        }
+        above = iv;
+    }
+    None
 }
 
 /// Removes top gaps that separate nothing: a corner of the outline that
@@ -114,6 +154,54 @@ mod tests {
             [0.5, 2.0],
             [0.0, 2.0],
         ]
+    }
+
+    /// A body 4 long on two legs with a neck post over its right end and
+    /// no tail (counter-clockwise).
+    fn lone_neck() -> Vec<[f64; 2]> {
+        vec![
+            [0.0, 0.0],
+            [0.5, 0.0],
+            [0.5, 1.0],
+            [3.0, 1.0],
+            [3.0, 0.0],
+            [3.5, 0.0],
+            [3.5, 1.0],
+            [4.0, 1.0],
+            [4.0, 2.0],
+            [3.8, 2.0],
+            [3.8, 3.2],
+            [3.2, 3.2],
+            [3.2, 2.0],
+            [0.0, 2.0],
+        ]
+    }
+
+    #[test]
+    fn a_lone_neck_rises_from_the_back_line_and_is_the_head() {
+        use crate::check::tol::{ROUNDING, SOLVE};
+        let front = lone_neck();
+        let mut lm = landmarks(&front).expect("a lone neck is accepted");
+        assert_eq!(lm.top_gaps.len(), 1);
+        let [x, y] = lm.top_gaps[0];
+        // the neck's centre to rounding, the back line to a landmark slice
+        let slice_h = (3.2 - 1.6) / LANDMARK_SLICES as f64;
+        assert!(
+            (x - 3.5).abs() <= ROUNDING && (y - 2.0).abs() <= slice_h,
+            "{x} {y}"
+        );
+        let regs = super::super::regions(&front, None, &mut lm).expect("regions");
+        let names: Vec<&str> = regs.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(names, ["body", "head", "leg_b", "leg_f"]);
+        assert_eq!(lm.facing, 1.0);
+        let head = &regs[1];
+        // the head's region from the back line up to the top (`reach`
+        // bisects to 2^-40 of its scan step)
+        assert!(head.y0 > y && (head.y1 - 3.2).abs() <= SOLVE, "{head:?}");
+        // without the neck's step (a flat box on legs) nothing is found
+        let mut flat = front.clone();
+        flat.drain(9..13);
+        assert!(back_line(&flat, 1.0).is_none());
     }
 
     #[test]

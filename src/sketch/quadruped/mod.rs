@@ -18,9 +18,13 @@
 //! the neck merge into the body. A corner found on two neighbouring slices
 //! counts once, and a corner with no part rising above it (the tail's
 //! underside meeting a rounded rump below a flat back) is dropped
-//! (`landmarks::prune_notches`). 1 or 3 leg gaps (2 or 4 legs) and 1 or 2
-//! top gaps (tail and head, or tail, back and head) are accepted; anything
-//! else is an error naming what was found.
+//! (`landmarks::prune_notches`). With no such corner (one part above the
+//! back: a neck, the tail hanging or absent), the back line under that
+//! part is where the slices step from its width to the body's
+//! (`landmarks::back_line`), and the part is the head. 1 or 3 leg gaps (2
+//! or 4 legs) and 1 or 2 top gaps (tail and head, or tail, back and head;
+//! or the lone head's back line) are accepted; anything else is an error
+//! naming what was found.
 //!
 //! **Parts**, each the slice intervals of a region of heights as for a
 //! humanoid, so each is a C2 pde6 chain with sections perpendicular to its
@@ -48,7 +52,9 @@
 //! body's end ring where the seam apexes lie along it (`cut_angles`), not
 //! at the humanoid's fixed angles.
 //!
-//! Not supported yet: a tail hanging down (it would be taken as a leg),
+//! Not supported yet: a tail hanging down as a part of its own (its part
+//! below the rump is left out, and the report says the model misses it), a
+//! head level with the back (no neck rising above it),
 //! cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
@@ -172,8 +178,11 @@ fn above_regions(
             .fold(f64::MIN, f64::max)
             + g;
         if interval(front, pick, y0).is_none() {
+            if lm.top_gaps.len() == 1 {
+                return lone_above(front, lm, y0, big, out);
+            }
             return Err(SketchError::Segmentation(format!(
-                "quadruped: no outline above the corner at y = {:.4}: draw the neck and the tail rising above the back, each meeting it at a corner (a tail hanging down or level with the back is not recognised yet)",
+                "quadruped: no outline above the corner at y = {:.4}: draw the neck and the tail rising above the back, each meeting it at a corner",
                 y0 - g
             )));
         }
@@ -191,23 +200,58 @@ fn above_regions(
         names.reverse();
     }
     for ((pick, y0, y1), name) in above.into_iter().zip(names) {
-        out.push(Region {
-            name: name.into(),
-            y0,
-            y1,
-            pick,
-            downward: false,
-            tip: true,
-            shoulder: None,
-            horizontal: true,
-            side: if name == "tail" {
-                SidePick::Hidden
-            } else {
-                SidePick::Whole
-            },
-        });
+        out.push(above_region(name, pick, y0, y1));
     }
     Ok(())
+}
+
+/// The one part above the body when a lone corner (a neck over the back
+/// line, `landmarks::back_line`) has nothing on one of its sides: the head,
+/// the whole slice over the back line from `y0` up; the animal faces
+/// where it stands from the outline's middle.
+fn lone_above(
+    front: &[[f64; 2]],
+    lm: &mut QuadLandmarks,
+    y0: f64,
+    big: f64,
+    out: &mut Vec<Region>,
+) -> Result<(), SketchError> {
+    let pick = Pick::CentreIn(-big, big);
+    let Some(iv) = interval(front, pick, y0) else {
+        return Err(SketchError::Segmentation(
+            "quadruped: no neck rising above the back line: draw the neck rising above the back"
+                .into(),
+        ));
+    };
+    let xr = crate::polygon::span(front, 0);
+    lm.facing = if iv[0] + iv[1] >= xr[0] + xr[1] {
+        1.0
+    } else {
+        -1.0
+    };
+    let y1 = reach(front, pick, y0, lm.y_max + lm.height() * GAP_FRACTION);
+    out.push(above_region("head", pick, y0, y1));
+    Ok(())
+}
+
+/// A part above an animal's body, closed at its top; a tail is hidden in
+/// the head-on view.
+fn above_region(name: &str, pick: Pick, y0: f64, y1: f64) -> Region {
+    Region {
+        name: name.into(),
+        y0,
+        y1,
+        pick,
+        downward: false,
+        tip: true,
+        shoulder: None,
+        horizontal: true,
+        side: if name == "tail" {
+            SidePick::Hidden
+        } else {
+            SidePick::Whole
+        },
+    }
 }
 
 /// The area of a region's slices between two heights (64 slices): the
@@ -326,9 +370,11 @@ pub fn derive(
     let z0 = body.sections[0].centre[2];
     let z1 = body.sections[body.sections.len() - 1].centre[2];
     let names = |r: &[Region]| r.iter().map(|r| r.name.clone()).collect::<Vec<_>>();
-    let n_above = lm.top_gaps.len() + 1;
+    let n_above = regs[1..].iter().filter(|r| !r.downward).count();
     let above = names(&regs[1..1 + n_above]);
     let legs = names(&regs[1 + n_above..]);
+    // a lone part above (a neck over the back line) has no seam
+    let seams_above = &lm.top_gaps[..n_above - 1];
     let (c0, a0) = half_width(body, End::Start);
     let (c1, a1) = half_width(body, End::End);
     let transitions = vec![
@@ -354,9 +400,8 @@ pub fn derive(
             parent: "body".into(),
             parent_end: End::End,
             children: above,
-            seam_apex: lm.top_gaps.iter().map(|p| [p[0], p[1], z1]).collect(),
-            cut_angles: lm
-                .top_gaps
+            seam_apex: seams_above.iter().map(|p| [p[0], p[1], z1]).collect(),
+            cut_angles: seams_above
                 .iter()
                 .map(|p| cut_angle(c1, a1, p[0], 1.0))
                 .collect(),
