@@ -255,3 +255,50 @@ fn a_dog_with_its_tail_down_builds_with_its_head_over_the_back() {
         b.report.warnings
     );
 }
+
+/// The corpus elephant: its head level with the back, in front of the
+/// body, nothing rising above the back. It was refused ("found 0
+/// corner(s)"); the body's slices now reach the top and close there, with
+/// no `topside`. Its trunk hangs from the head and is left out: the
+/// report says so (the front's largest miss).
+#[test]
+fn an_elephant_with_nothing_above_its_back_builds_closed() {
+    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
+    let dir = Path::new(DATA).join("corpus");
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let e = m
+        .entries
+        .iter()
+        .find(|e| e.name == "elephant")
+        .expect("entry");
+    let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("elephant: {err}"));
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["body", "leg_b", "leg_f"]);
+    assert!(b.doc.parts()[0].closed_end, "the body closes at the top");
+    // it faces +x (the generator's head): the front leg is the one at +x
+    let mean_x = |n: &str| {
+        let s = &b
+            .doc
+            .parts()
+            .iter()
+            .find(|p| p.name == n)
+            .expect(n)
+            .sections;
+        s.iter().map(|q| q.centre[0]).sum::<f64>() / s.len() as f64
+    };
+    assert!(mean_x("leg_f") > mean_x("leg_b"));
+    let tr: Vec<&str> = b
+        .doc
+        .transitions()
+        .iter()
+        .map(|t| t.name.as_str())
+        .collect();
+    assert_eq!(tr, ["underside"]);
+    assert!(
+        b.report.warnings.iter().any(|w| w.contains("front")),
+        "the missing trunk is reported: {:?}",
+        b.report.warnings
+    );
+}

@@ -25,6 +25,14 @@ impl QuadLandmarks {
     }
 }
 
+/// Whether an outline is longer than tall: its principal axis
+/// (`align::axes`) is defined and within 45 degrees of horizontal.
+pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
+    let ax = super::super::align::axes(front);
+    ax.anisotropy >= super::super::align::MIN_ANISOTROPY
+        && ax.major.abs() < std::f64::consts::FRAC_PI_4
+}
+
 /// Finds the leg gaps and top corners.
 pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     let yr = crate::polygon::span(front, 1);
@@ -52,9 +60,17 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
             legs.len() + 1
         )));
     }
-    if top.is_empty() || top.len() > 2 {
+    // none: nothing rises above the back (a head level with it, in front
+    // of the body): the body closes at the top, when it is an animal's
+    // long body (an upright outline forced to this plan is refused)
+    if top.is_empty() && !longer_than_tall(front) {
+        return Err(SketchError::Segmentation(
+            "quadruped: nothing rises above the back of an outline taller than long: draw the animal's lateral view with its neck rising above the back".into(),
+        ));
+    }
+    if top.len() > 2 {
         return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} corner(s) where parts above the body join it; expected a neck rising above the back line, with a tail rising beside it or not (1 corner, or 2 with a domed back between them): draw the neck rising above the back (a head level with the back, in front of the body, is not recognised yet)",
+            "quadruped: found {} corner(s) where parts above the body join it; expected at most a tail, a domed back and a neck rising above the back line (2 corners): draw fewer parts above the back",
             top.len()
         )));
     }
@@ -198,10 +214,25 @@ mod tests {
         // the head's region from the back line up to the top (`reach`
         // bisects to 2^-40 of its scan step)
         assert!(head.y0 > y && (head.y1 - 3.2).abs() <= SOLVE, "{head:?}");
-        // without the neck's step (a flat box on legs) nothing is found
+        // without the neck's step (a flat box on legs) nothing is found,
+        // and the body closes at the top with nothing above it
         let mut flat = front.clone();
         flat.drain(9..13);
         assert!(back_line(&flat, 1.0).is_none());
+        let mut lm = landmarks(&flat).expect("a long box on legs");
+        assert!(lm.top_gaps.is_empty());
+        let regs = super::super::regions(&flat, None, &mut lm).expect("regions");
+        let mut names: Vec<&str> = regs.iter().map(|r| r.name.as_str()).collect();
+        names.sort_unstable();
+        assert_eq!(names, ["body", "leg_b", "leg_f"]);
+        assert!(
+            regs[0].tip && (regs[0].y1 - 2.0).abs() <= ROUNDING,
+            "{:?}",
+            regs[0]
+        );
+        // the same box stood on end (taller than long) is refused
+        let tall: Vec<[f64; 2]> = flat.iter().map(|p| [p[0] / 4.0, p[1] * 2.0]).collect();
+        assert!(landmarks(&tall).is_err());
     }
 
     #[test]

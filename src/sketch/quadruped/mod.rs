@@ -52,14 +52,19 @@
 //! body's end ring where the seam apexes lie along it (`cut_angles`), not
 //! at the humanoid's fixed angles.
 //!
-//! Not supported yet: a tail hanging down as a part of its own (its part
-//! below the rump is left out, and the report says the model misses it), a
-//! head level with the back (no neck rising above it),
+//! With no part above the back at all (a head level with it, in front of
+//! the body: an elephant), the body's slices reach the top and close there,
+//! with no `topside`, and the animal faces where the outline's centroid
+//! lies from its legs' middle.
+//!
+//! Not supported yet: a tail or trunk hanging down as a part of its own
+//! (its part below the body is left out, and the report says the model
+//! misses it),
 //! cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
 pub mod landmarks;
-pub use landmarks::{landmarks, QuadLandmarks};
+pub use landmarks::{landmarks, longer_than_tall, QuadLandmarks};
 
 use super::derived::{check_side_height, e1_half_width, ring_angle, Derived};
 use super::part_slices::part_from_region;
@@ -83,13 +88,6 @@ pub const UNDERSIDE_CUT_BLEND: f64 = 0.35;
 /// below the belly between the legs: bundled animal front 1.1 % at 1,
 /// 0.92 % at 0.8).
 pub const TANGENT_SCALE: f64 = 0.8;
-
-/// Whether an outline is longer than tall: its principal axis
-/// (`align::axes`) is defined and within 45 degrees of horizontal.
-pub fn longer_than_tall(front: &[[f64; 2]]) -> bool {
-    let ax = super::align::axes(front);
-    ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
-}
 
 /// The body plan to segment with: `Auto` is a quadruped when the front
 /// outline is longer than tall ([`longer_than_tall`]).
@@ -127,19 +125,30 @@ pub fn regions(
     let g = GAP_FRACTION * lm.height();
     let big = 1e3 * lm.height();
     let leg_top = lm.leg_gaps.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
-    let top_low = lm.top_gaps.iter().map(|p| p[1]).fold(f64::MAX, f64::min);
+    // with nothing above the back the body reaches the top and closes there
+    let closed_top = lm.top_gaps.is_empty();
+    let top_low = lm
+        .top_gaps
+        .iter()
+        .map(|p| p[1])
+        .fold(lm.y_max + g, f64::min);
     let mut out = vec![Region {
         name: "body".into(),
         y0: leg_top + g,
         y1: top_low - g,
         pick: Pick::CentreIn(-big, big),
         downward: false,
-        tip: false,
+        tip: closed_top,
         shoulder: None,
         horizontal: true,
         side: SidePick::Span,
     }];
-    above_regions(front, lm, g, big, &mut out)?;
+    if closed_top {
+        // the head is within the body's slices
+        lm.facing = facing_of_mass(front, lm);
+    } else {
+        above_regions(front, lm, g, big, &mut out)?;
+    }
     leg_regions(front, side, lm, g, big, &mut out)?;
     for r in &out {
         if (r.y1 - r.y0).partial_cmp(&(2.0 * g)) != Some(std::cmp::Ordering::Greater) {
@@ -153,6 +162,20 @@ pub fn regions(
         }
     }
     Ok(out)
+}
+
+/// +1 when the outline's centroid lies right of the middle of its leg
+/// gaps: a head in front of the body, level with the back, outweighs the
+/// rump behind the hind legs (the corpus elephant).
+fn facing_of_mass(front: &[[f64; 2]], lm: &QuadLandmarks) -> f64 {
+    let (_, c, _) = super::align::moments(front);
+    let n = lm.leg_gaps.len().max(1) as f64;
+    let legs = lm.leg_gaps.iter().map(|p| p[0]).sum::<f64>() / n;
+    if c[0] < legs {
+        -1.0
+    } else {
+        1.0
+    }
 }
 
 /// The parts above an animal's body (tail, back, head), by x; sets
@@ -374,10 +397,11 @@ pub fn derive(
     let above = names(&regs[1..1 + n_above]);
     let legs = names(&regs[1 + n_above..]);
     // a lone part above (a neck over the back line) has no seam
-    let seams_above = &lm.top_gaps[..n_above - 1];
+    let seams_above = &lm.top_gaps[..n_above.saturating_sub(1)];
+    let has_above = n_above > 0;
     let (c0, a0) = half_width(body, End::Start);
     let (c1, a1) = half_width(body, End::End);
-    let transitions = vec![
+    let mut transitions = vec![
         TransitionSpec {
             name: "underside".into(),
             parent: "body".into(),
@@ -412,6 +436,9 @@ pub fn derive(
             child_rises: Vec::new(),
         },
     ];
+    if !has_above {
+        transitions.pop();
+    }
     Ok(Derived {
         plan: BodyPlan::Quadruped,
         alignment: super::align::Alignment::identity(),
