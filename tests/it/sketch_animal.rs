@@ -173,11 +173,7 @@ const DOG_SIDE_OUTSIDE: f64 = 0.04;
 
 #[test]
 fn the_dog_faces_its_head_and_its_feet_stay_under_their_legs() {
-    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
-    let dir = Path::new(DATA).join("corpus");
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
-    let e = m.entries.iter().find(|e| e.name == "dog").expect("dog");
-    let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("dog: {err}"));
+    let b = corpus_animal("dog");
     let part = |n: &str| b.doc.parts().iter().find(|p| p.name == n).expect(n);
     let mean_x = |n: &str| {
         let s = &part(n).sections;
@@ -225,17 +221,7 @@ fn the_dog_faces_its_head_and_its_feet_stay_under_their_legs() {
 /// where the model misses the drawing.
 #[test]
 fn a_dog_with_its_tail_down_builds_with_its_head_over_the_back() {
-    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
-    let dir = Path::new(DATA).join("corpus");
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
-    let e = m
-        .entries
-        .iter()
-        .find(|e| e.name == "dog_tail_down_two_legs")
-        .expect("entry");
-    let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("tail down: {err}"));
-    let t = &b.report.topology;
-    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    let b = corpus_animal("dog_tail_down_two_legs");
     let mut names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
     names.sort_unstable();
     assert_eq!(names, ["body", "head", "leg_b", "leg_f"]);
@@ -263,17 +249,7 @@ fn a_dog_with_its_tail_down_builds_with_its_head_over_the_back() {
 /// report says so (the front's largest miss).
 #[test]
 fn an_elephant_with_nothing_above_its_back_builds_closed() {
-    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
-    let dir = Path::new(DATA).join("corpus");
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
-    let e = m
-        .entries
-        .iter()
-        .find(|e| e.name == "elephant")
-        .expect("entry");
-    let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("elephant: {err}"));
-    let t = &b.report.topology;
-    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    let b = corpus_animal("elephant");
     let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
     assert_eq!(names, ["body", "leg_b", "leg_f"]);
     assert!(b.doc.parts()[0].closed_end, "the body closes at the top");
@@ -301,4 +277,17 @@ fn an_elephant_with_nothing_above_its_back_builds_closed() {
         "the missing trunk is reported: {:?}",
         b.report.warnings
     );
+}
+
+/// A corpus animal built as a user would (intermediate level), checked
+/// closed.
+fn corpus_animal(name: &str) -> pdesculpt::pipeline::Built {
+    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
+    let dir = Path::new(DATA).join("corpus");
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let e = m.entries.iter().find(|e| e.name == name).expect(name);
+    let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("{name}: {err}"));
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
+    b
 }
