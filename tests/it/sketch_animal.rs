@@ -23,12 +23,7 @@ fn every_level_of_the_bundled_animal_is_closed_with_its_parts() {
         assert!(t.watertight && t.manifold && t.oriented, "{level:?}: {t:?}");
         let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
         assert_eq!(names, PARTS, "{level:?}");
-        let tr: Vec<&str> = b
-            .doc
-            .transitions()
-            .iter()
-            .map(|t| t.name.as_str())
-            .collect();
+        let tr = transition_names(&b.doc);
         assert_eq!(tr, ["underside", "topside"]);
         assert!(
             b.report.max_c1 <= C1_JUMP,
@@ -124,16 +119,13 @@ fn cli_builds_the_animal_and_the_body_plan_overrides() {
 /// (side error 58 % of the height on the cat).
 #[test]
 fn corpus_animals_with_a_flat_back_build_with_their_parts() {
-    use pdesculpt::pipeline::corpus::{build_entry, read_manifest};
+    use pdesculpt::pipeline::corpus::read_manifest;
     use pdesculpt::sketch::quality::Bounds;
-    let dir = Path::new(DATA).join("corpus");
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let m = read_manifest(&Path::new(DATA).join("corpus")).expect("the corpus manifest reads");
     for name in ["dog", "cat"] {
         let e = m.entries.iter().find(|e| e.name == name).expect("entry");
         assert!(!e.held_out, "{name} is a development drawing");
-        let b = build_entry(&dir, e).unwrap_or_else(|err| panic!("{name}: {err}"));
-        let t = &b.report.topology;
-        assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
+        let b = corpus_animal(name);
         let mut names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
         names.sort_unstable();
         assert_eq!(
@@ -265,12 +257,7 @@ fn an_elephant_with_nothing_above_its_back_builds_closed() {
         s.iter().map(|q| q.centre[0]).sum::<f64>() / s.len() as f64
     };
     assert!(mean_x("leg_f") > mean_x("leg_b"));
-    let tr: Vec<&str> = b
-        .doc
-        .transitions()
-        .iter()
-        .map(|t| t.name.as_str())
-        .collect();
+    let tr = transition_names(&b.doc);
     assert_eq!(tr, ["underside"]);
     assert!(
         b.report.warnings.iter().any(|w| w.contains("front")),
@@ -290,4 +277,9 @@ fn corpus_animal(name: &str) -> pdesculpt::pipeline::Built {
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
     b
+}
+
+/// The names of a document's transitions, in order.
+fn transition_names(doc: &pdesculpt::character::doc::CharacterDoc) -> Vec<&str> {
+    doc.transitions().iter().map(|t| t.name.as_str()).collect()
 }

@@ -15,6 +15,10 @@ pub struct QuadLandmarks {
     pub leg_gaps: Vec<[f64; 2]>,
     /// Corners between tail, back and neck at the top, by x.
     pub top_gaps: Vec<[f64; 2]>,
+    /// With no such corner, the back line under a lone part above the body
+    /// (a neck: the tail hanging or absent), [`back_line`]; None also when
+    /// nothing rises above the back (the body closes at the top).
+    pub back_line: Option<[f64; 2]>,
     /// +1 when the head is toward +x, -1 toward -x.
     pub facing: f64,
 }
@@ -48,11 +52,13 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     merge_repeats(&mut top, g);
     let mut top: Vec<[f64; 2]> = top.iter().map(|t| [t.x, -t.y]).collect();
     prune_notches(front, &mut top, g);
-    if top.is_empty() {
-        // one part above the body (a neck, the tail hanging or absent): no
-        // corner between two rising parts, but the back line under it
-        top.extend(back_line(front, mid));
-    }
+    // one part above the body (a neck, the tail hanging or absent): no
+    // corner between two rising parts, but the back line under it
+    let lone = if top.is_empty() {
+        back_line(front, mid)
+    } else {
+        None
+    };
     if legs.len() != 1 && legs.len() != 3 {
         return Err(SketchError::Segmentation(format!(
             "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
@@ -63,7 +69,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     // none: nothing rises above the back (a head level with it, in front
     // of the body): the body closes at the top, when it is an animal's
     // long body (an upright outline forced to this plan is refused)
-    if top.is_empty() && !longer_than_tall(front) {
+    if top.is_empty() && lone.is_none() && !longer_than_tall(front) {
         return Err(SketchError::Segmentation(
             "quadruped: nothing rises above the back of an outline taller than long: draw the animal's lateral view with its neck rising above the back".into(),
         ));
@@ -79,6 +85,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         y_max: yr[1],
         leg_gaps: legs,
         top_gaps: top,
+        back_line: lone,
         facing: 1.0,
     })
 }
@@ -198,8 +205,8 @@ mod tests {
         use crate::check::tol::{ROUNDING, SOLVE};
         let front = lone_neck();
         let mut lm = landmarks(&front).expect("a lone neck is accepted");
-        assert_eq!(lm.top_gaps.len(), 1);
-        let [x, y] = lm.top_gaps[0];
+        assert!(lm.top_gaps.is_empty());
+        let [x, y] = lm.back_line.expect("the back line under the neck");
         // the neck's centre to rounding, the back line to a landmark slice
         let slice_h = (3.2 - 1.6) / LANDMARK_SLICES as f64;
         assert!(
@@ -220,7 +227,7 @@ mod tests {
         flat.drain(9..13);
         assert!(back_line(&flat, 1.0).is_none());
         let mut lm = landmarks(&flat).expect("a long box on legs");
-        assert!(lm.top_gaps.is_empty());
+        assert!(lm.top_gaps.is_empty() && lm.back_line.is_none());
         let regs = super::super::regions(&flat, None, &mut lm).expect("regions");
         let mut names: Vec<&str> = regs.iter().map(|r| r.name.as_str()).collect();
         names.sort_unstable();

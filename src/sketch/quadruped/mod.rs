@@ -126,10 +126,11 @@ pub fn regions(
     let big = 1e3 * lm.height();
     let leg_top = lm.leg_gaps.iter().map(|p| p[1]).fold(f64::MIN, f64::max);
     // with nothing above the back the body reaches the top and closes there
-    let closed_top = lm.top_gaps.is_empty();
+    let closed_top = lm.top_gaps.is_empty() && lm.back_line.is_none();
     let top_low = lm
         .top_gaps
         .iter()
+        .chain(&lm.back_line)
         .map(|p| p[1])
         .fold(lm.y_max + g, f64::min);
     let mut out = vec![Region {
@@ -143,7 +144,9 @@ pub fn regions(
         horizontal: true,
         side: SidePick::Span,
     }];
-    if closed_top {
+    if let Some(b) = lm.back_line {
+        lone_above(front, lm, b[1] + g, big, &mut out)?;
+    } else if closed_top {
         // the head is within the body's slices
         lm.facing = facing_of_mass(front, lm);
     } else {
@@ -201,9 +204,6 @@ fn above_regions(
             .fold(f64::MIN, f64::max)
             + g;
         if interval(front, pick, y0).is_none() {
-            if lm.top_gaps.len() == 1 {
-                return lone_above(front, lm, y0, big, out);
-            }
             return Err(SketchError::Segmentation(format!(
                 "quadruped: no outline above the corner at y = {:.4}: draw the neck and the tail rising above the back, each meeting it at a corner",
                 y0 - g
@@ -228,10 +228,10 @@ fn above_regions(
     Ok(())
 }
 
-/// The one part above the body when a lone corner (a neck over the back
-/// line, `landmarks::back_line`) has nothing on one of its sides: the head,
-/// the whole slice over the back line from `y0` up; the animal faces
-/// where it stands from the outline's middle.
+/// The one part above the body over its back line (a lone neck,
+/// `landmarks::back_line`): the head, the whole slice over the back line
+/// from `y0` up; the animal faces where it stands from the outline's
+/// middle.
 fn lone_above(
     front: &[[f64; 2]],
     lm: &mut QuadLandmarks,
@@ -396,8 +396,9 @@ pub fn derive(
     let n_above = regs[1..].iter().filter(|r| !r.downward).count();
     let above = names(&regs[1..1 + n_above]);
     let legs = names(&regs[1 + n_above..]);
-    // a lone part above (a neck over the back line) has no seam
-    let seams_above = &lm.top_gaps[..n_above.saturating_sub(1)];
+    // seams between the parts above at their corners (a lone head over
+    // the back line has none)
+    let seams_above = &lm.top_gaps;
     let has_above = n_above > 0;
     let (c0, a0) = half_width(body, End::Start);
     let (c1, a1) = half_width(body, End::End);
