@@ -35,11 +35,19 @@ pub fn derive(
 ) -> Result<Derived, SketchError> {
     check_side_position(front, side)?;
     if super::quadruped::resolve_plan(plan, front) == BodyPlan::Quadruped {
-        return super::quadruped::derive(front, side, sections, cuts, level);
+        return super::quadruped::derive(front, side, sections, cuts, level).map_err(|e| {
+            match (plan, lying_figure(front)) {
+                (BodyPlan::Auto, Some(turn)) => lying_error(turn, &e.to_string()),
+                _ => e,
+            }
+        });
     }
     let ax = super::align::axes(front);
     if ax.anisotropy >= super::align::MIN_ANISOTROPY && ax.major.abs() < std::f64::consts::FRAC_PI_4
     {
+        if let Some(turn) = lying_figure(front) {
+            return Err(lying_error(turn, ""));
+        }
         return Err(SketchError::Segmentation(format!(
             "the front outline is longer than tall (principal axis {:.0} degrees from horizontal), as a four-legged animal's, \
              but the humanoid body plan was asked for: use body plan auto or quadruped (--body-plan, inputs.body_plan)",
@@ -85,6 +93,40 @@ pub fn derive(
     }
     d.alignment = al;
     Ok(d)
+}
+
+/// Which way a front outline longer than tall would be turned to stand
+/// as a humanoid: `Some("counter-clockwise")` when, turned by 90 degrees
+/// that way, it has a crotch, two armpits and a torso between them
+/// ([`landmarks`]); a standing figure drawn lying on its side.
+fn lying_figure(front: &[[f64; 2]]) -> Option<&'static str> {
+    // turning by +90 degrees (counter-clockwise), then by -90
+    [("counter-clockwise", 1.0), ("clockwise", -1.0)]
+        .into_iter()
+        .find_map(|(name, s): (&'static str, f64)| {
+            let up: Vec<[f64; 2]> = front.iter().map(|p| [-s * p[1], s * p[0]]).collect();
+            let lm = landmarks(&up).ok()?;
+            (!short_torso(&lm)).then_some(name)
+        })
+}
+
+/// The refusal of a figure lying down ([`lying_figure`]); `animal`: why it
+/// is not a four-legged animal either (empty: not tried).
+fn lying_error(turn: &str, animal: &str) -> SketchError {
+    let why = if animal.is_empty() {
+        String::new()
+    } else {
+        format!(" (read as a four-legged animal's side view: {animal})")
+    };
+    SketchError::Segmentation(format!(
+        "the front outline is a standing figure lying on its side: turned 90 degrees {turn} it has a crotch, \
+         two armpits and a head{why}; draw the figure upright, feet on the ground line"
+    ))
+}
+
+/// Whether the armpits are no more than the least torso above the crotch.
+fn short_torso(lm: &Landmarks) -> bool {
+    lm.armpit_l[1].min(lm.armpit_r[1]) - lm.crotch[1] <= super::segment::torso_min(lm.height())
 }
 
 /// The two arms traced from the armpits ([`super::limb`]): their parts

@@ -301,6 +301,20 @@ fn bad_drawings_get_errors_in_drawing_terms_and_no_file() {
     ]);
     assert_clear_error(&o, "longer than tall");
     assert!(!out.exists());
+    // a figure lying down with the default body plan: read as an animal
+    // it was refused in an animal's terms (legs, corners); it is named
+    let (upright, _) = Humanoid::default().outlines().expect("outline");
+    let lying: Vec<[f64; 2]> = upright.iter().map(|p| [p[1], -p[0]]).collect();
+    let p = dir.join("lying_auto.svg");
+    std::fs::write(
+        &p,
+        document(Style::Cm, &lying, 0.6, [500.0, 1900.0], 500, "front"),
+    )
+    .expect("w");
+    run(
+        &p,
+        "a standing figure lying on its side: turned 90 degrees counter-clockwise",
+    );
     // two figures in one file
     let one = std::fs::read_to_string(sized(&dir, "one.svg", 1.7)).expect("r");
     let i = one.find("<path").expect("path");

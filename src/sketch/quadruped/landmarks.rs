@@ -3,7 +3,7 @@
 //! module's docs).
 
 use super::super::poly::{gap_tops, merge_repeats, slice, GapTop};
-use super::super::segment::{interval, Pick, GAP_FRACTION, LANDMARK_SLICES};
+use super::super::segment::{interval, Pick, GAP_FRACTION, GROUND_FRACTION, LANDMARK_SLICES};
 use super::super::SketchError;
 
 /// The joins found on an animal's lateral outline.
@@ -60,11 +60,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         None
     };
     if legs.len() != 1 && legs.len() != 3 {
-        return Err(SketchError::Segmentation(format!(
-            "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
-            legs.len(),
-            legs.len() + 1
-        )));
+        return Err(legs_error(front, &legs, yr, g));
     }
     // none: nothing rises above the back (a head level with it, in front
     // of the body): the body closes at the top, when it is an animal's
@@ -88,6 +84,68 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         back_line: lone,
         facing: 1.0,
     })
+}
+
+/// The refusal of a lateral outline without 2 or 4 legs below the body
+/// (its `legs` gap tops, height range `yr`, join band `g`): the parts
+/// below the body that end above the ground (a hanging tail or trunk,
+/// [`parts_below`]) are named, as what to change.
+fn legs_error(front: &[[f64; 2]], legs: &[[f64; 2]], yr: [f64; 2], g: f64) -> SketchError {
+    let generic = format!(
+        "quadruped: found {} gap(s) between legs below the body ({} leg(s)); draw the lateral view with 2 or 4 legs apart",
+        legs.len(),
+        legs.len() + 1
+    );
+    let Some(low) = legs.iter().map(|l| l[1]).min_by(f64::total_cmp) else {
+        return SketchError::Segmentation(generic);
+    };
+    let parts = parts_below(front, low - g, yr[0] - g);
+    let ground = yr[0] + GROUND_FRACTION * (low - yr[0]);
+    let hanging: Vec<String> = parts
+        .iter()
+        .filter(|p| p.1 > ground)
+        .map(|([a, b], y)| format!("the part between x = {a:.4} and {b:.4} ends at y = {y:.4}"))
+        .collect();
+    if hanging.is_empty() {
+        return SketchError::Segmentation(generic);
+    }
+    SketchError::Segmentation(format!(
+        "quadruped: {} of the {} parts below the body end(s) above the ground (y = {:.4}): {}; a tail or trunk \
+         hanging down is not modelled: draw it raised above the back line, or leave it out ({} leg(s) reach the ground)",
+        hanging.len(),
+        parts.len(),
+        yr[0],
+        hanging.join(", "),
+        parts.len() - hanging.len()
+    ))
+}
+
+/// Slices that follow a part below the body down ([`parts_below`]).
+const BELOW_SLICES: usize = 200;
+
+/// The parts below `top` (the slice intervals there), each followed down
+/// through the intervals overlapping it, to `floor`: each part's x range
+/// at `top` and its lowest height.
+fn parts_below(front: &[[f64; 2]], top: f64, floor: f64) -> Vec<([f64; 2], f64)> {
+    slice(front, top)
+        .into_iter()
+        .map(|iv| {
+            let (mut range, mut low) = (iv, top);
+            for k in 1..=BELOW_SLICES {
+                let y = top + (floor - top) * k as f64 / BELOW_SLICES as f64;
+                let over: Vec<[f64; 2]> = slice(front, y)
+                    .into_iter()
+                    .filter(|o| o[0] <= range[1] && range[0] <= o[1])
+                    .collect();
+                let (Some(a), Some(b)) = (over.first(), over.last()) else {
+                    break;
+                };
+                range = [a[0], b[1]];
+                low = y;
+            }
+            (iv, low)
+        })
+        .collect()
 }
 
 /// The smallest rise of the widest slice interval's width, going down one
@@ -240,6 +298,51 @@ mod tests {
         // the same box stood on end (taller than long) is refused
         let tall: Vec<[f64; 2]> = flat.iter().map(|p| [p[0] / 4.0, p[1] * 2.0]).collect();
         assert!(landmarks(&tall).is_err());
+    }
+
+    /// A long body on two legs with a tail hanging between them from its
+    /// underside at x 1.5 to 1.7, ending at y = 0.5 (counter-clockwise).
+    fn hanging_tail() -> Vec<[f64; 2]> {
+        vec![
+            [0.0, 0.0],
+            [0.5, 0.0],
+            [0.5, 1.0],
+            [1.5, 1.0],
+            [1.5, 0.5],
+            [1.7, 0.5],
+            [1.7, 1.0],
+            [3.5, 1.0],
+            [3.5, 0.0],
+            [4.0, 0.0],
+            [4.0, 2.5],
+            [0.0, 2.5],
+        ]
+    }
+
+    #[test]
+    fn a_part_hanging_above_the_ground_is_named_as_what_to_change() {
+        let e = landmarks(&hanging_tail())
+            .expect_err("3 parts below")
+            .to_string();
+        assert!(
+            e.contains("the part between x = 1.5000 and 1.7000 ends at y = 0.5")
+                && e.contains("hanging down is not modelled")
+                && e.contains("(2 leg(s) reach the ground)"),
+            "{e}"
+        );
+        // the same part reaching the ground is a third leg: the count
+        let mut three = hanging_tail();
+        three[4][1] = 0.0;
+        three[5][1] = 0.0;
+        let e = landmarks(&three).expect_err("3 legs").to_string();
+        assert!(
+            e.contains("2 gap(s) between legs") && !e.contains("hanging"),
+            "{e}"
+        );
+        // without it: a box on two legs
+        let mut two = hanging_tail();
+        two.drain(4..6);
+        assert!(landmarks(&two).is_ok());
     }
 
     #[test]
