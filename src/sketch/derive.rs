@@ -77,8 +77,19 @@ pub fn derive(
         .collect();
     let mut d = derive_upright(&up, side, &keys, &cuts, level)?;
     for p in &mut d.parts {
+        let leg = p.name.starts_with("leg");
         for s in &mut p.sections {
+            // a foot's sections (`super::foot`) have the side view's
+            // heights, drawn level: turned with the front, one foot sank
+            // below the ground and the other rose (seed 9191's random_11,
+            // random_37: 1.0-1.1 % of the height). Their heights stay as
+            // the side view has them, the bend's in proportion to its
+            // turn (the sine of its plane's tilt from horizontal, 0 at the
+            // ankle's ring, 1 along the foot)
+            let w = if leg { s.e2[1].abs().min(1.0) } else { 0.0 };
+            let y = s.centre[1];
             s.centre = al.point_back(s.centre);
+            s.centre[1] += w * (y - s.centre[1]);
             s.e1 = al.vector_back(s.e1);
             s.e2 = al.vector_back(s.e2);
         }

@@ -43,6 +43,7 @@ mod sasm;
 mod sketch;
 mod sketch_animal;
 mod sketch_draw;
+mod sketch_feet;
 mod sketch_overlay;
 mod sketch_segment;
 mod sketch_shoulders;
