@@ -127,6 +127,7 @@ fn lying_error(turn: &str, animal: &str) -> SketchError {
     let why = if animal.is_empty() {
         String::new()
     } else {
+        let animal = animal.trim_start_matches("segmentation: ");
         format!(" (read as a four-legged animal's side view: {animal})")
     };
     SketchError::Segmentation(format!(
