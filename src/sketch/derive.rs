@@ -36,9 +36,13 @@ pub fn derive(
     check_side_position(front, side)?;
     if super::quadruped::resolve_plan(plan, front) == BodyPlan::Quadruped {
         return super::quadruped::derive(front, side, sections, cuts, level).map_err(|e| {
-            match (plan, lying_figure(front)) {
-                (BodyPlan::Auto, Some(turn)) => lying_error(turn, &e.to_string()),
-                _ => e,
+            // asked for a quadruped: its refusal stands
+            let turn = (plan == BodyPlan::Auto)
+                .then(|| lying_figure(front))
+                .flatten();
+            match turn {
+                Some(t) => lying_error(t, &e.to_string()),
+                None => e,
             }
         });
     }
@@ -117,7 +121,7 @@ fn lying_figure(front: &[[f64; 2]]) -> Option<&'static str> {
         .find_map(|(name, s): (&'static str, f64)| {
             let up: Vec<[f64; 2]> = front.iter().map(|p| [-s * p[1], s * p[0]]).collect();
             let lm = landmarks(&up).ok()?;
-            (!short_torso(&lm)).then_some(name)
+            (!lm.torso_is_short()).then_some(name)
         })
 }
 
@@ -134,11 +138,6 @@ fn lying_error(turn: &str, animal: &str) -> SketchError {
         "the front outline is a standing figure lying on its side: turned 90 degrees {turn} it has a crotch, \
          two armpits and a head{why}; draw the figure upright, feet on the ground line"
     ))
-}
-
-/// Whether the armpits are no more than the least torso above the crotch.
-fn short_torso(lm: &Landmarks) -> bool {
-    lm.armpit_l[1].min(lm.armpit_r[1]) - lm.crotch[1] <= super::segment::torso_min(lm.height())
 }
 
 /// The two arms traced from the armpits ([`super::limb`]): their parts

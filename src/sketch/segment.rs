@@ -59,6 +59,12 @@ impl Landmarks {
     pub fn height(&self) -> f64 {
         self.y_max - self.y_min
     }
+
+    /// Whether the lower armpit is no more than the least torso
+    /// ([`torso_min`]) above the crotch: no torso to build between them.
+    pub fn torso_is_short(&self) -> bool {
+        self.armpit_l[1].min(self.armpit_r[1]) - self.crotch[1] <= torso_min(self.height())
+    }
 }
 
 /// Where the torso's `side` end (-1 left, +1 right) first moves outward
@@ -367,13 +373,12 @@ pub fn regions(
         });
     }
     // the torso lies between a band above the crotch and one below the armpits
-    let least = torso_min(lm.height());
-    if ya - lm.crotch[1] <= least {
+    if lm.torso_is_short() {
         return Err(super::refusal::torso_too_short(
             ya,
             lm.crotch[1],
             lm.height(),
-            least,
+            torso_min(lm.height()),
         ));
     }
     for r in &out {

@@ -222,6 +222,18 @@ fn a_side_view_deeper_than_tall_is_refused() {
     assert!(!out.exists());
 }
 
+/// A front view `outline` drawn `metres` tall with `knots` path knots (an SVG in cm) in
+/// `dir/name`.
+fn front_file(dir: &Path, name: &str, outline: &[[f64; 2]], metres: f64, knots: usize) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(
+        &p,
+        document(Style::Cm, outline, metres, [500.0, 1900.0], knots, "front"),
+    )
+    .expect("w");
+    p
+}
+
 /// A drawing `metres` tall (an SVG in cm whose path is scaled by a group).
 fn sized(dir: &Path, name: &str, metres: f64) -> PathBuf {
     let (front, _) = Humanoid::default().outlines().expect("outline");
@@ -260,12 +272,7 @@ fn bad_drawings_get_errors_in_drawing_terms_and_no_file() {
         ..Humanoid::default()
     };
     let (f, _) = touching.outlines().expect("outline");
-    let p = dir.join("touching.svg");
-    std::fs::write(
-        &p,
-        document(Style::Cm, &f, 1.7, [500.0, 1900.0], 500, "front"),
-    )
-    .expect("w");
+    let p = front_file(&dir, "touching.svg", &f, 1.7, 500);
     run(&p, "arm");
     // a single blob (a long dress), no cut paths
     let blob: Vec<[f64; 2]> = (0..200)
@@ -274,21 +281,11 @@ fn bad_drawings_get_errors_in_drawing_terms_and_no_file() {
             [0.3 * t.cos(), 0.85 + 0.85 * t.sin()]
         })
         .collect();
-    let p = dir.join("blob.svg");
-    std::fs::write(
-        &p,
-        document(Style::Cm, &blob, 1.7, [500.0, 1900.0], 300, "front"),
-    )
-    .expect("w");
+    let p = front_file(&dir, "blob.svg", &blob, 1.7, 300);
     run(&p, "crotch");
     // a figure lying down: its outline turned by 90 degrees
     let lying: Vec<[f64; 2]> = f.iter().map(|p| [p[1], -p[0]]).collect();
-    let p = dir.join("lying.svg");
-    std::fs::write(
-        &p,
-        document(Style::Cm, &lying, 0.6, [500.0, 1900.0], 500, "front"),
-    )
-    .expect("w");
+    let p = front_file(&dir, "lying.svg", &lying, 0.6, 500);
     let o = pdesculpt(&[
         "sketch",
         "build",
@@ -305,12 +302,7 @@ fn bad_drawings_get_errors_in_drawing_terms_and_no_file() {
     // it was refused in an animal's terms (legs, corners); it is named
     let (upright, _) = Humanoid::default().outlines().expect("outline");
     let lying: Vec<[f64; 2]> = upright.iter().map(|p| [p[1], -p[0]]).collect();
-    let p = dir.join("lying_auto.svg");
-    std::fs::write(
-        &p,
-        document(Style::Cm, &lying, 0.6, [500.0, 1900.0], 500, "front"),
-    )
-    .expect("w");
+    let p = front_file(&dir, "lying_auto.svg", &lying, 0.6, 500);
     run(
         &p,
         "a standing figure lying on its side: turned 90 degrees counter-clockwise",

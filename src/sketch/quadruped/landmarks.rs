@@ -120,7 +120,11 @@ fn legs_error(front: &[[f64; 2]], legs: &[[f64; 2]], yr: [f64; 2], g: f64) -> Sk
     ))
 }
 
-/// Slices that follow a part below the body down ([`parts_below`]).
+/// Slices that follow a part below the body down ([`parts_below`]): a
+/// part's lowest point is found to half a percent of the height below
+/// the body (a hanging part ends well above [`GROUND_FRACTION`] of it;
+/// a geometric resolution, not fitted to drawings). Only a refusal
+/// takes this path.
 const BELOW_SLICES: usize = 200;
 
 /// The parts below `top` (the slice intervals there), each followed down
