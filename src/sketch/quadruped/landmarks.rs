@@ -96,7 +96,17 @@ fn legs_error(front: &[[f64; 2]], legs: &[[f64; 2]], yr: [f64; 2], g: f64) -> Sk
         legs.len(),
         legs.len() + 1
     );
-    let Some(low) = legs.iter().map(|l| l[1]).min_by(f64::total_cmp) else {
+    // the parts are counted a join band below the gap top whose slice
+    // there parts the most (the higher of equals): not the lowest top (a
+    // part ending between two longer ones is itself reported as a gap top,
+    // the gap between those two being covered above its end), nor the
+    // highest (a tail's gap with a leg can close above the legs' gaps)
+    let parted = |y: f64| slice(front, y - g).len();
+    let Some(low) = legs
+        .iter()
+        .map(|l| l[1])
+        .max_by(|a, b| parted(*a).cmp(&parted(*b)).then(a.total_cmp(b)))
+    else {
         return SketchError::Segmentation(generic);
     };
     let parts = parts_below(front, low - g, yr[0] - g);
@@ -341,6 +351,36 @@ mod tests {
         let e = landmarks(&three).expect_err("3 legs").to_string();
         assert!(
             e.contains("2 gap(s) between legs") && !e.contains("hanging"),
+            "{e}"
+        );
+        // parts ending between longer ones are tops of gaps themselves:
+        // counted below the highest top, each is named (a comb of 3 legs
+        // with 2 short parts between them)
+        let comb = vec![
+            [0.0, 0.0],
+            [0.5, 0.0],
+            [0.5, 1.0],
+            [1.0, 1.0],
+            [1.0, 0.5],
+            [1.2, 0.5],
+            [1.2, 1.0],
+            [1.7, 1.0],
+            [1.7, 0.0],
+            [2.2, 0.0],
+            [2.2, 1.0],
+            [2.7, 1.0],
+            [2.7, 0.5],
+            [2.9, 0.5],
+            [2.9, 1.0],
+            [3.5, 1.0],
+            [3.5, 0.0],
+            [4.0, 0.0],
+            [4.0, 2.5],
+            [0.0, 2.5],
+        ];
+        let e = landmarks(&comb).expect_err("5 parts below").to_string();
+        assert!(
+            e.contains("2 of the 5 parts") && e.contains("(3 leg(s) reach the ground)"),
             "{e}"
         );
         // without it: a box on two legs
