@@ -51,10 +51,12 @@ pub enum Sub {
 /// Arguments of `sketch build`.
 #[derive(clap::Args, Debug)]
 pub struct BuildArgs {
-    /// Front (primary) profile: SVG or JSON polyline.
+    /// Front (primary) profile: SVG or JSON polyline. A page holding both
+    /// views reads its layer labelled front.
     #[arg(long)]
     pub front: PathBuf,
-    /// Side (secondary) profile.
+    /// Side (secondary) profile. Default: the front's page, when it has a
+    /// layer labelled side.
     #[arg(long)]
     pub side: Option<PathBuf>,
     /// Key cross-section sketches (JSON).
@@ -119,9 +121,28 @@ fn abs(p: &Path) -> anyhow::Result<String> {
     Ok(std::path::absolute(p)?.display().to_string())
 }
 
+/// The side view's file: `--side` when given, else the front's page when
+/// it holds a layer labelled side (the drawing template's page, both
+/// views on one page), said on stderr.
+pub fn side_or_page(front: &Path, side: Option<PathBuf>) -> Option<PathBuf> {
+    if side.is_some() {
+        return side;
+    }
+    let views = pdesculpt::profile::page_views(front);
+    if !views.contains(&pdesculpt::profile::View::Side) {
+        return None;
+    }
+    eprintln!(
+        "reading the side view from {}'s layer labelled side",
+        front.display()
+    );
+    Some(front.to_path_buf())
+}
+
 /// Runs `sketch`.
 pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
-    let Sub::Build(a) = args.command;
+    let Sub::Build(mut a) = args.command;
+    a.side = side_or_page(&a.front, a.side.take());
     io::Format::from_path(&a.output)?;
     let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
     if let Some(p) = &a.side {

@@ -39,7 +39,11 @@
 //! ([`ProfileError::OpenPath`], naming its id), several closed shapes
 //! ([`ProfileError::SeveralOutlines`], naming their ids), a self-intersecting
 //! outline ([`ProfileError::SelfIntersecting`]: the two segment indices and
-//! the approximate location in model units).
+//! the approximate location in model units). A page may hold several views,
+//! each in a layer labelled with the view's name (`svg_layers`): reading a
+//! view reads its layer only ([`ProfileError::NoViewLayer`] when the page
+//! has view layers but not this one's, [`ProfileError::EmptyViewLayer`]
+//! when its layer has no outline).
 //!
 //! JSON input: `{"view": "front", "points": [[h, v], ...]}` in profile
 //! coordinates (unknown fields rejected).
@@ -54,7 +58,8 @@
 //! - `grid`: a uniform grid of segments (self-intersection test and distance
 //!   queries in near-linear time).
 //! - `distance`: [`profile_distance`], symmetric Hausdorff and RMS distance.
-//! - `svg`, `json`: file input and output.
+//! - `svg`, `json`: file input and output; `svg_layers`: the layers of a
+//!   page holding several views.
 //! - `outline`: the outline of a mesh's orthographic projection.
 //! - `check`: the family's verification checks.
 
@@ -68,6 +73,7 @@ mod polygon;
 pub mod shapes;
 mod svg;
 mod svg_guard;
+mod svg_layers;
 mod svg_write;
 pub mod units;
 
@@ -77,6 +83,7 @@ pub use outline::{outline_of_mesh, OutlineOptions, MAX_RESOLUTION};
 pub use polygon::{boundary_distance, Profile};
 pub use svg::{parse_svg, parse_svg_with, read_svg, read_svg_with, Cut, Flatness, SvgSketch};
 pub use svg_guard::estimate_points;
+pub use svg_layers::page_views;
 pub use svg_write::{to_svg, to_svg_physical, write_svg};
 pub use units::{document_units, DocumentUnits};
 
@@ -102,8 +109,12 @@ pub enum ProfileError {
     OpenPath { id: String },
     #[error("the SVG has no closed outline (one closed path, rect, circle, ellipse or polygon)")]
     NoOutline,
-    #[error("the SVG has several closed outlines ({}), expected exactly one", ids.join(", "))]
+    #[error("the SVG has several closed outlines ({}), expected exactly one (a page holding several views: put each in its own layer, labelled front, side or top)", ids.join(", "))]
     SeveralOutlines { ids: Vec<String> },
+    #[error("the page has view layers ({}) but none labelled {view}: draw the {view} view in a layer labelled {view}, or read a file that holds only it", layers.join(", "))]
+    NoViewLayer { view: View, layers: Vec<String> },
+    #[error("the layer {layer:?} has no closed outline: draw the {view} view's outline in it (one closed path)")]
+    EmptyViewLayer { view: View, layer: String },
     #[error("SVG: {message}")]
     Svg { message: String },
     #[error("SVG root element's {attribute}=\"{value}\": {reason}")]

@@ -3,6 +3,7 @@
 //! [`crate::profile`].
 
 use super::svg_guard::{self, Planned};
+use super::svg_layers::ViewLayers;
 use super::units::DocumentUnits;
 use super::{Profile, ProfileError, View};
 use kurbo::{BezPath, PathEl, Point};
@@ -93,7 +94,7 @@ pub fn parse_svg_with(
             ),
         });
     }
-    let (subpaths, units) = flattened_subpaths(text, flatness)?;
+    let (subpaths, units, layers) = flattened_subpaths(text, view, flatness)?;
     let to_model = |p: [f64; 2]| {
         if view.svg_y_flipped() {
             [p[0], -p[1]]
@@ -119,7 +120,7 @@ pub fn parse_svg_with(
         }
     }
     match outlines.len() {
-        0 => Err(ProfileError::NoOutline),
+        0 => Err(layers.no_outline(view)),
         1 => {
             let s = outlines.pop().unwrap_or_else(|| unreachable!());
             let outline = Profile::new(view, s.points.into_iter().map(to_model).collect())?;
@@ -144,8 +145,9 @@ const ELLIPSE_ID: &str = "pdesculpt-ellipse-";
 /// `<shape N>` (N counts shapes from 1); a shape with several subpaths
 /// gives `id (subpath K)`.
 ///
-/// Two edits of the XML text (never of path data) before usvg sees it: the
-/// root `viewBox` is blanked (the points stay in user units, the canvas maps
+/// Edits of the XML text (never of path data) before usvg sees it: the
+/// groups naming another view than `view` are left out
+/// ([`super::svg_layers`]; returned, to name the layer read in an error), the root `viewBox` is blanked (the points stay in user units, the canvas maps
 /// user space by the identity; the physical size of a user unit is read
 /// from the root element by [`super::units::document_units`]), and
 /// `circle`/`ellipse` elements without an id get one, so that they are
@@ -153,8 +155,9 @@ const ELLIPSE_ID: &str = "pdesculpt-ellipse-";
 /// approximation.
 fn flattened_subpaths(
     text: &str,
+    view: View,
     flatness: Flatness,
-) -> Result<(Vec<Subpath>, DocumentUnits), ProfileError> {
+) -> Result<(Vec<Subpath>, DocumentUnits, ViewLayers), ProfileError> {
     let svg_err = |e: &dyn std::fmt::Display| ProfileError::Svg {
         message: e.to_string(),
     };
@@ -162,8 +165,13 @@ fn flattened_subpaths(
         .map_err(svg_guard::xml_error)?;
     svg_guard::check_numbers(&doc)?;
     let units = super::units::document_units(doc.root_element())?;
+    let layers = super::svg_layers::select(&doc, view)?;
     // (position, bytes removed, text inserted), in document order
-    let mut edits: Vec<(usize, usize, String)> = Vec::new();
+    let mut edits: Vec<(usize, usize, String)> = layers
+        .removed
+        .iter()
+        .map(|r| (r.start, r.len(), String::new()))
+        .collect();
     if let Some(a) = doc
         .root_element()
         .attributes()
@@ -176,7 +184,9 @@ fn flattened_subpaths(
     for node in doc.descendants().filter(|n| n.is_element()) {
         let tag = node.tag_name();
         let svg_ns = tag.namespace() == Some("http://www.w3.org/2000/svg");
-        if !(svg_ns && matches!(tag.name(), "circle" | "ellipse")) {
+        if !(svg_ns && matches!(tag.name(), "circle" | "ellipse"))
+            || layers.removes(node.range().start)
+        {
             continue;
         }
         match node.attribute("id") {
@@ -210,7 +220,7 @@ fn flattened_subpaths(
         Flatness::OfHeight(r) => {
             let h = tree.root().abs_bounding_box().height() as f64;
             if !(h.is_finite() && h > 0.0) {
-                return Err(ProfileError::NoOutline);
+                return Err(layers.no_outline(view));
             }
             r * h
         }
@@ -226,7 +236,10 @@ fn flattened_subpaths(
     let mut shape = 0usize;
     collect(tree.root(), tolerance, &ellipses, &mut shape, &mut shapes);
     let plans: Vec<Planned> = shapes.iter().map(|s| s.plan(tolerance)).collect();
-    svg_guard::check_plan(&plans, tolerance)?;
+    svg_guard::check_plan(&plans, tolerance).map_err(|e| match e {
+        ProfileError::NoOutline => layers.no_outline(view),
+        e => e,
+    })?;
     let mut out = Vec::new();
     for s in shapes {
         let subs = match s.geometry {
@@ -243,7 +256,7 @@ fn flattened_subpaths(
             out.push(Subpath { id, points, closed });
         }
     }
-    Ok((out, units))
+    Ok((out, units, layers))
 }
 
 /// `text` with each `(position, bytes removed, text inserted)` edit made,

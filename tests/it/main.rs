@@ -45,6 +45,7 @@ mod sketch_animal;
 mod sketch_draw;
 mod sketch_feet;
 mod sketch_overlay;
+mod sketch_page;
 mod sketch_segment;
 mod sketch_shoulders;
 mod sketch_tangent_fit;

@@ -49,10 +49,12 @@ pub struct FitArgs {
     /// (.obj, .glb, .gltf, .stl, .ply).
     #[arg(long)]
     pub template: String,
-    /// Front profile (SVG or JSON).
+    /// Front profile (SVG or JSON); a page holding both views reads its
+    /// layer labelled front.
     #[arg(long)]
     pub front: PathBuf,
-    /// Side profile (SVG or JSON): medium level.
+    /// Side profile (SVG or JSON): medium level. Default: the front's
+    /// page, when it has a layer labelled side.
     #[arg(long)]
     pub side: Option<PathBuf>,
     /// Key cross-sections (JSON): high level (needs --side).
@@ -126,8 +128,9 @@ pub fn run(args: Args, json: bool) -> anyhow::Result<i32> {
     }
 }
 
-fn run_fit(a: FitArgs, json: bool) -> anyhow::Result<i32> {
+fn run_fit(mut a: FitArgs, json: bool) -> anyhow::Result<i32> {
     let t0 = std::time::Instant::now();
+    a.side = crate::cli::sketch::side_or_page(&a.front, a.side.take());
     io::Format::from_path(&a.output)?;
     let mut inputs: Vec<(&str, &Path)> = vec![("--front", &a.front)];
     if a.template != "makehuman" {
