@@ -180,30 +180,7 @@ fn flattened_subpaths(
         let r = a.range();
         edits.push((r.start, r.len(), String::new()));
     }
-    let mut ellipses: Vec<String> = Vec::new();
-    for node in doc.descendants().filter(|n| n.is_element()) {
-        let tag = node.tag_name();
-        let svg_ns = tag.namespace() == Some("http://www.w3.org/2000/svg");
-        if !(svg_ns && matches!(tag.name(), "circle" | "ellipse"))
-            || layers.removes(node.range().start)
-        {
-            continue;
-        }
-        match node.attribute("id") {
-            Some(id) if !id.is_empty() => ellipses.push(id.to_string()),
-            _ => {
-                let id = format!("{ELLIPSE_ID}{}", ellipses.len());
-                // after "<" and the qualified tag name
-                let at = node.range().start
-                    + 1
-                    + text[node.range().start + 1..]
-                        .find(|c: char| c.is_whitespace() || c == '/' || c == '>')
-                        .unwrap_or(0);
-                edits.push((at, 0, format!(" id=\"{id}\"")));
-                ellipses.push(id);
-            }
-        }
-    }
+    let ellipses = name_ellipses(&doc, text, &layers, &mut edits);
     let edited;
     let doc = if edits.is_empty() {
         doc
@@ -257,6 +234,42 @@ fn flattened_subpaths(
         }
     }
     Ok((out, units, layers))
+}
+
+/// The ids of the `circle`/`ellipse` elements read (outside the groups
+/// `layers` leaves out); an element without one gets [`ELLIPSE_ID`] and a
+/// counter, inserted by an edit pushed to `edits`.
+fn name_ellipses(
+    doc: &roxmltree::Document,
+    text: &str,
+    layers: &ViewLayers,
+    edits: &mut Vec<(usize, usize, String)>,
+) -> Vec<String> {
+    let mut ellipses: Vec<String> = Vec::new();
+    for node in doc.descendants().filter(|n| n.is_element()) {
+        let tag = node.tag_name();
+        let svg_ns = tag.namespace() == Some("http://www.w3.org/2000/svg");
+        if !(svg_ns && matches!(tag.name(), "circle" | "ellipse"))
+            || layers.removes(node.range().start)
+        {
+            continue;
+        }
+        match node.attribute("id") {
+            Some(id) if !id.is_empty() => ellipses.push(id.to_string()),
+            _ => {
+                let id = format!("{ELLIPSE_ID}{}", ellipses.len());
+                // after "<" and the qualified tag name
+                let at = node.range().start
+                    + 1
+                    + text[node.range().start + 1..]
+                        .find(|c: char| c.is_whitespace() || c == '/' || c == '>')
+                        .unwrap_or(0);
+                edits.push((at, 0, format!(" id=\"{id}\"")));
+                ellipses.push(id);
+            }
+        }
+    }
+    ellipses
 }
 
 /// `text` with each `(position, bytes removed, text inserted)` edit made,

@@ -152,6 +152,10 @@ mod tests {
         assert!(PAGE[side.removed[0].clone()].contains("Front view"));
     }
 
+    /// usvg parses in f32: a radius-3 circle's points are within this of
+    /// it (1e-4, a few hundred f32 ulps at 20).
+    const CIRCLE_TOL: f64 = 1e-4;
+
     #[test]
     fn each_view_of_a_page_is_read_from_its_layer_with_its_circles_exact() {
         // an unnamed circle gets an id before parsing; in the layer left
@@ -172,7 +176,10 @@ mod tests {
             .iter()
             .map(|p| (p[0] - 20.0).hypot(p[1] + 4.0))
             .fold(0.0f64, f64::max);
-        assert!((r - 3.0).abs() < 1e-4, "the side's circle: radius {r}");
+        assert!(
+            (r - 3.0).abs() < CIRCLE_TOL,
+            "the side's circle: radius {r}"
+        );
         let e = crate::profile::parse_svg(PAGE, View::Side, 0.01).unwrap_err();
         assert!(
             matches!(&e, ProfileError::EmptyViewLayer { layer, .. } if layer == "side (profile)"),
