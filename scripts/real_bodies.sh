@@ -5,19 +5,29 @@
 # how far the model leaves the outline, % of the height; largest turn;
 # creased length / height; the arms' largest turns).
 #
-#     bash scripts/real_bodies.sh [BIN] [DIR]
+#     bash scripts/real_bodies.sh [BIN] [DIR] [more]
 #
 # BIN: the pdesculpt binary (default target/release/pdesculpt); DIR: where
-# the bodies, drawings and models go (default /tmp/real-bodies). Needs
-# python3, no packages.
+# the bodies, drawings and models go (default /tmp/real-bodies); `more`:
+# also thirteen macro targets the construction was not developed on
+# (docs/drawing-corpus.md, thirty-first measurement). Needs python3, no
+# packages.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-target/release/pdesculpt}
 dir=${2:-/tmp/real-bodies}
 mkdir -p "$dir"
 targets=data/makehuman/targets/macrodetails
-for name in base caucasian-male-young asian-male-old caucasian-female-child \
-  universal-female-young-averagemuscle-maxweight universal-male-young-maxmuscle-minweight; do
+names="base caucasian-male-young asian-male-old caucasian-female-child
+  universal-female-young-averagemuscle-maxweight universal-male-young-maxmuscle-minweight"
+if [ "${3:-}" = more ]; then
+  names="$names african-female-young asian-female-old caucasian-male-old african-male-child
+    universal-female-old-minmuscle-minweight universal-male-old-maxmuscle-maxweight
+    universal-female-young-maxmuscle-maxweight universal-male-young-minmuscle-maxweight
+    caucasian-female-young asian-male-young african-male-old
+    universal-male-child-averagemuscle-maxweight caucasian-female-baby"
+fi
+for name in $names; do
   obj=$dir/$name.obj
   if [ "$name" = base ]; then
     cp data/makehuman/base.obj "$obj"

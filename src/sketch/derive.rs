@@ -198,9 +198,23 @@ fn traced_arms(
             None => g,
         };
         parts.push(super::limb::part_from_trace(front, name, &t, start, z)?);
+        parts.extend(thumb_part(&t, name, z));
         shoulders[k] = t.shoulder;
     }
     Ok((parts, shoulders))
+}
+
+/// A traced arm's thumb ([`super::thumb`]) as a separate closed chain at
+/// the arm's depth `z`, named after the arm (`thumb_l`, `thumb_r`); none
+/// when the arm has no thumb or its outline gives no chain (the arm is
+/// built without it, as a mitten).
+fn thumb_part(t: &super::limb::TracedArm, arm: &str, z: f64) -> Option<PartSpec> {
+    let name = arm.replacen("arm", "thumb", 1);
+    let mut spec = super::removed::upright_chain(&name, t.thumb.as_deref()?, None).ok()?;
+    for s in &mut spec.sections {
+        s.centre[2] += z;
+    }
+    Some(spec)
 }
 
 fn derive_upright(

@@ -46,6 +46,9 @@ pub struct TracedArm {
     pub half_width: Vec<f64>,
     /// Unit direction of each pair's chord (inner side to outer side).
     pub chord: Vec<[f64; 2]>,
+    /// A thumb held away from the hand, cut off the walk: its closed
+    /// outline reaching into the hand ([`super::thumb`]).
+    pub thumb: Option<Vec<[f64; 2]>>,
 }
 
 /// `n` points equally spaced by arc length along an open polyline.
@@ -134,11 +137,15 @@ pub fn trace_arm(
     // the walk follows the outline forward for the right arm (side > 0),
     // backward for the left; the inside is left of a counter-clockwise one
     let ccw = crate::polygon::signed_area(front) > 0.0;
-    let walk = bridge_notches(&walk[..=is], ccw == (side > 0.0), HAND_NOTCH_MOUTH * cut);
-    let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
-    let it = (0..walk.len())
-        .max_by(|&i, &j| d[i].total_cmp(&d[j]))
-        .unwrap_or(0);
+    let inside_left = ccw == (side > 0.0);
+    let walk = bridge_notches(&walk[..=is], inside_left, HAND_NOTCH_MOUTH * cut);
+    // a thumb held away from the hand: cut off, built on its own
+    let tip = farthest(&walk, armpit);
+    let (walk, thumb) = match super::thumb::split_thumb(&walk, inside_left, tip, cut) {
+        Some((rest, t)) => (rest, Some(t)),
+        None => (walk, None),
+    };
+    let it = farthest(&walk, armpit);
     let is = walk.len() - 1;
     let inner = resample_open(&walk[..=it], TRACE_SAMPLES);
     let mut outer_walk: Vec<[f64; 2]> = walk[it..=is].to_vec();
@@ -165,7 +172,16 @@ pub fn trace_arm(
         centre,
         half_width,
         chord,
+        thumb,
     })
+}
+
+/// The index of the walk's point farthest from `armpit` (the hand's tip).
+fn farthest(walk: &[[f64; 2]], armpit: [f64; 2]) -> usize {
+    let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
+    (0..walk.len())
+        .max_by(|&i, &j| d[i].total_cmp(&d[j]))
+        .unwrap_or(0)
 }
 
 /// A notch of a traced arm's outline (between two fingers, or a thumb

@@ -74,6 +74,7 @@ pub mod section_place;
 pub mod segment;
 mod shoulder_tilt;
 pub mod tangent_fit;
+pub mod thumb;
 pub mod uncross;
 mod vertex_grid;
 

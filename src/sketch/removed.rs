@@ -60,7 +60,22 @@ pub fn removed_part(
         }
         None => None,
     };
-    let ax = axes(front.points());
+    let side_pts = side.as_ref().map(|s| s.points());
+    let spec = upright_chain(&rp.name, front.points(), side_pts).map_err(|e| bad(e.to_string()))?;
+    Ok(BuiltRemoved { spec, front, side })
+}
+
+/// A part built from its own closed outline (model coordinates), as one
+/// chain along the outline's principal axis, closed at both ends: turned
+/// upright, sliced, and turned back. With `side` (used only when the axis
+/// is vertical already) the sections are ellipses of its depth, else
+/// circles at z = 0.
+pub fn upright_chain(
+    name: &str,
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+) -> Result<PartSpec, SketchError> {
+    let ax = axes(front);
     // turn the major axis vertical: angle into (-90, 90] degrees
     let half = std::f64::consts::FRAC_PI_2;
     let mut turn = half - ax.major;
@@ -71,17 +86,13 @@ pub fn removed_part(
         pivot: ax.centroid,
         angle: -turn,
     };
-    let up: Vec<[f64; 2]> = front.points().iter().map(|p| al.to_upright(*p)).collect();
+    let up: Vec<[f64; 2]> = front.iter().map(|p| al.to_upright(*p)).collect();
     let upright = turn.abs().to_degrees() < ROTATION_EPS_DEG;
-    let side_pts = if upright {
-        side.as_ref().map(|s| s.points())
-    } else {
-        None
-    };
+    let side_pts = if upright { side } else { None };
     let yr = crate::polygon::span(&up, 1);
     let big = 1e3 * (yr[1] - yr[0]).max(f64::MIN_POSITIVE);
     let region = Region {
-        name: rp.name.clone(),
+        name: name.into(),
         y0: yr[0],
         y1: yr[1],
         pick: Pick::CentreIn(-big, big),
@@ -91,7 +102,7 @@ pub fn removed_part(
         horizontal: false,
         side: SidePick::Whole,
     };
-    let mut spec = part_from_region(&up, side_pts, &region).map_err(|e| bad(e.to_string()))?;
+    let mut spec = part_from_region(&up, side_pts, &region)?;
     // close the start at the outline's lowest point (in the upright frame)
     let first = spec.sections[0].centre;
     spec.sections[0].centre = [first[0], yr[0], first[2]];
@@ -110,5 +121,5 @@ pub fn removed_part(
         u += crate::mesh::dist(spec.sections[i - 1].centre, spec.sections[i].centre);
         spec.sections[i].u = u;
     }
-    Ok(BuiltRemoved { spec, front, side })
+    Ok(spec)
 }

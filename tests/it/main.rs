@@ -49,6 +49,7 @@ mod sketch_page;
 mod sketch_segment;
 mod sketch_shoulders;
 mod sketch_tangent_fit;
+mod sketch_thumb;
 mod sketch_writer;
 mod speedups;
 mod template;

@@ -958,7 +958,7 @@ fn a_real_girl_s_hips_do_not_fold() {
 /// 28's bound: with the six-point end curvature the torso's ends overshot
 /// (the caucasian male's shoulders 1.42 % of the height outside its side;
 /// 0.41 % with guarded open ends, `pde6::EndCurvature`).
-fn stays_inside(b: &Built, view: &str) {
+pub(crate) fn stays_inside(b: &Built, view: &str) {
     let bound = pdesculpt::sketch::quality::Bounds::ISSUE.outside;
     let v = b.report.quality.whole.view(view).expect("the view's row");
     assert!(
@@ -992,7 +992,7 @@ fn arms_do_not_fold(b: &Built) {
 /// beside the torso dropped), drawn in decimetres as MakeHuman's unit,
 /// built at the intermediate level and checked closed; returns the build
 /// and the body's height in decimetres.
-fn build_real_body(body: &pdesculpt::mesh::Mesh, name: &str) -> (Built, f64) {
+pub(crate) fn build_real_body(body: &pdesculpt::mesh::Mesh, name: &str) -> (Built, f64) {
     use pdesculpt::profile::{outline_of_mesh, to_svg_physical, OutlineOptions, View};
     let ys = pdesculpt::polygon::span(
         &body

@@ -1,0 +1,192 @@
+//! A thumb sticking out of a traced hand (a real body's front silhouette,
+//! issue 28's held-out real bodies), modeled as paper 000 composes a
+//! removed part (sec 4.1: hair, a tail, ears "removed" from the primary
+//! profile and modeled from their own profiles): cut off the arm's walk
+//! at its base, built from its own outline as a separate closed chain
+//! ([`super::removed::upright_chain`]) that reaches into the hand.
+//!
+//! The notches between fingers are closed into a mitten first
+//! ([`super::limb`]); a thumb held away from the hand leaves a notch too
+//! wide to close, and the arm's tube, whose two sides are paired by equal
+//! fractions of their lengths, averaged it away: the silhouette missed the
+//! thumb's tip by 1.6-1.9 % of the height on four of nineteen MakeHuman
+//! bodies (docs/drawing-corpus.md, thirty-first measurement).
+//!
+//! A **thumb** is a run of the walk between two points `i < j` whose
+//! bridge is short and lies inside the outline (the run and the bridge
+//! enclose material: a protrusion, the opposite of a notch), whose run is
+//! more than [`THUMB_RATIO`] times as long as the bridge (longer than
+//! wide: a bump of the forearm is not), narrower at its base than
+//! [`THUMB_BASE`] of the arm's shoulder cut, away from the walk's ends
+//! and not holding the hand's tip. Of those, the one with the longest run
+//! (its base then the narrowest point of its root).
+
+use super::poly::dist;
+
+/// A thumb's base is at most this fraction of the arm's shoulder cut (the
+/// arm's width where it leaves the body): a thumb is narrower than the
+/// wrist, which the hand notches' mouth ([`super::limb::HAND_NOTCH_MOUTH`],
+/// the same 0.5) already takes for the width of material.
+pub const THUMB_BASE: f64 = 0.5;
+
+/// A thumb's run along the outline is more than this many times its base:
+/// the notch rule's factor ([`super::limb`]: a notch's walk is more than
+/// twice its mouth) turned around; a half disc's is pi / 2.
+pub const THUMB_RATIO: f64 = 2.0;
+
+/// How far (in base widths) the thumb's own outline is carried into the
+/// hand beyond its base, so the separate chain overlaps the hand's tube
+/// instead of ending on its silhouette with a rounded gap.
+pub const THUMB_ROOT: f64 = 0.5;
+
+/// Points of the thumb's root beyond its base (a half ellipse), ends
+/// excluded: a geometric resolution, the root's chord within 2 % of its
+/// width.
+const ROOT_POINTS: usize = 16;
+
+/// The walk with a thumb's run replaced by its base, and the thumb's closed
+/// outline (its run, then its base carried into the hand by
+/// [`THUMB_ROOT`] as a half ellipse); `None` when the walk has no thumb. `inside_left`: the
+/// outline's material lies left of the walk; `tip`: the index of the
+/// hand's tip on the walk; `cut`: the arm's shoulder cut.
+#[allow(clippy::type_complexity)]
+pub fn split_thumb(
+    walk: &[[f64; 2]],
+    inside_left: bool,
+    tip: usize,
+    cut: f64,
+) -> Option<(Vec<[f64; 2]>, Vec<[f64; 2]>)> {
+    let m = walk.len();
+    if m < 8 {
+        return None;
+    }
+    let o = walk[0];
+    let rel = |k: usize| [walk[k][0] - o[0], walk[k][1] - o[1]];
+    let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+    let (mut cum, mut twice_area) = (vec![0.0; m], vec![0.0; m]);
+    for k in 1..m {
+        cum[k] = cum[k - 1] + dist(walk[k - 1], walk[k]);
+        twice_area[k] = twice_area[k - 1] + cross(rel(k - 1), rel(k));
+    }
+    let material = if inside_left { 1.0 } else { -1.0 };
+    let base_max = THUMB_BASE * cut;
+    let mut best: Option<(f64, usize, usize)> = None;
+    for i in 1..m - 2 {
+        for j in i + 2..m - 1 {
+            if (i..=j).contains(&tip) {
+                break;
+            }
+            let c = dist(walk[i], walk[j]);
+            let run = cum[j] - cum[i];
+            if !(c > 0.0 && c < base_max && run > THUMB_RATIO * c) {
+                continue;
+            }
+            if best.is_some_and(|b| b.0 >= run) {
+                continue;
+            }
+            let loop_area = twice_area[j] - twice_area[i] + cross(rel(j), rel(i));
+            let encloses_material = material * loop_area > 0.0;
+            if encloses_material
+                && (i + 1..j - 1).all(|k| {
+                    !crate::polygon::segments_cross(walk[i], walk[j], walk[k], walk[k + 1])
+                })
+            {
+                best = Some((run, i, j));
+            }
+        }
+    }
+    let (_, i, j) = best?;
+    let mut arm = walk[..=i].to_vec();
+    arm.extend_from_slice(&walk[j..]);
+    // the base carried into the hand: along its normal toward the material
+    let (a, b) = (walk[i], walk[j]);
+    let c = dist(a, b);
+    let d = [(b[0] - a[0]) / c, (b[1] - a[1]) / c];
+    // without the run the walk goes from a to b, its material (the hand)
+    // on its left when `inside_left`
+    let n = if inside_left {
+        [-d[1], d[0]]
+    } else {
+        [d[1], -d[0]]
+    };
+    // a half ellipse beyond the base, reaching THUMB_ROOT base widths into
+    // the hand: the chain closes round there (a flat root closed to a
+    // point creased its rim)
+    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+    let (half, push) = (0.5 * c, THUMB_ROOT * c);
+    let mut thumb = walk[i..=j].to_vec();
+    for k in 1..ROOT_POINTS {
+        let phi = std::f64::consts::PI * k as f64 / ROOT_POINTS as f64;
+        let (along, into) = (half * phi.cos(), push * phi.sin());
+        thumb.push([
+            mid[0] + along * d[0] + into * n[0],
+            mid[1] + along * d[1] + into * n[1],
+        ]);
+    }
+    Some((arm, thumb))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fixture thumb's length and base width (exact coordinates).
+    const LEN: f64 = 2.0;
+    const BASE: f64 = 0.6;
+    /// Coordinates built from the fixture's exact values, compared exactly
+    /// up to rounding.
+    const EXACT: f64 = 1e-12;
+
+    /// The inner side of a right arm walked down from an armpit at the
+    /// origin (the material, the arm, on the walk's left), a thumb sticking
+    /// out of it near the hand, the hand's tip, and back up the outer side.
+    fn arm_with_thumb(thumb_len: f64) -> (Vec<[f64; 2]>, usize) {
+        let mut w: Vec<[f64; 2]> = (0..=20).map(|k| [0.0, -0.5 * k as f64]).collect();
+        // the thumb: out to -x from y = -10, its base BASE wide
+        w.push([-thumb_len, -10.1]);
+        w.push([-thumb_len, -10.5]);
+        w.extend((0..=8).map(|k| [0.0, -10.0 - BASE - 0.5 * k as f64]));
+        let tip = w.len();
+        w.push([1.0, -15.0]);
+        w.extend((0..=30).map(|k| [2.0, -15.0 + 0.5 * k as f64]));
+        (w, tip)
+    }
+
+    #[test]
+    fn a_thumb_is_cut_off_at_its_base_and_carried_into_the_hand() {
+        let (w, tip) = arm_with_thumb(LEN);
+        // the arm walks down (-y) with the material on its left (+x)
+        let (arm, thumb) = split_thumb(&w, true, tip, 2.0).expect("a thumb");
+        assert!(
+            arm.iter().all(|p| p[0] >= 0.0),
+            "the thumb left the arm: {arm:?}"
+        );
+        assert_eq!(
+            arm.len() + 2,
+            w.len(),
+            "only the thumb's two outer points go"
+        );
+        let (lo, hi) = thumb
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p[0]), b.max(p[0])));
+        assert_eq!(lo, -LEN, "the thumb's tip is kept: {thumb:?}");
+        // its root reaches THUMB_ROOT base widths into the hand (+x)
+        assert!(
+            (hi - THUMB_ROOT * BASE).abs() < EXACT,
+            "root at {hi}: {thumb:?}"
+        );
+    }
+
+    #[test]
+    fn a_bump_a_short_stub_or_a_wide_thumb_is_not_a_thumb() {
+        // a stub not longer than its base
+        let (w, tip) = arm_with_thumb(0.3);
+        assert!(split_thumb(&w, true, tip, 2.0).is_none());
+        // a base wider than half the shoulder cut
+        let (w, tip) = arm_with_thumb(LEN);
+        assert!(split_thumb(&w, true, tip, 1.0).is_none());
+        // a notch (the run turns against the material) is not a thumb
+        let (w, tip) = arm_with_thumb(LEN);
+        assert!(split_thumb(&w, false, tip, 2.0).is_none());
+    }
+}
