@@ -9,7 +9,7 @@
 #
 # BIN: the pdesculpt binary (default target/release/pdesculpt); DIR: where
 # the bodies, drawings and models go (default /tmp/real-bodies); `more`:
-# also thirteen macro targets the construction was not developed on
+# also thirty-three macro targets the construction was not developed on
 # (docs/drawing-corpus.md, thirty-first measurement). Needs python3, no
 # packages.
 set -euo pipefail
@@ -25,7 +25,15 @@ if [ "${3:-}" = more ]; then
     universal-female-old-minmuscle-minweight universal-male-old-maxmuscle-maxweight
     universal-female-young-maxmuscle-maxweight universal-male-young-minmuscle-maxweight
     caucasian-female-young asian-male-young african-male-old
-    universal-male-child-averagemuscle-maxweight caucasian-female-baby"
+    universal-male-child-averagemuscle-maxweight caucasian-female-baby
+    african-female-old african-male-young asian-female-young asian-female-child
+    caucasian-female-old asian-male-child universal-female-child-minmuscle-maxweight
+    universal-female-old-maxmuscle-minweight universal-female-young-minmuscle-minweight
+    universal-male-old-minmuscle-minweight universal-male-old-averagemuscle-minweight
+    universal-female-young-maxmuscle-minweight universal-male-child-maxmuscle-minweight
+    universal-male-young-maxmuscle-averageweight universal-male-old-minmuscle-averageweight
+    african-female-child asian-male-baby caucasian-male-child
+    universal-female-baby-maxmuscle-maxweight asian-female-baby"
 fi
 for name in $names; do
   obj=$dir/$name.obj

@@ -60,15 +60,7 @@ pub fn split_thumb(
     if m < 8 {
         return None;
     }
-    let o = walk[0];
-    let rel = |k: usize| [walk[k][0] - o[0], walk[k][1] - o[1]];
-    let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
-    let (mut cum, mut twice_area) = (vec![0.0; m], vec![0.0; m]);
-    for k in 1..m {
-        cum[k] = cum[k - 1] + dist(walk[k - 1], walk[k]);
-        twice_area[k] = twice_area[k - 1] + cross(rel(k - 1), rel(k));
-    }
-    let material = if inside_left { 1.0 } else { -1.0 };
+    let sums = super::limb::WalkSums::new(walk, inside_left);
     let base_max = THUMB_BASE * cut;
     let mut best: Option<(f64, usize, usize)> = None;
     for i in 1..m - 2 {
@@ -77,20 +69,14 @@ pub fn split_thumb(
                 break;
             }
             let c = dist(walk[i], walk[j]);
-            let run = cum[j] - cum[i];
+            let run = sums.run(i, j);
             if !(c > 0.0 && c < base_max && run > THUMB_RATIO * c) {
                 continue;
             }
             if best.is_some_and(|b| b.0 >= run) {
                 continue;
             }
-            let loop_area = twice_area[j] - twice_area[i] + cross(rel(j), rel(i));
-            let encloses_material = material * loop_area > 0.0;
-            if encloses_material
-                && (i + 1..j - 1).all(|k| {
-                    !crate::polygon::segments_cross(walk[i], walk[j], walk[k], walk[k + 1])
-                })
-            {
+            if sums.material_area(i, j) > 0.0 && sums.clear(i, j) {
                 best = Some((run, i, j));
             }
         }
