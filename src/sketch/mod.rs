@@ -77,6 +77,7 @@ pub mod tangent_fit;
 pub mod thumb;
 pub mod uncross;
 mod vertex_grid;
+pub mod walk;
 
 pub use report::SketchReport;
 

@@ -60,7 +60,7 @@ pub fn split_thumb(
     if m < 8 {
         return None;
     }
-    let sums = super::limb::WalkSums::new(walk, inside_left);
+    let sums = super::walk::WalkSums::new(walk, inside_left);
     let base_max = THUMB_BASE * cut;
     let mut best: Option<(f64, usize, usize)> = None;
     for i in 1..m - 2 {
