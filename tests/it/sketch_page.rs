@@ -9,9 +9,29 @@ fn data(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(rel)
 }
 
-/// The page fixture: the corpus t_pose's two files as the layers
-/// `front` and `side` of one Inkscape A4 page.
-const PAGE: &str = "tests/data/sketch/page_t_pose.svg";
+/// The corpus t_pose's two files (Inkscape A4 pages in mm) as the layers
+/// `front` and `side` of one such page (the template's layout).
+fn page_text() -> String {
+    let path_of = |view: &str| {
+        let f = data(&format!("data/sketch/corpus/t_pose_{view}.svg"));
+        let text = std::fs::read_to_string(&f).expect("corpus file");
+        let at = text.find("<path").expect("its outline");
+        let end = at + text[at..].find("/>").expect("its end") + 2;
+        text[at..end].to_string()
+    };
+    format!(
+        concat!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" ",
+            "xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" ",
+            "width=\"210mm\" height=\"297mm\" viewBox=\"0 0 210 297\">\n",
+            "<g inkscape:groupmode=\"layer\" id=\"layer_front\" inkscape:label=\"front\">{}</g>\n",
+            "<g inkscape:groupmode=\"layer\" id=\"layer_side\" inkscape:label=\"side\">{}</g>\n",
+            "</svg>\n"
+        ),
+        path_of("front"),
+        path_of("side")
+    )
+}
 
 /// An OBJ's lines without its `# model` name line.
 fn obj_body(p: &Path) -> Vec<String> {
@@ -27,7 +47,8 @@ fn obj_body(p: &Path) -> Vec<String> {
 fn a_page_with_both_views_builds_as_its_two_files() {
     let d = tmpdir("page-both");
     let (a, b) = (d.join("page.obj"), d.join("files.obj"));
-    let page = data(PAGE);
+    let page = d.join("page.svg");
+    std::fs::write(&page, page_text()).expect("write the page");
     let out = pdesculpt(&[
         "--json",
         "sketch",
@@ -71,7 +92,7 @@ fn a_page_with_both_views_builds_as_its_two_files() {
 #[test]
 fn a_page_missing_or_emptying_a_view_s_layer_is_refused_naming_it() {
     let d = tmpdir("page-bad");
-    let page = std::fs::read_to_string(data(PAGE)).expect("fixture");
+    let page = page_text();
     let side_at = page
         .find("<g inkscape:groupmode=\"layer\" id=\"layer_side\"")
         .expect("side layer");
