@@ -18,7 +18,8 @@
 //! more than [`THUMB_RATIO`] times as long as the bridge (longer than
 //! wide: a bump of the forearm is not), narrower at its base than
 //! [`THUMB_BASE`] of the arm's shoulder cut, away from the walk's ends
-//! and not holding the hand's tip. Of those, the one with the longest run
+//! and not holding the hand's tip, and reaching out once
+//! ([`THUMB_SWINGS`]: a serrated edge is not one thumb). Of those, the one with the longest run
 //! (its base then the narrowest point of its root).
 
 use super::poly::dist;
@@ -33,6 +34,16 @@ pub const THUMB_BASE: f64 = 0.5;
 /// the notch rule's factor ([`super::limb`]: a notch's walk is more than
 /// twice its mouth) turned around; a half disc's is pi / 2.
 pub const THUMB_RATIO: f64 = 2.0;
+
+/// A thumb's distance from its base rises once to its tip and falls once:
+/// over the run its changes add up to twice its depth (exactly 2.00 on
+/// every thumb of the thirty-nine MakeHuman bodies). A serrated edge (fur,
+/// a frilled sleeve: teeth steeper than 60 degrees are each longer than
+/// twice their base) rises and falls once per tooth, at least four times
+/// its depth for two teeth; the rule takes less than this, halfway, so a
+/// hand-drawn thumb may wiggle by half its depth and a stretch of teeth is
+/// not cut off as one thumb.
+pub const THUMB_SWINGS: f64 = 3.0;
 
 /// How far (in base widths) the thumb's own outline is carried into the
 /// hand beyond its base, so the separate chain overlaps the hand's tube
@@ -76,7 +87,7 @@ pub fn split_thumb(
             if best.is_some_and(|b| b.0 >= run) {
                 continue;
             }
-            if sums.material_area(i, j) > 0.0 && sums.clear(i, j) {
+            if sums.material_area(i, j) > 0.0 && sums.clear(i, j) && one_peak(&walk[i..=j]) {
                 best = Some((run, i, j));
             }
         }
@@ -110,6 +121,24 @@ pub fn split_thumb(
         ]);
     }
     Some((arm, thumb))
+}
+
+/// Whether the run's distance from its base (the chord between its ends)
+/// rises and falls once: its total change under [`THUMB_SWINGS`] times its
+/// largest value.
+fn one_peak(run: &[[f64; 2]]) -> bool {
+    let (a, b) = (run[0], run[run.len() - 1]);
+    let c = dist(a, b);
+    let depth =
+        |p: &[f64; 2]| ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])).abs() / c;
+    let (mut swing, mut deepest, mut last) = (0.0, 0.0f64, 0.0);
+    for p in run {
+        let d = depth(p);
+        swing += (d - last).abs();
+        deepest = deepest.max(d);
+        last = d;
+    }
+    swing < THUMB_SWINGS * deepest
 }
 
 #[cfg(test)]
@@ -174,5 +203,30 @@ mod tests {
         // a notch (the run turns against the material) is not a thumb
         let (w, tip) = arm_with_thumb(LEN);
         assert!(split_thumb(&w, false, tip, 2.0).is_none());
+    }
+
+    #[test]
+    fn a_serrated_edge_is_not_cut_off_as_one_thumb() {
+        // the arm of the fixture, its inner side serrated near the hand:
+        // TEETH teeth 0.2 wide and 0.5 high (each 5 times longer than its
+        // base), the stretch 0.6 wide, under half the shoulder cut
+        const TEETH: usize = 3;
+        let (w, h) = (0.2, 0.5);
+        let mut walk: Vec<[f64; 2]> = (0..=20).map(|k| [0.0, -0.5 * k as f64]).collect();
+        for t in 0..TEETH {
+            let y = -10.0 - w * t as f64;
+            walk.push([-h, y - 0.5 * w]);
+            walk.push([0.0, y - w]);
+        }
+        walk.extend((1..=8).map(|k| [0.0, -10.0 - w * TEETH as f64 - 0.5 * k as f64]));
+        let tip = walk.len();
+        walk.push([1.0, -15.0]);
+        walk.extend((0..=30).map(|k| [2.0, -15.0 + 0.5 * k as f64]));
+        let tips = |pts: &[[f64; 2]]| pts.iter().filter(|p| p[0] == -h).count();
+        // at most one tooth may be read as a thumb (a lone spike is one)
+        if let Some((arm, thumb)) = split_thumb(&walk, true, tip, 2.0) {
+            assert!(tips(&thumb) <= 1, "teeth cut off as one thumb: {thumb:?}");
+            assert_eq!(tips(&arm), TEETH - tips(&thumb));
+        }
     }
 }
