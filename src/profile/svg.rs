@@ -170,6 +170,7 @@ fn flattened_subpaths(
     let mut edits: Vec<(usize, usize, String)> = layers
         .removed
         .iter()
+        .chain(&layers.shown)
         .map(|r| (r.start, r.len(), String::new()))
         .collect();
     if let Some(a) = doc

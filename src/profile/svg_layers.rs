@@ -11,6 +11,14 @@
 //! another editor, `<g id="front">`). A page with view layers but none for
 //! `V` is an error naming the layers it has; a file without view layers is
 //! read whole, as before.
+//!
+//! On a page with view layers, the view's layer is read even when it is
+//! hidden in the editor (`display:none`: one hides the side while drawing
+//! the front; the layer's name says what it is for), and the other layers
+//! that name no view and hold none (notes, a frame, a traced reference
+//! image's outline) are left out: drawn in any view, an open line or a
+//! second closed shape in them made reading a view fail. Shapes outside
+//! every layer are read in every view.
 
 use super::{ProfileError, View};
 use std::ops::Range;
@@ -26,6 +34,10 @@ pub(super) struct ViewLayers {
     /// The label (or id) of the first layer naming the view read, when the
     /// page has view layers.
     pub selected: Option<String>,
+    /// Byte ranges of the attributes hiding a layer of the view read
+    /// (`display="none"`, or a `style` holding `display:none`), removed so
+    /// the layer is drawn.
+    pub shown: Vec<Range<usize>>,
 }
 
 impl ViewLayers {
@@ -63,6 +75,29 @@ fn named_view(node: Node) -> Option<(View, String)> {
     view_named(id).map(|v| (v, id.to_string()))
 }
 
+/// Whether `node` is an Inkscape layer (or sublayer).
+fn is_layer(node: Node) -> bool {
+    node.is_element()
+        && node.tag_name().name() == "g"
+        && node.attribute((INKSCAPE_NS, "groupmode")) == Some("layer")
+}
+
+/// The attribute of a group that hides it, if any: `display="none"` or a
+/// `style` declaring `display: none`.
+fn hiding_attribute(node: Node) -> Option<Range<usize>> {
+    node.attributes().find_map(|a| {
+        let hides = match a.name() {
+            "display" => a.value().trim() == "none",
+            "style" => a.value().split(';').any(|decl| {
+                let mut kv = decl.splitn(2, ':').map(str::trim);
+                kv.next() == Some("display") && kv.next() == Some("none")
+            }),
+            _ => false,
+        };
+        hides.then(|| a.range())
+    })
+}
+
 fn view_named(word: &str) -> Option<View> {
     View::ALL
         .into_iter()
@@ -70,20 +105,28 @@ fn view_named(word: &str) -> Option<View> {
 }
 
 /// The groups to leave out when reading `view` from `doc` (outermost view
-/// groups only: a view group inside another goes with it).
+/// groups only: a view group inside another goes with it), and, on a page
+/// with view layers, the outermost layers naming no view and holding none.
 pub(super) fn select(doc: &Document, view: View) -> Result<ViewLayers, ProfileError> {
     let mut out = ViewLayers::default();
     let mut others = Vec::new();
+    let mut plain: Vec<Range<usize>> = Vec::new();
+    let in_view = |n: Node| n.ancestors().skip(1).any(|a| named_view(a).is_some());
     for node in doc.descendants() {
         let Some((v, name)) = named_view(node) else {
+            let holds_view = || node.descendants().any(|d| named_view(d).is_some());
+            let outer = !plain.iter().any(|r| r.contains(&node.range().start));
+            if is_layer(node) && outer && !in_view(node) && !holds_view() {
+                plain.push(node.range());
+            }
             continue;
         };
-        let nested = node.ancestors().skip(1).any(|a| named_view(a).is_some());
-        if nested {
+        if in_view(node) {
             continue;
         }
         if v == view {
             out.selected.get_or_insert(name);
+            out.shown.extend(hiding_attribute(node));
         } else {
             others.push(format!("{name:?}"));
             out.removed.push(node.range());
@@ -94,6 +137,10 @@ pub(super) fn select(doc: &Document, view: View) -> Result<ViewLayers, ProfileEr
             view,
             layers: others,
         });
+    }
+    if out.selected.is_some() {
+        out.removed.extend(plain);
+        out.removed.sort_by_key(|r| r.start);
     }
     Ok(out)
 }
@@ -195,5 +242,38 @@ mod tests {
         let plain = Document::parse(r#"<svg xmlns="http://www.w3.org/2000/svg"><g id="x"/></svg>"#)
             .unwrap();
         assert_eq!(select(&plain, View::Side).unwrap(), ViewLayers::default());
+    }
+
+    #[test]
+    fn a_hidden_view_layer_is_read_and_layers_naming_no_view_are_left_out() {
+        // the side layer hidden in the editor; a notes layer with an open
+        // line and a frame, and a sublayer of notes beside the views inside
+        // a "drawing" layer: read in a view, each made it fail
+        let page = r#"<svg xmlns="http://www.w3.org/2000/svg"
+            xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape">
+          <g inkscape:groupmode="layer" inkscape:label="notes">
+            <path d="M0 0 L100 0" fill="none" stroke="black"/>
+            <rect x="-50" y="-50" width="200" height="200"/></g>
+          <g inkscape:groupmode="layer" inkscape:label="drawing">
+            <g inkscape:groupmode="layer" inkscape:label="front">
+              <path d="M0 0 L4 0 L4 8 Z"/></g>
+            <g inkscape:groupmode="layer" inkscape:label="side" style="opacity:1; display : none">
+              <path d="M20 0 L22 0 L22 8 L20 8 Z"/></g>
+            <g inkscape:groupmode="layer" inkscape:label="arrows">
+              <path d="M0 0 L1 1"/></g></g>
+        </svg>"#;
+        let front = crate::profile::parse_svg(page, View::Front, 0.01).unwrap();
+        assert_eq!(front.outline.len(), 3);
+        let side = crate::profile::parse_svg(page, View::Side, 0.01).unwrap();
+        assert_eq!(side.outline.len(), 4);
+        // the side's square starts at x = 20 exactly (nothing else read)
+        const SIDE_LEFT: f64 = 20.0;
+        assert!(side.outline.points().iter().all(|p| p[0] >= SIDE_LEFT));
+        // the same notes on a page without view layers are read, as in any
+        // one-view file: the open line is an error
+        let plain = page
+            .replace("label=\"front\"", "label=\"body\"")
+            .replace("label=\"side\"", "label=\"profile\"");
+        assert!(crate::profile::parse_svg(&plain, View::Front, 0.01).is_err());
     }
 }
