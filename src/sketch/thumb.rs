@@ -109,18 +109,29 @@ pub fn split_thumb(
     // a half ellipse beyond the base, reaching THUMB_ROOT base widths into
     // the hand: the chain closes round there (a flat root closed to a
     // point creased its rim)
-    let mid = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
-    let (half, push) = (0.5 * c, THUMB_ROOT * c);
     let mut thumb = walk[i..=j].to_vec();
-    for k in 1..ROOT_POINTS {
-        let phi = std::f64::consts::PI * k as f64 / ROOT_POINTS as f64;
-        let (along, into) = (half * phi.cos(), push * phi.sin());
-        thumb.push([
-            mid[0] + along * d[0] + into * n[0],
-            mid[1] + along * d[1] + into * n[1],
-        ]);
-    }
+    thumb.extend(root_arc(b, a, n, THUMB_ROOT * c));
     Some((arm, thumb))
+}
+
+/// The root of a part cut off an outline at the chord from `from` to `to`
+/// (the part's outline runs from `to` to `from`): a half ellipse from
+/// `from` back to `to` bulging `push` along the unit `into` (into the
+/// parent's material), ends excluded, so the part's separate chain
+/// overlaps its parent instead of ending on the cut with a rounded gap.
+pub(super) fn root_arc(from: [f64; 2], to: [f64; 2], into: [f64; 2], push: f64) -> Vec<[f64; 2]> {
+    let mid = [0.5 * (from[0] + to[0]), 0.5 * (from[1] + to[1])];
+    let half = [0.5 * (from[0] - to[0]), 0.5 * (from[1] - to[1])];
+    (1..ROOT_POINTS)
+        .map(|k| {
+            let phi = std::f64::consts::PI * k as f64 / ROOT_POINTS as f64;
+            let (c, s) = (phi.cos(), push * phi.sin());
+            [
+                mid[0] + c * half[0] + s * into[0],
+                mid[1] + c * half[1] + s * into[1],
+            ]
+        })
+        .collect()
 }
 
 /// Whether the run's distance from its base (the chord between its ends)

@@ -140,7 +140,7 @@ const BELOW_SLICES: usize = 200;
 /// The parts below `top` (the slice intervals there), each followed down
 /// through the intervals overlapping it, to `floor`: each part's x range
 /// at `top` and its lowest height.
-fn parts_below(front: &[[f64; 2]], top: f64, floor: f64) -> Vec<([f64; 2], f64)> {
+pub(super) fn parts_below(front: &[[f64; 2]], top: f64, floor: f64) -> Vec<([f64; 2], f64)> {
     slice(front, top)
         .into_iter()
         .map(|iv| {

@@ -57,12 +57,17 @@
 //! with no `topside`, and the animal faces where the outline's centroid
 //! lies from its legs' middle.
 //!
-//! Not supported yet: a tail or trunk hanging down as a part of its own
-//! (its part below the body is left out, and the report says the model
-//! misses it),
-//! cuts, alignment of a tilted drawing (an animal's principal axis does not
+//! **Hanging parts** ([`hanging`]): a tail or trunk hanging below the
+//! body and ending above the ground is cut off the outline where it
+//! leaves the body and built from its own outline as a separate closed
+//! chain reaching into the body (`tail` behind the legs, `trunk` in front),
+//! as paper 000 builds a removed part. One that hangs between the legs
+//! low enough to read as a leg gap is still refused, named.
+//!
+//! Not supported yet: cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
+pub mod hanging;
 pub mod landmarks;
 pub use landmarks::{landmarks, longer_than_tall, QuadLandmarks};
 
@@ -389,6 +394,10 @@ pub fn derive(
             super::keysection::apply_key_section(&mut parts, k)?;
         }
     }
+    let body_z =
+        parts[0].sections.iter().map(|s| s.centre[2]).sum::<f64>() / parts[0].sections.len() as f64;
+    let taken: Vec<String> = parts.iter().map(|p| p.name.clone()).collect();
+    let hanging = hanging::hanging_parts(front, &lm, regs[0].y0, body_z, &taken);
     let body = &parts[0];
     let z0 = body.sections[0].centre[2];
     let z1 = body.sections[body.sections.len() - 1].centre[2];
@@ -440,6 +449,7 @@ pub fn derive(
     if !has_above {
         transitions.pop();
     }
+    parts.extend(hanging);
     Ok(Derived {
         plan: BodyPlan::Quadruped,
         alignment: super::align::Alignment::identity(),
