@@ -192,6 +192,11 @@ mod tests {
     /// y = 1.6 over the front leg, a trunk x 4.0 to 4.2 hanging from it to
     /// y = 0.4 (counter-clockwise).
     fn trunk() -> Vec<[f64; 2]> {
+        trunk_from(UNDERSIDE)
+    }
+
+    /// [`trunk`] with the head's underside at `y`.
+    fn trunk_from(y: f64) -> Vec<[f64; 2]> {
         vec![
             [0.0, 0.0],
             [0.5, 0.0],
@@ -199,8 +204,8 @@ mod tests {
             [3.0, 1.0],
             [3.0, 0.0],
             [3.5, 0.0],
-            [3.5, 1.6],
-            [4.0, 1.6],
+            [3.5, y],
+            [4.0, y],
             [4.0, 0.4],
             [4.2, 0.4],
             [4.2, 2.5],
@@ -238,6 +243,28 @@ mod tests {
         let d = super::super::derive(&front, None, &[], &[], Level::Intermediate).expect("builds");
         let names: Vec<&str> = d.parts.iter().map(|p| p.name.as_str()).collect();
         assert!(names.contains(&"trunk"), "{names:?}");
+    }
+
+    #[test]
+    fn a_trunk_leaving_the_head_below_the_middle_is_not_a_leg() {
+        // the head's underside at 1.2, under the outline's middle (1.25):
+        // the trunk's gap with the front leg reads as a leg gap (3 parts
+        // below); it closes above the belly (1.0) by more than a join band,
+        // so the trunk is a hanging part and the animal has 2 legs
+        const LOW_UNDERSIDE: f64 = 1.2;
+        let front = trunk_from(LOW_UNDERSIDE);
+        let d = super::super::derive(&front, None, &[], &[], Level::Intermediate)
+            .expect("a trunk, not a third leg");
+        let mut names: Vec<&str> = d.parts.iter().map(|p| p.name.as_str()).collect();
+        names.sort_unstable();
+        assert_eq!(names, ["body", "leg_b", "leg_f", "trunk"]);
+        // leaving the body level with the belly it cannot be cut off
+        // above the legs: refused, named
+        const AT_BELLY: f64 = 1.02;
+        let e = super::super::landmarks(&trunk_from(AT_BELLY))
+            .expect_err("a part hanging at the belly")
+            .to_string();
+        assert!(e.contains("the part between x = 4.0000 and 4.2000"), "{e}");
     }
 
     #[test]

@@ -45,7 +45,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     let mut legs: Vec<GapTop> = gap_tops(front, LANDMARK_SLICES);
     legs.retain(|t| t.y < mid);
     merge_repeats(&mut legs, g);
-    let legs: Vec<[f64; 2]> = legs.iter().map(|t| [t.x, t.y]).collect();
+    let mut legs: Vec<[f64; 2]> = legs.iter().map(|t| [t.x, t.y]).collect();
     let flipped: Vec<[f64; 2]> = front.iter().map(|p| [p[0], -p[1]]).collect();
     let mut top: Vec<GapTop> = gap_tops(&flipped, LANDMARK_SLICES);
     top.retain(|t| -t.y > mid);
@@ -60,7 +60,8 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
         None
     };
     if legs.len() != 1 && legs.len() != 3 {
-        return Err(legs_error(front, &legs, yr, g));
+        legs = without_hanging_ends(front, &legs, yr, g)
+            .ok_or_else(|| legs_error(front, &legs, yr, g))?;
     }
     // none: nothing rises above the back (a head level with it, in front
     // of the body): the body closes at the top, when it is an animal's
@@ -86,6 +87,66 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<QuadLandmarks, SketchError> {
     })
 }
 
+/// The gap tops left when the outermost parts below the body that end
+/// above the ground (a trunk in front of the front legs, a tail behind
+/// the hind legs, whose gaps with those legs close below the outline's
+/// middle and were counted as leg gaps) are not legs: their gaps dropped,
+/// when 1 or 3 remain and each dropped gap closes more than a join band
+/// `g` above the highest kept one (the part then leaves the body above the
+/// belly and is built on its own, [`super::hanging`]). None otherwise
+/// (refused by [`legs_error`]).
+fn without_hanging_ends(
+    front: &[[f64; 2]],
+    legs: &[[f64; 2]],
+    yr: [f64; 2],
+    g: f64,
+) -> Option<Vec<[f64; 2]>> {
+    let (parts, ground) = parts_under_gaps(front, legs, yr, g)?;
+    let mut kept = legs.to_vec();
+    kept.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let n = parts.len();
+    let hanging = |k: usize| parts[k].1 > ground;
+    if n != kept.len() + 1 || (1..n - 1).any(hanging) {
+        return None;
+    }
+    let mut dropped = Vec::new();
+    if hanging(n - 1) {
+        dropped.extend(kept.pop());
+    }
+    if hanging(0) && !kept.is_empty() {
+        dropped.push(kept.remove(0));
+    }
+    let top = kept.iter().map(|l| l[1]).fold(f64::MIN, f64::max);
+    let above = dropped.iter().all(|d| d[1] > top + g);
+    (!dropped.is_empty() && above && (kept.len() == 1 || kept.len() == 3)).then_some(kept)
+}
+
+/// A part below the body: its x range where counted and its lowest height.
+type PartBelow = ([f64; 2], f64);
+
+/// The parts below the body, counted under the gap tops `legs` as
+/// [`legs_error`] counts them, and the height under which a part reaches
+/// the ground.
+fn parts_under_gaps(
+    front: &[[f64; 2]],
+    legs: &[[f64; 2]],
+    yr: [f64; 2],
+    g: f64,
+) -> Option<(Vec<PartBelow>, f64)> {
+    // the parts are counted a join band below the gap top whose slice
+    // there parts the most (the higher of equals): not the lowest top (a
+    // part ending between two longer ones is itself reported as a gap top,
+    // the gap between those two being covered above its end), nor the
+    // highest (a tail's gap with a leg can close above the legs' gaps)
+    let parted = |y: f64| slice(front, y - g).len();
+    let low = legs
+        .iter()
+        .map(|l| l[1])
+        .max_by(|a, b| parted(*a).cmp(&parted(*b)).then(a.total_cmp(b)))?;
+    let parts = parts_below(front, low - g, yr[0] - g);
+    Some((parts, yr[0] + GROUND_FRACTION * (low - yr[0])))
+}
+
 /// The refusal of a lateral outline without 2 or 4 legs below the body
 /// (its `legs` gap tops, height range `yr`, join band `g`): the parts
 /// below the body that end above the ground (a hanging tail or trunk,
@@ -96,21 +157,9 @@ fn legs_error(front: &[[f64; 2]], legs: &[[f64; 2]], yr: [f64; 2], g: f64) -> Sk
         legs.len(),
         legs.len() + 1
     );
-    // the parts are counted a join band below the gap top whose slice
-    // there parts the most (the higher of equals): not the lowest top (a
-    // part ending between two longer ones is itself reported as a gap top,
-    // the gap between those two being covered above its end), nor the
-    // highest (a tail's gap with a leg can close above the legs' gaps)
-    let parted = |y: f64| slice(front, y - g).len();
-    let Some(low) = legs
-        .iter()
-        .map(|l| l[1])
-        .max_by(|a, b| parted(*a).cmp(&parted(*b)).then(a.total_cmp(b)))
-    else {
+    let Some((parts, ground)) = parts_under_gaps(front, legs, yr, g) else {
         return SketchError::Segmentation(generic);
     };
-    let parts = parts_below(front, low - g, yr[0] - g);
-    let ground = yr[0] + GROUND_FRACTION * (low - yr[0]);
     let hanging: Vec<String> = parts
         .iter()
         .filter(|p| p.1 > ground)
@@ -121,7 +170,8 @@ fn legs_error(front: &[[f64; 2]], legs: &[[f64; 2]], yr: [f64; 2], g: f64) -> Sk
     }
     SketchError::Segmentation(format!(
         "quadruped: {} of the {} parts below the body end(s) above the ground (y = {:.4}): {}; a tail or trunk \
-         hanging down is not modelled: draw it raised above the back line, or leave it out ({} leg(s) reach the ground)",
+         hanging down is modelled only where it leaves the body above the belly, at the front or the back: \
+         draw it raised above the back line, or leave it out ({} leg(s) reach the ground)",
         hanging.len(),
         parts.len(),
         yr[0],
@@ -140,7 +190,7 @@ const BELOW_SLICES: usize = 200;
 /// The parts below `top` (the slice intervals there), each followed down
 /// through the intervals overlapping it, to `floor`: each part's x range
 /// at `top` and its lowest height.
-pub(super) fn parts_below(front: &[[f64; 2]], top: f64, floor: f64) -> Vec<([f64; 2], f64)> {
+pub(super) fn parts_below(front: &[[f64; 2]], top: f64, floor: f64) -> Vec<PartBelow> {
     slice(front, top)
         .into_iter()
         .map(|iv| {
@@ -340,7 +390,7 @@ mod tests {
             .to_string();
         assert!(
             e.contains("the part between x = 1.5000 and 1.7000 ends at y = 0.5")
-                && e.contains("hanging down is not modelled")
+                && e.contains("hanging down is modelled only where")
                 && e.contains("(2 leg(s) reach the ground)"),
             "{e}"
         );

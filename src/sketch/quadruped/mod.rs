@@ -61,8 +61,11 @@
 //! body and ending above the ground is cut off the outline where it
 //! leaves the body and built from its own outline as a separate closed
 //! chain reaching into the body (`tail` behind the legs, `trunk` in front),
-//! as paper 000 builds a removed part. One that hangs between the legs
-//! low enough to read as a leg gap is still refused, named.
+//! as paper 000 builds a removed part. One at the front or the back whose
+//! gap with the nearest leg closes under the outline's middle (read as a
+//! leg gap) is not a leg when that gap closes above the belly
+//! (`landmarks::without_hanging_ends`); one hanging between the legs, or
+//! leaving the body level with the belly, is refused, named.
 //!
 //! Not supported yet: cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
