@@ -115,7 +115,10 @@ pub(super) fn select(doc: &Document, view: View) -> Result<ViewLayers, ProfileEr
     for node in doc.descendants() {
         let Some((v, name)) = named_view(node) else {
             let holds_view = || node.descendants().any(|d| named_view(d).is_some());
-            let outer = !plain.iter().any(|r| r.contains(&node.range().start));
+            // in document order a layer inside a left-out one follows it
+            let outer = !plain
+                .last()
+                .is_some_and(|r| r.contains(&node.range().start));
             if is_layer(node) && outer && !in_view(node) && !holds_view() {
                 plain.push(node.range());
             }
