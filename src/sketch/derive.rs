@@ -297,6 +297,7 @@ fn derive_upright(
         parts,
         transitions,
         apex_alternatives,
+        alternatives: Vec::new(),
     })
 }
 

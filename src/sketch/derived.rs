@@ -54,6 +54,11 @@ pub struct Derived {
     /// Seam apexes the transition fit may take instead of the derived
     /// ones (`sketch::apex`, `tangent_fit::fit_apexes`).
     pub apex_alternatives: Vec<ApexAlternative>,
+    /// Other parts and transitions derived by another method, which the
+    /// build measures beside these and keeps when they miss the issue's
+    /// bounds by less (`pipeline::build`, [`super::quality::excess`]): an
+    /// animal's body as shells (`quadruped::shells`).
+    pub alternatives: Vec<(Vec<PartSpec>, Vec<TransitionSpec>)>,
 }
 
 /// A seam apex the transition fit tries beside the derived one.

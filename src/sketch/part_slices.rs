@@ -93,11 +93,22 @@ pub(super) fn part_from_region(
     side: Option<&[[f64; 2]]>,
     r: &Region,
 ) -> Result<PartSpec, SketchError> {
-    match region_part(front, side, r, true)? {
+    part_with_sections(front, side, r, SECTIONS_PER_PART)
+}
+
+/// [`part_from_region`] with `m` sections (`3 P + 1`) where no foot takes
+/// some: a long part (an animal's body) needs more than a limb.
+pub(super) fn part_with_sections(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    r: &Region,
+    m: usize,
+) -> Result<PartSpec, SketchError> {
+    match region_part(front, side, r, true, m)? {
         Some(p) => Ok(p),
         // a foot whose sections do not all meet the outlines: the leg
         // without it, horizontal sections down to the sole
-        None => region_part(front, side, r, false)?
+        None => region_part(front, side, r, false, m)?
             .ok_or_else(|| SketchError::Segmentation(format!("{}: no sections", r.name))),
     }
 }
@@ -123,10 +134,11 @@ fn region_part(
     side: Option<&[[f64; 2]]>,
     r: &Region,
     with_foot: bool,
+    m: usize,
 ) -> Result<Option<PartSpec>, SketchError> {
     let map = height_map(front, side);
     let s = region_samples(front, r);
-    if s.len() < SECTIONS_PER_PART + 2 {
+    if s.len() < m + 2 {
         return Err(SketchError::Segmentation(format!(
             "{}: only {} slices: draw it larger (longer or wider)",
             r.name,
@@ -149,7 +161,10 @@ fn region_part(
         (true, Some(sd), Some(d)) => super::foot::find(sd, map, &s, d, SECTIONS_PER_PART + 3),
         _ => None,
     };
-    let plan = super::foot::plan(&s, foot.as_ref(), side.unwrap_or(&[]));
+    let mut plan = super::foot::plan(&s, foot.as_ref(), side.unwrap_or(&[]));
+    if foot.is_none() {
+        plan.m_upper = m;
+    }
     let upper_depth = depth.as_deref().map(|d| &d[..plan.n_upper]);
     let idx = match &foot {
         // the bend's sections are a sixth of pi of its radius apart (side

@@ -274,6 +274,35 @@ pub fn measure(
     }
 }
 
+/// How far the whole model's measures exceed the bounds `b`: the sum over
+/// its profile errors and outside distances in each view, its largest
+/// turn and its creased length of how far each is over its bound, as a
+/// fraction of the bound (0: within every bound; NaN counts as infinite).
+/// The build keeps the derivation that scores least (`pipeline::build`).
+pub fn excess(q: &Quality, b: &Bounds) -> f64 {
+    let over = |v: f64, bound: f64| {
+        if v.is_nan() {
+            f64::INFINITY
+        } else {
+            (v / bound - 1.0).max(0.0)
+        }
+    };
+    let w = &q.whole;
+    w.views
+        .iter()
+        .map(|v| {
+            let bound = if v.view == "front" {
+                b.profile_front
+            } else {
+                b.profile_side
+            };
+            over(v.max_rel, bound) + over(v.outside_rel, b.outside)
+        })
+        .sum::<f64>()
+        + over(w.dihedral_deg, b.dihedral_deg)
+        + over(w.creased_rel, b.creased_rel)
+}
+
 /// One warning per measure over its bound, naming the part (or "the
 /// model") and both numbers; NaN (a view that could not be measured) is
 /// over every bound.

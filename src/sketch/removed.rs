@@ -19,7 +19,6 @@
 //! front silhouette against its own outline.
 
 use super::align::{axes, Alignment, ROTATION_EPS_DEG};
-use super::derive::part_from_region;
 use super::input::{read_profile, Outline};
 use super::place::Placement;
 use super::segment::{Pick, Region, SidePick};
@@ -75,6 +74,19 @@ pub fn upright_chain(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
 ) -> Result<PartSpec, SketchError> {
+    upright_chain_n(name, front, side, super::derive::SECTIONS_PER_PART, false)
+}
+
+/// [`upright_chain`] with `m` sections (`3 P + 1`); `parallel`: the
+/// sections stay across the principal axis whatever the central curve's
+/// tilt (an animal's body, whose cut ends pull its slices' midpoints).
+pub fn upright_chain_n(
+    name: &str,
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    m: usize,
+    parallel: bool,
+) -> Result<PartSpec, SketchError> {
     let ax = axes(front);
     // turn the major axis vertical: angle into (-90, 90] degrees
     let half = std::f64::consts::FRAC_PI_2;
@@ -99,10 +111,10 @@ pub fn upright_chain(
         downward: false,
         tip: true,
         shoulder: None,
-        horizontal: false,
+        horizontal: parallel,
         side: SidePick::Whole,
     };
-    let mut spec = part_from_region(&up, side_pts, &region)?;
+    let mut spec = super::part_slices::part_with_sections(&up, side_pts, &region, m)?;
     // close the start at the outline's lowest point (in the upright frame)
     let first = spec.sections[0].centre;
     spec.sections[0].centre = [first[0], yr[0], first[2]];

@@ -67,11 +67,23 @@
 //! (`landmarks::without_hanging_ends`); one hanging between the legs, or
 //! leaving the body level with the belly, is refused, named.
 //!
+//! **Shells** ([`shells`]): below the final level the same regions are
+//! also built as shells, the body chained along its own length with every
+//! other part a closed chain reaching into it and no transitions; the
+//! build keeps whichever model exceeds issue 28's bounds by less
+//! (`pipeline::build`, `sketch::quality::excess`). The stacked body's
+//! transitions fold (corpus animals: 156 to 180 degrees); the shells do
+//! not on four legs, at the price of a larger miss where a drawn end is
+//! blunt. Key sections sculpt the stacked body, so the final level keeps
+//! it.
+//!
 //! Not supported yet: cuts, alignment of a tilted drawing (an animal's principal axis does not
 //! say where "up" is).
 
 pub mod hanging;
 pub mod landmarks;
+pub mod root_cut;
+pub mod shells;
 pub use landmarks::{landmarks, longer_than_tall, QuadLandmarks};
 
 use super::derived::{check_side_height, e1_half_width, ring_angle, Derived};
@@ -388,7 +400,7 @@ pub fn derive(
     check_side_height(lm.height(), side)?;
     let side = if level == Level::Initial { None } else { side };
     let regs = regions(front, side, &mut lm)?;
-    let mut parts = regs
+    let mut parts: Vec<PartSpec> = regs
         .iter()
         .map(|r| part_from_region(front, side, r))
         .collect::<Result<Vec<_>, _>>()?;
@@ -452,6 +464,13 @@ pub fn derive(
     if !has_above {
         transitions.pop();
     }
+    // key sections sculpt the stacked body: the final level keeps it
+    let alternatives = (level != Level::Final)
+        .then(|| shells::shell_parts(front, side, &lm, &regs, &parts, &hanging))
+        .flatten()
+        .map(|p| (p, Vec::new()))
+        .into_iter()
+        .collect();
     parts.extend(hanging);
     Ok(Derived {
         plan: BodyPlan::Quadruped,
@@ -461,5 +480,6 @@ pub fn derive(
         parts,
         transitions,
         apex_alternatives: Vec::new(),
+        alternatives,
     })
 }

@@ -1,0 +1,380 @@
+//! An animal's body as a chain along its own length, its legs, neck and
+//! tail as closed chains reaching into it (paper 000's composition of
+//! removed parts, sec 4.1), instead of a stack of horizontal slices joined
+//! to its parts by transition surfaces.
+//!
+//! The lateral outline's body is what is left when every other part's
+//! region ([`super::regions`]) is cut off at its join: a leg at its top
+//! slice, a part above the back at its lowest, each run of the outline
+//! beyond the cut replaced by the cut's chord ([`super::root_cut`]). That
+//! outline is built as a removed part is, along its principal axis
+//! ([`super::super::removed::upright_chain`]): sections across the body,
+//! closed at the rump and the chest. The head-on view gives their depth
+//! ([`body_depth`]). Each other part keeps its region's chain and is
+//! closed at its join by a cap reaching half its width beyond it
+//! ([`cap_start`], [`super::hanging::HANG_ROOT`]): into the body, which
+//! covers the cut.
+//!
+//! Why: a body sliced horizontally has its back and belly as end rings,
+//! flat, and the transitions from them to four legs and three parts above
+//! folded (corpus animals: 166 to 180 degrees, 1.3 to 19 heights of
+//! creased edges, docs/drawing-corpus.md).
+
+use super::super::poly::slice;
+use super::super::removed::upright_chain_n;
+use super::super::segment::{interval, Pick, Region};
+use super::super::SketchError;
+use super::hanging::HANG_ROOT;
+use super::root_cut::{nearest_vertex, root_point, split_at_root, without_run};
+use super::QuadLandmarks;
+use crate::character::doc::{PartSpec, SectionShape};
+
+/// How a part other than the body is cut off it.
+#[derive(Clone, Debug)]
+pub enum Cut {
+    /// Kept as its region's chain, capped into the body (a leg, a lone
+    /// neck over the back line): cut at its join's slice.
+    Region,
+    /// Its own closed outline, cut at its root chord ([`split_at_root`]).
+    Outline(Vec<[f64; 2]>),
+    /// Left in the body (a back between two corners).
+    Body,
+}
+
+/// The body's outline and how each other region (`regs[1..]`) is cut off
+/// it: a part above the back beside one top corner at its root chord
+/// ([`root_point`]); a part between two corners stays in the body; a leg,
+/// or a lone part over the back line, at its join's slice, the run of the
+/// outline beyond it replaced by the chord ([`without_run`]).
+pub fn cut_parts(
+    front: &[[f64; 2]],
+    regs: &[Region],
+    top_gaps: &[[f64; 2]],
+    leg_raise: f64,
+    facing: f64,
+) -> Result<(Vec<[f64; 2]>, Vec<Cut>), SketchError> {
+    let mut poly = front.to_vec();
+    let mut cuts = Vec::new();
+    let is_gap = |x: f64| top_gaps.iter().find(|g| g[0] == x).copied();
+    let refuse = |name: &str, y: f64| {
+        SketchError::Segmentation(format!(
+            "{name}: its join at y = {y:.4} does not cut it off the body: draw it apart from the other parts"
+        ))
+    };
+    for r in &regs[1..] {
+        let Pick::CentreIn(lo, hi) = r.pick else {
+            return Err(refuse(&r.name, r.y0));
+        };
+        // which way the part lies from its corner: forward (counter-
+        // clockwise, right to left along the top) when left of it; a lone
+        // part over the back line (no top corner) lies toward the facing
+        let toward = match (r.downward, is_gap(lo), is_gap(hi)) {
+            (true, _, _) => None,
+            (false, Some(_), Some(_)) => {
+                cuts.push(Cut::Body);
+                continue;
+            }
+            (false, Some(_), None) => Some(false),
+            (false, None, Some(_)) => Some(true),
+            (false, None, None) => Some(facing < 0.0),
+        };
+        let cut = match toward {
+            Some(forward) => {
+                // the corner's side of the part's lowest slice (a flat
+                // back's gap top is the back's middle, not a corner)
+                let iv = interval(&poly, r.pick, r.y0).ok_or_else(|| refuse(&r.name, r.y0))?;
+                let x = if forward { iv[1] } else { iv[0] };
+                let c = nearest_vertex(&poly, [x, r.y0]);
+                let root =
+                    root_point(&poly, c, forward, r.y1).ok_or_else(|| refuse(&r.name, r.y0))?;
+                let (body, part) = split_at_root(&poly, c, root, forward);
+                poly = body;
+                Cut::Outline(part)
+            }
+            None => {
+                let y = r.y1 + leg_raise;
+                poly = interval(&poly, r.pick, y)
+                    .and_then(|iv| without_run(&poly, y, iv, true))
+                    .ok_or_else(|| refuse(&r.name, y))?;
+                Cut::Region
+            }
+        };
+        cuts.push(cut);
+    }
+    Ok((poly, cuts))
+}
+
+/// A chain from a closed outline ([`upright_chain`]); with `side`, its
+/// sections are ellipses whose depth is the head-on outline's half width
+/// over the heights in `band` ([`body_depth`]) scaled by the section's
+/// height over the tallest's, centred at that width's middle.
+pub fn outline_part(
+    name: &str,
+    outline: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    band: [f64; 2],
+) -> Result<PartSpec, SketchError> {
+    let parallel = name == "body";
+    let mut spec = upright_chain_n(name, outline, None, sections_for(outline), parallel)?;
+    if parallel {
+        straight_tips(&mut spec);
+    }
+    let Some((depth, z)) = side.and_then(|s| body_depth(s, band)) else {
+        return Ok(spec);
+    };
+    let radius = |s: &SectionShape| match s {
+        SectionShape::Circle { r } => *r,
+        _ => 0.0,
+    };
+    let tallest = spec
+        .sections
+        .iter()
+        .map(|s| radius(&s.shape))
+        .fold(0.0, f64::max)
+        .max(f64::MIN_POSITIVE);
+    let sd = side.unwrap_or(&[]);
+    for s in &mut spec.sections {
+        let r = radius(&s.shape);
+        s.centre[2] = z;
+        // no deeper than fits the head-on view at every height it spans
+        // (within the band): the largest inscribed depth
+        let seen = inscribed_depth(sd, s.centre[1], r, band);
+        if r > 0.0 {
+            s.shape = SectionShape::Ellipse {
+                a: r,
+                b: (depth * r / tallest).min(seen),
+                offset: 0.0,
+            };
+        }
+    }
+    Ok(spec)
+}
+
+/// Moves each closed end's point onto the line through its neighbour
+/// section's centre along the sections' normal: parallel sections whose
+/// end point sits off that line (at a cut's corner) slide sideways faster
+/// than they advance there, and the surface folds over (the corpus dog's
+/// rump, 180 degrees).
+fn straight_tips(spec: &mut PartSpec) {
+    let n = spec.sections.len();
+    if n < 2 {
+        return;
+    }
+    for (tip, next) in [(0, 1), (n - 1, n - 2)] {
+        let (t, q) = (&spec.sections[tip], &spec.sections[next]);
+        let (a, b) = (q.e1, q.e2);
+        let nrm = [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ];
+        let len = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
+        if len == 0.0 {
+            continue;
+        }
+        let d: [f64; 3] = std::array::from_fn(|k| t.centre[k] - q.centre[k]);
+        let along = (d[0] * nrm[0] + d[1] * nrm[1] + d[2] * nrm[2]) / (len * len);
+        let centre = std::array::from_fn(|k| q.centre[k] + along * nrm[k]);
+        let (e1, e2) = (q.e1, q.e2);
+        let t = &mut spec.sections[tip];
+        (t.centre, t.e1, t.e2) = (centre, e1, e2);
+    }
+}
+
+/// Heights sampled across a section to fit its depth in the head-on view.
+const DEPTH_SAMPLES: usize = 16;
+
+/// The largest half depth of an ellipse section centred at height `c`
+/// with vertical half axis `r` that stays inside the head-on outline
+/// `side` at every sampled height within `band` (infinite when none is).
+fn inscribed_depth(side: &[[f64; 2]], c: f64, r: f64, band: [f64; 2]) -> f64 {
+    (0..DEPTH_SAMPLES)
+        .filter_map(|k| {
+            let t = -1.0 + 2.0 * (k as f64 + 0.5) / DEPTH_SAMPLES as f64;
+            let y = c + t * r;
+            if !(band[0]..=band[1]).contains(&y) {
+                return None;
+            }
+            let sl = slice(side, y);
+            let w = 0.5 * (sl.last()?[1] - sl.first()?[0]);
+            Some(w / (1.0 - t * t).sqrt())
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Sections along a part cut from its outline: `3 P + 1`, P patches each
+/// at most half the part's width long (its extent across its principal
+/// axis, [`super::super::align::axes`]), at least the limb's 4: a long
+/// body's blunt ends otherwise ring along its whole length.
+fn sections_for(outline: &[[f64; 2]]) -> usize {
+    let ax = super::super::align::axes(outline);
+    let (c, sn) = (ax.major.cos(), ax.major.sin());
+    let along: Vec<f64> = outline.iter().map(|p| p[0] * c + p[1] * sn).collect();
+    let across: Vec<f64> = outline.iter().map(|p| -p[0] * sn + p[1] * c).collect();
+    let ext = |v: &[f64]| {
+        v.iter().copied().fold(f64::MIN, f64::max) - v.iter().copied().fold(f64::MAX, f64::min)
+    };
+    let patches = (2.0 * ext(&along) / ext(&across).max(f64::MIN_POSITIVE)).ceil();
+    let p = if patches.is_finite() {
+        patches as usize
+    } else {
+        4
+    };
+    3 * p.clamp(4, 40) + 1
+}
+
+/// Half the head-on outline's widest span (first interval to last) over
+/// heights in `band` (the body's, between the legs' joins and the parts'
+/// above), and its middle: the body's half depth and z.
+pub fn body_depth(side: &[[f64; 2]], band: [f64; 2]) -> Option<(f64, f64)> {
+    const SLICES: usize = 64;
+    (0..=SLICES)
+        .filter_map(|k| {
+            let y = band[0] + (band[1] - band[0]) * k as f64 / SLICES as f64;
+            let s = slice(side, y);
+            Some((s.first()?[0], s.last()?[1]))
+        })
+        .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)))
+        .map(|(z0, z1)| (0.5 * (z1 - z0), 0.5 * (z0 + z1)))
+}
+
+/// Sections a cap adds: a chain holds 7 + 3k sections.
+const CAP_SECTIONS: usize = 3;
+
+/// Closes a part's start with a half-ellipsoid dome reaching half its
+/// start's e1 width beyond it, back along its first step (into the body
+/// it joins): [`CAP_SECTIONS`] sections, the last a point.
+pub fn cap_start(spec: &mut PartSpec) {
+    let [s0, s1] = [&spec.sections[0], &spec.sections[1]];
+    let half = match s0.shape {
+        SectionShape::Circle { r } => r,
+        SectionShape::Ellipse { a, .. } => a,
+        SectionShape::Gec { .. } => return,
+    };
+    let d: [f64; 3] = std::array::from_fn(|k| s0.centre[k] - s1.centre[k]);
+    let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+    if len == 0.0 || half <= 0.0 {
+        return;
+    }
+    let push = 2.0 * HANG_ROOT * half;
+    let dome: Vec<_> = (1..=CAP_SECTIONS)
+        .rev()
+        .map(|k| {
+            let t = k as f64 / CAP_SECTIONS as f64;
+            let scale = (1.0 - t * t).max(0.0).sqrt();
+            let mut c = s0.clone();
+            c.centre = std::array::from_fn(|i| s0.centre[i] + t * push * d[i] / len);
+            c.u = (1.0 - t) * push;
+            c.shape = match c.shape {
+                _ if k == CAP_SECTIONS => SectionShape::Circle { r: 0.0 },
+                SectionShape::Circle { r } => SectionShape::Circle { r: scale * r },
+                SectionShape::Ellipse { a, b, offset } => SectionShape::Ellipse {
+                    a: scale * a,
+                    b: scale * b,
+                    offset: scale * offset,
+                },
+                g => g,
+            };
+            c
+        })
+        .collect();
+    for s in &mut spec.sections {
+        s.u += push;
+    }
+    spec.sections.splice(0..0, dome);
+    spec.closed_start = true;
+}
+
+/// The animal as shells (see the module docs) from its regions `regs`
+/// and their chains `parts` (body first, as [`super::regions`] orders
+/// them), with its hanging parts: None when a part cannot be cut off or
+/// built this way (the build keeps the transitions' model).
+pub fn shell_parts(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &QuadLandmarks,
+    regs: &[Region],
+    parts: &[PartSpec],
+    hanging: &[PartSpec],
+) -> Option<Vec<PartSpec>> {
+    // the body keeps the belly down to half a join band above the legs'
+    // gap tops (their top slices are LEG_BAND bands below)
+    let g = super::GAP_FRACTION * lm.height();
+    let (outline, cuts) = cut_parts(
+        front,
+        regs,
+        &lm.top_gaps,
+        (super::LEG_BAND - 0.5) * g,
+        lm.facing,
+    )
+    .ok()?;
+    let others = &regs[1..];
+    let legs_top = others
+        .iter()
+        .filter(|r| r.downward)
+        .map(|r| r.y1)
+        .fold(lm.y_min, f64::max);
+    let above_low = others
+        .iter()
+        .filter(|r| !r.downward)
+        .map(|r| r.y0)
+        .fold(lm.y_max, f64::min);
+    let mut out = vec![outline_part("body", &outline, side, [legs_top, above_low]).ok()?];
+    for ((r, p), cut) in others.iter().zip(&parts[1..]).zip(cuts) {
+        match cut {
+            Cut::Body => {}
+            Cut::Region => {
+                let mut p = p.clone();
+                cap_start(&mut p);
+                out.push(p);
+            }
+            Cut::Outline(o) => {
+                // a tail is hidden in the head-on view (circles)
+                let seen = if r.name == "tail" { None } else { side };
+                out.push(outline_part(&r.name, &o, seen, [r.y0, r.y1]).ok()?);
+            }
+        }
+    }
+    out.extend(hanging.iter().cloned());
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn shells_are_closed_chains_without_transitions() {
+        // the U below a wider body: nothing above the back
+        let front = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 1.0],
+            [3.0, 1.0],
+            [3.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 2.0],
+            [0.0, 2.0],
+        ];
+        let d = super::super::derive(
+            &front,
+            None,
+            &[],
+            &[],
+            crate::character::doc::Level::Intermediate,
+        )
+        .expect("builds");
+        let [(parts, transitions)] = &d.alternatives[..] else {
+            panic!("one alternative: {}", d.alternatives.len());
+        };
+        assert!(transitions.is_empty());
+        let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["body", "leg_b", "leg_f"]);
+        for p in parts {
+            assert!(p.closed_start && p.closed_end, "{}", p.name);
+            assert_eq!(p.sections.len() % 3, 1, "{}: 3 P + 1 sections", p.name);
+        }
+        // the final level keeps the stacked body (key sections sculpt it)
+        let d = super::super::derive(&front, None, &[], &[], crate::character::doc::Level::Final)
+            .expect("builds");
+        assert!(d.alternatives.is_empty());
+    }
+}
