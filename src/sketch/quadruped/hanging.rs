@@ -89,13 +89,15 @@ fn climb(front: &[[f64; 2]], mut y: f64, mut iv: [f64; 2], dy: f64, top: f64) ->
     (y, iv)
 }
 
-/// The outline's run below `y` from its crossing at `range[1]` to its
-/// crossing at `range[0]`, then its root above `y`; None when the run
-/// between the two crossings rises above `y` (the part is not cut off by
-/// the one chord).
-fn cut_off(front: &[[f64; 2]], y: f64, range: [f64; 2]) -> Option<Vec<[f64; 2]>> {
+/// The outline's crossings of the height `y` (edge index, x) nearest
+/// `range`'s two ends: a chord across a part there; None when one edge
+/// holds both (or none crosses).
+pub(super) fn chord_ends(
+    front: &[[f64; 2]],
+    y: f64,
+    range: [f64; 2],
+) -> Option<((usize, f64), (usize, f64))> {
     let n = front.len();
-    // the crossings of y: (edge index, x)
     let crossings: Vec<(usize, f64)> = (0..n)
         .filter_map(|i| {
             let (p, q) = (front[i], front[(i + 1) % n]);
@@ -110,9 +112,16 @@ fn cut_off(front: &[[f64; 2]], y: f64, range: [f64; 2]) -> Option<Vec<[f64; 2]>>
             .copied()
     };
     let (a, b) = (nearest(range[0])?, nearest(range[1])?);
-    if a.0 == b.0 {
-        return None;
-    }
+    (a.0 != b.0).then_some((a, b))
+}
+
+/// The outline's run below `y` from its crossing at `range[1]` to its
+/// crossing at `range[0]`, then its root above `y`; None when the run
+/// between the two crossings rises above `y` (the part is not cut off by
+/// the one chord).
+fn cut_off(front: &[[f64; 2]], y: f64, range: [f64; 2]) -> Option<Vec<[f64; 2]>> {
+    let n = front.len();
+    let (a, b) = chord_ends(front, y, range)?;
     // the two runs between the crossings; the part's stays below y
     let run = |from: usize, to: usize| -> Vec<[f64; 2]> {
         let mut k = (from + 1) % n;

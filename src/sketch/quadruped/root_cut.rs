@@ -17,23 +17,7 @@ pub fn without_run(
     below: bool,
 ) -> Option<Vec<[f64; 2]>> {
     let n = poly.len();
-    let crossings: Vec<(usize, f64)> = (0..n)
-        .filter_map(|i| {
-            let (p, q) = (poly[i], poly[(i + 1) % n]);
-            ((p[1] < y) != (q[1] < y))
-                .then(|| (i, p[0] + (y - p[1]) / (q[1] - p[1]) * (q[0] - p[0])))
-        })
-        .collect();
-    let nearest = |x: f64| {
-        crossings
-            .iter()
-            .min_by(|a, b| (a.1 - x).abs().total_cmp(&(b.1 - x).abs()))
-            .copied()
-    };
-    let (a, b) = (nearest(range[0])?, nearest(range[1])?);
-    if a.0 == b.0 {
-        return None;
-    }
+    let (a, b) = super::hanging::chord_ends(poly, y, range)?;
     let beyond = |p: &[f64; 2]| if below { p[1] < y } else { p[1] > y };
     // the run after edge `from` up to vertex `to`, both ways round
     let run_ok = |from: usize, to: usize| {
