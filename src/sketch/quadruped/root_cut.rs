@@ -54,6 +54,18 @@ pub fn without_run(
     Some(out)
 }
 
+/// The next index of a walk round `n` vertices: in index order when
+/// `forward`, else backward.
+fn stepper(n: usize, forward: bool) -> impl Fn(usize) -> usize {
+    move |k| {
+        if forward {
+            (k + 1) % n
+        } else {
+            (k + n - 1) % n
+        }
+    }
+}
+
 /// The part beyond a top corner of the outline (a tail or a neck rising
 /// from the back): from the corner's vertex `c` the outline is walked into
 /// the part (`forward`: in index order) up to its first point at `top`
@@ -65,14 +77,7 @@ pub fn without_run(
 /// outline then moving away down the rump or the chest). Returns the
 /// root's index; None when the walk comes back to the corner first.
 pub fn root_point(front: &[[f64; 2]], c: usize, forward: bool, top: f64) -> Option<usize> {
-    let n = front.len();
-    let step = |k: usize| {
-        if forward {
-            (k + 1) % n
-        } else {
-            (k + n - 1) % n
-        }
-    };
+    let step = stepper(front.len(), forward);
     let mut k = step(c);
     while front[k][1] < top {
         k = step(k);
@@ -126,14 +131,7 @@ const CORNER_TURN: f64 = std::f64::consts::FRAC_PI_6;
 /// left the body a wedge there, which its sections folded over (corpus
 /// dog: 180 degrees).
 fn concave_after(front: &[[f64; 2]], m: usize, c: usize, forward: bool) -> usize {
-    let n = front.len();
-    let step = |k: usize| {
-        if forward {
-            (k + 1) % n
-        } else {
-            (k + n - 1) % n
-        }
-    };
+    let step = stepper(front.len(), forward);
     let dm = dist(front[m], front[c]);
     let dir = |k: usize| {
         let (p, q) = (front[k], front[step(k)]);
