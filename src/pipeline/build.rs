@@ -10,7 +10,7 @@ use crate::character::doc::{CharacterDoc, DocError, Level};
 use crate::character::log::{check_order, Edit, EditError};
 use crate::character::part::PartSurface;
 use crate::character::props::{self, PropError};
-use crate::character::spec::PartSpec;
+use crate::character::spec::{PartSpec, TransitionSpec};
 use crate::character::{ModelError, Resolution};
 use crate::mesh::Mesh;
 use crate::sketch::derive::derive;
@@ -129,6 +129,11 @@ pub struct BuildOptions<'a> {
     /// [`BuildError::Cancelled`] (default: never). One part's solve, the
     /// assembly of the mesh and one prop's build are not interrupted.
     pub cancel: Option<&'a dyn Fn() -> bool>,
+    /// When the derived model misses issue 28's bounds, build the other
+    /// derivations the segmentation offers (a model as shells) and keep
+    /// the one that misses them least (default true; false: the first
+    /// derivation only, the stacked model).
+    pub alternatives: bool,
 }
 
 impl std::fmt::Debug for BuildOptions<'_> {
@@ -138,6 +143,7 @@ impl std::fmt::Debug for BuildOptions<'_> {
             .field("res", &self.res)
             .field("rederive", &self.rederive)
             .field("cancel", &self.cancel.is_some())
+            .field("alternatives", &self.alternatives)
             .finish()
     }
 }
@@ -150,7 +156,14 @@ impl<'a> BuildOptions<'a> {
             res: Resolution::default(),
             rederive: false,
             cancel: None,
+            alternatives: true,
         }
+    }
+
+    /// Whether the other derivations are tried ([`BuildOptions::alternatives`]).
+    pub fn alternatives(mut self, alternatives: bool) -> Self {
+        self.alternatives = alternatives;
+        self
     }
 
     /// Sets the mesh resolution.
@@ -254,13 +267,10 @@ pub fn build(
             side.as_ref().map(|s| &s.profile),
             height,
         )?;
-        out.set_derived(parts, transitions);
-        for (mut parts, transitions) in d.alternatives {
-            parts.extend(removed.iter().map(|r| r.spec.clone()));
-            let mut o = out.clone();
-            o.set_derived(parts, transitions);
-            others.push(o);
+        if opts.alternatives {
+            others = alternative_docs(&out, d.alternatives, &removed, &transitions);
         }
+        out.set_derived(parts, transitions);
     }
     let views = Views {
         front: &front,
@@ -269,20 +279,49 @@ pub fn build(
         height,
     };
     let mut best = finish(out, doc, opts, cache, &views, &placed)?;
-    // another derivation (an animal as shells) is kept when the whole
-    // model misses the issue's bounds by less; one that fails to build is
-    // left
+    // another derivation (a model as shells) is built when this one
+    // misses the issue's bounds and kept when the whole model misses them
+    // by less; one that fails to build is left
     let bounds = crate::sketch::quality::Bounds::ISSUE;
+    let score = |b: &Built| crate::sketch::quality::excess(&b.report.quality, &bounds);
     for o in others {
+        if score(&best) <= 0.0 {
+            break;
+        }
         let Ok(b) = finish(o, doc, opts, cache, &views, &placed) else {
             continue;
         };
-        let score = |b: &Built| crate::sketch::quality::excess(&b.report.quality, &bounds);
         if score(&b) < score(&best) {
             best = b;
         }
     }
     Ok(best)
+}
+
+/// The documents of a derivation's `alternatives` (`doc` with each one's
+/// parts and transitions, the removed parts added): a transition the
+/// derivation has too (a humanoid shells' hips) is its fitted one,
+/// `fitted`.
+fn alternative_docs(
+    doc: &CharacterDoc,
+    alternatives: Vec<(Vec<PartSpec>, Vec<TransitionSpec>)>,
+    removed: &[crate::sketch::removed::BuiltRemoved],
+    fitted: &[TransitionSpec],
+) -> Vec<CharacterDoc> {
+    alternatives
+        .into_iter()
+        .map(|(mut parts, mut transitions)| {
+            parts.extend(removed.iter().map(|r| r.spec.clone()));
+            for t in &mut transitions {
+                if let Some(f) = fitted.iter().find(|f| f.name == t.name) {
+                    *t = f.clone();
+                }
+            }
+            let mut o = doc.clone();
+            o.set_derived(parts, transitions);
+            o
+        })
+        .collect()
 }
 
 /// The views a build measures its model against.

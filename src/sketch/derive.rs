@@ -4,6 +4,7 @@
 
 use super::align::{alignment, Alignment};
 use super::cuts::{join_heights, CutPath};
+use super::humanoid_shells::ArmTrace;
 use super::poly::slice;
 use super::segment::{landmarks, regions, Landmarks};
 use super::SketchError;
@@ -80,7 +81,20 @@ pub fn derive(
         })
         .collect();
     let mut d = derive_upright(&up, side, &keys, &cuts, level)?;
-    for p in &mut d.parts {
+    turn_back(&al, &mut d.parts, &mut d.transitions);
+    for (parts, transitions) in &mut d.alternatives {
+        turn_back(&al, parts, transitions);
+    }
+    for a in &mut d.apex_alternatives {
+        a.apex = al.point_back(a.apex);
+    }
+    d.alignment = al;
+    Ok(d)
+}
+
+/// Parts and transitions derived upright turned back by `al`.
+fn turn_back(al: &Alignment, parts: &mut [PartSpec], transitions: &mut [TransitionSpec]) {
+    for p in parts {
         let leg = p.name.starts_with("leg");
         for s in &mut p.sections {
             // a foot's sections (`super::foot`) have the side view's
@@ -98,16 +112,11 @@ pub fn derive(
             s.e2 = al.vector_back(s.e2);
         }
     }
-    for t in &mut d.transitions {
+    for t in transitions {
         for a in &mut t.seam_apex {
             *a = al.point_back(*a);
         }
     }
-    for a in &mut d.apex_alternatives {
-        a.apex = al.point_back(a.apex);
-    }
-    d.alignment = al;
-    Ok(d)
 }
 
 /// Which way a front outline longer than tall would be turned to stand
@@ -141,15 +150,15 @@ fn lying_error(turn: &str, animal: &str) -> SketchError {
 }
 
 /// The two arms traced from the armpits ([`super::limb`]): their parts
-/// and their shoulder points (left, right). An arm starts a join band
-/// ([`super::segment::GAP_FRACTION`] of the height) out from its cut, or
-/// where a user's cut path crosses it.
+/// and their traces (left, right). An arm starts a
+/// join band ([`super::segment::GAP_FRACTION`] of the height) out from its
+/// cut, or where a user's cut path crosses it.
 fn traced_arms(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     lm: &Landmarks,
     joins: &super::cuts::JoinHeights,
-) -> Result<(Vec<PartSpec>, [[f64; 2]; 2]), SketchError> {
+) -> Result<(Vec<PartSpec>, Vec<ArmTrace>), SketchError> {
     let g = super::segment::GAP_FRACTION * lm.height();
     let neck = super::segment::neck_interval(front, lm)
         .ok_or_else(|| SketchError::Segmentation(
@@ -165,14 +174,11 @@ fn traced_arms(
         })
         .unwrap_or(0.0);
     let mut parts = Vec::new();
-    let mut shoulders = [[0.0; 2]; 2];
-    for (k, (name, armpit, sign, neck_x)) in [
+    let mut traces = Vec::new();
+    for (name, armpit, sign, neck_x) in [
         ("arm_l", lm.armpit_l, -1.0, neck[0]),
         ("arm_r", lm.armpit_r, 1.0, neck[1]),
-    ]
-    .into_iter()
-    .enumerate()
-    {
+    ] {
         let t = super::limb::trace_arm(front, armpit, sign, neck_x, name)?;
         let cut_mid = [
             0.5 * (t.armpit[0] + t.shoulder[0]),
@@ -199,9 +205,13 @@ fn traced_arms(
         };
         parts.push(super::limb::part_from_trace(front, name, &t, start, z)?);
         parts.extend(thumb_part(&t, name, z));
-        shoulders[k] = t.shoulder;
+        traces.push(ArmTrace {
+            name: name.into(),
+            trace: t,
+            z,
+        });
     }
-    Ok((parts, shoulders))
+    Ok((parts, traces))
 }
 
 /// A traced arm's thumb ([`super::thumb`]) as a separate closed chain at
@@ -236,7 +246,8 @@ fn derive_upright(
         .iter()
         .map(|r| part_from_region(front, side, r))
         .collect::<Result<Vec<_>, _>>()?;
-    let (arms, shoulders) = traced_arms(front, side, &lm, &joins)?;
+    let (arms, traces) = traced_arms(front, side, &lm, &joins)?;
+    let shoulders = [traces[0].trace.shoulder, traces[1].trace.shoulder];
     // parts in the order torso, head, arm_l, arm_r, leg_l, leg_r
     for (k, arm) in arms.into_iter().enumerate() {
         parts.insert(2 + k, arm);
@@ -289,6 +300,15 @@ fn derive_upright(
             })
         })
         .collect();
+    let alternatives = super::humanoid_shells::alternatives(
+        level,
+        front,
+        side,
+        &lm,
+        &regs[0],
+        &traces,
+        (&parts, &transitions),
+    );
     Ok(Derived {
         plan: BodyPlan::Humanoid,
         alignment: Alignment::identity(),
@@ -297,7 +317,7 @@ fn derive_upright(
         parts,
         transitions,
         apex_alternatives,
-        alternatives: Vec::new(),
+        alternatives,
     })
 }
 

@@ -57,6 +57,7 @@ pub mod figure;
 pub mod figure_animal;
 pub mod figure_params;
 mod foot;
+pub mod humanoid_shells;
 pub mod input;
 pub mod keysection;
 pub mod limb;

@@ -245,6 +245,11 @@ const CAP_SECTIONS: usize = 3;
 /// start's e1 width beyond it, back along its first step (into the body
 /// it joins): [`CAP_SECTIONS`] sections, the last a point.
 pub fn cap_start(spec: &mut PartSpec) {
+    cap_start_by(spec, 0.0);
+}
+
+/// [`cap_start`] with the dome reaching `extra` farther.
+pub fn cap_start_by(spec: &mut PartSpec, extra: f64) {
     let [s0, s1] = [&spec.sections[0], &spec.sections[1]];
     let half = match s0.shape {
         SectionShape::Circle { r } => r,
@@ -256,7 +261,7 @@ pub fn cap_start(spec: &mut PartSpec) {
     if len == 0.0 || half <= 0.0 {
         return;
     }
-    let push = 2.0 * HANG_ROOT * half;
+    let push = 2.0 * HANG_ROOT * half + extra.max(0.0);
     let dome: Vec<_> = (1..=CAP_SECTIONS)
         .rev()
         .map(|k| {

@@ -1,0 +1,199 @@
+//! A humanoid's upper body as shells: the torso chained on up through the
+//! neck to the top of the head, the arms as closed chains reaching into it
+//! (paper 000's composition of removed parts, sec 4.1), instead of the
+//! shoulders transition from the torso's end ring to three children.
+//!
+//! The front outline's body is what is left when each arm is cut off at
+//! its root chord, from the armpit to the shoulder point the arm's trace
+//! found ([`super::limb::trace_arm`]), the arm's run replaced by the chord
+//! ([`split_at_root`]). The torso's region is then sliced on up to the top
+//! of the head (its sections and the head's, [`BODY_SECTIONS`]), closed
+//! there; its start ring stays where the stacked torso's is, so the hips
+//! transition and the legs are the stacked model's. Each arm is its trace
+//! from the cut on ([`super::limb::part_from_trace`]), closed by a dome
+//! reaching half its width back into the body ([`cap_start`]).
+//!
+//! Why: where the neck is nearly as wide as the torso right above it (a
+//! big-headed figure's, no shoulders drawn) or the torso is short, the
+//! shoulders transition's seams between the neck's arcs and the arms' run
+//! up a short, crowded transition and fold (seed 4242's random_27 and
+//! random_38, seed 9191's random_29: 174 to 180 degrees,
+//! docs/drawing-corpus.md). The build keeps this model only when the
+//! stacked one misses issue 28's bounds by more ([`crate::pipeline`]).
+
+use super::limb::TracedArm;
+use super::quadruped::root_cut::{nearest_vertex, split_at_root};
+use super::quadruped::shells::cap_start_by;
+use super::region::{Pick, Region};
+use super::segment::Landmarks;
+use crate::character::doc::{Level, PartSpec, TransitionSpec};
+
+/// The body chain's sections: the torso's and the head's
+/// ([`super::section_place::SECTIONS_PER_PART`] each) less the one they
+/// would share, `3 P + 1` with P = 8.
+pub const BODY_SECTIONS: usize = 2 * super::section_place::SECTIONS_PER_PART - 1;
+
+/// A traced arm with its part's name and depth (the z its sections sit at).
+pub struct ArmTrace {
+    pub name: String,
+    pub trace: TracedArm,
+    pub z: f64,
+}
+
+/// `front` with each arm's run from its armpit to its shoulder point (the
+/// one holding its hand) replaced by the chord between them; with
+/// `to_corner`, to the shoulder's corner instead where the trace found one
+/// ([`TracedArm::corner`]). None when an arm's three points are not three
+/// distinct vertices.
+pub fn armless_outline(
+    front: &[[f64; 2]],
+    arms: &[ArmTrace],
+    to_corner: bool,
+) -> Option<Vec<[f64; 2]>> {
+    let mut poly = front.to_vec();
+    for a in arms {
+        let n = poly.len();
+        let t = &a.trace;
+        let (p, s, h) = (
+            nearest_vertex(&poly, t.armpit),
+            nearest_vertex(&poly, t.corner.filter(|_| to_corner).unwrap_or(t.shoulder)),
+            nearest_vertex(&poly, t.tip),
+        );
+        if p == s || p == h || s == h {
+            return None;
+        }
+        // the hand lies on the run walked forward from the armpit to the
+        // shoulder, or on the other
+        let ahead = |k: usize| (k + n - p) % n;
+        let forward = ahead(h) < ahead(s);
+        poly = split_at_root(&poly, p, s, forward).0;
+        if poly.len() < 3 {
+            return None;
+        }
+    }
+    Some(poly)
+}
+
+/// The shells a humanoid's derivation offers the build: at the
+/// intermediate level (the one issue 28's bounds are for; the final
+/// level's key sections sculpt the stacked parts), the arms cut off at
+/// their shoulder points, then at their shoulders' corners when the trace
+/// found one ([`shell_alternative`]); the build keeps whichever model
+/// misses the bounds by least. `stacked`: the derivation's parts and
+/// transitions.
+pub fn alternatives(
+    level: Level,
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &Landmarks,
+    torso: &Region,
+    arms: &[ArmTrace],
+    stacked: (&[PartSpec], &[TransitionSpec]),
+) -> Vec<(Vec<PartSpec>, Vec<TransitionSpec>)> {
+    let has_corner = arms.iter().any(|a| a.trace.corner.is_some());
+    [false, true]
+        .into_iter()
+        .filter(|&c| level == Level::Intermediate && (!c || has_corner))
+        .filter_map(|to_corner| shell_alternative(front, side, lm, torso, arms, stacked, to_corner))
+        .collect()
+}
+
+/// The shells' parts and transitions (see the module docs) from the
+/// stacked derivation's parts (torso, head, arms, legs, thumbs, by name)
+/// and transitions and the torso's region `torso`, the arms cut
+/// off as [`armless_outline`] cuts them (`to_corner`): None when the body
+/// or an arm cannot be built this way.
+pub fn shell_alternative(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &Landmarks,
+    torso: &Region,
+    arms: &[ArmTrace],
+    (parts, transitions): (&[PartSpec], &[TransitionSpec]),
+    to_corner: bool,
+) -> Option<(Vec<PartSpec>, Vec<TransitionSpec>)> {
+    let outline = armless_outline(front, arms, to_corner)?;
+    let region = Region {
+        name: torso.name.clone(),
+        y0: torso.y0,
+        y1: lm.y_max,
+        pick: Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]),
+        downward: false,
+        tip: true,
+        shoulder: None,
+        horizontal: false,
+        side: torso.side,
+    };
+    let body =
+        super::part_slices::part_with_sections(&outline, side, &region, BODY_SECTIONS).ok()?;
+    let mut out = vec![body];
+    for a in arms {
+        // the arm from its cut on, its dome reaching back past the body's
+        // chord's middle by what it would reach past its own start
+        let t = &a.trace;
+        let mut p = super::limb::part_from_trace(front, &a.name, t, 0.0, a.z).ok()?;
+        let top = t.corner.filter(|_| to_corner).unwrap_or(t.shoulder);
+        let mid = [
+            0.5 * (t.armpit[0] + top[0]),
+            0.5 * (t.armpit[1] + top[1]),
+            a.z,
+        ];
+        let reach = crate::mesh::dist(p.sections.first()?.centre, mid);
+        cap_start_by(&mut p, reach);
+        out.push(p);
+    }
+    let replaced = |n: &str| n == region.name || n == "head" || arms.iter().any(|a| a.name == n);
+    out.extend(parts.iter().filter(|p| !replaced(&p.name)).cloned());
+    // the transitions whose parts are all still there (the hips)
+    let kept = transitions
+        .iter()
+        .filter(|t| {
+            t.children
+                .iter()
+                .all(|c| !replaced(c) && out.iter().any(|p| &p.name == c))
+        })
+        .cloned()
+        .collect();
+    Some((out, kept))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A T: a bar (the arm) from x = 1 to 4 at y 2..3 on a stem x 0..1,
+    /// y 0..3 (counter-clockwise); the arm's armpit (1, 2), shoulder
+    /// (1, 3), tip (4, 2.5).
+    #[test]
+    fn an_arm_is_cut_off_at_its_root_chord() {
+        let front = vec![
+            [0.0, 0.0],
+            [1.0, 0.0],
+            [1.0, 2.0],
+            [4.0, 2.0],
+            [4.0, 3.0],
+            [1.0, 3.0],
+            [0.0, 3.0],
+        ];
+        let trace = TracedArm {
+            armpit: [1.0, 2.0],
+            shoulder: [1.0, 3.0],
+            tip: [4.0, 2.5],
+            corner: None,
+            centre: Vec::new(),
+            half_width: Vec::new(),
+            chord: Vec::new(),
+            thumb: None,
+        };
+        let arm = ArmTrace {
+            name: "arm_r".into(),
+            trace,
+            z: 0.0,
+        };
+        let body = armless_outline(&front, &[arm], true).unwrap();
+        let xmax = body.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
+        assert_eq!(xmax, 1.0, "{body:?}");
+        assert!(crate::polygon::signed_area(&body) > 0.0, "{body:?}");
+        assert_eq!(body.len(), 5, "{body:?}");
+    }
+}
