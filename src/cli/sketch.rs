@@ -254,6 +254,22 @@ pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
         "largest dihedral turn {:.1} degrees, creased length {:.3} heights",
         r.quality.whole.dihedral_deg, r.quality.whole.creased_rel
     );
+    if let Some(d) = &r.derivation {
+        let excess: Vec<String> = d
+            .excess
+            .iter()
+            .map(|e| e.map_or("not built".into(), |e| format!("{e:.3}")))
+            .collect();
+        let kept = match d.kept {
+            0 => "the stacked model".to_string(),
+            k => format!("model {} (shells)", k + 1),
+        };
+        eprintln!(
+            "tried {} models (the stacked one, then shells), their excess over issue 28's bounds {}: kept {kept}",
+            d.excess.len(),
+            excess.join(", ")
+        );
+    }
     if json {
         super::print_json(r)?;
     }

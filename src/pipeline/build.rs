@@ -278,24 +278,41 @@ pub fn build(
         removed: &removed,
         height,
     };
-    let mut best = finish(out, doc, opts, cache, &views, &placed)?;
-    // another derivation (a model as shells) is built when this one
-    // misses the issue's bounds and kept when the whole model misses them
-    // by less; one that fails to build is left
+    let first = finish(out, doc, opts, cache, &views, &placed)?;
+    Ok(keep_least_excess(first, others, |o| {
+        finish(o, doc, opts, cache, &views, &placed)
+    }))
+}
+
+/// `first`, or the model of another derivation (a model as shells) when
+/// `first` misses issue 28's bounds and that one misses them by less
+/// ([`crate::sketch::quality::excess`]): the others are built in turn
+/// (`build`) until one meets them; one that fails to build is left. When
+/// any other was tried, the kept model's report says which
+/// (`SketchReport::derivation`).
+fn keep_least_excess(
+    first: Built,
+    others: Vec<CharacterDoc>,
+    mut build: impl FnMut(CharacterDoc) -> Result<Built, BuildError>,
+) -> Built {
     let bounds = crate::sketch::quality::Bounds::ISSUE;
     let score = |b: &Built| crate::sketch::quality::excess(&b.report.quality, &bounds);
+    let mut excess = vec![Some(score(&first))];
+    let (mut best, mut kept) = (first, 0);
     for o in others {
         if score(&best) <= 0.0 {
             break;
         }
-        let Ok(b) = finish(o, doc, opts, cache, &views, &placed) else {
-            continue;
-        };
-        if score(&b) < score(&best) {
-            best = b;
+        let b = build(o).ok();
+        excess.push(b.as_ref().map(score));
+        if let Some(b) = b.filter(|b| score(b) < score(&best)) {
+            (best, kept) = (b, excess.len() - 1);
         }
     }
-    Ok(best)
+    if excess.len() > 1 {
+        best.report.derivation = Some(crate::sketch::report::DerivationReport { kept, excess });
+    }
+    best
 }
 
 /// The documents of a derivation's `alternatives` (`doc` with each one's

@@ -90,6 +90,23 @@ pub struct SketchReport {
     pub removed: Vec<RemovedReport>,
     /// Props composed as separate components (`character::props`).
     pub props: Vec<crate::character::props::PropReport>,
+    /// When the build tried other derivations of the drawing (a model as
+    /// shells) because the first missed issue 28's bounds: which it kept
+    /// (`crate::pipeline::build`). None: the first, built alone.
+    pub derivation: Option<DerivationReport>,
+}
+
+/// The models a build tried and the one it kept.
+#[derive(Clone, Debug, Serialize)]
+pub struct DerivationReport {
+    /// The kept model's index in `excess` (0: the first, stacked model;
+    /// more: a model as shells).
+    pub kept: usize,
+    /// Each tried model's excess over issue 28's bounds
+    /// ([`super::quality::excess`]: the sum of each whole-model measure's
+    /// excess over its bound, as a fraction of it), in the order tried;
+    /// null: that model did not build.
+    pub excess: Vec<Option<f64>>,
 }
 
 /// A removed part: a separate closed component, not stitched to the body.
@@ -183,6 +200,7 @@ pub fn report(
             .map(|r| r.name.clone())
             .collect(),
         removed: removed_reports,
+        derivation: None,
         props,
     }
 }

@@ -116,6 +116,13 @@ fn crowded_shoulders_are_built_as_shells() {
     );
     shoulders(&stacked);
     let b = corpus_build("random_4", true);
+    let d = b
+        .report
+        .derivation
+        .as_ref()
+        .expect("the report says what was tried");
+    assert!(d.kept > 0 && d.excess.len() > 1, "{d:?}");
+    assert_eq!(d.excess[d.kept], Some(0.0), "{d:?}");
     let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
     assert!(
         !names.contains(&"head"),
@@ -144,4 +151,5 @@ fn crowded_shoulders_are_built_as_shells() {
     let kept = corpus_build("t_pose", true);
     shoulders(&kept);
     assert!(kept.doc.parts().iter().any(|p| p.name == "head"));
+    assert!(kept.report.derivation.is_none(), "nothing else tried");
 }
