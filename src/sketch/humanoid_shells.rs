@@ -11,15 +11,17 @@
 //! there; its start ring stays where the stacked torso's is, so the hips
 //! transition and the legs are the stacked model's. Each arm is its trace
 //! from the cut on ([`super::limb::part_from_trace`]), closed by a dome
-//! reaching half its width back into the body ([`cap_start`]).
+//! reaching half its width back past the body's chord's middle
+//! ([`cap_start_by`]).
 //!
 //! Why: where the neck is nearly as wide as the torso right above it (a
 //! big-headed figure's, no shoulders drawn) or the torso is short, the
 //! shoulders transition's seams between the neck's arcs and the arms' run
 //! up a short, crowded transition and fold (seed 4242's random_27 and
 //! random_38, seed 9191's random_29: 174 to 180 degrees,
-//! docs/drawing-corpus.md). The build keeps this model only when the
-//! stacked one misses issue 28's bounds by more ([`crate::pipeline`]).
+//! docs/drawing-corpus.md, thirty-fourth measurement). The build tries
+//! these only when the stacked model misses issue 28's bounds and keeps
+//! whichever misses them least (`pipeline::build::keep_least_excess`).
 
 use super::limb::TracedArm;
 use super::quadruped::root_cut::{nearest_vertex, split_at_root};
