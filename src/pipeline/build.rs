@@ -10,7 +10,7 @@ use crate::character::doc::{CharacterDoc, DocError, Level};
 use crate::character::log::{check_order, Edit, EditError};
 use crate::character::part::PartSurface;
 use crate::character::props::{self, PropError};
-use crate::character::spec::{PartSpec, TransitionSpec};
+use crate::character::spec::PartSpec;
 use crate::character::{ModelError, Resolution};
 use crate::mesh::Mesh;
 use crate::sketch::derive::derive;
@@ -243,6 +243,7 @@ pub fn build(
     let yr = crate::polygon::span(front.points(), 1);
     let height = yr[1] - yr[0];
     let mut others = Vec::new();
+    let mut first_shells = false;
     if opts.rederive || doc.parts().is_empty() {
         let d = derive(
             front.points(),
@@ -267,8 +268,9 @@ pub fn build(
             side.as_ref().map(|s| &s.profile),
             height,
         )?;
+        first_shells = d.shells;
         if opts.alternatives {
-            others = alternative_docs(&out, d.alternatives, &removed, &transitions);
+            others = super::alternatives::docs(&out, d.alternatives, &removed, &transitions);
         }
         out.set_derived(parts, transitions);
     }
@@ -279,66 +281,14 @@ pub fn build(
         height,
     };
     let first = finish(out, doc, opts, cache, &views, &placed)?;
-    Ok(keep_least_excess(first, others, |o| {
-        finish(o, doc, opts, cache, &views, &placed)
-    }))
-}
-
-/// `first`, or the model of another derivation (a model as shells) when
-/// `first` misses issue 28's bounds and that one misses them by less
-/// ([`crate::sketch::quality::excess`]): the others are built in turn
-/// (`build`) until one meets them; one that fails to build is left. When
-/// any other was tried, the kept model's report says which
-/// (`SketchReport::derivation`).
-fn keep_least_excess(
-    first: Built,
-    others: Vec<CharacterDoc>,
-    mut build: impl FnMut(CharacterDoc) -> Result<Built, BuildError>,
-) -> Built {
-    let bounds = crate::sketch::quality::Bounds::ISSUE;
-    let score = |b: &Built| crate::sketch::quality::excess(&b.report.quality, &bounds);
-    let mut excess = vec![Some(score(&first))];
-    let (mut best, mut kept) = (first, 0);
-    for o in others {
-        if score(&best) <= 0.0 {
-            break;
-        }
-        let b = build(o).ok();
-        excess.push(b.as_ref().map(score));
-        if let Some(b) = b.filter(|b| score(b) < score(&best)) {
-            (best, kept) = (b, excess.len() - 1);
-        }
-    }
-    if excess.len() > 1 {
-        best.report.derivation = Some(crate::sketch::report::DerivationReport { kept, excess });
-    }
-    best
-}
-
-/// The documents of a derivation's `alternatives` (`doc` with each one's
-/// parts and transitions, the removed parts added): a transition the
-/// derivation has too (a humanoid shells' hips) is its fitted one,
-/// `fitted`.
-fn alternative_docs(
-    doc: &CharacterDoc,
-    alternatives: Vec<(Vec<PartSpec>, Vec<TransitionSpec>)>,
-    removed: &[crate::sketch::removed::BuiltRemoved],
-    fitted: &[TransitionSpec],
-) -> Vec<CharacterDoc> {
-    alternatives
-        .into_iter()
-        .map(|(mut parts, mut transitions)| {
-            parts.extend(removed.iter().map(|r| r.spec.clone()));
-            for t in &mut transitions {
-                if let Some(f) = fitted.iter().find(|f| f.name == t.name) {
-                    *t = f.clone();
-                }
-            }
-            let mut o = doc.clone();
-            o.set_derived(parts, transitions);
-            o
-        })
-        .collect()
+    let (mut best, derivation) = super::alternatives::keep_least_excess(
+        (first, first_shells),
+        others,
+        |b: &Built| &b.report.quality,
+        |o| finish(o, doc, opts, cache, &views, &placed),
+    );
+    best.report.derivation = derivation;
+    Ok(best)
 }
 
 /// The views a build measures its model against.

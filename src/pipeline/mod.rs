@@ -15,6 +15,7 @@
 //! This is the top of the modeling layer: it names the operations
 //! (`sketch`, `edit`, `sasm`), which never name each other.
 
+mod alternatives;
 mod build;
 pub mod corpus;
 pub mod effect;

@@ -242,6 +242,9 @@ fn derive_upright(
     check_side_height(lm.height(), side)?;
     let side = if level == Level::Initial { None } else { side };
     let regs = regions(front, &lm, &joins)?;
+    if lm.torso_is_short() {
+        return short_torso(front, side, sections, level, lm, &joins, &regs);
+    }
     let mut parts = regs
         .iter()
         .map(|r| part_from_region(front, side, r))
@@ -318,6 +321,65 @@ fn derive_upright(
         transitions,
         apex_alternatives,
         alternatives,
+        shells: false,
+    })
+}
+
+/// A humanoid with no torso to build stacked
+/// ([`super::humanoid_shells::short_torso_models`]); refused, naming the
+/// lower armpit and the crotch, when neither shells model builds.
+fn short_torso(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    sections: &[KeySection],
+    level: Level,
+    lm: Landmarks,
+    joins: &super::cuts::JoinHeights,
+    regs: &[super::region::Region],
+) -> Result<Derived, SketchError> {
+    // an arm that does not reach out of the body from a low armpit lies
+    // on the hip and leg: named as the arm joining the body there
+    let (arms, traces) = traced_arms(front, side, &lm, joins).map_err(|e| {
+        let h = lm.height();
+        let least = super::segment::torso_min(h);
+        let (which, a) = if e.to_string().contains("arm_r:") {
+            ("right", lm.armpit_r)
+        } else {
+            ("left", lm.armpit_l)
+        };
+        if a[1] <= lm.crotch[1] + least {
+            super::refusal::arm_too_low(a, lm.crotch, h, least, which)
+        } else {
+            e
+        }
+    })?;
+    let thumbs: Vec<PartSpec> = arms
+        .into_iter()
+        .filter(|p| p.name.starts_with("thumb"))
+        .collect();
+    let keys = if level == Level::Final { sections } else { &[] };
+    let mut models = super::humanoid_shells::short_torso_models(
+        front,
+        side,
+        &lm,
+        regs,
+        (&traces, &thumbs),
+        keys,
+    )?;
+    if models.is_empty() {
+        return Err(lm.short_torso_error());
+    }
+    let (parts, transitions) = models.remove(0);
+    Ok(Derived {
+        plan: BodyPlan::Humanoid,
+        alignment: Alignment::identity(),
+        landmarks: Some(lm),
+        quadruped: None,
+        parts,
+        transitions,
+        apex_alternatives: Vec::new(),
+        alternatives: models,
+        shells: true,
     })
 }
 

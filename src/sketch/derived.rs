@@ -59,6 +59,9 @@ pub struct Derived {
     /// bounds by less (`pipeline::build`, [`super::quality::excess`]): an
     /// animal's body as shells (`quadruped::shells`).
     pub alternatives: Vec<(Vec<PartSpec>, Vec<TransitionSpec>)>,
+    /// Whether `parts` are themselves shells (a humanoid with no torso to
+    /// build stacked, `humanoid_shells::short_torso_models`).
+    pub shells: bool,
 }
 
 /// A seam apex the transition fit tries beside the derived one.

@@ -21,7 +21,14 @@
 //! random_38, seed 9191's random_29: 174 to 180 degrees,
 //! docs/drawing-corpus.md, thirty-fourth measurement). The build tries
 //! these only when the stacked model misses issue 28's bounds and keeps
-//! whichever misses them least (`pipeline::build::keep_least_excess`).
+//! whichever misses them least (`pipeline::alternatives::keep_least_excess`).
+//! Three cuts are tried ([`ArmCut`]): at the shoulder point, at the
+//! shoulder's corner, and at the corner with the arm traced on up its
+//! root to it.
+//!
+//! A humanoid whose arms join the body below the crotch or just above it
+//! has no torso between them to build stacked: it is built as shells
+//! only ([`short_torso_models`]; before, refused).
 
 use super::limb::TracedArm;
 use super::quadruped::root_cut::{nearest_vertex, split_at_root};
@@ -34,6 +41,9 @@ use crate::character::doc::{Level, PartSpec, TransitionSpec};
 /// ([`super::section_place::SECTIONS_PER_PART`] each) less the one they
 /// would share, `3 P + 1` with P = 8.
 pub const BODY_SECTIONS: usize = 2 * super::section_place::SECTIONS_PER_PART - 1;
+
+/// A model's parts and transitions.
+pub type Model = (Vec<PartSpec>, Vec<TransitionSpec>);
 
 /// A traced arm with its part's name and depth (the z its sections sit at).
 pub struct ArmTrace {
@@ -76,6 +86,29 @@ pub fn armless_outline(
     Some(poly)
 }
 
+/// Where an arm is cut off the body for its shell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ArmCut {
+    /// At the chord from the armpit to the shoulder point (the shortest
+    /// cut, [`super::limb::trace_arm`]); the arm's dome reaches back past
+    /// the chord's middle.
+    Shoulder,
+    /// At the chord from the armpit to the shoulder's corner
+    /// ([`TracedArm::corner`]), the arm traced from the shortest cut as
+    /// for `Shoulder`, its dome reaching back past this chord's middle.
+    Corner,
+    /// At the same chord, the arm traced on up its root to the corner
+    /// ([`TracedArm::from_corner`]) and closed there: an arm joining the
+    /// body below the crotch lies along the body from its armpit up to
+    /// its shoulder, a run the shortest cut leaves to the body.
+    Rooted,
+}
+
+impl ArmCut {
+    /// The cuts in the order the build tries them.
+    pub const ALL: [ArmCut; 3] = [ArmCut::Shoulder, ArmCut::Corner, ArmCut::Rooted];
+}
+
 /// The shells a humanoid's derivation offers the build: at the
 /// intermediate level (the one issue 28's bounds are for; the final
 /// level's key sections sculpt the stacked parts), the arms cut off at
@@ -93,17 +126,17 @@ pub fn alternatives(
     stacked: (&[PartSpec], &[TransitionSpec]),
 ) -> Vec<(Vec<PartSpec>, Vec<TransitionSpec>)> {
     let has_corner = arms.iter().any(|a| a.trace.corner.is_some());
-    [false, true]
+    ArmCut::ALL
         .into_iter()
-        .filter(|&c| level == Level::Intermediate && (!c || has_corner))
-        .filter_map(|to_corner| shell_alternative(front, side, lm, torso, arms, stacked, to_corner))
+        .filter(|&c| level == Level::Intermediate && (c == ArmCut::Shoulder || has_corner))
+        .filter_map(|cut| shell_alternative(front, side, lm, torso, arms, stacked, cut))
         .collect()
 }
 
 /// The shells' parts and transitions (see the module docs) from the
 /// stacked derivation's parts (torso, head, arms, legs, thumbs, by name)
 /// and transitions and the torso's region `torso`, the arms cut
-/// off as [`armless_outline`] cuts them (`to_corner`): None when the body
+/// off as [`armless_outline`] cuts them (at the corners unless `cut` is [`ArmCut::Shoulder`]): None when the body
 /// or an arm cannot be built this way.
 pub fn shell_alternative(
     front: &[[f64; 2]],
@@ -112,9 +145,9 @@ pub fn shell_alternative(
     torso: &Region,
     arms: &[ArmTrace],
     (parts, transitions): (&[PartSpec], &[TransitionSpec]),
-    to_corner: bool,
+    cut: ArmCut,
 ) -> Option<(Vec<PartSpec>, Vec<TransitionSpec>)> {
-    let outline = armless_outline(front, arms, to_corner)?;
+    let outline = armless_outline(front, arms, cut != ArmCut::Shoulder)?;
     let region = Region {
         name: torso.name.clone(),
         y0: torso.y0,
@@ -132,15 +165,26 @@ pub fn shell_alternative(
     for a in arms {
         // the arm from its cut on, its dome reaching back past the body's
         // chord's middle by what it would reach past its own start
-        let t = &a.trace;
+        let (t, rooted) = match &a.trace.from_corner {
+            Some(c) if cut == ArmCut::Rooted => (&**c, true),
+            _ => (&a.trace, false),
+        };
         let mut p = super::limb::part_from_trace(front, &a.name, t, 0.0, a.z).ok()?;
-        let top = t.corner.filter(|_| to_corner).unwrap_or(t.shoulder);
+        let top = match cut {
+            ArmCut::Corner => t.corner.unwrap_or(t.shoulder),
+            _ => t.shoulder,
+        };
         let mid = [
             0.5 * (t.armpit[0] + top[0]),
             0.5 * (t.armpit[1] + top[1]),
             a.z,
         ];
-        let reach = crate::mesh::dist(p.sections.first()?.centre, mid);
+        // an arm traced up to its corner closes there
+        let reach = if rooted {
+            0.0
+        } else {
+            crate::mesh::dist(p.sections.first()?.centre, mid)
+        };
         cap_start_by(&mut p, reach);
         out.push(p);
     }
@@ -157,6 +201,72 @@ pub fn shell_alternative(
         .cloned()
         .collect();
     Some((out, kept))
+}
+
+/// The models of a humanoid with no torso to build stacked: its arms
+/// join the body below the crotch or too near above it
+/// ([`Landmarks::torso_is_short`], a big-headed figure's). Only the shells
+/// ([`shell_alternative`]) are built, cut at the shoulder points then at
+/// the corners, the first as the derivation's parts; the legs are sliced
+/// from the outline without the arms (an arm's root beside the crotch is
+/// not the leg's); the hips transition joins them to the body chain, whose
+/// start is the stacked torso's (`regs`: the regions, torso first). At the
+/// final level the key sections apply to the parts by name, a head's to
+/// the body chain that holds it. Empty when no model can be built.
+pub fn short_torso_models(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &Landmarks,
+    regs: &[Region],
+    (arms, thumbs): (&[ArmTrace], &[PartSpec]),
+    keys: &[crate::character::doc::KeySection],
+) -> Result<Vec<Model>, super::SketchError> {
+    let has_corner = arms.iter().any(|a| a.trace.corner.is_some());
+    let mut out = Vec::new();
+    for cut in ArmCut::ALL
+        .into_iter()
+        .filter(|&c| c == ArmCut::Shoulder || has_corner)
+    {
+        let Some(armless) = armless_outline(front, arms, cut != ArmCut::Shoulder) else {
+            continue;
+        };
+        let legs: Result<Vec<PartSpec>, _> = regs
+            .iter()
+            .filter(|r| r.name.starts_with("leg"))
+            .map(|r| super::part_slices::part_from_region(&armless, side, r))
+            .collect();
+        let Ok(mut rest) = legs else {
+            continue;
+        };
+        rest.extend(thumbs.iter().cloned());
+        let Some(torso) = regs.first() else {
+            continue;
+        };
+        let Some((mut parts, mut transitions)) =
+            shell_alternative(front, side, lm, torso, arms, (&rest, &[]), cut)
+        else {
+            continue;
+        };
+        let z = parts[0].sections.first().map_or(0.0, |s| s.centre[2]);
+        let crotch = [lm.crotch[0], lm.crotch[1], z];
+        let hips = TransitionSpec::humanoid(crotch, Vec::new(), 1.0, 1.0)
+            .into_iter()
+            .filter(|t| t.name == "hips")
+            .map(|t| TransitionSpec {
+                cap_tangents: true,
+                ..t
+            });
+        transitions.extend(hips);
+        for k in keys {
+            let mut k = k.clone();
+            if k.part == "head" {
+                k.part = torso.name.clone();
+            }
+            super::keysection::apply_key_section(&mut parts, &k)?;
+        }
+        out.push((parts, transitions));
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -186,6 +296,7 @@ mod tests {
             half_width: Vec::new(),
             chord: Vec::new(),
             thumb: None,
+            from_corner: None,
         };
         let arm = ArmTrace {
             name: "arm_r".into(),

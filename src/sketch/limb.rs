@@ -4,9 +4,11 @@
 //!
 //! From the armpit `A` the outline is walked away from the torso (counter-
 //! clockwise for the right arm, clockwise for the left) until it reaches
-//! the neck's side. Along that walk the distance to `A` grows to the hand's
-//! **tip** (its largest value) and falls back to the **shoulder point**
-//! `S` (its smallest value after the tip): `AS` is the shortest cut across
+//! the neck's side. The hand's **tip** is the walk's point farthest from
+//! the arm's root, the line from `A` to the walk's end (from `A` alone, an
+//! armpit below the crotch was farther from the shoulder's top than from
+//! the hand); the distance to `A` falls back from the tip to the
+//! **shoulder point** `S` (its smallest value after the tip): `AS` is the shortest cut across
 //! the arm from the armpit, the line where the arm meets the shoulder. The
 //! walk from `A` to the tip is the arm's inner side, the walk back from the
 //! tip to `S` its outer side; both are resampled by arc length and paired
@@ -23,6 +25,7 @@
 //! tip is not farther from the armpit than the shoulder cut is long (no arm
 //! reaches out of the body there).
 
+use super::arm_root::{pair_sides, resample_open, rooted_at_corner, run_to};
 use super::poly::dist;
 use super::shoulder_tilt::{section_shape, turned_to_corner, SHOULDER_TILT_SECTIONS};
 use super::SketchError;
@@ -36,7 +39,8 @@ pub struct TracedArm {
     pub armpit: [f64; 2],
     /// The shoulder end of the cut from the armpit.
     pub shoulder: [f64; 2],
-    /// The hand's farthest point from the armpit.
+    /// The hand's farthest point from the arm's root (the line from the
+    /// armpit to where the walk reaches the neck's side).
     pub tip: [f64; 2],
     /// The shoulder's outer corner ([`super::shoulder_tilt::shoulder_corner`]), where the arm's
     /// first sections are turned to; None: no corner to reach.
@@ -49,30 +53,10 @@ pub struct TracedArm {
     /// A thumb held away from the hand, cut off the walk: its closed
     /// outline reaching into the hand ([`super::thumb`]).
     pub thumb: Option<Vec<[f64; 2]>>,
-}
-
-/// `n` points equally spaced by arc length along an open polyline.
-fn resample_open(p: &[[f64; 2]], n: usize) -> Vec<[f64; 2]> {
-    let mut cum = vec![0.0; p.len()];
-    for i in 1..p.len() {
-        cum[i] = cum[i - 1] + dist(p[i - 1], p[i]);
-    }
-    let total = cum[p.len() - 1];
-    let mut j = 0;
-    (0..n)
-        .map(|k| {
-            let s = total * k as f64 / (n - 1) as f64;
-            while j + 2 < p.len() && cum[j + 1] < s {
-                j += 1;
-            }
-            let l = (cum[j + 1] - cum[j]).max(f64::MIN_POSITIVE);
-            let t = ((s - cum[j]) / l).clamp(0.0, 1.0);
-            [
-                p[j][0] + t * (p[j + 1][0] - p[j][0]),
-                p[j][1] + t * (p[j + 1][1] - p[j][1]),
-            ]
-        })
-        .collect()
+    /// The same arm traced from the chord between the armpit and the
+    /// shoulder's corner (its `shoulder`): the outer side runs on to the
+    /// corner. None: no corner.
+    pub from_corner: Option<Box<TracedArm>>,
 }
 
 /// Traces the arm at `armpit` on the counter-clockwise outline `front`;
@@ -116,9 +100,7 @@ pub fn trace_arm(
         walk.truncate(1);
     }
     let d: Vec<f64> = walk.iter().map(|p| dist(*p, armpit)).collect();
-    let it = (0..walk.len())
-        .max_by(|&i, &j| d[i].total_cmp(&d[j]))
-        .unwrap_or(0);
+    let it = hand(&walk);
     let is = (it..walk.len())
         .min_by(|&i, &j| d[i].total_cmp(&d[j]))
         .unwrap_or(it);
@@ -132,6 +114,7 @@ pub fn trace_arm(
     }
     let corner =
         super::shoulder_tilt::shoulder_corner(&walk[is..], 0.5 * (walk[is][0] + neck_x), side);
+    let root_run = corner.map(|c| run_to(&walk[is..], c));
     // fingers: the notches between them are closed (a mitten), so that
     // the two sides pair hand to hand, not finger to finger
     // the walk follows the outline forward for the right arm (side > 0),
@@ -151,20 +134,8 @@ pub fn trace_arm(
     let mut outer_walk: Vec<[f64; 2]> = walk[it..=is].to_vec();
     outer_walk.reverse();
     let outer = resample_open(&outer_walk, TRACE_SAMPLES);
-    let mut centre = Vec::with_capacity(TRACE_SAMPLES);
-    let mut half_width = Vec::with_capacity(TRACE_SAMPLES);
-    let mut chord = Vec::with_capacity(TRACE_SAMPLES);
-    for (a, b) in inner.iter().zip(&outer) {
-        let l = dist(*a, *b);
-        centre.push([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]);
-        half_width.push(0.5 * l);
-        chord.push(if l > 0.0 {
-            [(b[0] - a[0]) / l, (b[1] - a[1]) / l]
-        } else {
-            [0.0, 0.0]
-        });
-    }
-    Ok(TracedArm {
+    let (centre, half_width, chord) = pair_sides(&inner, &outer);
+    let mut arm = TracedArm {
         armpit,
         shoulder: walk[is],
         tip: walk[it],
@@ -173,7 +144,53 @@ pub fn trace_arm(
         half_width,
         chord,
         thumb,
-    })
+        from_corner: None,
+    };
+    arm.from_corner = root_run.and_then(|run| rooted(&arm, &run));
+    Ok(arm)
+}
+
+/// `arm` traced on up its root `run` (the outline from its shoulder
+/// point to its corner, [`run_to`]) to the corner
+/// ([`rooted_at_corner`]): its `shoulder` the corner, no corner or thumb
+/// of its own. None: no corner, or no run beyond the cut.
+fn rooted(arm: &TracedArm, run: &[[f64; 2]]) -> Option<Box<TracedArm>> {
+    let c = arm.corner?;
+    if run.len() < 2 || arm.centre.is_empty() {
+        return None;
+    }
+    let (centre, half_width, chord) =
+        rooted_at_corner(run, (&arm.centre, &arm.half_width, &arm.chord));
+    Some(Box::new(TracedArm {
+        armpit: arm.armpit,
+        shoulder: c,
+        tip: arm.tip,
+        corner: None,
+        centre,
+        half_width,
+        chord,
+        thumb: None,
+        from_corner: None,
+    }))
+}
+
+/// The index of the hand's tip on an arm's walk from its armpit (its
+/// first point): the point farthest from the arm's root, the line from
+/// the armpit to where the walk comes back to the neck (its last point).
+/// An armpit below the crotch, a big-headed figure's, is farther from the
+/// shoulder's top than from the hand: the farthest from the armpit alone
+/// was the shoulder (seed 4242's random_22).
+fn hand(walk: &[[f64; 2]]) -> usize {
+    let (Some(&a), Some(&end)) = (walk.first(), walk.last()) else {
+        return 0;
+    };
+    let root: Vec<f64> = walk
+        .iter()
+        .map(|p| crate::polygon::seg_dist(*p, a, end))
+        .collect();
+    (0..walk.len())
+        .max_by(|&i, &j| root[i].total_cmp(&root[j]))
+        .unwrap_or(0)
 }
 
 /// The index of the walk's point farthest from `armpit` (the hand's tip).

@@ -19,34 +19,46 @@ pub fn torso_too_short(ya: f64, crotch_y: f64, h: f64, least: f64) -> SketchErro
     ))
 }
 
-/// When no armpit is found on `side` (-1 left, +1 right) of a model of
-/// height `h` whose torso must be longer than `least` (`g`: a join band,
-/// the depth [`same_gap`] looks below two tops): the highest gap
-/// top on that side below the torso's least top (an arm whose gap with
-/// the body closes at the hip or the thigh, or just above the crotch)
-/// names the drawing's problem. Gap tops of the crotch's own gap (its
-/// repeats, a square crotch's corners) are not an arm's; a gap between a
-/// leg and an arm hanging to the ground is.
-pub fn arm_too_low(
+/// The arm's join on `side` (-1 left, +1 right) of a model of height `h`
+/// whose torso must be longer than `least` when going up from the crotch
+/// finds no armpit (`g`: a join band, the depth [`same_gap`] looks below
+/// two tops): the highest gap top on that side below the torso's least
+/// top, an arm whose gap with the body closes at the hip or the thigh, or
+/// just above the crotch (a big-headed figure's short torso). Gap tops of
+/// the crotch's own gap (its repeats, a square crotch's corners) are not
+/// an arm's; a gap between a leg and an arm hanging to the ground is.
+pub fn low_armpit(
     front: &[[f64; 2]],
     tops: &[GapTop],
     crotch: GapTop,
-    [h, least, g]: [f64; 3],
+    [least, g]: [f64; 2],
     side: f64,
-) -> Option<SketchError> {
-    let which = if side < 0.0 { "left" } else { "right" };
-    let t = tops
-        .iter()
+) -> Option<GapTop> {
+    tops.iter()
         .filter(|t| side * (t.x - crotch.x) > 0.0 && t.y <= crotch.y + least)
         .filter(|t| !same_gap(front, **t, crotch, g))
-        .max_by(|a, b| a.y.total_cmp(&b.y))?;
-    Some(if t.y < crotch.y {
+        .max_by(|a, b| a.y.total_cmp(&b.y))
+        .copied()
+}
+
+/// The refusal of a humanoid whose `which` arm joins the body at `armpit`,
+/// below the crotch or too near above it ([`torso_too_short`]), when its
+/// upper body cannot be built as shells either
+/// ([`super::humanoid_shells`]).
+pub fn arm_too_low(
+    armpit: [f64; 2],
+    crotch: [f64; 2],
+    h: f64,
+    least: f64,
+    which: &str,
+) -> SketchError {
+    if armpit[1] < crotch[1] {
         SketchError::Segmentation(format!(
             "the {which} arm's gap with the body closes at y = {:.4}, below the crotch (y = {:.4}): \
              an arm must leave the torso above the crotch; draw the {which} arm apart from the hip and leg up to its armpit",
-            t.y, crotch.y
+            armpit[1], crotch[1]
         ))
     } else {
-        torso_too_short(t.y, crotch.y, h, least)
-    })
+        torso_too_short(armpit[1], crotch[1], h, least)
+    }
 }

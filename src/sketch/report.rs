@@ -99,14 +99,18 @@ pub struct SketchReport {
 /// The models a build tried and the one it kept.
 #[derive(Clone, Debug, Serialize)]
 pub struct DerivationReport {
-    /// The kept model's index in `excess` (0: the first, stacked model;
-    /// more: a model as shells).
+    /// The kept model's index in `excess` (0: the first model, stacked
+    /// unless `first_shells`; more: a model as shells).
     pub kept: usize,
     /// Each tried model's excess over issue 28's bounds
     /// ([`super::quality::excess`]: the sum of each whole-model measure's
     /// excess over its bound, as a fraction of it), in the order tried;
     /// null: that model did not build.
     pub excess: Vec<Option<f64>>,
+    /// Whether the first model is itself shells (a humanoid with no torso
+    /// to build stacked: the arms cut at the shoulder points, then at the
+    /// shoulders' corners) rather than stacked.
+    pub first_shells: bool,
 }
 
 /// A removed part: a separate closed component, not stitched to the body.

@@ -8,7 +8,11 @@
 //! exceeds [`NECK_FLARE`] times the neck width). Parts are then the slice
 //! intervals of each region: `leg_l`/`leg_r` below the crotch (split at its
 //! x), `arm_l`/`arm_r` outside the armpits, `torso` between crotch and
-//! armpits, `head` above the neck base. A band of half-height
+//! armpits, `head` above the neck base. An arm whose gap with the body
+//! closes below the crotch or just above it (a big-headed figure's) has
+//! its armpit there ([`super::refusal::low_armpit`]): no torso to build
+//! between them ([`Landmarks::torso_is_short`]), the upper body is built
+//! as shells (`super::humanoid_shells::short_torso_models`). A band of half-height
 //! [`GAP_FRACTION`] of the model height is left to the transitions at each
 //! join. Arms must hang away from the body and the legs must be apart
 //! (otherwise the gaps are missing and segmentation fails with an error).
@@ -65,6 +69,19 @@ impl Landmarks {
     pub fn torso_is_short(&self) -> bool {
         self.armpit_l[1].min(self.armpit_r[1]) - self.crotch[1] <= torso_min(self.height())
     }
+
+    /// The refusal of a torso too short to build stacked
+    /// ([`Self::torso_is_short`]), naming the lower armpit: below the
+    /// crotch or too near above it.
+    pub fn short_torso_error(&self) -> SketchError {
+        let (which, a) = if self.armpit_l[1] <= self.armpit_r[1] {
+            ("left", self.armpit_l)
+        } else {
+            ("right", self.armpit_r)
+        };
+        let h = self.height();
+        super::refusal::arm_too_low(a, self.crotch, h, torso_min(h), which)
+    }
 }
 
 /// Where the torso's `side` end (-1 left, +1 right) first moves outward
@@ -74,8 +91,15 @@ impl Landmarks {
 /// underside, which closes no gap). Returns the torso's end just below
 /// that height. A second merge with an interval outside the torso further
 /// up (below `top`) means the arm touched the body there and leaves it
-/// again: an error naming the heights.
-fn armpit(front: &[[f64; 2]], crotch: GapTop, top: f64, side: f64) -> Result<GapTop, SketchError> {
+/// again: an error naming the heights. None: the side never jumps out (an
+/// arm joining the body below the crotch or just above it, whose root the
+/// torso's interval holds from the crotch up: [`super::refusal::low_armpit`]).
+fn armpit(
+    front: &[[f64; 2]],
+    crotch: GapTop,
+    top: f64,
+    side: f64,
+) -> Result<Option<GapTop>, SketchError> {
     let n = LANDMARK_SLICES;
     // from one slice above the crotch: an armpit just above it (a short
     // torso) is a merge like any other
@@ -114,11 +138,7 @@ fn armpit(front: &[[f64; 2]], crotch: GapTop, top: f64, side: f64) -> Result<Gap
         mid = 0.5 * (iv[0] + iv[1]);
         prev = Some((y, end, apart));
     }
-    found.ok_or_else(|| {
-        SketchError::Segmentation(format!(
-            "no {which} armpit found: the torso's {which} side never meets an arm going up from the crotch; draw the {which} arm reaching out from the shoulder"
-        ))
-    })
+    Ok(found)
 }
 
 /// A torso side moving outward faster than this many times the rise is an
@@ -233,20 +253,27 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             .copied()
             .unwrap_or(a)
     };
-    let find = |side: f64| {
-        armpit(front, crotch, yr[1], side).map_err(|e| {
-            super::refusal::arm_too_low(
+    let find = |side: f64| -> Result<GapTop, SketchError> {
+        match armpit(front, crotch, yr[1], side)? {
+            Some(a) => Ok(at_gap(a)),
+            None => super::refusal::low_armpit(
                 front,
                 &tops,
                 crotch,
-                [h, torso_min(h), GAP_FRACTION * h],
+                [torso_min(h), GAP_FRACTION * h],
                 side,
             )
-            .unwrap_or(e)
-        })
+            .ok_or_else(|| {
+                let which = if side < 0.0 { "left" } else { "right" };
+                SketchError::Segmentation(format!(
+                    "no {which} armpit found: the torso's {which} side never meets an arm going up from the crotch; \
+                     draw the {which} arm reaching out from the shoulder"
+                ))
+            }),
+        }
     };
-    let a0 = at_gap(find(-1.0)?);
-    let a1 = at_gap(find(1.0)?);
+    let a0 = find(-1.0)?;
+    let a1 = find(1.0)?;
     // neck: narrowest single interval between armpits and top
     let ya = a0.y.max(a1.y);
     let d = yr[1] - ya;
@@ -372,16 +399,11 @@ pub fn regions(
             },
         });
     }
-    // the torso lies between a band above the crotch and one below the armpits
-    if lm.torso_is_short() {
-        return Err(super::refusal::torso_too_short(
-            ya,
-            lm.crotch[1],
-            lm.height(),
-            torso_min(lm.height()),
-        ));
-    }
-    for r in &out {
+    // the torso lies between a band above the crotch and one below the
+    // armpits; a shorter one is built with the arms as shells
+    // (`super::derive`), its region giving only its start
+    let short = lm.torso_is_short();
+    for r in out.iter().filter(|r| !(short && r.name == "torso")) {
         if (r.y1 - r.y0).partial_cmp(&(MIN_PART_BANDS * g)) != Some(std::cmp::Ordering::Greater) {
             return Err(SketchError::Segmentation(format!(
                 "{}: too short to build ({:.4} between y = {:.4} and {:.4}, at most half a join band of {:.4}): \

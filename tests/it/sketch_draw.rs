@@ -829,20 +829,56 @@ fn the_shoulders_do_not_crease_beside_the_neck() {
 }
 
 /// An arm whose gap with the body closes below the crotch (corpus
-/// random_7: a head half the figure's height, arms leaving the hips) is
-/// refused with the height of that join and the crotch's, not with "no
-/// armpit found ... draw the arm reaching out from the shoulder" (it is
-/// drawn).
+/// random_7: a head half the figure's height, arms leaving the hips) was
+/// refused with the height of that join and the crotch's; it builds now,
+/// closed at its drawn height, its upper body as shells (no torso between
+/// the armpits and the crotch to build stacked).
 #[test]
-fn an_arm_joining_the_body_below_the_crotch_is_named() {
-    let rows = measure_corpus(|e| e.name == "random_7");
-    let e = rows
-        .first()
-        .and_then(|r| r.error.clone())
-        .expect("random_7 is refused");
+fn an_arm_joining_the_body_below_the_crotch_builds() {
+    let dir = corpus_dir();
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let e = m
+        .entries
+        .iter()
+        .find(|e| e.name == "random_7")
+        .expect("random_7");
+    let b = build_entry(&dir, e).expect("random_7 builds");
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    let want = e.height_m.unwrap_or(e.drawn_height_m);
+    assert!(
+        (b.report.height_m - want).abs() <= HEIGHT_REL * want,
+        "height {} against {want}",
+        b.report.height_m
+    );
+    let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
+    assert!(
+        !names.contains(&"head") && names.contains(&"arm_l") && names.contains(&"arm_r"),
+        "the arms as shells, the head the torso's: {names:?}"
+    );
+}
+
+/// An arm lying on the hip and the leg down to its hand (seed 4242's
+/// issue-range random_25, `tests/data/sketch/arm_on_leg_*.svg`: the left
+/// arm's gap with the leg closes below the hand's top, far below the
+/// crotch). No arm reaches out of the body from so low an armpit: the
+/// arm tracer's refusal ("arm_l: no arm reaches out from the armpit")
+/// becomes the arm's, naming where its gap closes and the crotch and
+/// what to draw.
+#[test]
+fn an_arm_lying_on_the_leg_is_named() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
+    let e = build(
+        &data.join("arm_on_leg_front.svg"),
+        &data.join("arm_on_leg_side.svg"),
+        None,
+    )
+    .expect_err("refused")
+    .to_string();
     assert!(
         e.contains("the left arm's gap with the body closes at y = ")
-            && e.contains("below the crotch (y = "),
+            && e.contains("below the crotch (y = ")
+            && e.contains("draw the left arm apart from the hip and leg"),
         "{e}"
     );
 }

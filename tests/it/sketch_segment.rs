@@ -22,10 +22,39 @@ fn built(
     build(&f, &s, Some(1.7))
 }
 
-fn closed(h: &Humanoid, name: &str) {
+fn closed(h: &Humanoid, name: &str) -> pdesculpt::pipeline::Built {
     let b = built(h, name).unwrap_or_else(|e| panic!("{name}: {e}"));
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
+    b
+}
+
+/// A model whose upper body is shells (`sketch::humanoid_shells`): no
+/// head part, no shoulders transition, each arm a closed chain, the torso
+/// closed at the top of the head.
+fn assert_shells(b: &pdesculpt::pipeline::Built, name: &str) {
+    let parts = b.doc.parts();
+    let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
+    assert!(
+        !names.contains(&"head"),
+        "{name}: the head is the torso's: {names:?}"
+    );
+    assert!(
+        b.doc.transitions().iter().all(|t| t.name != "shoulders"),
+        "{name}: no shoulders transition"
+    );
+    for arm in ["arm_l", "arm_r"] {
+        let p = parts.iter().find(|p| p.name == arm).expect(arm);
+        assert!(
+            p.closed_start && p.closed_end,
+            "{name}: {arm} is a closed chain"
+        );
+    }
+    let torso = parts.iter().find(|p| p.name == "torso").expect("a torso");
+    assert!(
+        torso.closed_end,
+        "{name}: the torso closes at the top of the head"
+    );
 }
 
 /// A big head on a neck as wide as the chest, arms near a T-pose: the
@@ -116,10 +145,12 @@ fn a_torso_a_few_percent_long_builds() {
 /// Arms whose gap with the body closes just above the crotch: no torso
 /// between them. The armpit scan started 3 % of the height above the
 /// crotch, missed the merge and said "no armpit found ... draw the arm
-/// reaching out from the shoulder" (it is drawn); now the refusal names
-/// both heights and what to change.
+/// reaching out from the shoulder" (it is drawn); then the refusal named
+/// both heights ("the torso is too short"). Now the upper body is built
+/// as shells (`humanoid_shells::short_torso_models`): the torso chained
+/// on up through the head, the arms closed chains reaching into it.
 #[test]
-fn armpits_at_the_crotch_are_refused_naming_both_heights() {
+fn armpits_at_the_crotch_build_with_the_arms_as_shells() {
     let h = Humanoid {
         head: 0.415,
         neck: 0.08,
@@ -138,16 +169,8 @@ fn armpits_at_the_crotch_are_refused_naming_both_heights() {
         "armpits {:.2} % above the crotch",
         100.0 * t
     );
-    let e = built(&h, "no_torso")
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
-    assert!(
-        e.contains("the torso is too short: the arms leave the body at y = ")
-            && e.contains("above the crotch (y = ")
-            && e.contains("draw the armpits higher"),
-        "{e}"
-    );
+    let b = closed(&h, "no_torso");
+    assert_shells(&b, "no_torso");
 }
 
 /// The figure's front outline and how many slice intervals it has at
@@ -167,11 +190,15 @@ fn intervals_at(h: &Humanoid, level: f64) -> (Vec<[f64; 2]>, usize) {
 /// height), so the refusal took it for the crotch's own gap and said "no
 /// left armpit found ... draw the left arm reaching out from the shoulder"
 /// (it is drawn). A leg between two gaps makes them two
-/// (`sketch::poly::same_gap`): the refusal now names where the arm joins
-/// and the crotch. (Fails on the code before; with arms of 0.36 instead of
-/// 0.44 the hands end above that level and the old code named it too.)
+/// (`sketch::poly::same_gap`): the refusal then named where the arm
+/// joins and the crotch. Now each armpit is that arm's gap top, below the
+/// crotch and beside it (`sketch::refusal::low_armpit`), and the figure
+/// builds with its arms as shells; each arm is traced from its armpit to
+/// its hand, not to its shoulder, which lies farther from so low an
+/// armpit (`limb::trace_arm` takes the point farthest from the arm's
+/// root line).
 #[test]
-fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
+fn arms_hanging_to_the_ground_below_the_crotch_build() {
     let h = Humanoid {
         head: 0.44,
         shoulder: 0.119,
@@ -194,12 +221,27 @@ fn arms_hanging_to_the_ground_below_the_crotch_are_named() {
         .fold(f64::INFINITY, f64::min);
     let (front, n) = intervals_at(&h, GROUND_FRACTION * (lowest - y[0]) / (y[1] - y[0]));
     assert_eq!(n, 4, "both hands hang beside the legs");
-    let e = landmarks(&front).expect_err("refused").to_string();
-    assert!(
-        e.contains("arm's gap with the body closes at y = ")
-            && e.contains("below the crotch (y = "),
-        "{e}"
-    );
+    let lm = landmarks(&front).expect("landmarks");
+    for (a, side) in [(lm.armpit_l, -1.0), (lm.armpit_r, 1.0)] {
+        assert!(
+            a[1] < lm.crotch[1] && side * (a[0] - lm.crotch[0]) > 0.0,
+            "the armpit {a:?} lies below the crotch {:?}, beside it",
+            lm.crotch
+        );
+    }
+    let neck = neck_interval(&front, &lm).expect("a neck");
+    for (a, side, neck_x) in [(lm.armpit_l, -1.0, neck[0]), (lm.armpit_r, 1.0, neck[1])] {
+        let t = pdesculpt::sketch::limb::trace_arm(&front, a, side, neck_x, "arm")
+            .expect("the arm traces");
+        // the hand: below the armpit and farther out
+        assert!(
+            t.tip[1] < a[1] && side * (t.tip[0] - a[0]) > 0.0,
+            "the tip {:?} is the hand below the armpit {a:?}",
+            t.tip
+        );
+    }
+    let b = closed(&h, "to_the_ground");
+    assert_shells(&b, "to_the_ground");
 }
 
 /// Long arms hanging beside the legs to near the ground (seed 9191's
@@ -289,27 +331,54 @@ fn a_hand_as_low_as_the_feet_is_not_the_crotch() {
 /// took them for three gaps: the refusal named one of the crotch's own
 /// tops as the arm's and said the arm's gap "closes at y = 0.0574, below
 /// the crotch (y = 0.0574)". Two tops are now one gap unless a part runs a
-/// join band below them; the arm's own top (y = 0.0550) is named.
+/// join band below them: the right armpit is the arm's own top (y =
+/// 0.0550), right of all three, and the figure builds (its arms as
+/// shells).
 #[test]
-fn a_wavy_crotch_is_one_gap_in_the_refusal() {
+fn a_wavy_crotch_is_one_gap() {
+    use pdesculpt::character::inputs::ProfileInput;
     let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
     let (f, s) = (
         data.join("wavy_crotch_front.svg"),
         data.join("wavy_crotch_side.svg"),
     );
-    let e = build(&f, &s, None).expect_err("refused").to_string();
-    let y = |key: &str| -> f64 {
-        let at = e.find(key).unwrap_or_else(|| panic!("{key} in {e}")) + key.len();
-        e[at..]
-            .split(|c: char| !(c.is_ascii_digit() || c == '.'))
-            .next()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or_else(|| panic!("a height after {key} in {e}"))
-    };
+    let input = ProfileInput::Path("wavy_crotch_front.svg".into());
+    let drawn = pdesculpt::sketch::input::read_profile(
+        &input,
+        &data,
+        pdesculpt::profile::View::Front,
+        None,
+    )
+    .expect("the front reads");
+    let placed = pdesculpt::sketch::place::place(
+        &drawn,
+        None,
+        None,
+        pdesculpt::character::doc::BodyPlan::Humanoid,
+    )
+    .expect("placed");
+    let front = placed.front.points();
+    let h = pdesculpt::polygon::span(front, 1);
+    let g = GAP_FRACTION * (h[1] - h[0]);
+    let mut tops = gap_tops(front, LANDMARK_SLICES);
+    tops.sort_by(|a, b| b.y.total_cmp(&a.y));
+    // the crotch's tops: a tenth of a join band from its height, two
+    // bands from its x
+    let lm = landmarks(front).expect("landmarks");
+    let crotch_tops: Vec<_> = tops
+        .iter()
+        .filter(|t| (t.y - lm.crotch[1]).abs() < 0.1 * g && (t.x - lm.crotch[0]).abs() < 2.0 * g)
+        .collect();
+    assert!(crotch_tops.len() >= 3, "a wavy crotch: {tops:?}");
     assert!(
-        y("closes at y = ") < y("below the crotch (y = "),
-        "the arm's gap closes below the crotch as named: {e}"
+        crotch_tops.iter().all(|t| t.x < lm.armpit_r[0]) && lm.armpit_r[1] < lm.crotch[1] - 0.1 * g,
+        "the right armpit {:?} is the arm's own top, below and right of the crotch's {crotch_tops:?}",
+        lm.armpit_r
     );
+    let b = build(&f, &s, None).expect("builds");
+    let t = &b.report.topology;
+    assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
+    assert_shells(&b, "wavy_crotch");
 }
 
 /// Found by exploration (`PDESCULPT_EXPLORE=1`, 2026-11-29; also in

@@ -423,7 +423,6 @@ pub fn derive(
     // seams between the parts above at their corners (a lone head over
     // the back line has none)
     let seams_above = &lm.top_gaps;
-    let has_above = n_above > 0;
     let (c0, a0) = half_width(body, End::Start);
     let (c1, a1) = half_width(body, End::End);
     let mut transitions = vec![
@@ -461,7 +460,7 @@ pub fn derive(
             child_rises: Vec::new(),
         },
     ];
-    if !has_above {
+    if n_above == 0 {
         transitions.pop();
     }
     // key sections sculpt the stacked body: the final level keeps it
@@ -481,5 +480,6 @@ pub fn derive(
         transitions,
         apex_alternatives: Vec::new(),
         alternatives,
+        shells: false,
     })
 }
