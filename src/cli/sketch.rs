@@ -260,13 +260,17 @@ pub fn report(built: &Built, output: &Path, json: bool) -> anyhow::Result<i32> {
             .iter()
             .map(|e| e.map_or("not built".into(), |e| format!("{e:.3}")))
             .collect();
-        let first = if d.first_shells { "shells" } else { "stacked" };
+        let (tried, first) = if d.first_shells {
+            ("all shells, the arms cut off at different places", "shells")
+        } else {
+            ("the stacked one, then shells", "stacked")
+        };
         let kept = match d.kept {
             0 => format!("the first model ({first})"),
             k => format!("model {} (shells)", k + 1),
         };
         eprintln!(
-            "tried {} models (the first {first}, then shells), their excess over issue 28's bounds {}: kept {kept}",
+            "tried {} models ({tried}), their excess over issue 28's bounds {}: kept {kept}",
             d.excess.len(),
             excess.join(", ")
         );
