@@ -313,15 +313,9 @@ fn derive_upright(
         (&parts, &transitions),
     );
     Ok(Derived {
-        plan: BodyPlan::Humanoid,
-        alignment: Alignment::identity(),
-        landmarks: Some(lm),
-        quadruped: None,
-        parts,
-        transitions,
         apex_alternatives,
         alternatives,
-        shells: false,
+        ..Derived::humanoid(lm, parts, transitions)
     })
 }
 
@@ -371,15 +365,9 @@ fn short_torso(
     }
     let (parts, transitions) = models.remove(0);
     Ok(Derived {
-        plan: BodyPlan::Humanoid,
-        alignment: Alignment::identity(),
-        landmarks: Some(lm),
-        quadruped: None,
-        parts,
-        transitions,
-        apex_alternatives: Vec::new(),
         alternatives: models,
         shells: true,
+        ..Derived::humanoid(lm, parts, transitions)
     })
 }
 

@@ -64,6 +64,24 @@ pub struct Derived {
     pub shells: bool,
 }
 
+impl Derived {
+    /// A humanoid's upright derivation of `parts` and `transitions`
+    /// found with `lm`: no apex alternatives, no alternatives, stacked.
+    pub fn humanoid(lm: Landmarks, parts: Vec<PartSpec>, transitions: Vec<TransitionSpec>) -> Self {
+        Derived {
+            plan: BodyPlan::Humanoid,
+            alignment: Alignment::identity(),
+            landmarks: Some(lm),
+            quadruped: None,
+            parts,
+            transitions,
+            apex_alternatives: Vec::new(),
+            alternatives: Vec::new(),
+            shells: false,
+        }
+    }
+}
+
 /// A seam apex the transition fit tries beside the derived one.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ApexAlternative {
