@@ -86,6 +86,60 @@ pub fn same_gap(points: &[[f64; 2]], a: GapTop, b: GapTop, depth: f64) -> bool {
     !slice(points, y).iter().any(|iv| lo < iv[0] && iv[1] < hi)
 }
 
+/// Slices a gap is followed down over ([`gap_below`]: the crotch's walk
+/// to the ground in `segment`, [`crotch_gap`]): a quarter of the
+/// segmentation's `LANDMARK_SLICES`.
+pub const GAP_WALK_SLICES: usize = 150;
+
+/// The middle, at height `y_end` below `t`, of the gap whose top is `t`,
+/// followed down over `n` slices between the two intervals beside it; None
+/// when the gap opens to the outside on the way (no interval on one side).
+pub fn gap_below(front: &[[f64; 2]], t: &GapTop, y_end: f64, n: usize) -> Option<f64> {
+    let mut x = t.x;
+    for k in 1..=n {
+        let y = t.y - (t.y - y_end) * k as f64 / n as f64;
+        let s = slice(front, y);
+        let left = s
+            .iter()
+            .filter(|iv| iv[1] <= x)
+            .map(|iv| iv[1])
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.max(v))));
+        let right = s
+            .iter()
+            .filter(|iv| iv[0] >= x)
+            .map(|iv| iv[0])
+            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.min(v))));
+        match (left, right) {
+            (Some(a), Some(b)) => x = 0.5 * (a + b),
+            _ => return None,
+        }
+    }
+    Some(x)
+}
+
+/// Whether the gap topped by `t` is the crotch's own gap (a square or
+/// uneven crotch's other corner, whose top lies beside the crotch's):
+/// followed down to a join band `g` below the lower of the two tops, both
+/// gaps end between the same two intervals. A gap between an arm and the
+/// body opens to the outside below the hand; one between an arm hanging
+/// to the ground and a leg has that leg between it and the crotch's. (Not
+/// the test of no interval between the two tops at one height,
+/// [`same_gap`]: a leg reaching out past a hanging arm's
+/// armpit spans both tops' x there.)
+pub fn crotch_gap(front: &[[f64; 2]], t: &GapTop, crotch: &GapTop, g: f64) -> bool {
+    let y_end = t.y.min(crotch.y) - g;
+    let (Some(a), Some(b)) = (
+        gap_below(front, t, y_end, GAP_WALK_SLICES),
+        gap_below(front, crotch, y_end, GAP_WALK_SLICES),
+    ) else {
+        return false;
+    };
+    let (lo, hi) = (a.min(b), a.max(b));
+    !slice(front, y_end)
+        .iter()
+        .any(|iv| lo < iv[1] && iv[0] < hi)
+}
+
 /// Merges the repeated tops of one leaning gap ([`gap_tops`]): sorted by
 /// x, a run of tops each closer than `g` to the one before is one gap,
 /// kept as its highest top (its true top: each repeat is found where the

@@ -24,7 +24,9 @@
 //! A section is perpendicular to the central curve; its radius is the
 //! half-width times the cosine of the curve's tilt.
 
-use super::poly::{gap_tops, merge_repeats, neck_base, slice, GapTop};
+use super::poly::{
+    crotch_gap, gap_below, gap_tops, merge_repeats, neck_base, slice, GapTop, GAP_WALK_SLICES,
+};
 pub(crate) use super::region::reach;
 pub use super::region::{interval, Pick, Region, SidePick};
 use super::SketchError;
@@ -89,7 +91,10 @@ impl Landmarks {
 /// along the slice interval that holds the torso: an arm leaving the torso
 /// (the merge of a hanging arm's interval at its gap top, or a T-pose arm's
 /// underside, which closes no gap). Returns the torso's end just below
-/// that height. A second merge with an interval outside the torso further
+/// that height. The crotch's own gap closing there (the higher corner of
+/// a square crotch drawn a little uneven, [`crotch_gap`]) is no arm: it
+/// was taken for the left armpit of seed 7777's random_47, a torso of
+/// 0 % of the height, refused. A second merge with an interval outside the torso further
 /// up (below `top`) means the arm touched the body there and leaves it
 /// again: an error naming the heights. None: the side never jumps out (an
 /// arm joining the body below the crotch or just above it, whose root the
@@ -99,6 +104,7 @@ fn armpit(
     crotch: GapTop,
     top: f64,
     side: f64,
+    g: f64,
 ) -> Result<Option<GapTop>, SketchError> {
     let n = LANDMARK_SLICES;
     // from one slice above the crotch: an armpit just above it (a short
@@ -107,7 +113,7 @@ fn armpit(
     let y0 = crotch.y + dy;
     let which = if side < 0.0 { "left" } else { "right" };
     let mut mid = crotch.x;
-    let mut prev: Option<(f64, f64, bool)> = None;
+    let mut prev: Option<(f64, f64, Option<f64>)> = None;
     let mut found: Option<GapTop> = None;
     let mut left_again: Option<f64> = None;
     for k in 0..n {
@@ -117,16 +123,34 @@ fn armpit(
             break;
         };
         let end = if side > 0.0 { iv[1] } else { iv[0] };
-        // another interval outside the torso on this side (an arm apart)
-        let apart = s.iter().any(|o| side * (0.5 * (o[0] + o[1]) - end) > 0.0);
-        if let Some((py, pe, was_apart)) = prev {
+        // the nearest end of another interval outside the torso on this
+        // side (an arm apart, or the crotch's other corner): the gap's far side
+        let beyond = s
+            .iter()
+            .map(|o| if side > 0.0 { o[0] } else { o[1] })
+            .filter(|&b| side * (b - end) > 0.0)
+            .min_by(|a, b| (side * a).total_cmp(&(side * b)));
+        if let Some((py, pe, was_beyond)) = prev {
             let jump = side * (end - pe) > ARMPIT_SLOPE * (y - py);
+            // the crotch's own gap closing (an uneven crotch's higher
+            // corner) is not an arm leaving the torso
+            let crotch_closes = was_beyond.is_some_and(|b| {
+                crotch_gap(
+                    front,
+                    &GapTop {
+                        x: 0.5 * (pe + b),
+                        y: py,
+                    },
+                    &crotch,
+                    g,
+                )
+            });
             match (found, left_again) {
-                (None, _) if jump => found = Some(GapTop { x: pe, y: py }),
+                (None, _) if jump && !crotch_closes => found = Some(GapTop { x: pe, y: py }),
                 (Some(_), None) if side * (end - pe) < -ARMPIT_SLOPE * (y - py) => {
                     left_again = Some(y)
                 }
-                (Some(f), Some(y2)) if jump && was_apart => {
+                (Some(f), Some(y2)) if jump && was_beyond.is_some() => {
                     return Err(SketchError::Segmentation(format!(
                         "the {which} arm touches the body between y = {:.4} and {:.4}: draw the arm apart from the body there (leave a gap between them)",
                         f.y, y2
@@ -136,7 +160,7 @@ fn armpit(
             }
         }
         mid = 0.5 * (iv[0] + iv[1]);
-        prev = Some((y, end, apart));
+        prev = Some((y, end, beyond));
     }
     Ok(found)
 }
@@ -158,28 +182,8 @@ pub const GROUND_FRACTION: f64 = 0.15;
 /// does, a gap between a hanging arm and the torso opens to the outside
 /// below the hand. Returns the gap's middle at the ground.
 fn reaches_ground(front: &[[f64; 2]], t: &GapTop, y_min: f64) -> Option<[f64; 2]> {
-    let n = LANDMARK_SLICES / 4;
     let ground = y_min + GROUND_FRACTION * (t.y - y_min);
-    let mut x = t.x;
-    for k in 1..=n {
-        let y = t.y - (t.y - ground) * k as f64 / n as f64;
-        let s = slice(front, y);
-        let left = s
-            .iter()
-            .filter(|iv| iv[1] <= x)
-            .map(|iv| iv[1])
-            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.max(v))));
-        let right = s
-            .iter()
-            .filter(|iv| iv[0] >= x)
-            .map(|iv| iv[0])
-            .fold(None, |m: Option<f64>, v| Some(m.map_or(v, |a| a.min(v))));
-        match (left, right) {
-            (Some(a), Some(b)) => x = 0.5 * (a + b),
-            _ => return None,
-        }
-    }
-    Some([x, ground])
+    gap_below(front, t, ground, GAP_WALK_SLICES).map(|x| [x, ground])
 }
 
 /// The crotch among the gap tops (highest first) whose gaps reach the
@@ -245,6 +249,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
     let at_gap = |a: GapTop| -> GapTop {
         tops.iter()
             .filter(|t| (t.x - a.x).hypot(t.y - a.y) <= 2.0 * GAP_FRACTION * h)
+            .filter(|t| !crotch_gap(front, t, &crotch, GAP_FRACTION * h))
             .min_by(|p, q| {
                 (p.x - a.x)
                     .hypot(p.y - a.y)
@@ -254,7 +259,7 @@ pub fn landmarks(front: &[[f64; 2]]) -> Result<Landmarks, SketchError> {
             .unwrap_or(a)
     };
     let find = |side: f64| -> Result<GapTop, SketchError> {
-        match armpit(front, crotch, yr[1], side)? {
+        match armpit(front, crotch, yr[1], side, GAP_FRACTION * h)? {
             Some(a) => Ok(at_gap(a)),
             None => super::refusal::low_armpit(
                 front,
