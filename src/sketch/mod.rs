@@ -77,6 +77,7 @@ pub mod segment;
 mod shoulder_tilt;
 pub mod tangent_fit;
 pub mod thumb;
+mod tube;
 pub mod uncross;
 mod vertex_grid;
 pub mod walk;

@@ -59,26 +59,39 @@ pub enum SidePick {
     CentreIn(f64, f64),
 }
 
-/// The interval of a region at height y.
+/// The interval of a region at height y: of its [`candidates`], the
+/// widest (`CentreIn`) or the nearest to the side's x (`Beside`).
 pub fn interval(front: &[[f64; 2]], pick: Pick, y: f64) -> Option<[f64; 2]> {
-    let widest = |a: &[f64; 2], b: &[f64; 2]| (a[1] - a[0]).total_cmp(&(b[1] - b[0]));
+    choose(pick, &candidates(front, pick, y))
+}
+
+/// Of a slice's admitted intervals `c` ([`candidates`]), the one `pick`
+/// takes ([`interval`]).
+pub fn choose(pick: Pick, c: &[[f64; 2]]) -> Option<[f64; 2]> {
+    let widest = |a: &&[f64; 2], b: &&[f64; 2]| (a[1] - a[0]).total_cmp(&(b[1] - b[0]));
+    let c = c.iter();
     match pick {
-        Pick::CentreIn(lo, hi) => slice(front, y)
-            .into_iter()
-            .filter(|iv| {
-                let c = 0.5 * (iv[0] + iv[1]);
-                c > lo && c < hi
-            })
-            .max_by(widest),
-        Pick::Beside(x, side) => slice(front, y)
-            .into_iter()
-            .filter(|iv| side * (0.5 * (iv[0] + iv[1]) - x) > 0.0)
-            .min_by(|a, b| {
-                (0.5 * (a[0] + a[1]) - x)
-                    .abs()
-                    .total_cmp(&(0.5 * (b[0] + b[1]) - x).abs())
-            }),
+        Pick::CentreIn(..) => c.max_by(widest),
+        Pick::Beside(x, _) => c.min_by(|a, b| {
+            (0.5 * (a[0] + a[1]) - x)
+                .abs()
+                .total_cmp(&(0.5 * (b[0] + b[1]) - x).abs())
+        }),
     }
+    .copied()
+}
+
+/// The slice intervals at height y that `pick` admits: those centred
+/// between its two x (`CentreIn`) or on its side of its x (`Beside`).
+pub fn candidates(front: &[[f64; 2]], pick: Pick, y: f64) -> Vec<[f64; 2]> {
+    let centre = |iv: &[f64; 2]| 0.5 * (iv[0] + iv[1]);
+    slice(front, y)
+        .into_iter()
+        .filter(|iv| match pick {
+            Pick::CentreIn(lo, hi) => centre(iv) > lo && centre(iv) < hi,
+            Pick::Beside(x, side) => side * (centre(iv) - x) > 0.0,
+        })
+        .collect()
 }
 
 /// The farthest height from `from` toward `to` where the region still has

@@ -2,7 +2,9 @@
 //! shared by the slice-based parts (`derive`) and the arms traced along
 //! their axis (`limb`).
 
-use super::segment::{interval, Region};
+use super::region::{candidates, choose};
+use super::segment::Region;
+use super::tube::{connected_run, Slice};
 
 /// Dense samples of a region's profile used to place sections.
 const PROFILE_SAMPLES: usize = 240;
@@ -115,7 +117,8 @@ fn share_cap(inc: &[f64], k: f64) -> f64 {
 }
 
 /// The slices of region `r` of the front outline, dense
-/// ([`PROFILE_SAMPLES`]), kept to their connected run ([`connected_run`]).
+/// ([`PROFILE_SAMPLES`]), kept to their connected run ([`connected_run`]:
+/// one tube, followed through the branch that goes on at a split).
 pub(super) fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
     let n = PROFILE_SAMPLES;
     // stay a hair inside the tip so the slice exists
@@ -128,41 +131,19 @@ pub(super) fn samples(front: &[[f64; 2]], r: &Region) -> Vec<Sample> {
             } else {
                 r.y0 + t * (r.y1 - r.y0 - if r.tip { eps } else { 0.0 })
             };
-            interval(front, r.pick, y).map(|iv| Sample {
-                y,
-                c: 0.5 * (iv[0] + iv[1]),
-                w: 0.5 * (iv[1] - iv[0]),
-            })
+            let c = candidates(front, r.pick, y);
+            let iv = choose(r.pick, &c)?;
+            Some(Slice { y, iv, admitted: c })
         })
         .collect::<Vec<_>>();
     connected_run(s)
-}
-
-/// The run of samples around the region's middle whose slice intervals
-/// overlap their neighbours' ones: one connected tube. Near a join a slice
-/// can miss the part's own interval and catch a sliver of a neighbour
-/// beside it (a T-pose arm's top beside the neck); such a sample jumps
-/// sideways by more than the two half widths, and a section there (nearly
-/// on top of the next one, in another frame) made the PDE chain overshoot
-/// by metres. No tolerance: two slices of one tube, `PROFILE_SAMPLES`
-/// apart, always overlap.
-fn connected_run(mut s: Vec<Sample>) -> Vec<Sample> {
-    if s.len() < 3 {
-        return s;
-    }
-    let overlaps = |a: &Sample, b: &Sample| (a.c - b.c).abs() <= a.w + b.w;
-    let m = s.len() / 2;
-    let mut lo = m;
-    while lo > 0 && overlaps(&s[lo - 1], &s[lo]) {
-        lo -= 1;
-    }
-    let mut hi = m;
-    while hi + 1 < s.len() && overlaps(&s[hi], &s[hi + 1]) {
-        hi += 1;
-    }
-    s.truncate(hi + 1);
-    s.drain(..lo);
-    s
+        .into_iter()
+        .map(|q| Sample {
+            y: q.y,
+            c: 0.5 * (q.iv[0] + q.iv[1]),
+            w: 0.5 * (q.iv[1] - q.iv[0]),
+        })
+        .collect()
 }
 
 /// Slope `dc/dy` of the part's centre line at sample `i`: the
