@@ -202,7 +202,17 @@ fn torso_axis(front: &[[f64; 2]]) -> Option<(f64, f64, f64)> {
     let al = super::align::alignment(front).ok()?;
     let up: Vec<[f64; 2]> = front.iter().map(|p| al.to_upright(*p)).collect();
     let lm = super::segment::landmarks(&up).ok()?;
-    let (y0, y1) = (lm.crotch[1], lm.armpit_l[1].min(lm.armpit_r[1]));
+    // a figure with no torso between its armpits and its crotch (the
+    // arms joining the body below it or just above it, built as shells):
+    // the body from the crotch up to the neck's base; its armpits' band
+    // ran below the crotch, and the widest interval between the armpits
+    // there was a leg (corpus random_7 was placed 0.13 m off its axis)
+    let y1 = if lm.torso_is_short() {
+        lm.neck_base
+    } else {
+        lm.armpit_l[1].min(lm.armpit_r[1])
+    };
+    let (y0, y1) = (lm.crotch[1], y1);
     let pick = super::segment::Pick::CentreIn(lm.armpit_l[0], lm.armpit_r[0]);
     let (mut sum, mut k) = (0.0, 0usize);
     for i in 0..CENTRE_SLICES {

@@ -858,6 +858,119 @@ fn an_arm_joining_the_body_below_the_crotch_builds() {
     );
 }
 
+/// How far a short-torso figure's body may sit from x = 0, as a fraction
+/// of the spacing of its legs' tops: a quarter, half way to a leg's
+/// centre, where the placement had put it.
+const AXIS_OFF_MAX: f64 = 0.25;
+
+/// A figure with no torso between its armpits and its crotch (corpus
+/// random_7, built as shells) at the final level with a key section of
+/// its head: there is no head part, and the section sculpts the body
+/// chain that holds the head (a GEC section at its height). The torso's
+/// axis is at x = 0: the placement's band, crotch to armpits, ran below
+/// the crotch for such a figure, the widest interval between the armpits
+/// there was a leg, and the model was placed 0.13 m off its axis.
+#[test]
+fn a_short_torso_takes_a_head_key_section_at_the_final_level() {
+    use pdesculpt::character::doc::{KeySection, SectionShape};
+    let dir = corpus_dir();
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let e = m
+        .entries
+        .iter()
+        .find(|e| e.name == "random_7")
+        .expect("random_7");
+    let (f, s) = (dir.join(&e.front), dir.join(&e.side));
+    let first = build(&f, &s, e.height_m).expect("random_7 builds");
+    let h = first.report.height_m;
+    let torso = |b: &Built| {
+        b.doc
+            .parts()
+            .iter()
+            .find(|p| p.name == "torso")
+            .expect("a torso")
+            .clone()
+    };
+    let t = torso(&first);
+    let mean_x = t.sections.iter().map(|q| q.centre[0]).sum::<f64>() / t.sections.len() as f64;
+    // nearer x = 0 than a quarter of the spacing of the legs' tops (a
+    // leg's centre is half of it off; the placed body 0.06 of it)
+    let leg_x = |n: &str| {
+        first
+            .doc
+            .parts()
+            .iter()
+            .find(|p| p.name == n)
+            .expect(n)
+            .sections[0]
+            .centre[0]
+    };
+    let spacing = leg_x("leg_r") - leg_x("leg_l");
+    assert!(
+        mean_x.abs() <= AXIS_OFF_MAX * spacing,
+        "the body's axis at x = {mean_x:.4}, the legs {spacing:.4} apart"
+    );
+    // the head's section at 85 % of the height, as the intermediate model
+    // has it, drawn in the drawings' frame
+    let q = t
+        .sections
+        .iter()
+        .min_by(|a, b| {
+            (a.centre[1] - 0.85 * h)
+                .abs()
+                .total_cmp(&(b.centre[1] - 0.85 * h).abs())
+        })
+        .expect("sections");
+    let SectionShape::Ellipse { a, b, offset } = q.shape else {
+        panic!("an ellipse: {:?}", q.shape)
+    };
+    let p = &first.report.drawing.placement;
+    let ks = p.scale * p.side_scale;
+    let key = KeySection {
+        part: "head".into(),
+        y: (q.centre[1] - p.front_shift[1]) / p.scale,
+        points: (0..24)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / 24.0;
+                [
+                    (q.centre[0] + a * t.cos() - p.front_shift[0]) / p.scale,
+                    (q.centre[2] + offset + b * t.sin() - p.side_shift[0]) / ks,
+                ]
+            })
+            .collect(),
+    };
+    let doc = CharacterDoc::from_inputs(
+        Inputs {
+            front: ProfileInput::Path(f.display().to_string()),
+            side: Some(ProfileInput::Path(s.display().to_string())),
+            sections: vec![key],
+            tolerance: None,
+            height: e.height_m,
+            body_plan: Default::default(),
+        },
+        Level::Final,
+    );
+    let opts = pdesculpt::pipeline::BuildOptions::new(Path::new(".")).rederive(true);
+    let fin = pdesculpt::pipeline::build(&doc, &opts, None).expect("the final level builds");
+    let top = fin.report.topology.clone();
+    assert!(top.watertight && top.manifold && top.oriented, "{top:?}");
+    assert!(
+        fin.doc.parts().iter().all(|p| p.name != "head"),
+        "the head is the body chain's"
+    );
+    let gec = torso(&fin)
+        .sections
+        .iter()
+        .filter(|s| matches!(s.shape, SectionShape::Gec { .. }))
+        .map(|s| s.centre[1])
+        .collect::<Vec<_>>();
+    assert!(
+        gec.len() == 1 && (gec[0] - q.centre[1]).abs() <= tol::ROUNDING.sqrt() * h,
+        "one GEC section at y = {:.4}: {gec:?}",
+        q.centre[1]
+    );
+}
+
 /// An arm lying on the hip and the leg down to its hand (seed 4242's
 /// issue-range random_25, `tests/data/sketch/arm_on_leg_*.svg`: the left
 /// arm's gap with the leg closes below the hand's top, far below the
