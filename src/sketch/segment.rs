@@ -133,20 +133,19 @@ fn armpit(
         if let Some((py, pe, was_beyond)) = prev {
             let jump = side * (end - pe) > ARMPIT_SLOPE * (y - py);
             // the crotch's own gap closing (an uneven crotch's higher
-            // corner) is not an arm leaving the torso
-            let crotch_closes = was_beyond.is_some_and(|b| {
-                crotch_gap(
-                    front,
-                    &GapTop {
+            // corner) is not an arm leaving the torso (tested only at a
+            // jump: it follows two gaps down)
+            let crotch_closes = || {
+                was_beyond.is_some_and(|b| {
+                    let t = GapTop {
                         x: 0.5 * (pe + b),
                         y: py,
-                    },
-                    &crotch,
-                    g,
-                )
-            });
+                    };
+                    crotch_gap(front, &t, &crotch, g)
+                })
+            };
             match (found, left_again) {
-                (None, _) if jump && !crotch_closes => found = Some(GapTop { x: pe, y: py }),
+                (None, _) if jump && !crotch_closes() => found = Some(GapTop { x: pe, y: py }),
                 (Some(_), None) if side * (end - pe) < -ARMPIT_SLOPE * (y - py) => {
                     left_again = Some(y)
                 }
