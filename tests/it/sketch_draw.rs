@@ -828,6 +828,18 @@ fn the_shoulders_do_not_crease_beside_the_neck() {
     }
 }
 
+/// The corpus's directory and its entry `name`.
+fn corpus_entry(name: &str) -> (PathBuf, Entry) {
+    let dir = corpus_dir();
+    let m = read_manifest(&dir).expect("the corpus manifest reads");
+    let e = m
+        .entries
+        .into_iter()
+        .find(|e| e.name == name)
+        .unwrap_or_else(|| panic!("the corpus has {name}"));
+    (dir, e)
+}
+
 /// An arm whose gap with the body closes below the crotch (corpus
 /// random_7: a head half the figure's height, arms leaving the hips) was
 /// refused with the height of that join and the crotch's; it builds now,
@@ -835,14 +847,8 @@ fn the_shoulders_do_not_crease_beside_the_neck() {
 /// the armpits and the crotch to build stacked).
 #[test]
 fn an_arm_joining_the_body_below_the_crotch_builds() {
-    let dir = corpus_dir();
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
-    let e = m
-        .entries
-        .iter()
-        .find(|e| e.name == "random_7")
-        .expect("random_7");
-    let b = build_entry(&dir, e).expect("random_7 builds");
+    let (dir, e) = corpus_entry("random_7");
+    let b = build_entry(&dir, &e).expect("random_7 builds");
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
     let want = e.height_m.unwrap_or(e.drawn_height_m);
@@ -873,13 +879,7 @@ const AXIS_OFF_MAX: f64 = 0.25;
 #[test]
 fn a_short_torso_takes_a_head_key_section_at_the_final_level() {
     use pdesculpt::character::doc::{KeySection, SectionShape};
-    let dir = corpus_dir();
-    let m = read_manifest(&dir).expect("the corpus manifest reads");
-    let e = m
-        .entries
-        .iter()
-        .find(|e| e.name == "random_7")
-        .expect("random_7");
+    let (dir, e) = corpus_entry("random_7");
     let (f, s) = (dir.join(&e.front), dir.join(&e.side));
     let first = build(&f, &s, e.height_m).expect("random_7 builds");
     let h = first.report.height_m;

@@ -388,13 +388,8 @@ fn an_uneven_crotch_s_corner_is_no_armpit() {
             lm.crotch
         );
     }
-    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
-    let b = build(
-        &data.join("uneven_crotch_front.svg"),
-        &data.join("uneven_crotch_side.svg"),
-        None,
-    )
-    .expect("builds");
+    let (f, s) = crate::sketch_shoulders::pair("uneven_crotch");
+    let b = build(&f, &s, None).expect("builds");
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
     let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();

@@ -17,7 +17,8 @@ const SHELF_PROFILE_MAX: f64 = 0.03;
 /// sheet hung from an apex near its feet.
 const GAP_APEX_CREASED_MAX: f64 = 2.0;
 
-fn pair(name: &str) -> (PathBuf, PathBuf) {
+/// The front and side drawings `tests/data/sketch/NAME_{front,side}.svg`.
+pub(crate) fn pair(name: &str) -> (PathBuf, PathBuf) {
     let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
     (
         data.join(format!("{name}_front.svg")),
