@@ -74,18 +74,6 @@ pub fn gap_tops(points: &[[f64; 2]], n: usize) -> Vec<GapTop> {
     out
 }
 
-/// Whether the gap tops `a` and `b` top one gap: `depth` below the lower
-/// of them, no slice interval lies between their x (a gap's repeated tops,
-/// the corners of a square crotch). A leg between them (the crotch and the
-/// gap between that leg and a hanging arm) makes two gaps; a tooth of the
-/// outline shallower than `depth` between two tops of one wavy crotch
-/// (corpus random_0 of seed 4242: 1e-4 of the height) does not.
-pub fn same_gap(points: &[[f64; 2]], a: GapTop, b: GapTop, depth: f64) -> bool {
-    let y = a.y.min(b.y) - depth;
-    let (lo, hi) = (a.x.min(b.x), a.x.max(b.x));
-    !slice(points, y).iter().any(|iv| lo < iv[0] && iv[1] < hi)
-}
-
 /// Slices a gap is followed down over ([`gap_below`]: the crotch's walk
 /// to the ground in `segment`, [`crotch_gap`]): a quarter of the
 /// segmentation's `LANDMARK_SLICES`.
@@ -122,10 +110,13 @@ pub fn gap_below(front: &[[f64; 2]], t: &GapTop, y_end: f64, n: usize) -> Option
 /// followed down to a join band `g` below the lower of the two tops, both
 /// gaps end between the same two intervals. A gap between an arm and the
 /// body opens to the outside below the hand; one between an arm hanging
-/// to the ground and a leg has that leg between it and the crotch's. (Not
-/// the test of no interval between the two tops at one height,
-/// [`same_gap`]: a leg reaching out past a hanging arm's
-/// armpit spans both tops' x there.)
+/// to the ground and a leg has that leg between it and the crotch's; a
+/// tooth of a wavy crotch's edge between two of its tops (seed 4242's
+/// random_0: 1e-4 of the height) is gone a join band below them. (It
+/// replaces the test of no interval between the two tops a join band
+/// below them: a leg reaching out past a hanging arm's armpit spans both
+/// tops' x there, and the armpit scan took the crotch's corner for an
+/// arm's.)
 pub fn crotch_gap(front: &[[f64; 2]], t: &GapTop, crotch: &GapTop, g: f64) -> bool {
     let y_end = t.y.min(crotch.y) - g;
     let (Some(a), Some(b)) = (

@@ -2,7 +2,7 @@
 //! ([`super::segment`]), in drawing terms: which landmark is where, and
 //! what to draw differently.
 
-use super::poly::{same_gap, GapTop};
+use super::poly::{crotch_gap, GapTop};
 use super::SketchError;
 
 /// The arms leave the body at `ya`, too near the crotch at `crotch_y`: a
@@ -21,12 +21,14 @@ pub fn torso_too_short(ya: f64, crotch_y: f64, h: f64, least: f64) -> SketchErro
 
 /// The arm's join on `side` (-1 left, +1 right) of a model of height `h`
 /// whose torso must be longer than `least` when going up from the crotch
-/// finds no armpit (`g`: a join band, the depth [`same_gap`] looks below
-/// two tops): the highest gap top on that side below the torso's least
-/// top, an arm whose gap with the body closes at the hip or the thigh, or
-/// just above the crotch (a big-headed figure's short torso). Gap tops of
-/// the crotch's own gap (its repeats, a square crotch's corners) are not
-/// an arm's; a gap between a leg and an arm hanging to the ground is.
+/// finds no armpit (`g`: a join band, how far below the lower of two
+/// tops [`crotch_gap`] compares their gaps): the highest gap top on that
+/// side below the torso's least top, an arm whose gap with the body
+/// closes at the hip or the thigh, or just above the crotch (a
+/// big-headed figure's short torso). Gap tops of the crotch's own gap
+/// (its repeats, a square or wavy crotch's corners) are not an arm's; a
+/// gap between a leg and an arm hanging to the ground is. The same test
+/// as the armpit scan's ([`crotch_gap`]).
 pub fn low_armpit(
     front: &[[f64; 2]],
     tops: &[GapTop],
@@ -36,7 +38,7 @@ pub fn low_armpit(
 ) -> Option<GapTop> {
     tops.iter()
         .filter(|t| side * (t.x - crotch.x) > 0.0 && t.y <= crotch.y + least)
-        .filter(|t| !same_gap(front, **t, crotch, g))
+        .filter(|t| !crotch_gap(front, t, &crotch, g))
         .max_by(|a, b| a.y.total_cmp(&b.y))
         .copied()
 }
