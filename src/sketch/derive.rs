@@ -149,6 +149,19 @@ fn lying_error(turn: &str, animal: &str) -> SketchError {
     ))
 }
 
+/// Why [`traced_arms`] failed: one arm's own refusal (`right`: whether
+/// the right arm's) or the drawing's (`None`: no neck).
+struct ArmsError {
+    right: Option<bool>,
+    error: SketchError,
+}
+
+impl From<ArmsError> for SketchError {
+    fn from(e: ArmsError) -> SketchError {
+        e.error
+    }
+}
+
 /// The two arms traced from the armpits ([`super::limb`]): their parts
 /// and their traces (left, right). An arm starts a
 /// join band ([`super::segment::GAP_FRACTION`] of the height) out from its
@@ -158,12 +171,14 @@ fn traced_arms(
     side: Option<&[[f64; 2]]>,
     lm: &Landmarks,
     joins: &super::cuts::JoinHeights,
-) -> Result<(Vec<PartSpec>, Vec<ArmTrace>), SketchError> {
+) -> Result<(Vec<PartSpec>, Vec<ArmTrace>), ArmsError> {
     let g = super::segment::GAP_FRACTION * lm.height();
-    let neck = super::segment::neck_interval(front, lm)
-        .ok_or_else(|| SketchError::Segmentation(
+    let neck = super::segment::neck_interval(front, lm).ok_or_else(|| ArmsError {
+        right: None,
+        error: SketchError::Segmentation(
             "no neck found above the armpits: draw the head on a neck narrower than the shoulders, above both arms".into(),
-        ))?;
+        ),
+    })?;
     // hidden in the side view: the arms hang at the torso's centre depth
     // at the armpits' height
     let ya = lm.armpit_l[1].min(lm.armpit_r[1]);
@@ -179,7 +194,11 @@ fn traced_arms(
         ("arm_l", lm.armpit_l, -1.0, neck[0]),
         ("arm_r", lm.armpit_r, 1.0, neck[1]),
     ] {
-        let t = super::limb::trace_arm(front, armpit, sign, neck_x, name)?;
+        let arm = |error| ArmsError {
+            right: Some(sign > 0.0),
+            error,
+        };
+        let t = super::limb::trace_arm(front, armpit, sign, neck_x, name).map_err(arm)?;
         let cut_mid = [
             0.5 * (t.armpit[0] + t.shoulder[0]),
             0.5 * (t.armpit[1] + t.shoulder[1]),
@@ -203,7 +222,7 @@ fn traced_arms(
             }
             None => g,
         };
-        parts.push(super::limb::part_from_trace(front, name, &t, start, z)?);
+        parts.push(super::limb::part_from_trace(front, name, &t, start, z).map_err(arm)?);
         parts.extend(thumb_part(&t, name, z));
         traces.push(ArmTrace {
             name: name.into(),
@@ -336,7 +355,9 @@ fn short_torso(
     let (arms, traces) = traced_arms(front, side, &lm, joins).map_err(|e| {
         let h = lm.height();
         let least = super::segment::torso_min(h);
-        let (which, a) = if e.to_string().contains("arm_r:") {
+        // a refusal of neither arm (no neck) names the left one, as the
+        // match on the error's text ("arm_r:") did before
+        let (which, a) = if e.right == Some(true) {
             ("right", lm.armpit_r)
         } else {
             ("left", lm.armpit_l)
@@ -344,7 +365,7 @@ fn short_torso(
         if a[1] <= lm.crotch[1] + least {
             super::refusal::arm_too_low(a, lm.crotch, h, least, which)
         } else {
-            e
+            e.error
         }
     })?;
     let thumbs: Vec<PartSpec> = arms
