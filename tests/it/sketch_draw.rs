@@ -46,6 +46,43 @@ pub(crate) fn write_pair(
     (f, s)
 }
 
+/// The front and side drawings `tests/data/sketch/NAME_{front,side}.svg`.
+pub(crate) fn data_pair(name: &str) -> (PathBuf, PathBuf) {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
+    (
+        data.join(format!("{name}_front.svg")),
+        data.join(format!("{name}_side.svg")),
+    )
+}
+
+/// A model whose upper body is shells (`sketch::humanoid_shells`): no
+/// head part, no shoulders transition, each arm a closed chain, the torso
+/// closed at the top of the head.
+pub(crate) fn assert_shells(b: &pdesculpt::pipeline::Built, name: &str) {
+    let parts = b.doc.parts();
+    let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
+    assert!(
+        !names.contains(&"head"),
+        "{name}: the head is the torso's: {names:?}"
+    );
+    assert!(
+        b.doc.transitions().iter().all(|t| t.name != "shoulders"),
+        "{name}: no shoulders transition"
+    );
+    for arm in ["arm_l", "arm_r"] {
+        let p = parts.iter().find(|p| p.name == arm).expect(arm);
+        assert!(
+            p.closed_start && p.closed_end,
+            "{name}: {arm} is a closed chain"
+        );
+    }
+    let torso = parts.iter().find(|p| p.name == "torso").expect("a torso");
+    assert!(
+        torso.closed_end,
+        "{name}: the torso closes at the top of the head"
+    );
+}
+
 /// A sketch-built document's shoulders transition (shared by the sketch
 /// tests that look at it).
 pub(crate) fn shoulders(b: &Built) -> &pdesculpt::character::spec::TransitionSpec {
@@ -980,14 +1017,8 @@ fn a_short_torso_takes_a_head_key_section_at_the_final_level() {
 /// what to draw.
 #[test]
 fn an_arm_lying_on_the_leg_is_named() {
-    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
-    let e = build(
-        &data.join("arm_on_leg_front.svg"),
-        &data.join("arm_on_leg_side.svg"),
-        None,
-    )
-    .expect_err("refused")
-    .to_string();
+    let (f, s) = data_pair("arm_on_leg");
+    let e = build(&f, &s, None).expect_err("refused").to_string();
     assert!(
         e.contains("the left arm's gap with the body closes at y = ")
             && e.contains("below the crotch (y = ")

@@ -4,9 +4,8 @@
 //! --random 48 --ranges issue` as random_37), whose outline's axis leans 2
 //! degrees although its feet are drawn level.
 
-use crate::sketch_draw::build;
+use crate::sketch_draw::{build, data_pair};
 use pdesculpt::sketch::quality::Bounds;
-use std::path::PathBuf;
 
 /// How much deeper one foot may sink below the ground than the other,
 /// relative to the height: a tenth of issue 28's outside bound. Both
@@ -16,13 +15,8 @@ const FEET_LEVEL: f64 = 0.1 * Bounds::ISSUE.outside;
 
 #[test]
 fn feet_drawn_level_stay_level_when_the_figure_is_turned_upright() {
-    let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
-    let b = build(
-        &data.join("level_feet_front.svg"),
-        &data.join("level_feet_side.svg"),
-        None,
-    )
-    .expect("builds");
+    let (f, s) = data_pair("level_feet");
+    let b = build(&f, &s, None).expect("builds");
     let m = &b.model.mesh;
     let ys = || m.positions.iter().map(|p| p[1]);
     let h = ys().fold(f64::MIN, f64::max) - ys().fold(f64::MAX, f64::min);

@@ -4,7 +4,7 @@
 //! figure that no longer has it).
 
 use crate::cli::tmpdir;
-use crate::sketch_draw::{build, write_pair};
+use crate::sketch_draw::{assert_shells, build, data_pair, write_pair};
 use pdesculpt::sketch::corpus::Style;
 use pdesculpt::sketch::figure::Humanoid;
 use pdesculpt::sketch::poly::{gap_tops, slice};
@@ -27,34 +27,6 @@ fn closed(h: &Humanoid, name: &str) -> pdesculpt::pipeline::Built {
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{name}: {t:?}");
     b
-}
-
-/// A model whose upper body is shells (`sketch::humanoid_shells`): no
-/// head part, no shoulders transition, each arm a closed chain, the torso
-/// closed at the top of the head.
-fn assert_shells(b: &pdesculpt::pipeline::Built, name: &str) {
-    let parts = b.doc.parts();
-    let names: Vec<&str> = parts.iter().map(|p| p.name.as_str()).collect();
-    assert!(
-        !names.contains(&"head"),
-        "{name}: the head is the torso's: {names:?}"
-    );
-    assert!(
-        b.doc.transitions().iter().all(|t| t.name != "shoulders"),
-        "{name}: no shoulders transition"
-    );
-    for arm in ["arm_l", "arm_r"] {
-        let p = parts.iter().find(|p| p.name == arm).expect(arm);
-        assert!(
-            p.closed_start && p.closed_end,
-            "{name}: {arm} is a closed chain"
-        );
-    }
-    let torso = parts.iter().find(|p| p.name == "torso").expect("a torso");
-    assert!(
-        torso.closed_end,
-        "{name}: the torso closes at the top of the head"
-    );
 }
 
 /// A big head on a neck as wide as the chest, arms near a T-pose: the
@@ -190,7 +162,7 @@ fn intervals_at(h: &Humanoid, level: f64) -> (Vec<[f64; 2]>, usize) {
 /// height), so the refusal took it for the crotch's own gap and said "no
 /// left armpit found ... draw the left arm reaching out from the shoulder"
 /// (it is drawn). A leg between two gaps makes them two
-/// (`sketch::poly::same_gap`): the refusal then named where the arm
+/// (then `sketch::poly::same_gap`, now `sketch::poly::crotch_gap`): the refusal then named where the arm
 /// joins and the crotch. Now each armpit is that arm's gap top, below the
 /// crotch and beside it (`sketch::refusal::low_armpit`), and the figure
 /// builds with its arms as shells; each arm is traced from its armpit to
@@ -388,7 +360,7 @@ fn an_uneven_crotch_s_corner_is_no_armpit() {
             lm.crotch
         );
     }
-    let (f, s) = crate::sketch_shoulders::pair("uneven_crotch");
+    let (f, s) = data_pair("uneven_crotch");
     let b = build(&f, &s, None).expect("builds");
     let t = &b.report.topology;
     assert!(t.watertight && t.manifold && t.oriented, "{t:?}");
@@ -403,20 +375,17 @@ fn an_uneven_crotch_s_corner_is_no_armpit() {
 /// US Letter in inches, 16 cm tall; `tests/data/sketch/wavy_crotch_*.svg`):
 /// the writer's arcs leave the crotch's edge wavy by 1e-4 of the height,
 /// so its gap has three tops a few mm apart. A slice just below them
-/// (`sketch::poly::same_gap`) met the outline's teeth between them and
+/// (then `sketch::poly::same_gap`) met the outline's teeth between them and
 /// took them for three gaps: the refusal named one of the crotch's own
 /// tops as the arm's and said the arm's gap "closes at y = 0.0574, below
-/// the crotch (y = 0.0574)". Two tops are now one gap unless a part runs a
-/// join band below them: the right armpit is the arm's own top (y =
+/// the crotch (y = 0.0574)". Two tops are now one gap when both, followed
+/// down a join band below the lower, end between the same two intervals
+/// (`sketch::poly::crotch_gap`): the right armpit is the arm's own top (y =
 /// 0.0550), right of all three, and the figure builds (its arms as
 /// shells).
 #[test]
 fn a_wavy_crotch_is_one_gap() {
-    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
-    let (f, s) = (
-        data.join("wavy_crotch_front.svg"),
-        data.join("wavy_crotch_side.svg"),
-    );
+    let (f, s) = data_pair("wavy_crotch");
     let placed = data_front("wavy_crotch_front.svg");
     let front = &placed[..];
     let h = pdesculpt::polygon::span(front, 1);

@@ -3,7 +3,7 @@
 //! by `cargo run --release --example sketch_corpus -- write DIR --seed 7777
 //! --random 40 --ranges issue` as random_9 and random_6).
 
-use crate::sketch_draw::{build, build_with, shoulders};
+use crate::sketch_draw::{assert_shells, build, build_with, data_pair, shoulders};
 use std::path::PathBuf;
 
 /// The whole model's profile error bound of these checks, relative to the
@@ -17,15 +17,6 @@ const SHELF_PROFILE_MAX: f64 = 0.03;
 /// sheet hung from an apex near its feet.
 const GAP_APEX_CREASED_MAX: f64 = 2.0;
 
-/// The front and side drawings `tests/data/sketch/NAME_{front,side}.svg`.
-pub(crate) fn pair(name: &str) -> (PathBuf, PathBuf) {
-    let data = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/sketch");
-    (
-        data.join(format!("{name}_front.svg")),
-        data.join(format!("{name}_side.svg")),
-    )
-}
-
 /// A torso narrowing in a nearly level shelf under the armpits has an end
 /// ring whose u-speed `|dP/du|` reaches 26: the transition's cross
 /// tangents `ell dP/du` were 26 times the gap they bridge, and the
@@ -33,7 +24,7 @@ pub(crate) fn pair(name: &str) -> (PathBuf, PathBuf) {
 /// tangent at its scale (`character::tangent_cap::cap_tangents`).
 #[test]
 fn a_torso_ending_in_a_shelf_keeps_its_shoulders_under_the_head() {
-    let (f, s) = pair("shelf_torso");
+    let (f, s) = data_pair("shelf_torso");
     let b = build(&f, &s, None).expect("builds");
     let shoulders = shoulders(&b);
     assert!(
@@ -59,7 +50,7 @@ fn a_torso_ending_in_a_shelf_keeps_its_shoulders_under_the_head() {
 /// drawing's upper body as shells, `crowded_shoulders_are_built_as_shells`).
 #[test]
 fn a_shoulder_apex_over_a_gap_stays_between_the_torso_and_the_neck() {
-    let (f, s) = pair("short_torso");
+    let (f, s) = data_pair("short_torso");
     let b = build_with(&f, &s, None, false).expect("builds");
     let part = |n: &str| {
         b.doc
@@ -124,29 +115,7 @@ fn crowded_shoulders_are_built_as_shells() {
         .expect("the report says what was tried");
     assert!(d.kept > 0 && d.excess.len() > 1, "{d:?}");
     assert_eq!(d.excess[d.kept], Some(0.0), "{d:?}");
-    let names: Vec<&str> = b.doc.parts().iter().map(|p| p.name.as_str()).collect();
-    assert!(
-        !names.contains(&"head"),
-        "the head is the torso's: {names:?}"
-    );
-    assert!(
-        b.doc.transitions().iter().all(|t| t.name != "shoulders"),
-        "no shoulders transition"
-    );
-    for p in b.doc.parts().iter().filter(|p| p.name.starts_with("arm_")) {
-        assert!(
-            p.closed_start && p.closed_end,
-            "{} is a closed chain",
-            p.name
-        );
-    }
-    let torso = b
-        .doc
-        .parts()
-        .iter()
-        .find(|p| p.name == "torso")
-        .expect("a torso");
-    assert!(torso.closed_end, "the torso closes at the top of the head");
+    assert_shells(&b, "random_4");
     let w = warnings(&b.report.quality, &Bounds::ISSUE);
     assert!(w.is_empty(), "{w:?}");
     let kept = corpus_build("t_pose", true);
@@ -168,7 +137,7 @@ fn crowded_shoulders_are_built_as_shells() {
 #[test]
 fn a_shoulder_peak_beside_the_neck_does_not_end_the_body() {
     use pdesculpt::sketch::quality::{warnings, Bounds};
-    let (f, s) = pair("shoulder_peak");
+    let (f, s) = data_pair("shoulder_peak");
     let b = build(&f, &s, None).expect("builds");
     let d = b
         .report
