@@ -146,11 +146,46 @@ pub fn model_outline(mesh: &Mesh, view: View) -> Option<(Profile, usize)> {
     }
 }
 
-fn view_samples(mesh: &Mesh, groups: &[u32], view: View, sketch: &Profile) -> Option<Measured> {
-    let (model, pieces) = model_outline(mesh, view)?;
+/// The model's outline in each measured view ([`model_outline`]), taken
+/// once per report and read by both the profile error
+/// (`report::profile_errors_with`) and [`measure_with`]: each is a scan
+/// of every triangle.
+pub struct ModelOutlines(Vec<(View, Option<(Profile, usize)>)>);
+
+impl ModelOutlines {
+    /// The front's outline, and the side's when `side`.
+    pub fn of(mesh: &Mesh, side: bool) -> ModelOutlines {
+        let views = if side {
+            vec![View::Front, View::Side]
+        } else {
+            vec![View::Front]
+        };
+        ModelOutlines(
+            views
+                .into_iter()
+                .map(|v| (v, model_outline(mesh, v)))
+                .collect(),
+        )
+    }
+
+    /// The outline in `view`; `None` when not taken or not extracted.
+    pub fn get(&self, view: View) -> Option<&(Profile, usize)> {
+        self.0.iter().find(|(v, _)| *v == view)?.1.as_ref()
+    }
+}
+
+fn view_samples(
+    mesh: &Mesh,
+    groups: &[u32],
+    view: View,
+    sketch: &Profile,
+    outlines: &ModelOutlines,
+) -> Option<Measured> {
+    let (model, pieces) = outlines.get(view)?;
+    let pieces = *pieces;
     let grid = VertexGrid::new(mesh.positions.iter().map(|p| view.project(*p)).collect());
-    let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(&model));
-    let (ms, ss) = miss_samples(sketch, &model);
+    let (isk, imo) = (ProfileIndex::new(sketch), ProfileIndex::new(model));
+    let (ms, ss) = miss_samples(sketch, model);
     let part_of = |q: [f64; 2]| grid.nearest(q).map_or(u32::MAX, |i| groups[i]);
     let mut out = Vec::with_capacity(2 * SAMPLES);
     let mut model_parts = Vec::with_capacity(ms.len());
@@ -230,10 +265,23 @@ pub fn measure(
     height: f64,
     parts: &[String],
 ) -> Quality {
+    let outlines = ModelOutlines::of(mesh, side.is_some());
+    measure_with(mesh, &outlines, front, side, height, parts)
+}
+
+/// [`measure`] with the model's outlines already taken.
+pub fn measure_with(
+    mesh: &Mesh,
+    outlines: &ModelOutlines,
+    front: &Profile,
+    side: Option<&Profile>,
+    height: f64,
+    parts: &[String],
+) -> Quality {
     let groups = vertex_groups(mesh);
     let views: Vec<(View, Option<Measured>)> = [(View::Front, Some(front)), (View::Side, side)]
         .into_iter()
-        .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o))))
+        .filter_map(|(v, o)| o.map(|o| (v, view_samples(mesh, &groups, v, o, outlines))))
         .collect();
     let nan = |v: View| ViewQuality {
         view: v.name(),

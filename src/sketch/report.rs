@@ -164,7 +164,8 @@ pub fn report(
     let mut names: Vec<&str> = removed.iter().map(|r| r.spec.name.as_str()).collect();
     names.extend(props.iter().map(|p| p.name.as_str()));
     let body = without_groups(&model.mesh, &names);
-    let profile_error = profile_errors(&body, front, side, height);
+    let outlines = super::quality::ModelOutlines::of(&body, side.is_some());
+    let profile_error = profile_errors_with(&outlines, front, side, height);
     let removed_reports = removed_errors(&model.mesh, removed, height);
     let part_names: Vec<String> = edited
         .iter()
@@ -172,8 +173,9 @@ pub fn report(
         .filter(|n| !names.contains(&n.as_str()))
         .chain(out.transitions().iter().map(|t| t.name.clone()))
         .collect();
-    let quality = super::quality::measure(
+    let quality = super::quality::measure_with(
         &body,
+        &outlines,
         &front.profile,
         side.map(|s| &s.profile),
         height,
@@ -286,12 +288,24 @@ pub fn profile_errors(
     side: Option<&Outline>,
     height: f64,
 ) -> Vec<ProfileErrorReport> {
+    let outlines = super::quality::ModelOutlines::of(mesh, side.is_some());
+    profile_errors_with(&outlines, front, side, height)
+}
+
+/// [`profile_errors`] with the model's outlines already taken.
+pub fn profile_errors_with(
+    outlines: &super::quality::ModelOutlines,
+    front: &Outline,
+    side: Option<&Outline>,
+    height: f64,
+) -> Vec<ProfileErrorReport> {
     let mut out = Vec::new();
     let views = [(View::Front, Some(front)), (View::Side, side)];
     for (view, o) in views {
         let Some(o) = o else { continue };
-        let d = super::quality::model_outline(mesh, view)
-            .map(|(model, _)| profile_distance(&model, &o.profile))
+        let d = outlines
+            .get(view)
+            .map(|(model, _)| profile_distance(model, &o.profile))
             .map(|d| (d.max / height, d.rms / height))
             .unwrap_or((f64::NAN, f64::NAN));
         out.push(ProfileErrorReport {

@@ -50,42 +50,77 @@ impl VertexGrid {
     /// Index of the nearest point (rings of cells until the best is
     /// proven); `None` when the grid is empty.
     pub(crate) fn nearest(&self, q: [f64; 2]) -> Option<usize> {
+        self.search(q, 0.0, f64::INFINITY).map(|b| b.1)
+    }
+
+    /// The nearest distance `d` clamped for a caller that keeps only
+    /// `max(floor, min(d, cap))`: `d` itself between `floor` and `cap`, at
+    /// most `floor` when `d <= floor` (the search stops at the first point
+    /// that close), `cap` when `d >= cap` (it stops once every point
+    /// within `cap` is proven absent). Exact for that use, and cheaper:
+    /// a drawn sample far from a transition's points but near another
+    /// part (`cap`), or already beaten (`floor`), ends in a ring or two.
+    pub(crate) fn distance_within(&self, q: [f64; 2], floor: f64, cap: f64) -> f64 {
+        self.search(q, floor, cap)
+            .map_or(cap, |b| b.0.sqrt().min(cap))
+    }
+
+    /// The nearest point as (squared distance, index), searched ring by
+    /// ring of cells around `q`'s cell; stops once a point within `floor`
+    /// is found, or once every point within the best distance found (or
+    /// within `cap`) has been seen. `None`: no point within `cap`.
+    fn search(&self, q: [f64; 2], floor: f64, cap: f64) -> Option<(f64, usize)> {
         let c = Self::cell_of(self.o, self.h, self.n, q);
+        let (floor2, cap2) = (floor * floor, cap * cap);
         let mut best: Option<(f64, usize)> = None;
+        let visit = |x: usize, y: usize, best: &mut Option<(f64, usize)>| {
+            for &i in &self.cells[y * self.n[0] + x] {
+                let p = self.pts[i as usize];
+                let d2 = (p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2);
+                if best.is_none_or(|b| d2 < b.0) {
+                    *best = Some((d2, i as usize));
+                }
+            }
+        };
         for r in 0..self.n[0].max(self.n[1]) {
             let (x0, x1) = (c[0].saturating_sub(r), (c[0] + r).min(self.n[0] - 1));
             let (y0, y1) = (c[1].saturating_sub(r), (c[1] + r).min(self.n[1] - 1));
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    let ring = x == x0 || x == x1 || y == y0 || y == y1;
-                    if !ring {
-                        continue;
-                    }
-                    for &i in &self.cells[y * self.n[0] + x] {
-                        let p = self.pts[i as usize];
-                        let d = (p[0] - q[0]).hypot(p[1] - q[1]);
-                        if best.is_none_or(|b| d < b.0) {
-                            best = Some((d, i as usize));
-                        }
-                    }
+            // the cells of ring r only: its rows at y0 and y1 (when they
+            // are r away), its columns at x0 and x1 between them
+            for y in [c[1].checked_sub(r), Some(c[1] + r)]
+                .into_iter()
+                .flatten()
+                .filter(|&y| y < self.n[1])
+                .take(if r == 0 { 1 } else { 2 })
+            {
+                (x0..=x1).for_each(|x| visit(x, y, &mut best));
+            }
+            let (ya, yb) = (
+                c[1].saturating_sub(r.saturating_sub(1)),
+                y1.min(c[1] + r.saturating_sub(1)),
+            );
+            if r > 0 && ya <= yb {
+                for x in [c[0].checked_sub(r), Some(c[0] + r)]
+                    .into_iter()
+                    .flatten()
+                    .filter(|&x| x < self.n[0])
+                {
+                    (ya..=yb).for_each(|y| visit(x, y, &mut best));
                 }
             }
-            // every point within r * h of q has been seen
-            if let Some((d, _)) = best {
-                if d <= r as f64 * self.h {
-                    break;
-                }
+            if best.is_some_and(|b| b.0 <= floor2) {
+                break;
+            }
+            // every point within r h of q has been seen
+            let seen = (r as f64 * self.h).powi(2);
+            if best.is_some_and(|b| b.0 <= seen) || seen >= cap2 {
+                break;
+            }
+            if x0 == 0 && y0 == 0 && x1 == self.n[0] - 1 && y1 == self.n[1] - 1 {
+                break;
             }
         }
-        best.map(|b| b.1)
-    }
-
-    /// Distance to the nearest point; infinite when the grid is empty.
-    pub(crate) fn distance(&self, q: [f64; 2]) -> f64 {
-        self.nearest(q).map_or(f64::INFINITY, |i| {
-            let p = self.pts[i];
-            (p[0] - q[0]).hypot(p[1] - q[1])
-        })
+        best.filter(|b| b.0 < cap2 || cap2.is_infinite())
     }
 }
 
@@ -115,12 +150,26 @@ mod tests {
             ];
             let brute = pts
                 .iter()
-                .map(|p| (p[0] - q[0]).hypot(p[1] - q[1]))
+                .map(|p| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt())
                 .fold(f64::INFINITY, f64::min);
-            assert_eq!(g.distance(q), brute, "query {q:?}");
+            assert_eq!(
+                g.distance_within(q, 0.0, f64::INFINITY),
+                brute,
+                "query {q:?}"
+            );
+            // clamped as a running maximum of capped distances uses it
+            for (floor, cap) in [(0.0, 0.05), (0.3, 1.0), (brute, 2.0 * brute), (0.0, brute)] {
+                let got = g.distance_within(q, floor, cap);
+                let want = brute.min(cap);
+                assert_eq!(
+                    got.max(floor),
+                    want.max(floor),
+                    "query {q:?} in [{floor}, {cap}]"
+                );
+            }
         }
         assert_eq!(
-            VertexGrid::new(Vec::new()).distance([0.0, 0.0]),
+            VertexGrid::new(Vec::new()).distance_within([0.0, 0.0], 0.0, f64::INFINITY),
             f64::INFINITY
         );
     }

@@ -115,8 +115,8 @@ impl Drawn<'_> {
             .fold((f64::MAX, f64::MIN), |(a, b), q| (a.min(q[1]), b.max(q[1])));
         let grid = VertexGrid::new(proj);
         for (d, &o) in self.samples.iter().zip(others) {
-            if d[1] >= lo && d[1] <= hi {
-                worst = worst.max(grid.distance(*d).min(o));
+            if d[1] >= lo && d[1] <= hi && o > worst {
+                worst = worst.max(grid.distance_within(*d, worst, o));
             }
         }
         worst
@@ -213,7 +213,7 @@ fn others_in_range(
                 .iter()
                 .map(|q| {
                     if q[1] >= lo && q[1] <= hi {
-                        g.distance(*q).min(height)
+                        g.distance_within(*q, 0.0, height)
                     } else {
                         height
                     }
