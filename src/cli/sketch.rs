@@ -28,7 +28,7 @@ auto: an outline longer than tall) is drawn in the same files: the front file ho
 silhouette (model x-y, head toward +x or -x, legs apart: 2, or all 4 in a walking pose), the side file \
 the animal seen head-on (model z-y, left and right legs apart in z); parts body, head (neck and head), \
 tail, back (a domed back between tail and withers, when drawn), legs leg_fl/fr/bl/br (4: the outer \
-leg of each pair is the near one, at +z) or leg_f/leg_b (2); the head rises above the back or is level with it, \
+leg of each pair is the near one, at +z) or leg_f/leg_b (2, or the 4 when the head-on view shows each pair apart); the head rises above the back or is level with it, \
 a tail rises above the back or hangs from the rump and a trunk from the head (parts tail, trunk). \
 SECTIONS.json is {\"sections\": [{\"part\": \"torso\", \"y\": 1.2, \
 \"points\": [[x, z], ...]}]}: closed curves in the horizontal plane at height y, fitted by GECs at \

@@ -60,6 +60,12 @@ pub(super) fn side_depth(
             (iv[0], iv[1])
         }
         SidePick::Span => (s.first()?[0], s.last()?[1]),
+        SidePick::Within(a, b) => s
+            .iter()
+            .map(|iv| [iv[0].max(a), iv[1].min(b)])
+            .filter(|iv| iv[1] > iv[0])
+            .max_by(|p, q| (p[1] - p[0]).total_cmp(&(q[1] - q[0])))
+            .map(|iv| (iv[0], iv[1]))?,
         SidePick::CentreIn(a, b) => {
             let iv = s
                 .iter()

@@ -57,6 +57,12 @@ pub enum SidePick {
     /// The widest slice interval whose centre z lies in `(lo, hi)` (one leg
     /// of an animal's pair, seen apart in the view from its front).
     CentreIn(f64, f64),
+    /// The widest slice interval clipped to `[lo, hi]` (one leg of a pair
+    /// that a two-legged lateral view shows as one: where the head-on
+    /// view has the pair apart, its own leg; where they merge into the
+    /// body, the body's half on its side, so the depth runs on without a
+    /// jump).
+    Within(f64, f64),
 }
 
 /// The interval of a region at height y: of its [`candidates`], the

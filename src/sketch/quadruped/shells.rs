@@ -20,9 +20,10 @@
 //! folded (corpus animals: 166 to 180 degrees, 1.3 to 19 heights of
 //! creased edges, docs/drawing-corpus.md).
 
+use super::super::part_slices::part_from_region;
 use super::super::poly::slice;
 use super::super::removed::upright_chain_n;
-use super::super::segment::{interval, Pick, Region};
+use super::super::segment::{interval, Pick, Region, SidePick};
 use super::super::SketchError;
 use super::hanging::HANG_ROOT;
 use super::root_cut::{nearest_vertex, root_point, split_at_root, without_run};
@@ -329,9 +330,11 @@ pub fn shell_parts(
         match cut {
             Cut::Body => {}
             Cut::Region => {
-                let mut p = p.clone();
-                cap_start(&mut p);
-                out.push(p);
+                let pair = side.and_then(|sd| leg_pair(front, sd, r, lm.facing));
+                for mut p in pair.unwrap_or_else(|| vec![p.clone()]) {
+                    cap_start(&mut p);
+                    out.push(p);
+                }
             }
             Cut::Outline(o) => {
                 // a tail is hidden in the head-on view (circles)
@@ -342,6 +345,47 @@ pub fn shell_parts(
     }
     out.extend(hanging.iter().cloned());
     Some(out)
+}
+
+/// A leg of a two-legged lateral view (`leg_f`, `leg_b`: the near leg
+/// hides the far one) as the pair the head-on view shows apart: at the
+/// leg's middle height, intervals on both sides of the head-on outline's
+/// middle. Each takes its depth and z from its own side's interval, as
+/// one of four lateral legs does (`super::leg_regions`); the `+z` one is
+/// the near leg, the right one when the animal faces `+x`. None: one
+/// interval there (the legs drawn as one), or a chain that fails.
+fn leg_pair(
+    front: &[[f64; 2]],
+    side: &[[f64; 2]],
+    r: &Region,
+    facing: f64,
+) -> Option<Vec<PartSpec>> {
+    if !r.downward || r.side != SidePick::Span {
+        return None;
+    }
+    let zr = crate::polygon::span(side, 0);
+    let zc = 0.5 * (zr[0] + zr[1]);
+    let big = 1e3 * (zr[1] - zr[0]).abs().max(f64::MIN_POSITIVE);
+    let mid = |iv: &[f64; 2]| 0.5 * (iv[0] + iv[1]);
+    let sl = slice(side, 0.5 * (r.y0 + r.y1));
+    if !(sl.iter().any(|iv| mid(iv) < zc) && sl.iter().any(|iv| mid(iv) > zc)) {
+        return None;
+    }
+    let (near, far) = if facing > 0.0 { ("r", "l") } else { ("l", "r") };
+    [
+        (far, SidePick::Within(-big, zc)),
+        (near, SidePick::Within(zc, big)),
+    ]
+    .into_iter()
+    .map(|(suffix, pick)| {
+        let half = Region {
+            name: format!("{}{suffix}", r.name),
+            side: pick,
+            ..r.clone()
+        };
+        part_from_region(front, Some(side), &half).ok()
+    })
+    .collect()
 }
 
 #[cfg(test)]
