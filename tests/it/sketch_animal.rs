@@ -149,14 +149,7 @@ fn corpus_animals_with_a_flat_back_build_with_their_parts() {
             ["body", "head", "leg_bl", "leg_br", "leg_fl", "leg_fr", "tail"],
             "{name}"
         );
-        let body = b
-            .report
-            .quality
-            .parts
-            .iter()
-            .find(|p| p.part == "body")
-            .expect("body");
-        let side = body.view("side").expect("side");
+        let side = part_quality(&b, "body").view("side").expect("side");
         assert!(
             side.outside_rel <= BODY_SIDE_OUTSIDE,
             "{name}: the body leaves the head-on outline by {:.2} % of the height",
@@ -273,14 +266,7 @@ fn a_two_legged_lateral_view_builds_the_pairs_the_head_on_view_shows_apart() {
             let (l, r) = (mean_z(&format!("{pair}l")), mean_z(&format!("{pair}r")));
             assert!(l < r, "{name} {pair}: left at z = {l:.4}, right at {r:.4}");
             for leg in [format!("{pair}l"), format!("{pair}r")] {
-                let q = b
-                    .report
-                    .quality
-                    .parts
-                    .iter()
-                    .find(|p| p.part == leg)
-                    .expect("leg");
-                let side = q.view("side").expect("side");
+                let side = part_quality(&b, &leg).view("side").expect("side");
                 assert!(
                     side.outside_rel <= Bounds::ISSUE.outside,
                     "{name} {leg}: {:.2} % of the height outside the head-on outline",
@@ -296,14 +282,7 @@ fn a_two_legged_lateral_view_builds_the_pairs_the_head_on_view_shows_apart() {
 /// legs (-x, the head at +x) or the trunk in front of them.
 fn hanging_part_follows_its_outline(b: &pdesculpt::pipeline::Built, name: &str) {
     use pdesculpt::sketch::quality::Bounds;
-    let q = b
-        .report
-        .quality
-        .parts
-        .iter()
-        .find(|p| p.part == name)
-        .expect(name);
-    let front = q.view("front").expect("front");
+    let front = part_quality(b, name).view("front").expect("front");
     assert!(
         front.max_rel <= Bounds::ISSUE.profile_front && front.outside_rel <= Bounds::ISSUE.outside,
         "{name}: front miss {:.2} %, outside {:.2} % of the height",
@@ -377,4 +356,17 @@ fn corpus_animal(name: &str) -> pdesculpt::pipeline::Built {
 /// The names of a document's transitions, in order.
 fn transition_names(doc: &pdesculpt::character::doc::CharacterDoc) -> Vec<&str> {
     doc.transitions().iter().map(|t| t.name.as_str()).collect()
+}
+
+/// A part's quality row in a build's report.
+fn part_quality<'a>(
+    b: &'a pdesculpt::pipeline::Built,
+    name: &str,
+) -> &'a pdesculpt::sketch::quality::PartQuality {
+    b.report
+        .quality
+        .parts
+        .iter()
+        .find(|p| p.part == name)
+        .unwrap_or_else(|| panic!("{name} is measured"))
 }
