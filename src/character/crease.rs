@@ -11,7 +11,6 @@
 
 use crate::mesh::{dot, norm, scale, Mesh};
 use serde::Serialize;
-use std::collections::HashMap;
 
 /// The largest dihedral angles of one group.
 #[derive(Clone, Debug, Serialize)]
@@ -37,29 +36,74 @@ fn unit_normal(m: &Mesh, t: usize) -> [f64; 3] {
     scale(n, 1.0 / norm(n).max(f64::MIN_POSITIVE))
 }
 
-/// The triangles on each undirected edge `(low, high)` of `m`, in triangle
-/// order.
-pub fn edge_triangles(m: &Mesh) -> HashMap<(u32, u32), Vec<usize>> {
-    let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+/// The triangles on each undirected edge `(low, high)` of a mesh, in
+/// triangle order, the edges sorted (a sorted list grouped by edge, not a
+/// hash map: a third of the sketch build's time went to hashing here, and
+/// every caller wants the edges in order anyway).
+pub struct EdgeTriangles {
+    keys: Vec<(u32, u32)>,
+    start: Vec<u32>,
+    tris: Vec<u32>,
+}
+
+impl EdgeTriangles {
+    /// The edges in order, each with its triangles.
+    pub fn iter(&self) -> impl Iterator<Item = ((u32, u32), &[u32])> + '_ {
+        self.keys.iter().enumerate().map(|(i, &k)| {
+            (
+                k,
+                &self.tris[self.start[i] as usize..self.start[i + 1] as usize],
+            )
+        })
+    }
+
+    /// The triangles on edge `(low, high)` (none when it is not an edge).
+    pub fn get(&self, e: (u32, u32)) -> &[u32] {
+        match self.keys.binary_search(&e) {
+            Ok(i) => &self.tris[self.start[i] as usize..self.start[i + 1] as usize],
+            Err(_) => &[],
+        }
+    }
+}
+
+/// The triangles on each undirected edge of `m` ([`EdgeTriangles`]).
+pub fn edge_triangles(m: &Mesh) -> EdgeTriangles {
+    let mut all: Vec<(u64, u32)> = Vec::with_capacity(3 * m.triangles.len());
     for (t, tr) in m.triangles.iter().enumerate() {
         for e in 0..3 {
             let (a, b) = (tr[e], tr[(e + 1) % 3]);
-            edges.entry((a.min(b), a.max(b))).or_default().push(t);
+            all.push((((a.min(b) as u64) << 32) | a.max(b) as u64, t as u32));
         }
     }
-    edges
+    all.sort_unstable();
+    let mut out = EdgeTriangles {
+        keys: Vec::new(),
+        start: vec![0],
+        tris: Vec::with_capacity(all.len()),
+    };
+    for (i, &(k, t)) in all.iter().enumerate() {
+        if i > 0 && all[i - 1].0 != k {
+            out.start.push(out.tris.len() as u32);
+        }
+        if i == 0 || all[i - 1].0 != k {
+            out.keys.push(((k >> 32) as u32, k as u32));
+        }
+        out.tris.push(t);
+    }
+    out.start.push(out.tris.len() as u32);
+    if all.is_empty() {
+        out.start.truncate(1);
+    }
+    out
 }
 
 /// Crease reports of every group of `m` (edges shared by exactly two
 /// triangles; the angle of a consistently oriented pair is the angle
 /// between their normals).
 pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
+    // in edge order: the creased length is a sum and the maximum's place
+    // a first-found, so the report must not depend on a map's order
     let edges = edge_triangles(m);
-    // in edge order, not the map's (seeded per map): the creased length is
-    // a sum and the maximum's place a first-found, so the report would
-    // otherwise change in its last bits from run to run
-    let mut edges: Vec<((u32, u32), Vec<usize>)> = edges.into_iter().collect();
-    edges.sort_unstable_by_key(|e| e.0);
     let normals: Vec<[f64; 3]> = (0..m.triangles.len()).map(|t| unit_normal(m, t)).collect();
     let mut out: Vec<CreaseReport> = m
         .groups
@@ -72,8 +116,9 @@ pub fn creases(m: &Mesh) -> Vec<CreaseReport> {
             creased_length: 0.0,
         })
         .collect();
-    for &((a, b), ref ts) in &edges {
+    for ((a, b), ts) in edges.iter() {
         let [t0, t1] = ts[..] else { continue };
+        let (t0, t1) = (t0 as usize, t1 as usize);
         let ang = dot(normals[t0], normals[t1])
             .clamp(-1.0, 1.0)
             .acos()

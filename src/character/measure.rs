@@ -174,7 +174,8 @@ pub fn orient(m: &mut Mesh) {
             let tr = m.triangles[t];
             for e in 0..3 {
                 let (a, b) = (tr[e], tr[(e + 1) % 3]);
-                for &o in &edges[&(a.min(b), a.max(b))] {
+                for &o in edges.get((a.min(b), a.max(b))) {
+                    let o = o as usize;
                     if o == t || seen[o] {
                         continue;
                     }

@@ -215,10 +215,9 @@ fn dihedrals(m: &Mesh) -> (Vec<(f64, f64)>, (f64, f64)) {
     let normals: Vec<[f64; 3]> = (0..m.triangles.len()).map(|t| unit_normal(m, t)).collect();
     let mut per = vec![(0.0f64, 0.0f64); m.groups.len()];
     let mut whole = (0.0f64, 0.0f64);
-    let mut keys: Vec<&(u32, u32)> = edges.keys().collect();
-    keys.sort_unstable();
-    for e in keys {
-        let [t0, t1] = edges[e][..] else { continue };
+    for (e, ts) in edges.iter() {
+        let [t0, t1] = ts[..] else { continue };
+        let (t0, t1) = (t0 as usize, t1 as usize);
         let ang = dot(normals[t0], normals[t1])
             .clamp(-1.0, 1.0)
             .acos()
