@@ -85,27 +85,18 @@ impl VertexGrid {
         for r in 0..self.n[0].max(self.n[1]) {
             let (x0, x1) = (c[0].saturating_sub(r), (c[0] + r).min(self.n[0] - 1));
             let (y0, y1) = (c[1].saturating_sub(r), (c[1] + r).min(self.n[1] - 1));
-            // the cells of ring r only: its rows at y0 and y1 (when they
-            // are r away), its columns at x0 and x1 between them
-            for y in [c[1].checked_sub(r), Some(c[1] + r)]
-                .into_iter()
-                .flatten()
-                .filter(|&y| y < self.n[1])
-                .take(if r == 0 { 1 } else { 2 })
-            {
-                (x0..=x1).for_each(|x| visit(x, y, &mut best));
-            }
-            let (ya, yb) = (
-                c[1].saturating_sub(r.saturating_sub(1)),
-                y1.min(c[1] + r.saturating_sub(1)),
-            );
-            if r > 0 && ya <= yb {
-                for x in [c[0].checked_sub(r), Some(c[0] + r)]
-                    .into_iter()
-                    .flatten()
-                    .filter(|&x| x < self.n[0])
-                {
-                    (ya..=yb).for_each(|y| visit(x, y, &mut best));
+            // the cells of ring r only: whole rows r away from q's cell,
+            // the two columns r away on the rows between
+            for y in y0..=y1 {
+                if y.abs_diff(c[1]) == r {
+                    (x0..=x1).for_each(|x| visit(x, y, &mut best));
+                } else {
+                    // (x0 == x1 only when both are q's column, never r away)
+                    for x in [x0, x1] {
+                        if x.abs_diff(c[0]) == r {
+                            visit(x, y, &mut best);
+                        }
+                    }
                 }
             }
             if best.is_some_and(|b| b.0 <= floor2) {

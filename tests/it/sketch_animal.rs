@@ -259,7 +259,12 @@ fn a_two_legged_lateral_view_builds_the_pairs_the_head_on_view_shows_apart() {
         let b = corpus_animal(name);
         let mean_z = |n: &str| {
             let p = b.doc.parts().iter().find(|p| p.name == n).expect(n);
-            p.sections.iter().map(|q| q.centre[2]).sum::<f64>() / p.sections.len() as f64
+            // an ellipse's depth centre is offset along e2 = z
+            let z = |q: &pdesculpt::character::doc::SectionSpec| match q.shape {
+                SectionShape::Ellipse { offset, .. } => q.centre[2] + offset * q.e2[2],
+                _ => q.centre[2],
+            };
+            p.sections.iter().map(z).sum::<f64>() / p.sections.len() as f64
         };
         for pair in ["leg_f", "leg_b"] {
             // both drawings face +x: the right leg is the near one

@@ -309,6 +309,13 @@ fn region_area(front: &[[f64; 2]], pick: Pick, y0: f64, y1: f64) -> f64 {
         .sum()
 }
 
+/// The middle of the head-on view's extent in z: a leg's pair splits
+/// there (its near leg beyond it, at +z).
+fn head_on_middle(side: &[[f64; 2]]) -> f64 {
+    let zr = crate::polygon::span(side, 0);
+    0.5 * (zr[0] + zr[1])
+}
+
 /// An animal's legs below its body, by x, named by `lm.facing`.
 fn leg_regions(
     front: &[[f64; 2]],
@@ -322,10 +329,7 @@ fn leg_regions(
     xs.extend(lm.leg_gaps.iter().map(|p| p[0]));
     xs.push(big);
     let n = xs.len() - 1;
-    let zc = side.map_or(0.0, |s| {
-        let zr = crate::polygon::span(s, 0);
-        0.5 * (zr[0] + zr[1])
-    });
+    let zc = side.map_or(0.0, head_on_middle);
     for (i, name) in leg_names(n, lm.facing).into_iter().enumerate() {
         let pick = Pick::CentreIn(xs[i], xs[i + 1]);
         let y1 = [i.checked_sub(1), Some(i)]

@@ -363,9 +363,7 @@ fn leg_pair(
     if !r.downward || r.side != SidePick::Span {
         return None;
     }
-    let zr = crate::polygon::span(side, 0);
-    let zc = 0.5 * (zr[0] + zr[1]);
-    let big = 1e3 * (zr[1] - zr[0]).abs().max(f64::MIN_POSITIVE);
+    let zc = super::head_on_middle(side);
     let mid = |iv: &[f64; 2]| 0.5 * (iv[0] + iv[1]);
     let sl = slice(side, 0.5 * (r.y0 + r.y1));
     if !(sl.iter().any(|iv| mid(iv) < zc) && sl.iter().any(|iv| mid(iv) > zc)) {
@@ -373,8 +371,8 @@ fn leg_pair(
     }
     let (near, far) = if facing > 0.0 { ("r", "l") } else { ("l", "r") };
     [
-        (far, SidePick::Within(-big, zc)),
-        (near, SidePick::Within(zc, big)),
+        (far, SidePick::Within(f64::NEG_INFINITY, zc)),
+        (near, SidePick::Within(zc, f64::INFINITY)),
     ]
     .into_iter()
     .map(|(suffix, pick)| {
@@ -390,10 +388,12 @@ fn leg_pair(
 
 #[cfg(test)]
 mod tests {
-    #[test]
-    fn shells_are_closed_chains_without_transitions() {
-        // the U below a wider body: nothing above the back
-        let front = vec![
+    use super::*;
+
+    /// A lateral outline: the U of two legs below a wider body, nothing
+    /// above the back.
+    fn u_front() -> Vec<[f64; 2]> {
+        vec![
             [0.0, 0.0],
             [1.0, 0.0],
             [1.0, 1.0],
@@ -402,7 +402,58 @@ mod tests {
             [4.0, 0.0],
             [4.0, 2.0],
             [0.0, 2.0],
+        ]
+    }
+
+    /// A two-legged lateral view's back leg (the U of
+    /// [`shells_are_closed_chains_without_transitions`]) becomes a pair
+    /// where the head-on view shows the legs apart at the leg's middle
+    /// height, the near one (+z) the right when facing +x; one leg where
+    /// the head-on view has them as one.
+    #[test]
+    fn a_leg_is_a_pair_only_where_the_head_on_view_parts_it() {
+        let front = u_front();
+        let r = Region {
+            name: "leg_b".into(),
+            y0: 0.0,
+            y1: 0.8,
+            pick: Pick::CentreIn(f64::NEG_INFINITY, 2.0),
+            downward: true,
+            tip: true,
+            shoulder: None,
+            side: SidePick::Span,
+            horizontal: true,
+        };
+        let apart = vec![
+            [0.0, 0.0],
+            [0.5, 0.0],
+            [0.5, 1.0],
+            [1.5, 1.0],
+            [1.5, 0.0],
+            [2.0, 0.0],
+            [2.0, 2.0],
+            [0.0, 2.0],
         ];
+        let pair = leg_pair(&front, &apart, &r, 1.0).expect("a pair");
+        let names: Vec<&str> = pair.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["leg_bl", "leg_br"]);
+        // a section's depth centre: an ellipse's offset is along e2 = z
+        let z = |s: &crate::character::doc::SectionSpec| match s.shape {
+            SectionShape::Ellipse { offset, .. } => s.centre[2] + offset * s.e2[2],
+            _ => s.centre[2],
+        };
+        let mean_z = |p: &PartSpec| p.sections.iter().map(z).sum::<f64>() / p.sections.len() as f64;
+        assert!(mean_z(&pair[0]) < 1.0 && mean_z(&pair[1]) > 1.0);
+        let facing_back = leg_pair(&front, &apart, &r, -1.0).expect("a pair");
+        assert_eq!(facing_back[1].name, "leg_bl", "+z is the left facing -x");
+        let together = vec![[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+        assert!(leg_pair(&front, &together, &r, 1.0).is_none());
+    }
+
+    #[test]
+    fn shells_are_closed_chains_without_transitions() {
+        // the U below a wider body: nothing above the back
+        let front = u_front();
         let d = super::super::derive(
             &front,
             None,
