@@ -22,15 +22,17 @@
 //! docs/drawing-corpus.md, thirty-fourth measurement). The build tries
 //! these only when the stacked model misses issue 28's bounds and keeps
 //! whichever misses them least (`pipeline::alternatives::keep_least_excess`).
-//! Three cuts are tried ([`ArmCut`]): at the shoulder point, at the
-//! shoulder's corner, and at the corner with the arm traced on up its
-//! root to it.
+//! Four cuts are tried ([`ArmCut`]): at the shoulder point, at the
+//! shoulder's corner, at the corner with the arm traced on up its root to
+//! it, and upright from the armpit (the body's side continued under the
+//! arm's root, [`upright_top`]).
 //!
 //! A humanoid whose arms join the body below the crotch or just above it
 //! has no torso between them to build stacked: it is built as shells
 //! only ([`short_torso_models`]; before, refused).
 
-use super::limb::TracedArm;
+use super::arm_cut::{cut_tops, with_vertex};
+pub use super::arm_cut::{ArmCut, ArmTrace};
 use super::quadruped::root_cut::{nearest_vertex, split_at_root};
 use super::quadruped::shells::cap_start_by;
 use super::region::{Pick, Region};
@@ -45,13 +47,6 @@ pub const BODY_SECTIONS: usize = 2 * super::section_place::SECTIONS_PER_PART - 1
 /// A model's parts and transitions.
 pub type Model = (Vec<PartSpec>, Vec<TransitionSpec>);
 
-/// A traced arm with its part's name and depth (the z its sections sit at).
-pub struct ArmTrace {
-    pub name: String,
-    pub trace: TracedArm,
-    pub z: f64,
-}
-
 /// `front` with each arm's run from its armpit to its shoulder point (the
 /// one holding its hand) replaced by the chord between them; with
 /// `to_corner`, to the shoulder's corner instead where the trace found one
@@ -60,15 +55,19 @@ pub struct ArmTrace {
 pub fn armless_outline(
     front: &[[f64; 2]],
     arms: &[ArmTrace],
-    to_corner: bool,
+    cut: ArmCut,
 ) -> Option<Vec<[f64; 2]>> {
+    let tops = cut_tops(front, arms, cut)?;
     let mut poly = front.to_vec();
-    for a in arms {
-        let n = poly.len();
+    for (a, &top) in arms.iter().zip(&tops) {
         let t = &a.trace;
+        if cut == ArmCut::Upright {
+            poly = with_vertex(&poly, top);
+        }
+        let n = poly.len();
         let (p, s, h) = (
             nearest_vertex(&poly, t.armpit),
-            nearest_vertex(&poly, t.corner.filter(|_| to_corner).unwrap_or(t.shoulder)),
+            nearest_vertex(&poly, top),
             nearest_vertex(&poly, t.tip),
         );
         if p == s || p == h || s == h {
@@ -86,34 +85,12 @@ pub fn armless_outline(
     Some(poly)
 }
 
-/// Where an arm is cut off the body for its shell.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ArmCut {
-    /// At the chord from the armpit to the shoulder point (the shortest
-    /// cut, [`super::limb::trace_arm`]); the arm's dome reaches back past
-    /// the chord's middle.
-    Shoulder,
-    /// At the chord from the armpit to the shoulder's corner
-    /// ([`TracedArm::corner`]), the arm traced from the shortest cut as
-    /// for `Shoulder`, its dome reaching back past this chord's middle.
-    Corner,
-    /// At the same chord, the arm traced on up its root to the corner
-    /// ([`TracedArm::from_corner`]) and closed there: an arm joining the
-    /// body below the crotch lies along the body from its armpit up to
-    /// its shoulder, a run the shortest cut leaves to the body.
-    Rooted,
-}
-
-impl ArmCut {
-    /// The cuts in the order the build tries them.
-    pub const ALL: [ArmCut; 3] = [ArmCut::Shoulder, ArmCut::Corner, ArmCut::Rooted];
-}
-
 /// The shells a humanoid's derivation offers the build: at the
 /// intermediate level (the one issue 28's bounds are for; the final
 /// level's key sections sculpt the stacked parts), the arms cut off at
 /// their shoulder points, then at their shoulders' corners when the trace
-/// found one ([`shell_alternative`]); the build keeps whichever model
+/// found one, then upright from their armpits ([`shell_alternative`],
+/// [`ArmCut::ALL`]); the build keeps whichever model
 /// misses the bounds by least. `stacked`: the derivation's parts and
 /// transitions.
 pub fn alternatives(
@@ -128,7 +105,7 @@ pub fn alternatives(
     let has_corner = arms.iter().any(|a| a.trace.corner.is_some());
     ArmCut::ALL
         .into_iter()
-        .filter(|&c| level == Level::Intermediate && (c == ArmCut::Shoulder || has_corner))
+        .filter(|&c| level == Level::Intermediate && (c.needs_no_corner() || has_corner))
         .filter_map(|cut| shell_alternative(front, side, lm, torso, arms, stacked, cut))
         .collect()
 }
@@ -147,7 +124,8 @@ pub fn shell_alternative(
     (parts, transitions): (&[PartSpec], &[TransitionSpec]),
     cut: ArmCut,
 ) -> Option<(Vec<PartSpec>, Vec<TransitionSpec>)> {
-    let outline = armless_outline(front, arms, cut != ArmCut::Shoulder)?;
+    let outline = armless_outline(front, arms, cut)?;
+    let tops = cut_tops(front, arms, cut)?;
     let region = Region {
         name: torso.name.clone(),
         y0: torso.y0,
@@ -162,7 +140,7 @@ pub fn shell_alternative(
     let body =
         super::part_slices::part_with_sections(&outline, side, &region, BODY_SECTIONS).ok()?;
     let mut out = vec![body];
-    for a in arms {
+    for (a, &top) in arms.iter().zip(&tops) {
         // the arm from its cut on, its dome reaching back past the body's
         // chord's middle by what it would reach past its own start
         let (t, rooted) = match &a.trace.from_corner {
@@ -171,8 +149,8 @@ pub fn shell_alternative(
         };
         let mut p = super::limb::part_from_trace(front, &a.name, t, 0.0, a.z).ok()?;
         let top = match cut {
-            ArmCut::Corner => t.corner.unwrap_or(t.shoulder),
-            _ => t.shoulder,
+            ArmCut::Rooted => t.shoulder,
+            _ => top,
         };
         let mid = [
             0.5 * (t.armpit[0] + top[0]),
@@ -206,8 +184,8 @@ pub fn shell_alternative(
 /// The models of a humanoid with no torso to build stacked: its arms
 /// join the body below the crotch or too near above it
 /// ([`Landmarks::torso_is_short`], a big-headed figure's). Only the shells
-/// ([`shell_alternative`]) are built, cut at the shoulder points then at
-/// the corners, the first as the derivation's parts; the legs are sliced
+/// ([`shell_alternative`]) are built, with each cut of [`ArmCut::ALL`], the
+/// first as the derivation's parts; the legs are sliced
 /// from the outline without the arms (an arm's root beside the crotch is
 /// not the leg's); the hips transition joins them to the body chain, whose
 /// start is the stacked torso's (`regs`: the regions, torso first). At the
@@ -225,9 +203,9 @@ pub fn short_torso_models(
     let mut out = Vec::new();
     for cut in ArmCut::ALL
         .into_iter()
-        .filter(|&c| c == ArmCut::Shoulder || has_corner)
+        .filter(|&c| c.needs_no_corner() || has_corner)
     {
-        let Some(armless) = armless_outline(front, arms, cut != ArmCut::Shoulder) else {
+        let Some(armless) = armless_outline(front, arms, cut) else {
             continue;
         };
         let legs: Result<Vec<PartSpec>, _> = regs
@@ -272,6 +250,7 @@ pub fn short_torso_models(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sketch::limb::TracedArm;
 
     /// A T: a bar (the arm) from x = 1 to 4 at y 2..3 on a stem x 0..1,
     /// y 0..3 (counter-clockwise); the arm's armpit (1, 2), shoulder
@@ -303,10 +282,25 @@ mod tests {
             trace,
             z: 0.0,
         };
-        let body = armless_outline(&front, &[arm], true).unwrap();
+        let body = armless_outline(&front, &[arm], ArmCut::Corner).unwrap();
         let xmax = body.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
         assert_eq!(xmax, 1.0, "{body:?}");
         assert!(crate::polygon::signed_area(&body) > 0.0, "{body:?}");
         assert_eq!(body.len(), 5, "{body:?}");
+    }
+
+    /// The upright cut leaves the body no wedge of a T-pose arm's root
+    /// beyond the body's side; the shortest cut keeps it out to the
+    /// shoulder point.
+    #[test]
+    fn an_upright_cut_leaves_the_body_no_wedge_of_the_arm_s_root() {
+        use super::super::arm_cut::fixtures::t_pose;
+        let xmax = |b: &[[f64; 2]]| b.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
+        let (front, t) = t_pose();
+        let body = armless_outline(&front, &[t], ArmCut::Upright).unwrap();
+        assert_eq!(xmax(&body), 1.1, "{body:?}");
+        let (front, t) = t_pose();
+        let body = armless_outline(&front, &[t], ArmCut::Shoulder).unwrap();
+        assert_eq!(xmax(&body), 1.5, "{body:?}");
     }
 }

@@ -47,6 +47,7 @@
 
 pub mod align;
 pub mod apex;
+pub mod arm_cut;
 pub mod arm_root;
 pub mod check;
 pub mod check_ode6;
