@@ -77,3 +77,85 @@ pub(super) fn docs(
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::character::doc::{Inputs, Level, ProfileInput};
+    use crate::sketch::quality::{Bounds, PartQuality, ViewQuality};
+
+    /// A model's measures: its largest front miss (a fraction of the
+    /// height) and its largest turn (degrees), within every other bound.
+    fn model(front: f64, turn: f64) -> Quality {
+        let view = |view, max_rel| ViewQuality {
+            view,
+            max_rel,
+            rms_rel: 0.0,
+            outside_rel: 0.0,
+            pieces: 1,
+        };
+        Quality {
+            whole: PartQuality {
+                part: "whole".into(),
+                views: vec![view("front", front), view("side", 0.0)],
+                dihedral_deg: turn,
+                creased_rel: 0.0,
+            },
+            parts: Vec::new(),
+        }
+    }
+
+    /// The models `others` build to, in order, each from a document alike.
+    fn keep(first: Quality, others: Vec<Quality>) -> (Quality, Option<DerivationReport>) {
+        let doc = CharacterDoc::from_inputs(
+            Inputs {
+                front: ProfileInput::Points(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]),
+                side: None,
+                sections: Vec::new(),
+                tolerance: None,
+                height: None,
+                body_plan: Default::default(),
+            },
+            Level::Intermediate,
+        );
+        let docs = vec![doc; others.len()];
+        let mut built = others.into_iter();
+        keep_least_excess(
+            (first, false),
+            docs,
+            |q: &Quality| q,
+            |_| built.next().ok_or(()),
+        )
+    }
+
+    /// Of models that all miss the bounds, the least excess is kept, but a
+    /// folded one never over one within the turn bound, however much
+    /// smaller its profile miss; a model that meets every bound ends the
+    /// search.
+    #[test]
+    fn a_folded_model_is_not_kept_over_a_sound_one() {
+        let b = Bounds::ISSUE;
+        let (miss, fold) = (2.0 * b.profile_front, b.dihedral_deg + 60.0);
+        let sound = 0.5 * b.dihedral_deg;
+        // the folded alternative misses the front least
+        let (kept, report) = keep(
+            model(miss, sound),
+            vec![
+                model(0.5 * b.profile_front, fold),
+                model(1.5 * b.profile_front, sound),
+            ],
+        );
+        assert_eq!(report.map(|r| r.kept), Some(2));
+        assert_eq!(kept.whole.dihedral_deg, sound);
+        // among folded models, the least excess
+        let (_, report) = keep(model(miss, fold), vec![model(b.profile_front, fold)]);
+        assert_eq!(report.map(|r| r.kept), Some(1));
+        // a model within every bound is kept without building the rest
+        let (_, report) = keep(
+            model(miss, sound),
+            vec![model(b.profile_front, sound), model(0.0, sound)],
+        );
+        let r = report.expect("others were tried");
+        assert_eq!((r.kept, r.excess.len()), (1, 2));
+    }
+}
