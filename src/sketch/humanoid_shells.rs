@@ -250,7 +250,6 @@ pub fn short_torso_models(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sketch::limb::TracedArm;
 
     /// A T: a bar (the arm) from x = 1 to 4 at y 2..3 on a stem x 0..1,
     /// y 0..3 (counter-clockwise); the arm's armpit (1, 2), shoulder
@@ -266,22 +265,7 @@ mod tests {
             [1.0, 3.0],
             [0.0, 3.0],
         ];
-        let trace = TracedArm {
-            armpit: [1.0, 2.0],
-            shoulder: [1.0, 3.0],
-            tip: [4.0, 2.5],
-            corner: None,
-            centre: Vec::new(),
-            half_width: Vec::new(),
-            chord: Vec::new(),
-            thumb: None,
-            from_corner: None,
-        };
-        let arm = ArmTrace {
-            name: "arm_r".into(),
-            trace,
-            z: 0.0,
-        };
+        let arm = super::super::arm_cut::fixtures::arm([1.0, 2.0], [1.0, 3.0], [4.0, 2.5]);
         let body = armless_outline(&front, &[arm], ArmCut::Corner).unwrap();
         let xmax = body.iter().map(|p| p[0]).fold(f64::MIN, f64::max);
         assert_eq!(xmax, 1.0, "{body:?}");
