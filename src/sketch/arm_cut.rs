@@ -36,10 +36,11 @@ pub enum ArmCut {
     /// body below the crotch lies along the body from its armpit up to
     /// its shoulder, a run the shortest cut leaves to the body.
     Rooted,
-    /// At the line straight up from the armpit to where it meets the
-    /// outline again (the body's side continued up under the arm's root),
-    /// the arm traced as for `Shoulder`, its dome reaching back past this
-    /// cut's middle.
+    /// From the armpit up the body's side under the arm's root: to the
+    /// corner where the arm's top meets the body's side, or where none is
+    /// drawn, to where the line straight up from the armpit meets the
+    /// shoulder ([`upright_top`]); the arm traced as for `Shoulder`, its
+    /// dome reaching back past this cut's middle.
     Upright,
 }
 
@@ -90,16 +91,8 @@ pub(super) fn cut_tops(
 /// body's side continued up under the arm's root.
 pub(super) fn upright_top(front: &[[f64; 2]], t: &TracedArm) -> Option<[f64; 2]> {
     let n = front.len();
-    let (p, s, h) = (
-        nearest_vertex(front, t.armpit),
-        nearest_vertex(front, t.shoulder),
-        nearest_vertex(front, t.tip),
-    );
-    if p == s || p == h || s == h {
-        return None;
-    }
-    let ahead = |k: usize| (k + n - p) % n;
-    let step = if ahead(h) < ahead(s) { 1 } else { n - 1 };
+    let (_, s, forward) = arm_run(front, t.armpit, t.shoulder, t.tip)?;
+    let step = if forward { 1 } else { n - 1 };
     let top = (0..n).max_by(|&i, &j| front[i][1].total_cmp(&front[j][1]))?;
     let x = t.armpit[0];
     let mut walk = vec![front[s]];
@@ -133,16 +126,33 @@ pub(super) fn upright_top(front: &[[f64; 2]], t: &TracedArm) -> Option<[f64; 2]>
     Some(if inward(&corner) > 0.0 { corner } else { last })
 }
 
+/// The vertices of `front` nearest an arm's armpit and the body's end
+/// `top` of its cut, and whether its hand (`tip`) lies on the run walked
+/// forward from the one to the other (else on the other run). None when
+/// the three are not three distinct vertices.
+pub(super) fn arm_run(
+    front: &[[f64; 2]],
+    armpit: [f64; 2],
+    top: [f64; 2],
+    tip: [f64; 2],
+) -> Option<(usize, usize, bool)> {
+    let n = front.len();
+    let (p, s, h) = (
+        nearest_vertex(front, armpit),
+        nearest_vertex(front, top),
+        nearest_vertex(front, tip),
+    );
+    if p == s || p == h || s == h {
+        return None;
+    }
+    let ahead = |k: usize| (k + n - p) % n;
+    Some((p, s, ahead(h) < ahead(s)))
+}
+
 /// `front` with `q` inserted on its nearest edge.
 pub(super) fn with_vertex(front: &[[f64; 2]], q: [f64; 2]) -> Vec<[f64; 2]> {
     let n = front.len();
-    let seg = |i: usize| {
-        let (a, b) = (front[i], front[(i + 1) % n]);
-        let d = [b[0] - a[0], b[1] - a[1]];
-        let l2 = (d[0] * d[0] + d[1] * d[1]).max(f64::MIN_POSITIVE);
-        let t = (((q[0] - a[0]) * d[0] + (q[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0);
-        dist([a[0] + t * d[0], a[1] + t * d[1]], q)
-    };
+    let seg = |i: usize| crate::polygon::seg_dist(q, front[i], front[(i + 1) % n]);
     let Some(i) = (0..n).min_by(|&i, &j| seg(i).total_cmp(&seg(j))) else {
         return front.to_vec();
     };

@@ -31,9 +31,9 @@
 //! has no torso between them to build stacked: it is built as shells
 //! only ([`short_torso_models`]; before, refused).
 
-use super::arm_cut::{cut_tops, with_vertex};
+use super::arm_cut::{arm_run, cut_tops, with_vertex};
 pub use super::arm_cut::{ArmCut, ArmTrace};
-use super::quadruped::root_cut::{nearest_vertex, split_at_root};
+use super::quadruped::root_cut::split_at_root;
 use super::quadruped::shells::cap_start_by;
 use super::region::{Pick, Region};
 use super::segment::Landmarks;
@@ -48,35 +48,32 @@ pub const BODY_SECTIONS: usize = 2 * super::section_place::SECTIONS_PER_PART - 1
 pub type Model = (Vec<PartSpec>, Vec<TransitionSpec>);
 
 /// `front` with each arm's run from its armpit to its shoulder point (the
-/// one holding its hand) replaced by the chord between them; with
-/// `to_corner`, to the shoulder's corner instead where the trace found one
-/// ([`TracedArm::corner`]). None when an arm's three points are not three
-/// distinct vertices.
+/// one holding its hand) replaced by the chord between them; with the
+/// other cuts, to the cut's other end instead ([`cut_tops`]). None when an
+/// arm's three points are not three distinct vertices.
 pub fn armless_outline(
     front: &[[f64; 2]],
     arms: &[ArmTrace],
     cut: ArmCut,
 ) -> Option<Vec<[f64; 2]>> {
-    let tops = cut_tops(front, arms, cut)?;
+    armless_at(front, arms, &cut_tops(front, arms, cut)?, cut)
+}
+
+/// [`armless_outline`] with the cuts' body ends `tops` (one per arm)
+/// already found.
+fn armless_at(
+    front: &[[f64; 2]],
+    arms: &[ArmTrace],
+    tops: &[[f64; 2]],
+    cut: ArmCut,
+) -> Option<Vec<[f64; 2]>> {
     let mut poly = front.to_vec();
-    for (a, &top) in arms.iter().zip(&tops) {
+    for (a, &top) in arms.iter().zip(tops) {
         let t = &a.trace;
         if cut == ArmCut::Upright {
             poly = with_vertex(&poly, top);
         }
-        let n = poly.len();
-        let (p, s, h) = (
-            nearest_vertex(&poly, t.armpit),
-            nearest_vertex(&poly, top),
-            nearest_vertex(&poly, t.tip),
-        );
-        if p == s || p == h || s == h {
-            return None;
-        }
-        // the hand lies on the run walked forward from the armpit to the
-        // shoulder, or on the other
-        let ahead = |k: usize| (k + n - p) % n;
-        let forward = ahead(h) < ahead(s);
+        let (p, s, forward) = arm_run(&poly, t.armpit, top, t.tip)?;
         poly = split_at_root(&poly, p, s, forward).0;
         if poly.len() < 3 {
             return None;
@@ -124,8 +121,8 @@ pub fn shell_alternative(
     (parts, transitions): (&[PartSpec], &[TransitionSpec]),
     cut: ArmCut,
 ) -> Option<(Vec<PartSpec>, Vec<TransitionSpec>)> {
-    let outline = armless_outline(front, arms, cut)?;
     let tops = cut_tops(front, arms, cut)?;
+    let outline = armless_at(front, arms, &tops, cut)?;
     let region = Region {
         name: torso.name.clone(),
         y0: torso.y0,
