@@ -81,6 +81,7 @@
 //! say where "up" is).
 
 pub mod hanging;
+pub mod hull_section;
 pub mod landmarks;
 pub mod root_cut;
 pub mod shells;
@@ -468,12 +469,11 @@ pub fn derive(
         transitions.pop();
     }
     // key sections sculpt the stacked body: the final level keeps it
-    let alternatives = (level != Level::Final)
-        .then(|| shells::shell_parts(front, side, &lm, &regs, &parts, &hanging))
-        .flatten()
-        .map(|p| (p, Vec::new()))
-        .into_iter()
-        .collect();
+    let alternatives = if level == Level::Final {
+        Vec::new()
+    } else {
+        shells::alternatives(front, side, &lm, &regs, &parts, &hanging)
+    };
     parts.extend(hanging);
     Ok(Derived {
         plan: BodyPlan::Quadruped,

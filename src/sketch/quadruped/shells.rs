@@ -10,7 +10,8 @@
 //! outline is built as a removed part is, along its principal axis
 //! ([`super::super::removed::upright_chain`]): sections across the body,
 //! closed at the rump and the chest. The head-on view gives their depth
-//! ([`body_depth`]). Each other part keeps its region's chain and is
+//! ([`body_depth`]), or each section is the two views' hull
+//! ([`super::hull_section`], a second model the build may keep). Each other part keeps its region's chain and is
 //! closed at its join by a cap reaching half its width beyond it
 //! ([`cap_start`], [`super::hanging::HANG_ROOT`]): into the body, which
 //! covers the cut.
@@ -26,6 +27,9 @@ use super::super::removed::upright_chain_n;
 use super::super::segment::{interval, Pick, Region, SidePick};
 use super::super::SketchError;
 use super::hanging::HANG_ROOT;
+pub use super::hull_section::body_depth;
+use super::hull_section::inscribed_depth;
+pub use super::hull_section::BodyDepth;
 use super::root_cut::{nearest_vertex, root_point, split_at_root, without_run};
 use super::QuadLandmarks;
 use crate::character::doc::{PartSpec, SectionShape};
@@ -108,12 +112,14 @@ pub fn cut_parts(
 /// A chain from a closed outline ([`upright_chain`]); with `side`, its
 /// sections are ellipses whose depth is the head-on outline's half width
 /// over the heights in `band` ([`body_depth`]) scaled by the section's
-/// height over the tallest's, centred at that width's middle.
+/// height over the tallest's, centred at that width's middle; the body's,
+/// with [`BodyDepth::Hull`], the two views' hull where it has one.
 pub fn outline_part(
     name: &str,
     outline: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     band: [f64; 2],
+    depth_by: BodyDepth,
 ) -> Result<PartSpec, SketchError> {
     let parallel = name == "body";
     let mut spec = upright_chain_n(name, outline, None, sections_for(outline), parallel)?;
@@ -134,12 +140,21 @@ pub fn outline_part(
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
     let sd = side.unwrap_or(&[]);
+    let head_on = (parallel && depth_by == BodyDepth::Hull)
+        .then(|| super::hull_section::HeadOn::new(sd, z, 0.5 * (band[0] + band[1])))
+        .flatten();
     for s in &mut spec.sections {
         let r = radius(&s.shape);
         s.centre[2] = z;
         // no deeper than fits the head-on view at every height it spans
         // (within the band): the largest inscribed depth
         let seen = inscribed_depth(sd, s.centre[1], r, band);
+        if let Some(h) = &head_on {
+            if let Some(g) = super::hull_section::hull_section(s, r, h) {
+                s.shape = g;
+                continue;
+            }
+        }
         if r > 0.0 {
             s.shape = SectionShape::Ellipse {
                 a: r,
@@ -182,27 +197,6 @@ fn straight_tips(spec: &mut PartSpec) {
     }
 }
 
-/// Heights sampled across a section to fit its depth in the head-on view.
-const DEPTH_SAMPLES: usize = 16;
-
-/// The largest half depth of an ellipse section centred at height `c`
-/// with vertical half axis `r` that stays inside the head-on outline
-/// `side` at every sampled height within `band` (infinite when none is).
-fn inscribed_depth(side: &[[f64; 2]], c: f64, r: f64, band: [f64; 2]) -> f64 {
-    (0..DEPTH_SAMPLES)
-        .filter_map(|k| {
-            let t = -1.0 + 2.0 * (k as f64 + 0.5) / DEPTH_SAMPLES as f64;
-            let y = c + t * r;
-            if !(band[0]..=band[1]).contains(&y) {
-                return None;
-            }
-            let sl = slice(side, y);
-            let w = 0.5 * (sl.last()?[1] - sl.first()?[0]);
-            Some(w / (1.0 - t * t).sqrt())
-        })
-        .fold(f64::INFINITY, f64::min)
-}
-
 /// Sections along a part cut from its outline: `3 P + 1`, P patches each
 /// at most half the part's width long (its extent across its principal
 /// axis, [`super::super::align::axes`]), at least the limb's 4: a long
@@ -222,21 +216,6 @@ fn sections_for(outline: &[[f64; 2]]) -> usize {
         4
     };
     3 * p.clamp(4, 40) + 1
-}
-
-/// Half the head-on outline's widest span (first interval to last) over
-/// heights in `band` (the body's, between the legs' joins and the parts'
-/// above), and its middle: the body's half depth and z.
-pub fn body_depth(side: &[[f64; 2]], band: [f64; 2]) -> Option<(f64, f64)> {
-    const SLICES: usize = 64;
-    (0..=SLICES)
-        .filter_map(|k| {
-            let y = band[0] + (band[1] - band[0]) * k as f64 / SLICES as f64;
-            let s = slice(side, y);
-            Some((s.first()?[0], s.last()?[1]))
-        })
-        .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)))
-        .map(|(z0, z1)| (0.5 * (z1 - z0), 0.5 * (z0 + z1)))
 }
 
 /// Sections a cap adds: a chain holds 7 + 3k sections.
@@ -302,6 +281,7 @@ pub fn shell_parts(
     regs: &[Region],
     parts: &[PartSpec],
     hanging: &[PartSpec],
+    depth_by: BodyDepth,
 ) -> Option<Vec<PartSpec>> {
     // the body keeps the belly down to half a join band above the legs'
     // gap tops (their top slices are LEG_BAND bands below)
@@ -325,7 +305,8 @@ pub fn shell_parts(
         .filter(|r| !r.downward)
         .map(|r| r.y0)
         .fold(lm.y_max, f64::min);
-    let mut out = vec![outline_part("body", &outline, side, [legs_top, above_low]).ok()?];
+    let band = [legs_top, above_low];
+    let mut out = vec![outline_part("body", &outline, side, band, depth_by).ok()?];
     for ((r, p), cut) in others.iter().zip(&parts[1..]).zip(cuts) {
         match cut {
             Cut::Body => {}
@@ -339,12 +320,35 @@ pub fn shell_parts(
             Cut::Outline(o) => {
                 // a tail is hidden in the head-on view (circles)
                 let seen = if r.name == "tail" { None } else { side };
-                out.push(outline_part(&r.name, &o, seen, [r.y0, r.y1]).ok()?);
+                let band = [r.y0, r.y1];
+                out.push(outline_part(&r.name, &o, seen, band, BodyDepth::Ellipse).ok()?);
             }
         }
     }
     out.extend(hanging.iter().cloned());
     Some(out)
+}
+
+/// The animal as shells ([`shell_parts`]), its body's sections ellipses
+/// and, with a head-on view, then the two views' hull (the build keeps
+/// the one that misses the drawing least).
+pub fn alternatives(
+    front: &[[f64; 2]],
+    side: Option<&[[f64; 2]]>,
+    lm: &QuadLandmarks,
+    regs: &[Region],
+    parts: &[PartSpec],
+    hanging: &[PartSpec],
+) -> Vec<(Vec<PartSpec>, Vec<crate::character::doc::TransitionSpec>)> {
+    let depths: &[BodyDepth] = match side {
+        Some(_) => &[BodyDepth::Ellipse, BodyDepth::Hull],
+        None => &[BodyDepth::Ellipse],
+    };
+    depths
+        .iter()
+        .filter_map(|&d| shell_parts(front, side, lm, regs, parts, hanging, d))
+        .map(|p| (p, Vec::new()))
+        .collect()
 }
 
 /// A leg of a two-legged lateral view (`leg_f`, `leg_b`: the near leg
