@@ -106,12 +106,13 @@ impl<'a> HeadOn<'a> {
         }
         let yr = crate::polygon::span(side, 1);
         let step = (yr[1] - yr[0]) / GAP_SCAN as f64;
+        // at most GAP_SCAN steps reach either end from inside the span
         let end = |dir: f64| {
             let mut inside = mid;
-            loop {
+            for _ in 0..=GAP_SCAN {
                 let next = inside + dir * step;
                 if !(yr[0]..=yr[1]).contains(&next) {
-                    return if dir < 0.0 { yr[0] } else { yr[1] };
+                    break;
                 }
                 if !holds(next) {
                     let mut out = next;
@@ -126,6 +127,11 @@ impl<'a> HeadOn<'a> {
                     return inside;
                 }
                 inside = next;
+            }
+            if dir < 0.0 {
+                yr[0]
+            } else {
+                yr[1]
             }
         };
         Some(HeadOn {

@@ -274,7 +274,7 @@ pub fn cap_start_by(spec: &mut PartSpec, extra: f64) {
 /// and their chains `parts` (body first, as [`super::regions`] orders
 /// them), with its hanging parts: None when a part cannot be cut off or
 /// built this way (the build keeps the transitions' model).
-pub fn shell_parts(
+fn shell_parts(
     front: &[[f64; 2]],
     side: Option<&[[f64; 2]]>,
     lm: &QuadLandmarks,
